@@ -1,0 +1,98 @@
+# SPDX-License-Identifier: Apache-2.0
+# One helper each for adding a library component, a tool and a test executable.
+
+# glint_add_library(<component> [DEPENDS <targets>...])
+#   lib/<component>/src/*.cpp -> static library glint_<component> (alias glint::<component>),
+#   public headers under lib/<component>/include/glint/<component>/.
+function(glint_add_library component)
+    cmake_parse_arguments(ARG "" "" "DEPENDS;PRIVATE_DEPENDS" ${ARGN})
+    file(GLOB sources CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/${component}/src/*.cpp")
+    if(NOT sources)
+        message(WARNING "lib/${component} has no sources yet; glint_${component} not built")
+        return()
+    endif()
+    add_library(glint_${component} STATIC ${sources})
+    add_library(glint::${component} ALIAS glint_${component})
+    target_include_directories(glint_${component}
+        PUBLIC "${CMAKE_CURRENT_SOURCE_DIR}/${component}/include"
+        PRIVATE "${CMAKE_CURRENT_SOURCE_DIR}/${component}/src")
+    target_link_libraries(glint_${component} PUBLIC glint_standard glint_sanitize ${ARG_DEPENDS}
+        PRIVATE glint_warnings ${ARG_PRIVATE_DEPENDS})
+endfunction()
+
+# glint_add_tool(<name> DEPENDS <targets>...)
+#   tools/<name>/*.cpp -> executable glint-<name>.
+function(glint_add_tool name)
+    cmake_parse_arguments(ARG "" "" "DEPENDS" ${ARGN})
+    file(GLOB sources CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/${name}/*.cpp")
+    if(NOT sources)
+        return()
+    endif()
+    add_executable(glint-${name} ${sources})
+    target_link_libraries(glint-${name} PRIVATE glint_standard glint_warnings glint_sanitize
+        ${ARG_DEPENDS})
+    set_target_properties(glint-${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/bin")
+endfunction()
+
+# glint_add_unit_test(<component> DEPENDS <targets>...)
+#   tests/unit/<component>/*.cpp -> one gtest executable, each test registered with label unit.
+function(glint_add_unit_test component)
+    cmake_parse_arguments(ARG "" "" "DEPENDS" ${ARGN})
+    file(GLOB sources CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/unit/${component}/*.cpp")
+    if(NOT sources)
+        return()
+    endif()
+    add_executable(test_${component} ${sources})
+    target_link_libraries(test_${component} PRIVATE glint_standard glint_warnings glint_sanitize
+        GTest::gtest_main GTest::gmock ${ARG_DEPENDS})
+    target_compile_definitions(test_${component} PRIVATE
+        GLINT_TEST_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data"
+        GLINT_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+    set_target_properties(test_${component} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/tests")
+    gtest_discover_tests(test_${component}
+        TEST_PREFIX "unit/${component}/"
+        PROPERTIES LABELS unit
+        DISCOVERY_TIMEOUT 60)
+endfunction()
+
+# glint_add_oracle_test(<component> DEPENDS <targets>...)
+#   tests/oracle/<component>/*.cpp -> gtest executable whose tests compare glint with an
+#   independent program (GDAL, Spectral Python, ...), label oracle. The tests skip with a
+#   message when the oracle is not installed.
+function(glint_add_oracle_test component)
+    cmake_parse_arguments(ARG "" "" "DEPENDS" ${ARGN})
+    file(GLOB sources CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/oracle/${component}/*.cpp")
+    if(NOT sources)
+        return()
+    endif()
+    add_executable(oracle_${component} ${sources})
+    target_link_libraries(oracle_${component} PRIVATE glint_standard glint_warnings glint_sanitize
+        GTest::gtest_main GTest::gmock nlohmann_json::nlohmann_json ${ARG_DEPENDS})
+    target_compile_definitions(oracle_${component} PRIVATE
+        GLINT_TEST_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data"
+        GLINT_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+        GLINT_ORACLE_PYTHON="${GLINT_ORACLE_PYTHON}")
+    set_target_properties(oracle_${component} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/tests")
+    gtest_discover_tests(oracle_${component}
+        TEST_PREFIX "oracle/${component}/"
+        PROPERTIES LABELS oracle
+        DISCOVERY_TIMEOUT 60)
+endfunction()
+
+# glint_add_cli_tests()
+#   Every tests/cli/<tool>/<case>.toml becomes the test cli/<tool>/<case>, run by
+#   tests/cli/run_case.py against the built tools (label cli; exit 77 = skipped).
+function(glint_add_cli_tests)
+    file(GLOB_RECURSE cases CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/cli/*.toml")
+    foreach(case IN LISTS cases)
+        file(RELATIVE_PATH name "${CMAKE_CURRENT_SOURCE_DIR}/cli" "${case}")
+        string(REGEX REPLACE "\\.toml$" "" name "${name}")
+        add_test(NAME "cli/${name}"
+            COMMAND "${GLINT_ORACLE_PYTHON}" "${CMAKE_CURRENT_SOURCE_DIR}/cli/run_case.py"
+                --bin "${CMAKE_BINARY_DIR}/bin"
+                --data "${CMAKE_CURRENT_SOURCE_DIR}/data"
+                --work "${CMAKE_CURRENT_BINARY_DIR}/cli-work/${name}"
+                "${case}")
+        set_tests_properties("cli/${name}" PROPERTIES LABELS cli SKIP_RETURN_CODE 77 TIMEOUT 120)
+    endforeach()
+endfunction()

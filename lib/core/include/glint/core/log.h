@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: Apache-2.0
+// Logging through an injected sink. Library code logs through a Log it was handed; only the
+// tool runner decides that the sink is stderr.
+#pragma once
+
+#include <functional>
+#include <string>
+
+namespace glint {
+
+/// Severity of a log message, most severe first.
+enum class LogLevel { error = 0, warning = 1, info = 2, debug = 3 };
+
+/// Name of a level as printed in diagnostics ("error", "warning", "info", "debug").
+const char* log_level_name(LogLevel level);
+
+/// A cheap-to-copy handle that forwards messages at or above a threshold to a sink.
+/// A default-constructed Log discards everything.
+class Log {
+public:
+    using Sink = std::function<void(LogLevel, const std::string&)>;
+
+    Log() = default;
+    Log(Sink sink, LogLevel threshold) : m_sink(std::move(sink)), m_threshold(threshold) {}
+
+    bool enabled(LogLevel level) const { return m_sink && level <= m_threshold; }
+    void write(LogLevel level, const std::string& message) const {
+        if (enabled(level)) m_sink(level, message);
+    }
+    void error(const std::string& message) const { write(LogLevel::error, message); }
+    void warning(const std::string& message) const { write(LogLevel::warning, message); }
+    void info(const std::string& message) const { write(LogLevel::info, message); }
+    void debug(const std::string& message) const { write(LogLevel::debug, message); }
+
+private:
+    Sink m_sink;
+    LogLevel m_threshold = LogLevel::warning;
+};
+
+}  // namespace glint

@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: Apache-2.0
+// The tool runner that wraps every glint-<tool> main: builds the CLI11 app with the common
+// flags, parses, sets up the Context (stderr log, progress, SIGINT → cancel) and maps the
+// outcome to the documented exit status:
+//   0 success; 1 runtime/data failure; 2 usage error (every CLI11 parse error);
+//   130 interrupted. --help and --version print to stdout and exit 0.
+// Diagnostics are one line on stderr: "glint-<tool>: error: <message>".
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "glint/core/context.h"
+
+namespace glint {
+
+/// Exit statuses of every glint tool.
+inline constexpr int kExitSuccess = 0;
+inline constexpr int kExitFailure = 1;
+inline constexpr int kExitUsage = 2;
+inline constexpr int kExitInterrupted = 130;
+
+/// Values of the flags every tool shares.
+struct CommonOptions {
+    int verbosity = 0;          ///< -v count
+    bool quiet = false;         ///< -q: errors only, no progress
+    std::string progress_file;  ///< --progress FILE: key=value progress lines
+    unsigned threads = 0;       ///< --threads N (0 = all cores)
+    std::uint64_t seed = kDefaultSeed;  ///< --seed N
+};
+
+/// Which optional common flags a tool offers (help, version, verbose, quiet and progress are
+/// always there).
+enum CommonFlag : unsigned {
+    kCommonBasic = 0,
+    kCommonThreads = 1u << 0,
+    kCommonSeed = 1u << 1,
+};
+
+/// Adds -v/--verbose, -q/--quiet, --progress and, per `which`, --threads and --seed.
+void add_common_flags(CLI::App& app, CommonOptions& options, unsigned which);
+
+/// What the runner needs to know about a tool.
+struct ToolSpec {
+    std::string name;         ///< short name: "envi" gives the program name "glint-envi"
+    std::string description;  ///< one line for --help
+    unsigned common_flags = kCommonBasic;
+};
+
+/// glint version, e.g. "0.1.0".
+const char* version();
+
+/// Runs a tool. `configure` adds the tool's options and subcommands to the app; after a
+/// successful parse `execute` runs with the context and returns the exit status (0, or 1
+/// when some of several inputs failed). glint::Error and other exceptions thrown by
+/// `execute` are reported as one line and mapped to 1, 2 (usage) or 130 (cancelled).
+int run_tool(const ToolSpec& spec, int argc, const char* const* argv,
+             const std::function<void(CLI::App&)>& configure,
+             const std::function<int(Context&)>& execute);
+
+/// Formats a diagnostic line "glint-<tool>: <level>: <message>" (colour when `colour`).
+std::string format_diagnostic(const std::string& program, const std::string& level,
+                              const std::string& message, bool colour);
+
+}  // namespace glint

@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# Installs every Debian 12 package that glint's build, tests and test oracles need.
+# Idempotent: asks dpkg what is missing and runs apt-get only for that, so a second run
+# on a prepared machine does nothing and needs no network.
+set -euo pipefail
+
+packages=(
+    # toolchain
+    build-essential cmake ninja-build pkg-config git
+    # libraries (pinned by Debian 12: Embree 3.13, OIIO 2.4, CLI11 2.1, yaml-cpp 0.7,
+    # tinyxml2 9, nlohmann_json 3.11, GTest 1.12)
+    libembree-dev libopenimageio-dev libcli11-dev libyaml-cpp-dev libtinyxml2-dev
+    nlohmann-json3-dev libgtest-dev libgmock-dev libtbb-dev libeigen3-dev
+    libgeographiclib-dev libtinyobjloader-dev zlib1g-dev
+    # programs glint runs and test oracles
+    ffmpeg openimageio-tools gdal-bin python3 python3-gdal python3-numpy python3-spectral
+)
+
+missing=()
+for p in "${packages[@]}"; do
+    status=$(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null || true)
+    [ "$status" = "installed" ] || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+    exit 0
+fi
+
+echo "install-deps: installing ${missing[*]}" >&2
+sudo_cmd=()
+if [ "$(id -u)" -ne 0 ]; then
+    command -v sudo >/dev/null || { echo "install-deps: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+    sudo_cmd=(sudo)
+fi
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2

@@ -1,0 +1,172 @@
+// SPDX-License-Identifier: Apache-2.0
+// The tool runner: exit statuses, where --help/--version/diagnostics go, common flags,
+// log thresholds, progress files and SIGINT.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <fstream>
+#include <sstream>
+
+#include "glint/core/error.h"
+#include "glint/core/runner.h"
+#include "test_support.h"
+
+namespace glint {
+namespace {
+
+using ::testing::HasSubstr;
+
+struct Outcome {
+    int status;
+    std::string out;
+    std::string err;
+};
+
+Outcome run(std::vector<std::string> args, const std::function<int(Context&)>& execute,
+            unsigned flags = kCommonThreads | kCommonSeed) {
+    args.insert(args.begin(), "glint-demo");
+    std::vector<const char*> argv;
+    for (const auto& a : args) argv.push_back(a.c_str());
+    std::string name;
+    ::testing::internal::CaptureStdout();
+    ::testing::internal::CaptureStderr();
+    const int status = run_tool(
+        ToolSpec{"demo", "A demonstration tool", flags}, static_cast<int>(argv.size()),
+        argv.data(), [&](CLI::App& app) { app.add_option("--name", name, "A name"); }, execute);
+    Outcome outcome{status, ::testing::internal::GetCapturedStdout(),
+                    ::testing::internal::GetCapturedStderr()};
+    return outcome;
+}
+
+int succeed(Context&) { return kExitSuccess; }
+
+TEST(Runner, HelpGoesToStdoutAndExitsZero) {
+    const Outcome o = run({"--help"}, succeed);
+    EXPECT_EQ(o.status, 0);
+    EXPECT_THAT(o.out, HasSubstr("glint-demo"));
+    EXPECT_THAT(o.out, HasSubstr("--threads"));
+    EXPECT_THAT(o.out, HasSubstr("--seed"));
+    EXPECT_EQ(o.err, "");
+}
+
+TEST(Runner, VersionGoesToStdoutAndExitsZero) {
+    const Outcome o = run({"--version"}, succeed);
+    EXPECT_EQ(o.status, 0);
+    EXPECT_EQ(o.out, std::string("glint-demo ") + version() + "\n");
+}
+
+TEST(Runner, BadFlagIsAUsageErrorOnOneLine) {
+    bool ran = false;
+    const Outcome o = run({"--bogus"}, [&](Context&) {
+        ran = true;
+        return 0;
+    });
+    EXPECT_EQ(o.status, kExitUsage);
+    EXPECT_FALSE(ran);
+    EXPECT_EQ(o.out, "");
+    EXPECT_THAT(o.err, HasSubstr("glint-demo: error: "));
+    EXPECT_THAT(o.err, HasSubstr("--bogus"));
+    EXPECT_EQ(std::count(o.err.begin(), o.err.end(), '\n'), 1);
+}
+
+TEST(Runner, ErrorsMapToExitStatuses) {
+    auto thrower = [](Error e) { return [e](Context&) -> int { throw e; }; };
+    Outcome o = run({}, thrower(input_error("bad value", ErrorContext{"f.txt", 3, "<x>"})));
+    EXPECT_EQ(o.status, kExitFailure);
+    EXPECT_EQ(o.err, "glint-demo: error: f.txt:3: <x>: bad value\n");
+    EXPECT_EQ(run({}, thrower(usage_error("two outputs"))).status, kExitUsage);
+    EXPECT_EQ(run({}, thrower(io_error("disk full", "a.img"))).status, kExitFailure);
+    EXPECT_EQ(run({}, thrower(Error(ErrorCategory::cancelled, "interrupted"))).status,
+              kExitInterrupted);
+    o = run({}, [](Context&) -> int { throw std::logic_error("boom"); });
+    EXPECT_EQ(o.status, kExitFailure);
+    EXPECT_THAT(o.err, HasSubstr("internal error: boom"));
+    EXPECT_EQ(run({}, [](Context&) { return kExitFailure; }).status, kExitFailure);
+}
+
+TEST(Runner, CommonFlagsReachTheContext) {
+    Context seen;
+    const Outcome o = run({"--seed", "42", "--threads", "3"}, [&](Context& c) {
+        seen = c;
+        return 0;
+    });
+    EXPECT_EQ(o.status, 0);
+    EXPECT_EQ(seen.seed, 42u);
+    EXPECT_EQ(seen.threads, 3u);
+    run({}, [&](Context& c) {
+        seen = c;
+        return 0;
+    });
+    EXPECT_EQ(seen.seed, kDefaultSeed);
+    EXPECT_EQ(run({"--threads", "-1"}, succeed).status, kExitUsage);
+    EXPECT_EQ(run({"--seed", "1"}, succeed, kCommonBasic).status, kExitUsage);
+}
+
+TEST(Runner, VerbosityAndQuietSetTheLogThreshold) {
+    auto chatty = [](Context& c) {
+        c.log.debug("a debug line");
+        c.log.info("an info line");
+        c.log.warning("a warning line");
+        return 0;
+    };
+    Outcome o = run({}, chatty);
+    EXPECT_EQ(o.err, "glint-demo: warning: a warning line\n");
+    o = run({"-v"}, chatty);
+    EXPECT_EQ(o.err, "glint-demo: an info line\nglint-demo: warning: a warning line\n");
+    o = run({"-vv"}, chatty);
+    EXPECT_THAT(o.err, HasSubstr("glint-demo: debug: a debug line"));
+    o = run({"-q"}, chatty);
+    EXPECT_EQ(o.err, "");
+}
+
+TEST(Runner, ProgressFileGetsKeyValueLines) {
+    test::TempDir dir;
+    const std::string file = (dir / "progress.txt").string();
+    const Outcome o = run({"--progress", file}, [](Context& c) {
+        c.progress.update("lines", 0, 10);
+        c.progress.finish("lines", 10);
+        return 0;
+    });
+    EXPECT_EQ(o.status, 0);
+    std::ifstream in(file);
+    std::string first, second;
+    std::getline(in, first);
+    std::getline(in, second);
+    EXPECT_THAT(first, HasSubstr("label=lines done=0 total=10 percent=0.0"));
+    EXPECT_THAT(second, HasSubstr("label=lines done=10 total=10 percent=100.0"));
+    EXPECT_THAT(second, HasSubstr("state=finished"));
+    EXPECT_EQ(o.err, "");  // stderr is not a terminal here: no progress line
+}
+
+TEST(Runner, InterruptCancelsAndExits130) {
+    const Outcome o = run({}, [](Context& c) {
+        std::raise(SIGINT);
+        EXPECT_TRUE(c.cancel.cancelled());
+        c.cancel.throw_if_cancelled();
+        return 0;
+    });
+    EXPECT_EQ(o.status, kExitInterrupted);
+    EXPECT_THAT(o.err, HasSubstr("glint-demo: error: interrupted"));
+}
+
+TEST(ProgressPrinter, RendersTerminalLineAndMachineLines) {
+    std::ostringstream terminal, machine;
+    ProgressPrinter printer(&terminal, &machine);
+    printer(ProgressUpdate{"capture", 1, 4, false});
+    printer(ProgressUpdate{"capture", 2, 4, false});  // throttled: within 100 ms
+    printer(ProgressUpdate{"capture", 4, 4, true});
+    EXPECT_THAT(terminal.str(), HasSubstr("\r\033[Kcapture  25.0% (1/4)"));
+    EXPECT_THAT(terminal.str(), HasSubstr("100.0% (4/4)"));
+    EXPECT_EQ(terminal.str().back(), '\n');
+    const std::string lines = machine.str();
+    EXPECT_EQ(std::count(lines.begin(), lines.end(), '\n'), 2);
+}
+
+TEST(Diagnostic, ColourOnlyWhenAsked) {
+    EXPECT_EQ(format_diagnostic("glint-x", "error", "bad", false), "glint-x: error: bad");
+    EXPECT_THAT(format_diagnostic("glint-x", "error", "bad", true), HasSubstr("\033[1;31m"));
+}
+
+}  // namespace
+}  // namespace glint
