@@ -1,0 +1,37 @@
+# SPDX-License-Identifier: Apache-2.0
+# The two commands of the README, and a few conveniences. Everything real lives in
+# CMakePresets.json and scripts/; this file only strings them together.
+#   make demo   install what is missing, build, run the default example
+#   make test   install what is missing, build, run the whole test suite (ctest)
+# PRESET=debug or PRESET=asan selects another build (default: release).
+
+PRESET ?= release
+BUILD_DIR := build/$(PRESET)
+
+.PHONY: all deps configure build test demo bench clean format
+
+all: build
+
+deps:
+	@scripts/install-deps.sh
+
+configure: deps
+	@cmake --preset $(PRESET) >/dev/null
+
+build: configure
+	@cmake --build --preset $(PRESET)
+
+test: build
+	@ctest --preset $(PRESET)
+
+demo: build
+	@examples/demo/run.sh $(BUILD_DIR)/bin out/demo
+
+bench: build
+	@bench/run.sh $(BUILD_DIR)/bin
+
+clean:
+	rm -rf build out
+
+format:
+	@git ls-files '*.cpp' '*.h' | xargs clang-format -i
