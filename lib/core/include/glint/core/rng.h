@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: Apache-2.0
+// Deterministic counter-based random numbers: the Philox4x32-10 block function (Salmon et al.,
+// "Parallel random numbers: as easy as 1, 2, 3", SC 2011) and RandomStream, a stream keyed
+// by (seed, stream ids) that gives the same sequence on every platform and thread layout.
+// All distributions (uniform, normal, Poisson) are implemented here; std::*_distribution is
+// never used because its output differs between standard libraries. See docs/physics.md.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <initializer_list>
+#include <span>
+
+namespace glint {
+
+/// A Philox4x32 counter: four 32-bit words, word 0 least significant.
+using PhiloxCounter = std::array<std::uint32_t, 4>;
+/// A Philox4x32 key: two 32-bit words.
+using PhiloxKey = std::array<std::uint32_t, 2>;
+
+/// The Philox4x32-10 bijection of Random123: ten rounds keyed by `key` applied to `counter`.
+/// Matches the published Random123 known-answer vectors.
+PhiloxCounter philox4x32_10(PhiloxCounter counter, PhiloxKey key) noexcept;
+
+/// A reproducible random stream. Its identity is (seed, stream_ids): the ids are mixed with
+/// the seed by two SplitMix64 finalizer chains with distinct salts into the 64-bit Philox key
+/// and the high 64 bits of the counter (128 bits of identity); the low 64 bits of the counter
+/// number the 128-bit blocks drawn. Equal (seed, ids) give equal sequences everywhere;
+/// different seeds, ids, id counts or id orders give independent streams.
+///
+/// Integer and uniform draws are bit-exact on every platform. normal() and poisson() also
+/// call log/exp/sqrt/sin/cos, so they are exact wherever the C library's results agree
+/// (always for one build; libm versions may differ in the last bit).
+///
+/// Words are consumed in order; next_u64() consumes two words (the first one is the low
+/// half). A stream is not thread-safe; give each thread or work item its own stream.
+class RandomStream {
+  public:
+    /// A stream keyed by `seed` and the ordered `stream_ids` (e.g. plugin, task, pixel).
+    RandomStream(std::uint64_t seed, std::initializer_list<std::uint64_t> stream_ids);
+    /// A stream keyed by `seed` and the ordered `stream_ids`.
+    RandomStream(std::uint64_t seed, std::span<const std::uint64_t> stream_ids);
+
+    /// The next 32 random bits.
+    std::uint32_t next_u32();
+    /// The next 64 random bits (two words; the first drawn is the low half).
+    std::uint64_t next_u64();
+
+    /// Uniform on [0, 1) with 53 random bits (multiples of 2⁻⁵³); consumes two words.
+    double uniform();
+    /// Uniform on the open interval (0, 1): (k + 0.5)·2⁻⁵², never 0 or 1; consumes two words.
+    double uniform_open();
+    /// Uniform on [a, b); throws glint::Error (input) unless a and b are finite and a <= b.
+    double uniform(double a, double b);
+
+    /// A standard normal variate (Box–Muller; the second value of each pair is kept for the
+    /// next call).
+    double normal();
+    /// A normal variate with the given mean and standard deviation; throws glint::Error
+    /// (input) unless both are finite and sigma >= 0.
+    double normal(double mean, double sigma);
+
+    /// A Poisson variate with the given mean. Mean 0 gives 0 without drawing; means below 10
+    /// use inversion by sequential search; larger means use Hörmann's PTRS transformed
+    /// rejection (1993), O(1) whatever the mean. Throws glint::Error (input) for a negative,
+    /// NaN or infinite mean, or one above 1e15 (where doubles stop holding the integer
+    /// result exactly).
+    std::uint64_t poisson(double mean);
+
+    /// Repositions the stream as if exactly `word_index` 32-bit words had been drawn since
+    /// construction; forgets any kept normal variate.
+    void skip_to(std::uint64_t word_index);
+    /// How many 32-bit words have been drawn (or skipped to).
+    std::uint64_t position() const noexcept { return m_position; }
+
+  private:
+    void refill();
+
+    PhiloxKey m_key{};
+    std::uint64_t m_counter_high = 0;  ///< counter words 2 and 3: part of the stream identity
+    std::uint64_t m_position = 0;      ///< words consumed; block = m_position / 4
+    PhiloxCounter m_buffer{};          ///< output of block (m_position - 1) / 4
+    bool m_has_spare_normal = false;
+    double m_spare_normal = 0.0;
+};
+
+}  // namespace glint
