@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: Apache-2.0
+// `glint-envi convert IN OUT`: ENVI → PNG/TIFF/JPEG/EXR/PPM (through OpenImageIO), any image
+// OpenImageIO reads → ENVI, and ENVI → ENVI (band subset, data type). Streams line by line:
+// one pass to write, plus one pass for a min/max stretch or two for a percentile stretch.
+//
+// Bands are numbered from 0 (`--band 0` is the first band). Default selection for image
+// outputs: 1 or 2 bands → band 0; 3 bands → 0,1,2; more, with wavelengths in µm or nm →
+// the bands nearest 0.64, 0.55 and 0.46 µm (R,G,B), else 0,1,2. ENVI outputs keep every
+// band unless told otherwise.
+//
+// What reaches an image (see stretch.h for the limits):
+//   fixed    --min A --max B: s = clamp((v - A) / (B - A), 0, 1)
+//   percent  --percent P, 0 <= P < 50: s with the percentile limits of stretch.h
+//   min/max  the default for 8/16-bit outputs, and for float outputs given --gamma or
+//            --per-band: s with the minimum and maximum as limits
+//   none     --raw, and the default for float (32-bit, half) outputs: v unchanged
+// then s^(1/gamma), times 255 or 65535 and rounded for 8/16-bit outputs. Without a stretch,
+// integer outputs get v rounded and clamped to the type's range. Limits are found over all
+// output channels together (a band selected twice counts twice) unless per_band. NaN
+// becomes 0 in integer outputs.
+//
+// ENVI outputs receive the values unchanged (no stretch options allowed), in `data_type`,
+// else the type `--bit-depth` names (8 uint8, 16 uint16, 32 float32, 64 float64), else the
+// source's type: ENVI sources keep theirs (complex → float32/float64); images map uint8 →
+// uint8, int8/int16 → int16, uint16 → uint16, int32 → int32, uint32 → uint32, half/float →
+// float32, double → float64. Image channel names become band names; ENVI band metadata
+// (names, wavelengths, FWHM, units, description, extra keys) is kept for the selected
+// bands; provenance keys `glint tool`, `glint version`, `glint source` (and `glint command`
+// when given) are set.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "glint/app_envi/stretch.h"
+#include "glint/core/context.h"
+#include "glint/io/envi.h"
+#include "glint/io/image.h"
+
+namespace glint::app_envi {
+
+/// Output kind of convert.
+enum class OutputKind { png, tiff, jpeg, exr, ppm, envi };
+
+/// Options of `convert`.
+struct ConvertOptions {
+    std::filesystem::path input;
+    std::filesystem::path output;
+    /// "png", "tiff", "jpeg", "exr", "ppm" (and their spellings in io::image_format_from_name)
+    /// or "envi"; empty = from the output's extension.
+    std::string format;
+    std::optional<std::size_t> band;  ///< one band (0-based)
+    std::vector<std::size_t> bands;   ///< several bands in output channel order (0-based)
+    std::optional<double> gamma;      ///< > 0; 1 when unset
+    std::optional<double> percent;    ///< percentile stretch, [0, 50)
+    bool per_band = false;            ///< stretch limits per band instead of jointly
+    std::optional<double> min;        ///< fixed stretch (with max)
+    std::optional<double> max;
+    bool raw = false;                           ///< no stretch
+    std::optional<int> bit_depth;               ///< 8, 16, 32 (64 for ENVI)
+    std::optional<io::EnviDataType> data_type;  ///< ENVI output type
+    std::string command_line;  ///< recorded as `glint command` in ENVI outputs when not empty
+};
+
+/// What convert did.
+struct ConvertResult {
+    OutputKind kind = OutputKind::png;
+    std::vector<std::size_t> bands;     ///< source bands written, in order
+    std::vector<StretchLimits> limits;  ///< per output channel; empty without a stretch
+    std::string stored_type;            ///< "uint8", "float", "float32" (ENVI), ...
+};
+
+/// Output kind for a --format name ("envi" included); nullopt for an unknown name.
+std::optional<OutputKind> output_kind_from_name(const std::string& name);
+
+/// Parses an ENVI data type given as a name ("float32", "uint8", ...) or a code ("4").
+std::optional<io::EnviDataType> envi_type_from_string(const std::string& text);
+
+/// Converts. Throws glint::Error: usage for contradictory options, an out-of-range band or
+/// an output that would overwrite the input; input/io naming the file otherwise. Nothing is
+/// left under the output name unless the conversion succeeded.
+ConvertResult run_convert(const ConvertOptions& options, Context& ctx);
+
+}  // namespace glint::app_envi

@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: Apache-2.0
+// RasterSource over io::EnviReader and io::ImageReader.
+#include "source.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <system_error>
+
+#include "glint/core/error.h"
+
+namespace glint::app_envi::internal {
+namespace {
+
+namespace fs = std::filesystem;
+
+class EnviSource final : public RasterSource {
+public:
+    explicit EnviSource(const fs::path& path) : m_reader(path) {
+        m_path = path;
+        m_envi = m_reader.header();
+        m_width = m_envi->samples;
+        m_height = m_envi->lines;
+        m_bands = m_envi->bands;
+        m_band_names = m_envi->band_names;
+        m_type_name = io::envi_type_name(m_envi->data_type);
+        m_files = {m_reader.data_path(), m_reader.header_path()};
+    }
+    void read_line(std::size_t y, std::span<double> out) override { m_reader.read_line(y, out); }
+
+private:
+    io::EnviReader m_reader;
+};
+
+class ImageSource final : public RasterSource {
+public:
+    explicit ImageSource(const fs::path& path) : m_reader(path) {
+        m_path = path;
+        m_image = m_reader.info();
+        m_width = m_image->width;
+        m_height = m_image->height;
+        m_bands = m_image->channels;
+        m_band_names = m_image->channel_names;
+        m_type_name = io::sample_type_name(m_image->sample_type);
+        m_files = {path};
+    }
+    void read_line(std::size_t y, std::span<double> out) override { m_reader.read_line(y, out); }
+
+private:
+    io::ImageReader m_reader;
+};
+
+}  // namespace
+
+bool is_envi_path(const fs::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (ext == ".hdr" || ext == ".img" || ext == ".dat" || ext == ".raw" || ext == ".bsq" ||
+        ext == ".bil" || ext == ".bip" || ext == ".envi") {
+        return true;
+    }
+    std::error_code ec;
+    fs::path header = path;
+    header += ".hdr";
+    if (fs::exists(header, ec)) return true;
+    fs::path sibling = path;
+    sibling.replace_extension(".hdr");
+    return !path.extension().empty() && fs::exists(sibling, ec) &&
+           !io::image_format_from_extension(path);
+}
+
+std::unique_ptr<RasterSource> RasterSource::open(const fs::path& path) {
+    if (is_envi_path(path)) return std::make_unique<EnviSource>(path);
+    return std::make_unique<ImageSource>(path);
+}
+
+std::string format_number(double value, int precision) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%.*g", precision, value);
+    return text;
+}
+
+}  // namespace glint::app_envi::internal

@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: Apache-2.0
+// Internal: a raster read line by line, whether an ENVI file (through io::EnviReader) or any
+// image OpenImageIO reads (through io::ImageReader), so that stats and convert treat both
+// alike. Values come as doubles in BIP order (for each sample, all bands).
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "glint/io/envi.h"
+#include "glint/io/image.h"
+
+namespace glint::app_envi::internal {
+
+/// True when `path` should be read as ENVI: it names a header, a header exists beside it,
+/// or it has an extension ENVI data files use (.img, .dat, .raw, .bsq, .bil, .bip, .envi).
+bool is_envi_path(const std::filesystem::path& path);
+
+/// A line-by-line raster source.
+class RasterSource {
+public:
+    /// Opens `path` as ENVI or as an image; throws glint::Error naming the file.
+    static std::unique_ptr<RasterSource> open(const std::filesystem::path& path);
+    virtual ~RasterSource() = default;
+
+    std::size_t width() const { return m_width; }
+    std::size_t height() const { return m_height; }
+    std::size_t bands() const { return m_bands; }
+    /// Band names (ENVI band names or image channel names); empty if the file names none.
+    const std::vector<std::string>& band_names() const { return m_band_names; }
+    /// The ENVI header, for ENVI sources.
+    const io::EnviHeader* envi_header() const { return m_envi ? &*m_envi : nullptr; }
+    /// The image description, for image sources.
+    const io::ImageInfo* image_info() const { return m_image ? &*m_image : nullptr; }
+    /// Name of the stored value type ("float32", "uint8", ...).
+    const std::string& type_name() const { return m_type_name; }
+    /// Every file this source reads (data and header for ENVI), for overwrite checks.
+    const std::vector<std::filesystem::path>& files() const { return m_files; }
+    /// The path as the user named it.
+    const std::filesystem::path& path() const { return m_path; }
+
+    /// Line `y`, width × bands values.
+    virtual void read_line(std::size_t y, std::span<double> out) = 0;
+
+protected:
+    std::filesystem::path m_path;
+    std::size_t m_width = 0;
+    std::size_t m_height = 0;
+    std::size_t m_bands = 0;
+    std::vector<std::string> m_band_names;
+    std::optional<io::EnviHeader> m_envi;
+    std::optional<io::ImageInfo> m_image;
+    std::string m_type_name;
+    std::vector<std::filesystem::path> m_files;
+};
+
+/// "%.*g" formatting (no <format> in g++ 12).
+std::string format_number(double value, int precision = 6);
+
+}  // namespace glint::app_envi::internal

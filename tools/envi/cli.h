@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: Apache-2.0
+// The command line of glint-envi: the subcommands' options, parsed by CLI11 into the option
+// structs of lib/app_envi, and the dispatch to their entry points.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+#include "glint/app_envi/convert.h"
+#include "glint/app_envi/encode.h"
+#include "glint/app_envi/info.h"
+#include "glint/app_envi/stats.h"
+#include "glint/core/context.h"
+
+namespace glint::tools::envi {
+
+/// Everything parsed from the command line.
+class EnviCli {
+public:
+    /// `command_line`: the arguments as typed, recorded in ENVI outputs' provenance.
+    explicit EnviCli(std::string command_line) : m_command_line(std::move(command_line)) {}
+
+    /// Adds the subcommands and their options to `app`.
+    void configure(CLI::App& app);
+    /// Runs the chosen subcommand; returns the exit status.
+    int execute(Context& ctx);
+
+private:
+    void finish_convert();
+
+    std::string m_command_line;
+    CLI::App* m_info = nullptr;
+    CLI::App* m_stats = nullptr;
+    CLI::App* m_convert = nullptr;
+    CLI::App* m_encode = nullptr;
+
+    app_envi::InfoOptions m_info_options;
+    app_envi::StatsOptions m_stats_options;
+    std::string m_info_format = "text";
+    std::string m_stats_format = "text";
+
+    app_envi::ConvertOptions m_convert_options;
+    std::vector<std::string> m_convert_files;
+    std::string m_output;
+    std::string m_bands;
+    std::string m_data_type;
+    double m_gamma = 1.0;
+    double m_percent = 0.0;
+    double m_min = 0.0;
+    double m_max = 0.0;
+    std::size_t m_band = 0;
+    int m_bit_depth = 8;
+
+    app_envi::EncodeOptions m_encode_options;
+    int m_crf = 23;
+    double m_timeout_s = 0;
+};
+
+}  // namespace glint::tools::envi
