@@ -33,8 +33,9 @@ void fsync_folder(const std::filesystem::path& folder) {
 
 AtomicFile::AtomicFile(std::filesystem::path target) : m_target(std::move(target)) {
     const std::string extension = m_target.extension().string();
-    std::string pattern = (folder_of(m_target) / ("." + m_target.filename().string() + ".tmp-XXXXXX"))
-                              .string() + extension;
+    std::string pattern =
+        (folder_of(m_target) / ("." + m_target.filename().string() + ".tmp-XXXXXX")).string() +
+        extension;
     std::vector<char> name(pattern.begin(), pattern.end());
     name.push_back('\0');
     m_fd = ::mkostemps(name.data(), static_cast<int>(extension.size()), O_CLOEXEC);

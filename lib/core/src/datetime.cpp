@@ -75,7 +75,7 @@ DateTime datetime_from_valid_civil(const CivilTime& c, int utc_offset_min) noexc
 
 /// A cursor over the text being parsed that reports errors quoting the whole text.
 class Iso8601Parser {
-  public:
+public:
     Iso8601Parser(std::string_view original, std::string_view trimmed, const ErrorContext& context)
         : m_original(original), m_text(trimmed), m_context(context) {}
 
@@ -109,7 +109,7 @@ class Iso8601Parser {
         return datetime_from_valid_civil(civil, offset_min);
     }
 
-  private:
+private:
     [[noreturn]] void fail(const std::string& what) const {
         throw input_error("invalid date-time '" + std::string(m_original) + "': " + what,
                           m_context);

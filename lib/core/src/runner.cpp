@@ -78,9 +78,12 @@ std::string lowercase_first(std::string text) {
 
 int exit_status_for(ErrorCategory category) {
     switch (category) {
-        case ErrorCategory::usage: return kExitUsage;
-        case ErrorCategory::cancelled: return kExitInterrupted;
-        default: return kExitFailure;
+        case ErrorCategory::usage:
+            return kExitUsage;
+        case ErrorCategory::cancelled:
+            return kExitInterrupted;
+        default:
+            return kExitFailure;
     }
 }
 
@@ -92,15 +95,16 @@ std::string format_diagnostic(const std::string& program, const std::string& lev
                               const std::string& message, bool colour) {
     std::string label = level + ":";
     if (colour) {
-        const char* code = level == "error" ? "\033[1;31m" : level == "warning" ? "\033[1;35m" : "\033[1m";
+        const char* code = level == "error"     ? "\033[1;31m"
+                           : level == "warning" ? "\033[1;35m"
+                                                : "\033[1m";
         label = code + label + "\033[0m";
     }
     return program + ": " + label + " " + message;
 }
 
 void add_common_flags(CLI::App& app, CommonOptions& options, unsigned which) {
-    app.add_flag("-v,--verbose", options.verbosity,
-                 "More messages on stderr (-v info, -vv debug)");
+    app.add_flag("-v,--verbose", options.verbosity, "More messages on stderr (-v info, -vv debug)");
     app.add_flag("-q,--quiet", options.quiet, "Only errors on stderr; no progress line");
     app.add_option("--progress", options.progress_file,
                    "Append machine-readable progress (key=value lines) to FILE")
@@ -149,7 +153,7 @@ int run_tool(const ToolSpec& spec, int argc, const char* const* argv,
     Context context;
     context.threads = common.threads;
     context.seed = common.seed;
-    const LogLevel threshold = common.quiet              ? LogLevel::error
+    const LogLevel threshold = common.quiet            ? LogLevel::error
                                : common.verbosity >= 2 ? LogLevel::debug
                                : common.verbosity == 1 ? LogLevel::info
                                                        : LogLevel::warning;
@@ -173,9 +177,9 @@ int run_tool(const ToolSpec& spec, int argc, const char* const* argv,
             return kExitFailure;
         }
     }
-    auto printer = std::make_shared<ProgressPrinter>(terminal_progress ? &std::cerr : nullptr,
-                                                     progress_file.is_open() ? &progress_file
-                                                                             : nullptr);
+    auto printer =
+        std::make_shared<ProgressPrinter>(terminal_progress ? &std::cerr : nullptr,
+                                          progress_file.is_open() ? &progress_file : nullptr);
     if (terminal_progress || progress_file.is_open()) {
         context.progress = Progress([printer](const ProgressUpdate& u) { (*printer)(u); });
     }

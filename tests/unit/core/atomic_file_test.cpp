@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 // AtomicFile: nothing under the final name until commit; temp files never left behind.
+#include "glint/core/atomic_file.h"
+
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <sstream>
 
-#include "glint/core/atomic_file.h"
 #include "glint/core/error.h"
 #include "test_support.h"
 

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // glint::Error: message formatting with and without location, context added at boundaries.
-#include <gtest/gtest.h>
-
 #include "glint/core/error.h"
+
+#include <gtest/gtest.h>
 
 namespace glint {
 namespace {

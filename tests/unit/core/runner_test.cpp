@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // The tool runner: exit statuses, where --help/--version/diagnostics go, common flags,
 // log thresholds, progress files and SIGINT.
+#include "glint/core/runner.h"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -9,7 +11,6 @@
 #include <sstream>
 
 #include "glint/core/error.h"
-#include "glint/core/runner.h"
 #include "test_support.h"
 
 namespace glint {
@@ -32,8 +33,8 @@ Outcome run(std::vector<std::string> args, const std::function<int(Context&)>& e
     ::testing::internal::CaptureStdout();
     ::testing::internal::CaptureStderr();
     const int status = run_tool(
-        ToolSpec{"demo", "A demonstration tool", flags}, static_cast<int>(argv.size()),
-        argv.data(), [&](CLI::App& app) { app.add_option("--name", name, "A name"); }, execute);
+        ToolSpec{"demo", "A demonstration tool", flags}, static_cast<int>(argv.size()), argv.data(),
+        [&](CLI::App& app) { app.add_option("--name", name, "A name"); }, execute);
     Outcome outcome{status, ::testing::internal::GetCapturedStdout(),
                     ::testing::internal::GetCapturedStderr()};
     return outcome;

@@ -3,7 +3,6 @@
 #pragma once
 
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <algorithm>
@@ -19,8 +18,7 @@ public:
     TempDir() {
         const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
         std::string name = std::string("glint-test-") + (info ? info->test_suite_name() : "x") +
-                           "-" + (info ? info->name() : "y") + "-" +
-                           std::to_string(::getpid());
+                           "-" + (info ? info->name() : "y") + "-" + std::to_string(::getpid());
         for (char& c : name) {
             if (c == '/') c = '_';
         }

@@ -19,7 +19,7 @@ struct Context {
     Log log;
     Progress progress;
     CancelToken cancel;
-    unsigned threads = 0;              ///< 0 = all hardware threads
+    unsigned threads = 0;  ///< 0 = all hardware threads
     std::uint64_t seed = kDefaultSeed;
 };
 

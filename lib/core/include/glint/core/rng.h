@@ -35,7 +35,7 @@ PhiloxCounter philox4x32_10(PhiloxCounter counter, PhiloxKey key) noexcept;
 /// Words are consumed in order; next_u64() consumes two words (the first one is the low
 /// half). A stream is not thread-safe; give each thread or work item its own stream.
 class RandomStream {
-  public:
+public:
     /// A stream keyed by `seed` and the ordered `stream_ids` (e.g. plugin, task, pixel).
     RandomStream(std::uint64_t seed, std::initializer_list<std::uint64_t> stream_ids);
     /// A stream keyed by `seed` and the ordered `stream_ids`.
@@ -73,7 +73,7 @@ class RandomStream {
     /// How many 32-bit words have been drawn (or skipped to).
     std::uint64_t position() const noexcept { return m_position; }
 
-  private:
+private:
     void refill();
 
     PhiloxKey m_key{};

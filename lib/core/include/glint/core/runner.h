@@ -8,7 +8,6 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
-
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -25,10 +24,10 @@ inline constexpr int kExitInterrupted = 130;
 
 /// Values of the flags every tool shares.
 struct CommonOptions {
-    int verbosity = 0;          ///< -v count
-    bool quiet = false;         ///< -q: errors only, no progress
-    std::string progress_file;  ///< --progress FILE: key=value progress lines
-    unsigned threads = 0;       ///< --threads N (0 = all cores)
+    int verbosity = 0;                  ///< -v count
+    bool quiet = false;                 ///< -q: errors only, no progress
+    std::string progress_file;          ///< --progress FILE: key=value progress lines
+    unsigned threads = 0;               ///< --threads N (0 = all cores)
     std::uint64_t seed = kDefaultSeed;  ///< --seed N
 };
 

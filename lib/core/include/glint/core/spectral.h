@@ -15,7 +15,7 @@ namespace glint {
 
 /// A strictly increasing set of positive wavelengths in µm at which spectra are sampled.
 class SpectralGrid {
-  public:
+public:
     /// The largest number of samples a grid may have (guards allocations from bad input).
     static constexpr std::size_t kMaxSize = 100'000'000;
 
@@ -42,14 +42,14 @@ class SpectralGrid {
     /// The last (longest) wavelength in µm.
     double max_um() const noexcept { return m_wavelengths_um.back(); }
 
-  private:
+private:
     std::vector<double> m_wavelengths_um;
 };
 
 /// A spectral quantity known at increasing wavelengths (µm) and linearly interpolated
 /// between them (e.g. a reflectance, a filter transmission, a solar spectrum).
 class SpectralCurve {
-  public:
+public:
     /// Throws glint::Error (input, with `context`) unless the two vectors have the same
     /// non-zero length, the wavelengths are finite, positive and strictly increasing, and
     /// the values are finite.
@@ -68,7 +68,7 @@ class SpectralCurve {
     /// The defining values.
     std::span<const double> values() const noexcept { return m_values; }
 
-  private:
+private:
     std::vector<double> m_wavelengths_um;
     std::vector<double> m_values;
 };

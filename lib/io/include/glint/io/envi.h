@@ -65,11 +65,11 @@ struct EnviHeader {
     EnviDataType data_type = EnviDataType::float64;
     Interleave interleave = Interleave::bip;
     ByteOrder byte_order = native_byte_order();
-    std::string wavelength_units;            ///< e.g. "Microns"; empty = not written
-    std::vector<double> wavelength;          ///< per band, or empty
-    std::vector<double> fwhm;                ///< per band, or empty
-    std::vector<std::string> band_names;     ///< per band, or empty
-    std::string data_units;                  ///< e.g. "Watts/(cm2 sr)"; empty = not written
+    std::string wavelength_units;         ///< e.g. "Microns"; empty = not written
+    std::vector<double> wavelength;       ///< per band, or empty
+    std::vector<double> fwhm;             ///< per band, or empty
+    std::vector<std::string> band_names;  ///< per band, or empty
+    std::string data_units;               ///< e.g. "Watts/(cm2 sr)"; empty = not written
     std::vector<std::pair<std::string, std::string>> extra;
 
     /// Value of an extra key (exact lowercase name), if present.
