@@ -45,6 +45,7 @@ function(glint_add_unit_test component)
     add_executable(test_${component} ${sources})
     target_link_libraries(test_${component} PRIVATE glint_standard glint_warnings glint_sanitize
         GTest::gtest_main GTest::gmock ${ARG_DEPENDS})
+    target_include_directories(test_${component} PRIVATE "${CMAKE_CURRENT_SOURCE_DIR}/support/include")
     target_compile_definitions(test_${component} PRIVATE
         GLINT_TEST_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data"
         GLINT_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
@@ -68,6 +69,7 @@ function(glint_add_oracle_test component)
     add_executable(oracle_${component} ${sources})
     target_link_libraries(oracle_${component} PRIVATE glint_standard glint_warnings glint_sanitize
         GTest::gtest_main GTest::gmock nlohmann_json::nlohmann_json ${ARG_DEPENDS})
+    target_include_directories(oracle_${component} PRIVATE "${CMAKE_CURRENT_SOURCE_DIR}/support/include")
     target_compile_definitions(oracle_${component} PRIVATE
         GLINT_TEST_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data"
         GLINT_SOURCE_DIR="${PROJECT_SOURCE_DIR}"

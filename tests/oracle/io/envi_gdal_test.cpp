@@ -35,17 +35,16 @@ using ::testing::HasSubstr;
     } while (0)
 
 /// GDAL's version as major * 100 + minor, from `gdalinfo --version`.
-int gdal_version(const TempDir& dir) {
-    const CommandResult result = run_command("gdalinfo --version", dir);
+int gdal_version() {
+    const CommandResult result = run_command({"gdalinfo", "--version"});
     int major = 0;
     int minor = 0;
     std::sscanf(result.out.c_str(), "GDAL %d.%d", &major, &minor);
     return major * 100 + minor;
 }
 
-json gdalinfo(const std::filesystem::path& path, const TempDir& dir) {
-    const CommandResult result =
-        run_command("gdalinfo -json -mdd all " + shell_quote(path.string()), dir);
+json gdalinfo(const std::filesystem::path& path) {
+    const CommandResult result = run_command({"gdalinfo", "-json", "-mdd", "all", path.string()});
     EXPECT_EQ(result.exit_status, 0) << result.err;
     return json::parse(result.out);
 }
@@ -65,7 +64,7 @@ print(json.dumps({"dtype": cube.dtype.name, "values": cube.tolist()}))
 TEST(GdalOracle, ReadsEveryWritableType) {
     SKIP_WITHOUT_GDALINFO();
     TempDir dir;
-    const int version = gdal_version(dir);
+    const int version = gdal_version();
     const bool osgeo = python_has("numpy; from osgeo import gdal");
     for (const EnviDataType type : kWritableTypes) {
         SCOPED_TRACE(envi_type_name(type));
@@ -74,13 +73,12 @@ TEST(GdalOracle, ReadsEveryWritableType) {
         const bool is_64bit_integer = type == EnviDataType::int64 || type == EnviDataType::uint64;
         if (is_64bit_integer && version < 308) {
             // ENVI Int64/UInt64 came with GDAL 3.8 (OSGeo/gdal#8529); older GDAL refuses them.
-            const CommandResult result =
-                run_command("gdalinfo -json " + shell_quote(image.data.string()), dir);
+            const CommandResult result = run_command({"gdalinfo", "-json", image.data.string()});
             EXPECT_NE(result.exit_status, 0);
             EXPECT_THAT(result.err, HasSubstr("data_type"));
             continue;
         }
-        const json info = gdalinfo(image.data, dir);
+        const json info = gdalinfo(image.data);
         EXPECT_EQ(info["driverShortName"], "ENVI");
         EXPECT_EQ(info["size"], json::array({4, 3}));
         EXPECT_EQ(info["files"], json::array({image.data.string(), image.header_path.string()}));
@@ -110,7 +108,7 @@ TEST(GdalOracle, ReadsEveryWritableType) {
         }
         if (!osgeo) continue;
         const CommandResult pixels =
-            run_command(python_command(dir, kGdalPixels, {image.data.string()}), dir);
+            run_command(python_command(dir, kGdalPixels, {image.data.string()}));
         ASSERT_EQ(pixels.exit_status, 0) << pixels.err;
         const json read = json::parse(pixels.out);
         EXPECT_EQ(read["values"], image.values);
@@ -124,7 +122,7 @@ TEST(GdalOracle, FindsTheHeaderOfACaptureName) {
     // The header sits beside the data as <name>.img.hdr; GDAL finds it from the data path.
     const TestImage image =
         write_test_image(dir, "radiance-t0000-c0000", EnviDataType::float64, 2, 2, 1);
-    const json info = gdalinfo(image.data, dir);
+    const json info = gdalinfo(image.data);
     EXPECT_EQ(info["bands"].size(), 1u);
     EXPECT_EQ(info["bands"][0]["type"], "Float64");
 }
@@ -136,7 +134,7 @@ TEST(GdalOracle, ReadsTwoThousandFiveHundredBands) {
     // Our own promise first: no header line is longer than 200 characters.
     std::istringstream header(read_text(image.header_path));
     for (std::string line; std::getline(header, line);) ASSERT_LE(line.size(), 200u) << line;
-    const json info = gdalinfo(image.data, dir);
+    const json info = gdalinfo(image.data);
     EXPECT_EQ(info["size"], json::array({4, 3}));
     const json& bands = info["bands"];
     ASSERT_EQ(bands.size(), 2500u);
@@ -182,8 +180,8 @@ TEST(GdalOracle, GlintReadsWhatGdalWrites) {
         for (const std::string type : {"Int16", "Float32", "Float64", "UInt16"}) {
             SCOPED_TRACE(interleave + " " + type);
             const auto path = dir.path() / ("gdal_" + interleave + "_" + type + ".img");
-            const CommandResult result = run_command(
-                python_command(dir, kGdalWrite, {path.string(), interleave, type}), dir);
+            const CommandResult result =
+                run_command(python_command(dir, kGdalWrite, {path.string(), interleave, type}));
             ASSERT_EQ(result.exit_status, 0) << result.err;
             const json expected = json::parse(result.out);
             // GDAL names the header gdal_*.hdr, not gdal_*.img.hdr.

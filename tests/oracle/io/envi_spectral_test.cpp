@@ -56,7 +56,7 @@ print(json.dumps(out))
 json spectral_read(const TempDir& dir, const TestImage& image, bool pixels = true) {
     std::vector<std::string> args = {image.header_path.string(), image.data.string()};
     if (!pixels) args.push_back("nopixels");
-    const CommandResult result = run_command(python_command(dir, kSpectralRead, args), dir);
+    const CommandResult result = run_command(python_command(dir, kSpectralRead, args));
     EXPECT_EQ(result.exit_status, 0) << result.err;
     return json::parse(result.out);
 }
@@ -139,10 +139,8 @@ TEST(SpectralOracle, GlintReadsWhatSpectralWrites) {
                 const std::string name = "sp_" + interleave + std::to_string(order) + dtype;
                 SCOPED_TRACE(name);
                 const auto hdr = dir.path() / (name + ".hdr");
-                const CommandResult result = run_command(
-                    python_command(dir, kSpectralWrite,
-                                   {hdr.string(), interleave, std::to_string(order), dtype}),
-                    dir);
+                const CommandResult result = run_command(python_command(
+                    dir, kSpectralWrite, {hdr.string(), interleave, std::to_string(order), dtype}));
                 ASSERT_EQ(result.exit_status, 0) << result.err;
                 const json expected = json::parse(result.out);
                 EnviReader reader(hdr);  // finds <name>.img beside <name>.hdr

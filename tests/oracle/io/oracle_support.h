@@ -1,15 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
-// Shared helpers of the ENVI oracle tests: a temporary folder per test, running an external
-// program through popen, and a small test image of any writable type written with
+// Shared helpers of the ENVI oracle tests: running an external program (through glint's
+// process runner: argv, no shell), and a small test image of any writable type written with
 // EnviWriter whose expected values are kept as JSON numbers (exact for 64-bit integers).
 #pragma once
 
 #include <gtest/gtest.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <cstdio>
-#include <cstdlib>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -18,46 +15,12 @@
 #include <vector>
 
 #include "glint/io/envi.h"
+#include "glint/process/process.h"
+#include "glint/test/temp_dir.h"
 
 namespace glint::io::oracle {
 
-/// A fresh folder per test, removed afterwards.
-class TempDir {
-public:
-    TempDir() {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        std::string name = std::string("glint-oracle-io-") + info->test_suite_name() + "-" +
-                           info->name() + "-" + std::to_string(::getpid());
-        for (char& c : name) {
-            if (c == '/') c = '_';
-        }
-        m_path = std::filesystem::temp_directory_path() / name;
-        std::filesystem::remove_all(m_path);
-        std::filesystem::create_directories(m_path);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        std::filesystem::remove_all(m_path, ec);
-    }
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-    const std::filesystem::path& path() const { return m_path; }
-
-private:
-    std::filesystem::path m_path;
-};
-
-inline std::string shell_quote(const std::string& text) {
-    std::string out = "'";
-    for (char c : text) {
-        if (c == '\'') {
-            out += "'\\''";
-        } else {
-            out += c;
-        }
-    }
-    return out + "'";
-}
+using glint::test::TempDir;
 
 struct CommandResult {
     int exit_status = -1;
@@ -70,41 +33,34 @@ inline std::string read_text(const std::filesystem::path& path) {
     return std::string((std::istreambuf_iterator<char>(stream)), std::istreambuf_iterator<char>());
 }
 
-/// Runs `command` through the shell; stderr goes to a file in `dir` and comes back in `err`.
-inline CommandResult run_command(const std::string& command, const TempDir& dir) {
-    const std::filesystem::path err_path = dir.path() / "stderr.txt";
-    CommandResult result;
-    FILE* pipe = ::popen((command + " 2>" + shell_quote(err_path.string())).c_str(), "r");
-    if (!pipe) return result;
-    char buffer[4096];
-    for (std::size_t n; (n = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;) {
-        result.out.append(buffer, n);
-    }
-    const int status = ::pclose(pipe);
-    result.exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    result.err = read_text(err_path);
-    return result;
+/// Runs `argv` (no shell) through glint's process runner, capturing stdout and stderr.
+inline CommandResult run_command(const std::vector<std::string>& argv) {
+    process::ProcessOptions options;
+    options.argv = argv;
+    options.stdout_mode = process::OutputMode::capture;
+    options.capture_limit_bytes = 64 << 20;
+    options.timeout = std::chrono::seconds(120);
+    const process::ProcessResult result = process::run_process(options);
+    return CommandResult{result.exit_code, result.stdout_text, result.stderr_text};
 }
 
 inline bool program_exists(const std::string& name) {
-    return std::system(("command -v " + shell_quote(name) + " >/dev/null 2>&1").c_str()) == 0;
+    return process::find_program(name).has_value();
 }
 
 /// Whether GLINT_ORACLE_PYTHON can import every module of `modules` ("spectral, numpy").
 inline bool python_has(const std::string& modules) {
-    return std::system((shell_quote(GLINT_ORACLE_PYTHON) + " -c " +
-                        shell_quote("import " + modules) + " >/dev/null 2>&1")
-                           .c_str()) == 0;
+    return run_command({GLINT_ORACLE_PYTHON, "-c", "import " + modules}).exit_status == 0;
 }
 
-/// Writes a Python script into `dir` and returns the command that runs it with `args`.
-inline std::string python_command(const TempDir& dir, const std::string& script,
-                                  const std::vector<std::string>& args) {
+/// Writes a Python script into `dir` and returns the argv that runs it with `args`.
+inline std::vector<std::string> python_command(const TempDir& dir, const std::string& script,
+                                               const std::vector<std::string>& args) {
     const std::filesystem::path path = dir.path() / "oracle.py";
     std::ofstream(path) << script;
-    std::string command = shell_quote(GLINT_ORACLE_PYTHON) + " " + shell_quote(path.string());
-    for (const std::string& arg : args) command += " " + shell_quote(arg);
-    return command;
+    std::vector<std::string> argv{GLINT_ORACLE_PYTHON, path.string()};
+    argv.insert(argv.end(), args.begin(), args.end());
+    return argv;
 }
 
 /// GDAL's name for a data type.

@@ -3,7 +3,6 @@
 #pragma once
 
 #include <gtest/gtest.h>
-#include <stdlib.h>
 
 #include <filesystem>
 #include <functional>
@@ -12,24 +11,14 @@
 
 #include "glint/core/context.h"
 #include "glint/io/envi.h"
+#include "glint/test/temp_dir.h"
 
 namespace glint::app_envi::testing {
 
 /// A fresh folder under the system temp folder, removed after the test.
 class TempDirTest : public ::testing::Test {
 protected:
-    void SetUp() override {
-        std::string templ =
-            (std::filesystem::temp_directory_path() / "glint-app-envi-XXXXXX").string();
-        ASSERT_NE(::mkdtemp(templ.data()), nullptr);
-        m_dir = templ;
-    }
-    void TearDown() override {
-        std::error_code ec;
-        std::filesystem::remove_all(m_dir, ec);
-    }
-
-    std::filesystem::path path(const std::string& name) const { return m_dir / name; }
+    std::filesystem::path path(const std::string& name) const { return m_temp / name; }
 
     /// Writes a BIP cube whose value at (x, y, b) is value(x, y, b).
     std::filesystem::path write_cube(
@@ -56,14 +45,14 @@ protected:
     /// Names in the folder containing ".tmp-" (temporary files that should be gone).
     std::vector<std::string> temporaries() const {
         std::vector<std::string> found;
-        for (const auto& entry : std::filesystem::directory_iterator(m_dir)) {
+        for (const auto& entry : std::filesystem::directory_iterator(m_temp.path())) {
             const std::string name = entry.path().filename().string();
             if (name.find(".tmp-") != std::string::npos) found.push_back(name);
         }
         return found;
     }
 
-    std::filesystem::path m_dir;
+    glint::test::TempDir m_temp;
     Context m_ctx;
 };
 

@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "glint/core/error.h"
-#include "test_support.h"
+#include "glint/test/temp_dir.h"
 
 namespace glint {
 namespace {

@@ -11,7 +11,7 @@
 #include <sstream>
 
 #include "glint/core/error.h"
-#include "test_support.h"
+#include "glint/test/temp_dir.h"
 
 namespace glint {
 namespace {

@@ -16,35 +16,14 @@
 
 #include "glint/core/error.h"
 #include "glint/io/envi.h"
+#include "glint/test/temp_dir.h"
 
 namespace glint::io {
 namespace {
 
 using ::testing::HasSubstr;
 
-/// A fresh folder per test, removed afterwards.
-class TempDir {
-public:
-    TempDir() {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        std::string name = std::string("glint-io-") + info->test_suite_name() + "-" + info->name() +
-                           "-" + std::to_string(::getpid());
-        for (char& c : name) {
-            if (c == '/') c = '_';
-        }
-        m_path = std::filesystem::temp_directory_path() / name;
-        std::filesystem::remove_all(m_path);
-        std::filesystem::create_directories(m_path);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        std::filesystem::remove_all(m_path, ec);
-    }
-    const std::filesystem::path& path() const { return m_path; }
-
-private:
-    std::filesystem::path m_path;
-};
+using glint::test::TempDir;
 
 void touch(const std::filesystem::path& path) { std::ofstream(path) << "x"; }
 

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Helpers shared by the core unit tests: a fresh temporary folder per test.
+// A fresh temporary folder per test, shared by every test executable (unit and oracle).
 #pragma once
 
 #include <gtest/gtest.h>
