@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // glint-envi: inspect and convert ENVI files (info, stats, convert, encode). A thin main over
 // lib/app_envi; the option wiring is in cli.cpp.
+#include <unistd.h>
+
+#include <iostream>
+
 #include "cli.h"
 #include "glint/core/runner.h"
 #include "glint/process/process.h"
@@ -14,7 +18,8 @@ int main(int argc, char** argv) {
         "Inspect and convert ENVI files: info, stats, convert (to and from images), "
         "encode (frames to video)",
         glint::kCommonBasic};
+    const glint::ToolStreams streams{std::cout, std::cerr, ::isatty(STDERR_FILENO) != 0};
     return glint::run_tool(
-        spec, argc, argv, [&](CLI::App& app) { cli.configure(app); },
+        spec, argc, argv, streams, [&](CLI::App& app) { cli.configure(app); },
         [&](glint::Context& ctx) { return cli.execute(ctx); });
 }

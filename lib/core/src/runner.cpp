@@ -3,12 +3,9 @@
 // SIGINT → cancellation, and the mapping from outcomes to exit statuses.
 #include "glint/core/runner.h"
 
-#include <unistd.h>
-
 #include <cctype>
 #include <csignal>
 #include <fstream>
-#include <iostream>
 #include <memory>
 #include <new>
 
@@ -59,8 +56,8 @@ private:
     struct sigaction m_old_term {};
 };
 
-bool stderr_wants_colour() {
-    if (::isatty(STDERR_FILENO) == 0) return false;
+bool wants_colour(bool terminal) {
+    if (!terminal) return false;
     const char* no_colour = std::getenv("NO_COLOR");
     const char* term = std::getenv("TERM");
     return (no_colour == nullptr || *no_colour == '\0') &&
@@ -122,13 +119,14 @@ void add_common_flags(CLI::App& app, CommonOptions& options, unsigned which) {
     }
 }
 
-int run_tool(const ToolSpec& spec, int argc, const char* const* argv,
+int run_tool(const ToolSpec& spec, int argc, const char* const* argv, const ToolStreams& streams,
              const std::function<void(CLI::App&)>& configure,
              const std::function<int(Context&)>& execute) {
     const std::string program = "glint-" + spec.name;
-    const bool colour = stderr_wants_colour();
+    std::ostream& err = streams.err;
+    const bool colour = wants_colour(streams.err_is_terminal);
     auto report = [&](const std::string& level, const std::string& message) {
-        std::cerr << format_diagnostic(program, level, message, colour) << '\n';
+        err << format_diagnostic(program, level, message, colour) << '\n';
     };
 
     CLI::App app{spec.description, program};
@@ -140,7 +138,7 @@ int run_tool(const ToolSpec& spec, int argc, const char* const* argv,
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         if (e.get_exit_code() == static_cast<int>(CLI::ExitCodes::Success)) {
-            app.exit(e, std::cout, std::cerr);  // --help, --help-all, --version: stdout
+            app.exit(e, streams.out, err);  // --help, --help-all, --version: stdout
             return kExitSuccess;
         }
         report("error", lowercase_first(e.what()) + " (see " + program + " --help)");
@@ -157,12 +155,12 @@ int run_tool(const ToolSpec& spec, int argc, const char* const* argv,
                                : common.verbosity >= 2 ? LogLevel::debug
                                : common.verbosity == 1 ? LogLevel::info
                                                        : LogLevel::warning;
-    const bool terminal_progress = !common.quiet && ::isatty(STDERR_FILENO) != 0;
+    const bool terminal_progress = !common.quiet && streams.err_is_terminal;
     context.log = Log(
         [&](LogLevel level, const std::string& message) {
-            if (terminal_progress) std::cerr << "\r\033[K";
+            if (terminal_progress) err << "\r\033[K";
             if (level == LogLevel::info) {
-                std::cerr << program << ": " << message << '\n';
+                err << program << ": " << message << '\n';
             } else {
                 report(log_level_name(level), message);
             }
@@ -177,9 +175,8 @@ int run_tool(const ToolSpec& spec, int argc, const char* const* argv,
             return kExitFailure;
         }
     }
-    auto printer =
-        std::make_shared<ProgressPrinter>(terminal_progress ? &std::cerr : nullptr,
-                                          progress_file.is_open() ? &progress_file : nullptr);
+    auto printer = std::make_shared<ProgressPrinter>(
+        terminal_progress ? &err : nullptr, progress_file.is_open() ? &progress_file : nullptr);
     if (terminal_progress || progress_file.is_open()) {
         context.progress = Progress([printer](const ProgressUpdate& u) { (*printer)(u); });
     }
@@ -190,7 +187,7 @@ int run_tool(const ToolSpec& spec, int argc, const char* const* argv,
         try {
             status = execute(context);
         } catch (const Error& e) {
-            if (terminal_progress) std::cerr << "\r\033[K";
+            if (terminal_progress) err << "\r\033[K";
             report("error", e.what());
             status = exit_status_for(e.category());
         } catch (const CLI::Error& e) {
@@ -205,8 +202,8 @@ int run_tool(const ToolSpec& spec, int argc, const char* const* argv,
         }
     }
     if (context.cancel.cancelled() && status != kExitSuccess) status = kExitInterrupted;
-    std::cout.flush();
-    if (!std::cout) {
+    streams.out.flush();
+    if (!streams.out) {
         report("error", "cannot write to standard output");
         return kExitFailure;
     }

@@ -30,14 +30,12 @@ Outcome run(std::vector<std::string> args, const std::function<int(Context&)>& e
     std::vector<const char*> argv;
     for (const auto& a : args) argv.push_back(a.c_str());
     std::string name;
-    ::testing::internal::CaptureStdout();
-    ::testing::internal::CaptureStderr();
+    std::ostringstream out, err;
     const int status = run_tool(
         ToolSpec{"demo", "A demonstration tool", flags}, static_cast<int>(argv.size()), argv.data(),
+        ToolStreams{out, err, false},
         [&](CLI::App& app) { app.add_option("--name", name, "A name"); }, execute);
-    Outcome outcome{status, ::testing::internal::GetCapturedStdout(),
-                    ::testing::internal::GetCapturedStderr()};
-    return outcome;
+    return Outcome{status, out.str(), err.str()};
 }
 
 int succeed(Context&) { return kExitSuccess; }
@@ -138,6 +136,32 @@ TEST(Runner, ProgressFileGetsKeyValueLines) {
     EXPECT_THAT(second, HasSubstr("label=lines done=10 total=10 percent=100.0"));
     EXPECT_THAT(second, HasSubstr("state=finished"));
     EXPECT_EQ(o.err, "");  // stderr is not a terminal here: no progress line
+}
+
+TEST(Runner, TerminalGetsAProgressLineAndColourUnlessQuiet) {
+    auto work = [](Context& c) {
+        c.progress.update("frames", 1, 2);
+        c.progress.finish("frames", 2);
+        c.log.warning("careful");
+        return 0;
+    };
+    const char* argv_loud[] = {"glint-demo"};
+    std::ostringstream out, err;
+    EXPECT_EQ(run_tool(
+                  ToolSpec{"demo", "d", kCommonBasic}, 1, argv_loud, ToolStreams{out, err, true},
+                  [](CLI::App&) {}, work),
+              0);
+    EXPECT_THAT(err.str(), HasSubstr("\r\033[Kframes  50.0% (1/2)"));
+    EXPECT_THAT(err.str(), HasSubstr("100.0% (2/2)"));
+    EXPECT_THAT(err.str(), HasSubstr("\033[1;35mwarning:\033[0m careful"));
+
+    const char* argv_quiet[] = {"glint-demo", "-q"};
+    std::ostringstream out_q, err_q;
+    EXPECT_EQ(run_tool(
+                  ToolSpec{"demo", "d", kCommonBasic}, 2, argv_quiet,
+                  ToolStreams{out_q, err_q, true}, [](CLI::App&) {}, work),
+              0);
+    EXPECT_EQ(err_q.str(), "");
 }
 
 TEST(Runner, InterruptCancelsAndExits130) {

@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdint>
 #include <functional>
+#include <ostream>
 #include <string>
 
 #include "glint/core/context.h"
@@ -49,14 +50,22 @@ struct ToolSpec {
     unsigned common_flags = kCommonBasic;
 };
 
+/// Where a tool's output goes. The library never names stdout or stderr itself: a tool's
+/// main hands them in (`{std::cout, std::cerr, isatty(STDERR_FILENO) != 0}`).
+struct ToolStreams {
+    std::ostream& out;             ///< data and reports (stdout); --help and --version
+    std::ostream& err;             ///< diagnostics, logs and the progress line (stderr)
+    bool err_is_terminal = false;  ///< redraw a progress line and colour diagnostics
+};
+
 /// glint version, e.g. "0.1.0".
 const char* version();
 
-/// Runs a tool. `configure` adds the tool's options and subcommands to the app; after a
-/// successful parse `execute` runs with the context and returns the exit status (0, or 1
-/// when some of several inputs failed). glint::Error and other exceptions thrown by
-/// `execute` are reported as one line and mapped to 1, 2 (usage) or 130 (cancelled).
-int run_tool(const ToolSpec& spec, int argc, const char* const* argv,
+/// Runs a tool, writing to `streams`. `configure` adds the tool's options and subcommands to the
+/// app; after a successful parse `execute` runs with the context and returns the exit status (0, or
+/// 1 when some of several inputs failed). glint::Error and other exceptions thrown by `execute` are
+/// reported as one line and mapped to 1, 2 (usage) or 130 (cancelled).
+int run_tool(const ToolSpec& spec, int argc, const char* const* argv, const ToolStreams& streams,
              const std::function<void(CLI::App&)>& configure,
              const std::function<int(Context&)>& execute);
 
