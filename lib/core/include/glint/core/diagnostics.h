@@ -1,0 +1,51 @@
+// SPDX-License-Identifier: Apache-2.0
+// Diagnostics: the errors and warnings found while reading an input, collected so that a
+// reader can report every problem of a file at once instead of stopping at the first.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "glint/core/error.h"
+#include "glint/core/log.h"
+
+namespace glint {
+
+/// One problem found in an input, with where it was found.
+struct Diagnostic {
+    enum class Severity { error, warning };
+    Severity severity = Severity::error;
+    ErrorContext where;
+    std::string message;
+
+    /// "file:line: element: message".
+    std::string text() const { return format_located(where, message); }
+};
+
+/// An ordered list of diagnostics. Readers add to it and go on; the caller decides when
+/// errors are fatal (throw_if_errors) and where warnings go (log_to).
+class Diagnostics {
+public:
+    void error(ErrorContext where, std::string message);
+    void warning(ErrorContext where, std::string message);
+    /// Records a glint::Error raised by a nested reader as an error diagnostic.
+    void add(const Error& error);
+
+    const std::vector<Diagnostic>& items() const { return m_items; }
+    std::size_t error_count() const { return m_errors; }
+    std::size_t warning_count() const { return m_items.size() - m_errors; }
+    bool has_errors() const { return m_errors > 0; }
+
+    /// Writes every diagnostic to `log` (errors at error level, warnings at warning level).
+    void log_to(const Log& log) const;
+    /// Throws glint::Error(input) carrying the first error (and how many more there are)
+    /// when there is any error.
+    void throw_if_errors() const;
+
+private:
+    std::vector<Diagnostic> m_items;
+    std::size_t m_errors = 0;
+};
+
+}  // namespace glint

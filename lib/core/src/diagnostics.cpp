@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: Apache-2.0
+// Diagnostics: collecting, logging and summarising the problems found in an input.
+#include "glint/core/diagnostics.h"
+
+namespace glint {
+
+void Diagnostics::error(ErrorContext where, std::string message) {
+    m_items.push_back(Diagnostic{Diagnostic::Severity::error, std::move(where), std::move(message)});
+    ++m_errors;
+}
+
+void Diagnostics::warning(ErrorContext where, std::string message) {
+    m_items.push_back(
+        Diagnostic{Diagnostic::Severity::warning, std::move(where), std::move(message)});
+}
+
+void Diagnostics::add(const Error& error) { this->error(error.context(), error.message()); }
+
+void Diagnostics::log_to(const Log& log) const {
+    for (const Diagnostic& d : m_items) {
+        if (d.severity == Diagnostic::Severity::error) {
+            log.error(d.text());
+        } else {
+            log.warning(d.text());
+        }
+    }
+}
+
+void Diagnostics::throw_if_errors() const {
+    if (m_errors == 0) return;
+    for (const Diagnostic& d : m_items) {
+        if (d.severity != Diagnostic::Severity::error) continue;
+        std::string message = d.message;
+        if (m_errors > 1) {
+            message += " (and " + std::to_string(m_errors - 1) + " more error" +
+                       (m_errors > 2 ? "s" : "") + ")";
+        }
+        throw input_error(message, d.where);
+    }
+}
+
+}  // namespace glint

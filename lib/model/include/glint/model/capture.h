@@ -1,0 +1,144 @@
+// SPDX-License-Identifier: Apache-2.0
+// CaptureMethod of a focal plane: output file, spectral response, sampling, temporal
+// integration, detector model, convergence, PSF, active area and processing tasks.
+//
+// | element / attribute | type | unit | default |
+// |---|---|---|---|
+// | capturemethod@type | simple, raw, lidar | - | simple |
+// | capturemethod@name | text | - | "" |
+// | samplestrategy@type | text (central seen) | - | central |
+// | samplestrategy/hypersamplingmultiplier | number >= 1 | - | 1 |
+// | imagefile@areaunits | cm2, m2 | - | cm2 |
+// | imagefile@fluxunits | watts, milliwatts, microwatts, photonspersecond, electronspersecond | - | watts |
+// | imagefile/basename, extension | text | - | required, img |
+// | imagefile/schedule | simulation, task, capture | - | simulation |
+// | imagefile/datatype | ENVI code 1, 2, 3, 4, 5, 12, 13, 14, 15 | - | 5 |
+// | spatialresponse | DIRSIG4 sub-pixel sampling: parsed, ignored (warning) | - | - |
+// | temporalintegration@tdi | bool | - | false |
+// | temporalintegration/time | number >= 0 (0 = instantaneous) | s | 0 |
+// | temporalintegration/samples | integer >= 1 (DIRSIG4; ignored) | - | 1 |
+// | detectormodel/quantumefficiency | number in [0, 1] | - | required |
+// | detectormodel/readnoise | number >= 0 | electrons | 0 |
+// | detectormodel/darkcurrentdensity | number >= 0 | A/m² | 0 |
+// | detectormodel/minelectrons, maxelectrons | numbers >= 0, min < max | electrons | required |
+// | detectormodel/bitdepth | integer 1–32 | bits | required |
+// | convergence/minimumsamples, maximumsamples | integers >= 1, min <= max | paths | required |
+// | convergence/threshold | number >= 0 | W/(cm² sr µm) | required |
+// | psf/width | number > 0 (Gaussian σ) | pixels | - |
+// | psf/image, psf/scale | grey image file; number > 0 (image extent) | -, pixels | - |
+// | activearea/image | 8-bit grey mask of one pixel | - | - |
+// | processing/task@schedule | collection_started, task_started, capture_started, capture_completed, task_completed, collection_completed | - | required |
+// | processing/task/message, program, argument*, removefile | text, text, text, bool | - | "", required, -, false |
+// (psf, activearea, convergence and processing are also accepted directly in focalplane.)
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "glint/model/common.h"
+#include "glint/model/spectral_response.h"
+
+namespace glint::model {
+
+enum class CaptureMethodType { simple, raw, lidar };
+enum class ImageSchedule { simulation, task, capture };
+enum class FluxUnits { watts, milliwatts, microwatts, photons_per_second, electrons_per_second };
+enum class AreaUnits { cm2, m2 };
+
+/// `<imagefile>`: the output file of a capture method or truth collection.
+struct ImageFile {
+    std::string basename;
+    std::string extension = "img";
+    ImageSchedule schedule = ImageSchedule::simulation;
+    int datatype = 5;  ///< ENVI data type code
+    AreaUnits area_units = AreaUnits::cm2;
+    FluxUnits flux_units = FluxUnits::watts;
+    ErrorContext where;
+};
+
+struct SampleStrategy {
+    std::string type = "central";
+    double hypersampling_multiplier = 1.0;
+};
+
+struct TemporalIntegration {
+    double time_s = 0.0;  ///< integration window length; 0 = instantaneous
+    int samples = 1;      ///< DIRSIG4 temporal sample count, ignored by glint (as DIRSIG5)
+    bool tdi = false;     ///< Y dimension of the array = TDI stages
+    ErrorContext where;
+};
+
+/// The internal detector model (the manual's nine steps).
+struct DetectorModel {
+    double quantum_efficiency = 1.0;
+    double read_noise_e = 0.0;
+    double dark_current_density_a_per_m2 = 0.0;
+    double min_electrons = 0.0;
+    double max_electrons = 0.0;
+    int bit_depth = 12;
+    ErrorContext where;
+};
+
+/// Per-focal-plane convergence (overrides the command line's --convergence).
+struct Convergence {
+    std::int64_t minimum_samples = 0;
+    std::int64_t maximum_samples = 0;
+    double threshold = 0.0;  ///< W/(cm² sr µm) at the reference wavelength
+    ErrorContext where;
+};
+
+/// Point spread function: a Gaussian of σ `width_px` pixels, or an image spanning `scale_px`.
+struct Psf {
+    std::optional<double> width_px;
+    FileRef image;
+    double scale_px = 0.0;
+    ErrorContext where;
+};
+
+enum class ProcessingSchedule {
+    collection_started,
+    task_started,
+    capture_started,
+    capture_completed,
+    task_completed,
+    collection_completed,
+};
+
+/// An external program run on a schedule event (`$$IMG_BASENAME$$` substituted later).
+struct ProcessingTask {
+    ProcessingSchedule schedule = ProcessingSchedule::capture_completed;
+    std::string message;
+    std::string program;
+    std::vector<std::string> arguments;
+    bool remove_file = false;
+    ErrorContext where;
+};
+
+/// The DIRSIG4 `<spatialresponse>` block: parsed so nothing is lost, never used.
+struct SpatialResponse {
+    std::string spatial_sampling;  ///< @spatialsampling
+    int x_sub_elements = 1;
+    int y_sub_elements = 1;
+    ErrorContext where;
+};
+
+/// `<capturemethod>`.
+struct CaptureMethod {
+    CaptureMethodType type = CaptureMethodType::simple;
+    std::string name;
+    SampleStrategy sample_strategy;
+    ImageFile image_file;
+    SpectralResponse spectral_response;
+    std::optional<SpatialResponse> spatial_response;
+    TemporalIntegration temporal_integration;
+    std::optional<DetectorModel> detector_model;
+    std::optional<Convergence> convergence;
+    std::optional<Psf> psf;
+    FileRef active_area_image;  ///< empty = full pixel
+    std::vector<ProcessingTask> processing;
+    ErrorContext where;
+};
+
+}  // namespace glint::model

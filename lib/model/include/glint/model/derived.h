@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: Apache-2.0
+// Quantities derived from the model that several stages (and --dump-platform) need:
+// F-number, G-number, pixel IFOV, the bandpass grid and channel responses on it.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "glint/core/spectral.h"
+#include "glint/model/instrument.h"
+#include "glint/model/spectral_response.h"
+
+namespace glint::model {
+
+/// F# = focal length / aperture diameter; none without both.
+std::optional<double> f_number(const InstrumentProperties& properties);
+/// G# = (1 + 4 F#²) / (τ π) in 1/sr (the manual's aperture term); none without an aperture.
+std::optional<double> g_number(const InstrumentProperties& properties);
+/// Instantaneous field of view of one pixel pitch, x and y, in rad (pitch / focal length).
+std::optional<std::array<double, 2>> pixel_ifov_rad(const InstrumentProperties& properties,
+                                                    const DetectorArray& array);
+/// The bandpass as a regular spectral grid in µm.
+SpectralGrid bandpass_grid(const Bandpass& bandpass);
+/// The channel's relative response sampled on `grid` (shape only: gain and bias excluded).
+/// Gaussian: peak 1 at the centre, FWHM `width_um`; tophat: 1 within ±width/2; triangle:
+/// 1 at the centre falling linearly to 0 at ±width/2; tabulated: linear interpolation, 0
+/// outside the table.
+std::vector<double> channel_response(const Channel& channel, const SpectralGrid& grid);
+/// ∫ R(λ) dλ over the grid (trapezoid), in µm.
+double channel_integral_um(const Channel& channel, const SpectralGrid& grid);
+
+}  // namespace glint::model

@@ -1,0 +1,132 @@
+// SPDX-License-Identifier: Apache-2.0
+// Instrument, its focal planes, their detector arrays, clocks and truth collections.
+//
+// | element / attribute | type | unit | default |
+// |---|---|---|---|
+// | instrument@type | generic, lidar, datarecorder | - | generic |
+// | instrument@name | text | - | "" |
+// | properties/focallength | number > 0 | mm (stored m) | required for generic |
+// | properties/aperturediameter | number > 0 | m | none (no aperture) |
+// | properties/aperturethroughput | number in (0, 1] | - | 1 |
+// | properties/focusdistance | number > 0; needs aperturediameter | m | none (infinity) |
+// | properties/distortion/k1 k2 k3 p1 p2 | numbers | focal lengths | 0 |
+// | focalplane@enabled, @name | bool, text | - | true, "" |
+// | detectorarray@spatialunits | microns, millimeters, meters (also um, mm, m) | - | microns |
+// | detectorarray/xelementcount, yelementcount | integer 1–1,000,000; product ≤ 2^31 | pixels | required |
+// | detectorarray/xelementsize, yelementsize | number > 0 | spatialunits | = spacing |
+// | detectorarray/xelementspacing, yelementspacing | number > 0, >= size | spatialunits | required |
+// | detectorarray/xarrayoffset, yarrayoffset | number | spatialunits | 0 |
+// | detectorarray/xflipaxis, yflipaxis | bool (0/1) | - | false |
+// | detectorarray/clock@type | independent, synchronous, external (see docs/formats.md) | - | required |
+// | clock@temporalunits, rate, offset | hertz; number > 0; number | Hz, s | hertz, required, 0 |
+// | truthcollection/enabled, name, imagefile, collectorlist/collector/name, materials, tags | | | |
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "glint/model/capture.h"
+#include "glint/model/common.h"
+
+namespace glint::model {
+
+enum class ClockType { independent, synchronous, external_trigger };
+
+/// What starts a focal plane's captures.
+struct Clock {
+    ClockType type = ClockType::independent;
+    std::string temporal_units = "hertz";
+    double rate_hz = 0.0;       ///< independent
+    double offset_s = 0.0;      ///< independent: time of the first tick
+    std::string master;         ///< synchronous: name of a clock in the platform's clocktable
+    std::int64_t divider = 1;   ///< synchronous: one tick every `divider` master ticks
+    std::int64_t offset_count = 0;  ///< synchronous: master ticks before the first tick
+    FileRef trigger_file;       ///< external: text file of trigger times (s after reference)
+    ErrorContext where;
+};
+
+/// A named clock of the platform's `<clocktable>` (a master for synchronous clocks).
+struct MasterClock {
+    std::string name;
+    double rate_hz = 0.0;
+    double offset_s = 0.0;
+    ErrorContext where;
+};
+
+/// `<detectorarray>`. Sizes in m.
+struct DetectorArray {
+    std::string spatial_units = "microns";  ///< as written
+    std::size_t x_count = 0;  ///< columns (ENVI samples)
+    std::size_t y_count = 0;  ///< rows (ENVI lines), or TDI stages
+    double x_size_m = 0.0;    ///< active element size
+    double y_size_m = 0.0;
+    double x_spacing_m = 0.0;  ///< pitch
+    double y_spacing_m = 0.0;
+    double x_offset_m = 0.0;   ///< array centre relative to the optical axis
+    double y_offset_m = 0.0;
+    bool x_flip = false;
+    bool y_flip = false;
+    Clock clock;
+    /// Rolling readout: time between the readout of consecutive rows; none = global shutter.
+    std::optional<double> rolling_line_time_s;
+    ErrorContext where;
+};
+
+/// One truth collector: a DIRSIG4 set name or a DIRSIG5 collector name, with the optional
+/// abundance targets.
+struct TruthCollector {
+    std::string name;
+    std::vector<std::string> materials;  ///< material ids or labels (abundance)
+    std::vector<std::string> tags;       ///< geometry tags (abundance)
+    ErrorContext where;
+};
+
+/// `<truthcollection>`: several per focal plane allowed, each to its own file.
+struct TruthCollection {
+    bool enabled = true;
+    std::string name;
+    ImageFile image_file;
+    std::vector<TruthCollector> collectors;
+    ErrorContext where;
+};
+
+/// `<focalplane>`.
+struct FocalPlane {
+    bool enabled = true;
+    std::string name;
+    CaptureMethod capture_method;
+    DetectorArray detector_array;
+    std::vector<TruthCollection> truth_collections;
+    ErrorContext where;
+};
+
+/// Five-parameter Brown lens distortion (coordinates in focal lengths).
+struct Distortion {
+    double k1 = 0, k2 = 0, k3 = 0, p1 = 0, p2 = 0;
+};
+
+/// `<properties>` of an instrument. Lengths in m (focal length converted from mm).
+struct InstrumentProperties {
+    std::optional<double> focal_length_m;
+    std::optional<double> aperture_diameter_m;
+    double aperture_throughput = 1.0;
+    std::optional<double> focus_distance_m;
+    std::optional<Distortion> distortion;
+    ErrorContext where;
+};
+
+enum class InstrumentType { generic, lidar, data_recorder };
+
+/// `<instrument>`.
+struct Instrument {
+    InstrumentType type = InstrumentType::generic;
+    std::string type_text = "generic";  ///< as written
+    std::string name;
+    InstrumentProperties properties;
+    std::vector<FocalPlane> focal_planes;
+    ErrorContext where;
+};
+
+}  // namespace glint::model
