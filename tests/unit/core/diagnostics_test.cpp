@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: Apache-2.0
+// Diagnostics: every problem kept in order, errors counted, logged at the right level and
+// summarised into one glint::Error.
+#include "glint/core/diagnostics.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+namespace glint {
+namespace {
+
+using ::testing::HasSubstr;
+
+TEST(Diagnostics, KeepsOrderAndCounts) {
+    Diagnostics d;
+    EXPECT_FALSE(d.has_errors());
+    EXPECT_NO_THROW(d.throw_if_errors());
+    d.warning(ErrorContext{"a.platform", 3, "platform/foo"}, "unknown element <foo> ignored");
+    d.error(ErrorContext{"a.platform", 7, "platform/x"}, "expected a number, got \"q\"");
+    d.add(input_error("bad date", ErrorContext{"a.tasks", 2, "tasklist/reference"}));
+    ASSERT_EQ(d.items().size(), 3u);
+    EXPECT_EQ(d.error_count(), 2u);
+    EXPECT_EQ(d.warning_count(), 1u);
+    EXPECT_EQ(d.items()[0].text(), "a.platform:3: platform/foo: unknown element <foo> ignored");
+    EXPECT_EQ(d.items()[2].text(), "a.tasks:2: tasklist/reference: bad date");
+}
+
+TEST(Diagnostics, ThrowsTheFirstErrorWithACount) {
+    Diagnostics d;
+    d.warning(ErrorContext{"a", 1, {}}, "just a warning");
+    d.error(ErrorContext{"a", 2, "x"}, "first");
+    d.error(ErrorContext{"a", 3, "y"}, "second");
+    d.error(ErrorContext{"a", 4, "z"}, "third");
+    try {
+        d.throw_if_errors();
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.category(), ErrorCategory::input);
+        EXPECT_STREQ(e.what(), "a:2: x: first (and 2 more errors)");
+    }
+}
+
+TEST(Diagnostics, LogsAtTheRightLevels) {
+    std::vector<std::string> lines;
+    Log log(
+        [&](LogLevel level, const std::string& m) {
+            lines.push_back(std::string(log_level_name(level)) + " " + m);
+        },
+        LogLevel::warning);
+    Diagnostics d;
+    d.warning(ErrorContext{"f", 1, {}}, "w");
+    d.error(ErrorContext{"f", 2, {}}, "e");
+    d.log_to(log);
+    EXPECT_EQ(lines, (std::vector<std::string>{"warning f:1: w", "error f:2: e"}));
+}
+
+}  // namespace
+}  // namespace glint
