@@ -140,7 +140,7 @@ public:
 
     // ---- value readers: this element's own text ----
     std::optional<double> own_double(Diagnostics& diagnostics,
-                                      NumberRule rule = NumberRule::any()) const;
+                                     NumberRule rule = NumberRule::any()) const;
 
 private:
     friend class XmlDocument;
@@ -152,6 +152,12 @@ private:
     std::string m_path;
     std::string m_name;
 };
+
+/// Reads a whole input file (XML or JSON) as text. Throws glint::Error (io when it cannot be
+/// opened or read or is a folder, input when it is larger than any DIRSIG input, 256 MiB),
+/// naming `display_name` (default: the path).
+std::string read_input_file(const std::filesystem::path& path,
+                            const std::string& display_name = {});
 
 /// Parses a whole string as a finite double (leading '+' allowed, surrounding blanks
 /// trimmed); nullopt otherwise.

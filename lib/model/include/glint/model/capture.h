@@ -2,6 +2,7 @@
 // CaptureMethod of a focal plane: output file, spectral response, sampling, temporal
 // integration, detector model, convergence, PSF, active area and processing tasks.
 //
+// clang-format off
 // | element / attribute | type | unit | default |
 // |---|---|---|---|
 // | capturemethod@type | simple, raw, lidar | - | simple |
@@ -10,26 +11,32 @@
 // | samplestrategy/hypersamplingmultiplier | number >= 1 | - | 1 |
 // | imagefile@areaunits | cm2, m2 | - | cm2 |
 // | imagefile@fluxunits | watts, milliwatts, microwatts, photonspersecond, electronspersecond | - | watts |
-// | imagefile/basename, extension | text | - | required, img |
+// | imagefile (simple, raw: required; lidar: optional) | | | |
+// | imagefile/basename, extension | non-empty text | - | required, img |
 // | imagefile/schedule | simulation, task, capture | - | simulation |
 // | imagefile/datatype | ENVI code 1, 2, 3, 4, 5, 12, 13, 14, 15 | - | 5 |
-// | spatialresponse | DIRSIG4 sub-pixel sampling: parsed, ignored (warning) | - | - |
-// | temporalintegration@tdi | bool | - | false |
+// | spatialresponse@spatialsampling, @spectralunits | text (DIRSIG4; parsed, ignored with a warning) | - | "" |
+// | spatialresponse@xsubelements, @ysubelements | integer >= 1 (ignored) | - | 1 |
+// | spatialresponse/entry@type, spectralpoint, xwidth, ywidth, totalweight | text, numbers; widths and weight >= 0 (ignored) | -, spectralunits, -, -, - | "", 0, 1, 1, 1 |
+// | temporalintegration@tdi | bool; true needs time > 0 and yelementcount > 1 | - | false |
 // | temporalintegration/time | number >= 0 (0 = instantaneous) | s | 0 |
-// | temporalintegration/samples | integer >= 1 (DIRSIG4; ignored) | - | 1 |
+// | temporalintegration/samples | integer >= 1 (DIRSIG4; ignored, warning when > 1) | - | 1 |
+// | detectormodel | only with capturemethod type simple | | |
 // | detectormodel/quantumefficiency | number in [0, 1] | - | required |
 // | detectormodel/readnoise | number >= 0 | electrons | 0 |
 // | detectormodel/darkcurrentdensity | number >= 0 | A/m² | 0 |
 // | detectormodel/minelectrons, maxelectrons | numbers >= 0, min < max | electrons | required |
 // | detectormodel/bitdepth | integer 1–32 | bits | required |
-// | convergence/minimumsamples, maximumsamples | integers >= 1, min <= max | paths | required |
+// | convergence/minimumsamples, maximumsamples | integers 1–10⁹, min <= max | paths | required |
 // | convergence/threshold | number >= 0 | W/(cm² sr µm) | required |
-// | psf/width | number > 0 (Gaussian σ) | pixels | - |
-// | psf/image, psf/scale | grey image file; number > 0 (image extent) | -, pixels | - |
-// | activearea/image | 8-bit grey mask of one pixel | - | - |
+// | psf/width | number > 0 (Gaussian σ); exclusive with image + scale | pixels | - |
+// | psf/image, psf/scale | grey image file (path resolved, existence checked later); number > 0 (image extent); both required together | -, pixels | - |
+// | activearea/image | 8-bit grey mask of one pixel (path resolved, existence checked later) | - | required in activearea |
 // | processing/task@schedule | collection_started, task_started, capture_started, capture_completed, task_completed, collection_completed | - | required |
-// | processing/task/message, program, argument*, removefile | text, text, text, bool | - | "", required, -, false |
-// (psf, activearea, convergence and processing are also accepted directly in focalplane.)
+// | processing/task/message, program, argument*, removefile | text, non-empty text, text without whitespace, bool | - | "", required, -, false |
+// (psf, activearea, convergence, processing and detectormodel are also accepted directly in
+// focalplane; giving one in both places is an error. docs/formats.md has the details.)
+// clang-format on
 #pragma once
 
 #include <cstdint>
@@ -116,11 +123,23 @@ struct ProcessingTask {
     ErrorContext where;
 };
 
+/// One `<entry>` of a DIRSIG4 `<spatialresponse>` (values as written, never used).
+struct SpatialResponseEntry {
+    std::string type;             ///< @type, e.g. "uniform"
+    double spectral_point = 0.0;  ///< in the block's @spectralunits
+    double x_width = 1.0;
+    double y_width = 1.0;
+    double total_weight = 1.0;
+    ErrorContext where;
+};
+
 /// The DIRSIG4 `<spatialresponse>` block: parsed so nothing is lost, never used.
 struct SpatialResponse {
     std::string spatial_sampling;  ///< @spatialsampling
+    std::string spectral_units;    ///< @spectralunits, as written
     int x_sub_elements = 1;
     int y_sub_elements = 1;
+    std::vector<SpatialResponseEntry> entries;
     ErrorContext where;
 };
 

@@ -20,12 +20,15 @@ std::optional<double> g_number(const InstrumentProperties& properties);
 /// Instantaneous field of view of one pixel pitch, x and y, in rad (pitch / focal length).
 std::optional<std::array<double, 2>> pixel_ifov_rad(const InstrumentProperties& properties,
                                                     const DetectorArray& array);
-/// The bandpass as a regular spectral grid in µm.
+/// The bandpass as a regular spectral grid in µm (throws glint::Error (input) when invalid).
 SpectralGrid bandpass_grid(const Bandpass& bandpass);
 /// The channel's relative response sampled on `grid` (shape only: gain and bias excluded).
-/// Gaussian: peak 1 at the centre, FWHM `width_um`; tophat: 1 within ±width/2; triangle:
+/// Gaussian: peak 1 at the centre, FWHM `width_um`; tophat: 1 within ±width/2, sampled as
+/// the fraction of each sample's cell (half-way to its neighbours) inside it — ½ for an edge
+/// on a sample —, so that its trapezoid integral is exactly the width within the grid; triangle:
 /// 1 at the centre falling linearly to 0 at ±width/2; tabulated: linear interpolation, 0
-/// outside the table.
+/// outside the table. Throws glint::Error (input, at the channel) for a width <= 0 or an
+/// invalid table.
 std::vector<double> channel_response(const Channel& channel, const SpectralGrid& grid);
 /// ∫ R(λ) dλ over the grid (trapezoid), in µm.
 double channel_integral_um(const Channel& channel, const SpectralGrid& grid);

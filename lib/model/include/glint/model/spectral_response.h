@@ -2,20 +2,23 @@
 // SpectralResponse of a capture method: the bandpass (the spectral grid of the radiometry),
 // the channels (relative spectral responses) and an optional colour-filter-array pattern.
 //
+// clang-format off
 // | element / attribute | type | unit | default |
 // |---|---|---|---|
 // | bandpass@spectralunits | microns, nanometers (also um, nm) | - | microns |
-// | bandpass/minimum, maximum, delta | number; min < max; delta > 0 divides max − min | spectralunits | required |
+// | bandpass/minimum, maximum, delta | numbers > 0; min < max; delta divides max − min (to 1e-6 of a step); at most 100,000 samples | spectralunits | required |
+// | channellist/channel | at least one for a simple capture | | |
 // | channellist/channel@name | text (unique within the focal plane) | - | required |
 // | channel@shape | gaussian, tabulated, tophat, triangle | - | gaussian |
 // | channel@normalize | bool | - | false |
 // | channel@gain, @bias | number | - | 1, 0 |
-// | channel/center | number inside the bandpass (gaussian, tophat, triangle) | spectralunits | required |
+// | channel/center | number inside the bandpass (gaussian, tophat, triangle); just outside but with response reaching in: warning | spectralunits | required |
 // | channel/width | number > 0: FWHM (gaussian), full width (tophat, triangle) | spectralunits | required |
-// | channel/entry/spectralpoint, value | tabulated response, increasing points, value >= 0 | spectralunits, - | ≥ 2 entries |
+// | channel/entry/spectralpoint, value | tabulated response: points > 0 strictly increasing, overlapping the bandpass; value >= 0 | spectralunits, - | ≥ 2 entries |
 // | channel/polarizer@type, dataoutput@type | text (kept; only none/total are modelled) | - | none, total |
-// | channelpattern@name | bayer (red, green, blue), truesense (pan, red, green, blue) | - | - |
-// | channelpattern/mapping@filtername, @channelname | filter of the pattern → channel name | - | all filters |
+// | channelpattern@name | bayer (red, green, blue), truesense (pan, red, green, blue); simple captures only | - | - |
+// | channelpattern/mapping@filtername, @channelname | filter of the pattern → existing channel name | - | every filter exactly once |
+// clang-format on
 #pragma once
 
 #include <cstddef>
@@ -32,8 +35,9 @@ struct Bandpass {
     double min_um = 0.0;
     double max_um = 0.0;
     double delta_um = 0.0;
-    std::size_t count = 0;       ///< (max − min) / delta + 1
-    std::string spectral_units;  ///< as written: "microns" or "nanometers"
+    std::size_t count = 0;  ///< (max − min) / delta + 1
+    /// As written, lower case: microns, micrometers, um, nanometers or nm.
+    std::string spectral_units;
     ErrorContext where;
 };
 
@@ -46,8 +50,8 @@ struct Channel {
     bool normalize = false;
     double gain = 1.0;
     double bias = 0.0;
-    double center_um = 0.0;                ///< gaussian, tophat, triangle
-    double width_um = 0.0;                 ///< FWHM (gaussian) or full width
+    double center_um = 0.0;                   ///< gaussian, tophat, triangle
+    double width_um = 0.0;                    ///< FWHM (gaussian) or full width
     std::vector<double> table_wavelength_um;  ///< tabulated: increasing
     std::vector<double> table_value;          ///< tabulated: response at each point
     std::string polarizer = "none";

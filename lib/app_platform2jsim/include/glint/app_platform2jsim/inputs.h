@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: Apache-2.0
+// Loading a simulation and every file it references, collecting every problem: the shared
+// first stage of all glint-platform2jsim modes. `.platform` and `.tasks` files are read
+// with their readers; motion, scene and atmosphere files (and the files a platform names:
+// PSF and active-area images, trigger files, jitter PSD tables) are checked for existence
+// only until their readers exist. A file referenced several times is read once.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <map>
+#include <set>
+#include <vector>
+
+#include "glint/core/diagnostics.h"
+#include "glint/legacy/read_options.h"
+#include "glint/model/platform.h"
+#include "glint/model/simulation.h"
+#include "glint/model/tasks.h"
+
+namespace glint::app_platform2jsim {
+
+/// Everything loaded, and every problem found.
+struct LoadedInputs {
+    std::vector<model::Simulation> simulations;
+    /// Platforms and task lists that were read, by resolved path.
+    std::map<std::filesystem::path, model::Platform> platforms;
+    std::map<std::filesystem::path, model::TaskList> task_lists;
+    /// Every distinct file read or checked (the count in the check summary).
+    std::set<std::filesystem::path> files;
+    Diagnostics diagnostics;
+
+    /// The platform of a BasicPlatform entry, if it was read.
+    const model::Platform* platform_of(const model::BasicPlatformInputs& inputs) const;
+};
+
+/// How far load_references goes.
+enum class LoadDepth {
+    platforms,   ///< the platforms only, not the files they name (what --dump-platform needs)
+    everything,  ///< platforms, task lists and the existence of every other file
+};
+
+/// Reads a `.sim` or `.jsim` into inputs.simulations (appended).
+void load_simulation_file(const std::filesystem::path& file, LoadedInputs& inputs,
+                          const legacy::ReadOptions& options);
+
+/// Reads or checks the files referenced by one BasicPlatform entry.
+void load_basic_platform(const model::BasicPlatformInputs& entry, LoadedInputs& inputs,
+                         const legacy::ReadOptions& options, LoadDepth depth);
+
+/// Reads or checks the files referenced by every simulation in inputs (scenes, BasicPlatform
+/// and BasicAtmosphere entries; other plugins are not looked into), and reports
+/// BasicPlatform entries whose output names clash.
+void load_references(LoadedInputs& inputs, const legacy::ReadOptions& options, LoadDepth depth);
+
+/// Reads a `.platform` (once) and, with `check_references`, checks that the files it names
+/// exist. Returns the platform as read (partial when it has errors: see inputs.diagnostics).
+const model::Platform* load_platform_file(const std::filesystem::path& file, LoadedInputs& inputs,
+                                          const legacy::ReadOptions& options,
+                                          bool check_references = true);
+
+/// What --check does with one file: by extension, `.platform` or `.tasks` alone, anything
+/// else as a simulation with load_references(everything).
+void check_file(const std::filesystem::path& file, LoadedInputs& inputs,
+                const legacy::ReadOptions& options);
+
+/// Warnings for BasicPlatform entries of `simulation` that share output folder and prefix
+/// (their outputs may overwrite each other).
+void check_output_names(const model::Simulation& simulation, Diagnostics& diagnostics);
+
+/// The output prefix and folder of a BasicPlatform entry as compared for clashes.
+std::string describe_output_name(const model::BasicPlatformInputs& entry);
+
+/// "2 errors, 3 warnings in 4 files" (singular where 1).
+std::string summary_text(std::size_t errors, std::size_t warnings, std::size_t files);
+
+}  // namespace glint::app_platform2jsim

@@ -1,0 +1,231 @@
+// SPDX-License-Identifier: Apache-2.0
+// Loading a simulation and the files it references into LoadedInputs, with every problem
+// collected in its diagnostics: the platform and tasks readers, existence checks for the
+// files that have no reader yet, and the output-name clash check.
+#include "glint/app_platform2jsim/inputs.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include "glint/legacy/readers.h"
+
+namespace glint::app_platform2jsim {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path key_of(const fs::path& file) {
+    std::error_code ec;
+    fs::path absolute = fs::absolute(file, ec);
+    return (ec ? file : absolute).lexically_normal();
+}
+
+bool same_place(const ErrorContext& a, const ErrorContext& b) {
+    return a.file == b.file && a.line == b.line && a.element == b.element;
+}
+
+/// Whether an error was already reported at `where` (a reader that checks existence itself).
+bool error_reported_at(const Diagnostics& diagnostics, const ErrorContext& where) {
+    return std::any_of(
+        diagnostics.items().begin(), diagnostics.items().end(), [&](const Diagnostic& d) {
+            return d.severity == Diagnostic::Severity::error && same_place(d.where, where);
+        });
+}
+
+/// Counts the file and checks that it exists and is not a folder; reports `role` (e.g.
+/// "motion") otherwise, unless an error was already reported where it is named.
+bool check_exists(const model::FileRef& ref, const std::string& role, LoadedInputs& inputs) {
+    if (ref.empty() || ref.resolved.empty()) return false;  // the reader has reported it
+    inputs.files.insert(key_of(ref.resolved));
+    std::error_code ec;
+    const fs::file_status status = fs::status(ref.resolved, ec);
+    std::string problem;
+    if (!fs::exists(status)) {
+        problem = role + " file does not exist: " + ref.resolved.string();
+        if (legacy::is_windows_absolute(ref.text)) problem += " (a Windows path)";
+    } else if (fs::is_directory(status)) {
+        problem = role + " path is a folder, expected a file: " + ref.resolved.string();
+    } else {
+        return true;
+    }
+    if (!error_reported_at(inputs.diagnostics, ref.where)) {
+        inputs.diagnostics.error(ref.where, problem);
+    }
+    return false;
+}
+
+void check_platform_references(const model::Platform& platform, LoadedInputs& inputs);
+
+void check_mount_references(const model::Mount& mount, LoadedInputs& inputs);
+
+void check_attachment_references(const model::Attachment& attachment, LoadedInputs& inputs) {
+    for (const model::Mount& mount : attachment.mounts) check_mount_references(mount, inputs);
+}
+
+void check_mount_references(const model::Mount& mount, LoadedInputs& inputs) {
+    for (const model::JitterAxis& axis : mount.deviates.axes) {
+        if (!axis.psd_file.empty()) check_exists(axis.psd_file, "jitter PSD", inputs);
+    }
+    for (const model::Attachment& a : mount.attachments) check_attachment_references(a, inputs);
+}
+
+/// The files a platform names: mount jitter PSD tables, PSF and active-area images,
+/// external trigger files.
+void check_platform_references(const model::Platform& platform, LoadedInputs& inputs) {
+    for (const model::Attachment& a : platform.attachments) check_attachment_references(a, inputs);
+    for (const model::InstrumentPath& path : model::list_instruments(platform)) {
+        for (const model::FocalPlane& fp : path.instrument->focal_planes) {
+            const model::CaptureMethod& capture = fp.capture_method;
+            if (capture.psf && !capture.psf->image.empty()) {
+                check_exists(capture.psf->image, "PSF image", inputs);
+            }
+            if (!capture.active_area_image.empty()) {
+                check_exists(capture.active_area_image, "active area image", inputs);
+            }
+            if (!fp.detector_array.clock.trigger_file.empty()) {
+                check_exists(fp.detector_array.clock.trigger_file, "trigger", inputs);
+            }
+        }
+    }
+}
+
+const model::Platform* load_platform_ref(const model::FileRef& ref, LoadedInputs& inputs,
+                                         const legacy::ReadOptions& options, LoadDepth depth) {
+    if (!check_exists(ref, "platform", inputs)) return nullptr;
+    return load_platform_file(ref.resolved, inputs, options, depth == LoadDepth::everything);
+}
+
+void load_tasks_ref(const model::FileRef& ref, LoadedInputs& inputs,
+                    const legacy::ReadOptions& options) {
+    if (!check_exists(ref, "tasks", inputs)) return;
+    const fs::path key = key_of(ref.resolved);
+    if (inputs.task_lists.count(key) > 0) return;
+    inputs.task_lists.emplace(key, legacy::read_tasks(ref.resolved, options, inputs.diagnostics));
+}
+
+void load_one_simulation(std::size_t index, LoadedInputs& inputs,
+                         const legacy::ReadOptions& options, LoadDepth depth) {
+    // Copy what is needed: loading may not touch inputs.simulations, but keep it simple.
+    const model::Simulation simulation = inputs.simulations[index];
+    if (depth == LoadDepth::everything) {
+        for (const model::SceneEntry& scene : simulation.scenes) {
+            check_exists(scene.file, "scene", inputs);
+        }
+    }
+    for (const model::Plugin& plugin : simulation.plugins) {
+        if (plugin.basic_platform) {
+            load_basic_platform(*plugin.basic_platform, inputs, options, depth);
+        } else if (plugin.basic_atmosphere && depth == LoadDepth::everything) {
+            check_exists(plugin.basic_atmosphere->atmosphere_file, "atmosphere", inputs);
+        }
+    }
+    if (depth == LoadDepth::everything) check_output_names(simulation, inputs.diagnostics);
+}
+
+std::string lowercase(std::string text) {
+    for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return text;
+}
+
+std::string plural(std::size_t count, const char* noun) {
+    return std::to_string(count) + " " + noun + (count == 1 ? "" : "s");
+}
+
+}  // namespace
+
+const model::Platform* LoadedInputs::platform_of(const model::BasicPlatformInputs& inputs) const {
+    if (inputs.platform_file.resolved.empty()) return nullptr;
+    const auto it = platforms.find(key_of(inputs.platform_file.resolved));
+    return it == platforms.end() ? nullptr : &it->second;
+}
+
+void load_simulation_file(const fs::path& file, LoadedInputs& inputs,
+                          const legacy::ReadOptions& options) {
+    inputs.files.insert(key_of(file));
+    std::vector<model::Simulation> read =
+        legacy::read_simulation(file, options, inputs.diagnostics);
+    for (model::Simulation& simulation : read) inputs.simulations.push_back(std::move(simulation));
+}
+
+void load_basic_platform(const model::BasicPlatformInputs& entry, LoadedInputs& inputs,
+                         const legacy::ReadOptions& options, LoadDepth depth) {
+    load_platform_ref(entry.platform_file, inputs, options, depth);
+    if (depth == LoadDepth::platforms) return;
+    check_exists(entry.motion_file, "motion", inputs);
+    load_tasks_ref(entry.tasks_file, inputs, options);
+}
+
+void load_references(LoadedInputs& inputs, const legacy::ReadOptions& options, LoadDepth depth) {
+    for (std::size_t i = 0; i < inputs.simulations.size(); ++i) {
+        load_one_simulation(i, inputs, options, depth);
+    }
+}
+
+const model::Platform* load_platform_file(const fs::path& file, LoadedInputs& inputs,
+                                          const legacy::ReadOptions& options,
+                                          bool check_references) {
+    const fs::path key = key_of(file);
+    inputs.files.insert(key);
+    if (const auto it = inputs.platforms.find(key); it != inputs.platforms.end()) {
+        return &it->second;
+    }
+    model::Platform platform = legacy::read_platform(file, options, inputs.diagnostics);
+    const auto [it, inserted] = inputs.platforms.emplace(key, std::move(platform));
+    if (check_references) check_platform_references(it->second, inputs);
+    return &it->second;
+}
+
+void check_file(const fs::path& file, LoadedInputs& inputs, const legacy::ReadOptions& options) {
+    const std::string extension = lowercase(file.extension().string());
+    if (extension == ".platform") {
+        load_platform_file(file, inputs, options);
+        return;
+    }
+    if (extension == ".tasks") {
+        const fs::path key = key_of(file);
+        inputs.files.insert(key);
+        if (inputs.task_lists.count(key) == 0) {
+            inputs.task_lists.emplace(key, legacy::read_tasks(file, options, inputs.diagnostics));
+        }
+        return;
+    }
+    const std::size_t first = inputs.simulations.size();
+    load_simulation_file(file, inputs, options);
+    for (std::size_t i = first; i < inputs.simulations.size(); ++i) {
+        load_one_simulation(i, inputs, options, LoadDepth::everything);
+    }
+}
+
+std::string describe_output_name(const model::BasicPlatformInputs& entry) {
+    return "output_folder '" + entry.output_folder.value_or("") + "' and output_prefix '" +
+           entry.output_prefix.value_or("") + "'";
+}
+
+void check_output_names(const model::Simulation& simulation, Diagnostics& diagnostics) {
+    const std::vector<std::size_t> indices = simulation.basic_platform_indices();
+    for (std::size_t j = 0; j < indices.size(); ++j) {
+        const model::Plugin& later = simulation.plugins[indices[j]];
+        for (std::size_t i = 0; i < j; ++i) {
+            const model::Plugin& earlier = simulation.plugins[indices[i]];
+            const model::BasicPlatformInputs& a = *earlier.basic_platform;
+            const model::BasicPlatformInputs& b = *later.basic_platform;
+            if (a.output_folder.value_or("") != b.output_folder.value_or("") ||
+                a.output_prefix.value_or("") != b.output_prefix.value_or("")) {
+                continue;
+            }
+            diagnostics.warning(later.where, "plugin_list[" + std::to_string(indices[j]) +
+                                                 "] (BasicPlatform) has the same " +
+                                                 describe_output_name(b) + " as plugin_list[" +
+                                                 std::to_string(indices[i]) +
+                                                 "]: their output files may overwrite each other");
+            break;
+        }
+    }
+}
+
+std::string summary_text(std::size_t errors, std::size_t warnings, std::size_t files) {
+    return plural(errors, "error") + ", " + plural(warnings, "warning") + " in " +
+           plural(files, "file");
+}
+
+}  // namespace glint::app_platform2jsim

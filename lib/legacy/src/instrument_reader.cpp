@@ -1,0 +1,236 @@
+// SPDX-License-Identifier: Apache-2.0
+// Instruments of a `.platform`: type and optical properties (focal length mm → m, aperture,
+// throughput, focus distance, Brown distortion), focal planes (capture method via
+// capture_reader.cpp, detector array, capture extras) and truth collections. Elements that
+// real files carry but glint does not model yet are warned about, never fatal.
+#include <algorithm>
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "platform_tree.h"
+
+namespace glint::legacy::detail {
+
+namespace {
+
+/// Lower case with '_', '-' and blanks removed ("Data_Recorder" → "datarecorder").
+std::string squeezed(std::string_view text) {
+    std::string out;
+    for (char c : lower_trimmed(text)) {
+        if (c != '_' && c != '-' && c != ' ') out += c;
+    }
+    return out;
+}
+
+/// `<properties>`; the focal length is required of a generic instrument (`known_type`: the
+/// instrument's type was readable, so its requirements apply).
+model::InstrumentProperties read_properties(const io::XmlNode& node, model::InstrumentType type,
+                                            bool known_type, Diagnostics& diagnostics) {
+    model::InstrumentProperties properties;
+    properties.where = node.where();
+    if (const std::optional<std::string> units = node.attribute("spatialunits")) {
+        const std::string value = lower_trimmed(*units);
+        if (value != "millimeters" && value != "mm") {
+            diagnostics.warning(node.where_attribute("spatialunits"),
+                                "spatialunits=\"" + *units +
+                                    "\" ignored: focallength is read in mm, aperturediameter and "
+                                    "focusdistance in m");
+        }
+    }
+    if (const auto focal =
+            node.optional_double("focallength", diagnostics, io::NumberRule::positive())) {
+        properties.focal_length_m = *focal * 1e-3;
+    } else if (!node.child("focallength") && known_type && type == model::InstrumentType::generic) {
+        diagnostics.error(node.where(),
+                          "missing required element <focallength> (a generic instrument needs "
+                          "a focal length in mm)");
+    }
+    properties.aperture_diameter_m =
+        node.optional_double("aperturediameter", diagnostics, io::NumberRule::positive());
+    properties.aperture_throughput =
+        node.optional_double("aperturethroughput", diagnostics, {0.0, 1.0, true, false})
+            .value_or(1.0);
+    properties.focus_distance_m =
+        node.optional_double("focusdistance", diagnostics, io::NumberRule::positive());
+    if (node.child("focusdistance") && !node.child("aperturediameter")) {
+        diagnostics.error(node.child("focusdistance")->where(),
+                          "<focusdistance> given without <aperturediameter>, expected an "
+                          "aperture (a finite focus needs one to sample)");
+    }
+    if (const std::optional<io::XmlNode> distortion = node.child("distortion")) {
+        model::Distortion d;
+        d.k1 = distortion->optional_double("k1", diagnostics).value_or(0.0);
+        d.k2 = distortion->optional_double("k2", diagnostics).value_or(0.0);
+        d.k3 = distortion->optional_double("k3", diagnostics).value_or(0.0);
+        d.p1 = distortion->optional_double("p1", diagnostics).value_or(0.0);
+        d.p2 = distortion->optional_double("p2", diagnostics).value_or(0.0);
+        distortion->warn_unknown_children({"k1", "k2", "k3", "p1", "p2"}, diagnostics);
+        properties.distortion = d;
+    }
+    static constexpr std::array<std::string_view, 6> kNotUsed = {
+        "magnification",      "telecentricity", "receiverradius",
+        "receiverthroughput", "signalgate",     "dynamicgateinfo"};
+    for (const io::XmlNode& child : node.children()) {
+        if (std::find(kNotUsed.begin(), kNotUsed.end(), child.name()) != kNotUsed.end()) {
+            warn_not_used(child, diagnostics);
+        }
+    }
+    node.warn_unknown_children(
+        {"focallength", "aperturediameter", "aperturethroughput", "focusdistance", "distortion",
+         "magnification", "telecentricity", "receiverradius", "receiverthroughput", "signalgate",
+         "dynamicgateinfo"},
+        diagnostics);
+    return properties;
+}
+
+model::TruthCollector read_collector(const io::XmlNode& node, Diagnostics& diagnostics) {
+    model::TruthCollector collector;
+    collector.where = node.where();
+    collector.name = node.required_text("name", diagnostics);
+    const std::optional<std::string> materials = node.optional_text("materials");
+    const std::optional<std::string> tags = node.optional_text("tags");
+    if (materials) collector.materials = io::split_list(*materials);
+    if (tags) collector.tags = io::split_list(*tags);
+    const bool abundance = lower_trimmed(collector.name) == "abundance";
+    if (materials && tags) {
+        diagnostics.error(node.child("tags")->where(),
+                          "both <materials> and <tags> given, expected one of the two");
+    }
+    if (abundance && collector.materials.empty() && collector.tags.empty()) {
+        diagnostics.error(node.where(),
+                          "the Abundance collector needs <materials> (comma-separated material "
+                          "ids) or <tags> (comma-separated geometry tags)");
+    }
+    if (!abundance && !collector.name.empty()) {
+        for (std::string_view name : {"materials", "tags"}) {
+            if (const auto child = node.child(name)) {
+                diagnostics.warning(child->where(), "<" + std::string(name) +
+                                                        "> ignored: only the Abundance "
+                                                        "collector uses it");
+            }
+        }
+    }
+    node.warn_unknown_children({"name", "materials", "tags"}, diagnostics);
+    return collector;
+}
+
+model::TruthCollection read_truth_collection(const io::XmlNode& node, Diagnostics& diagnostics) {
+    model::TruthCollection truth;
+    truth.where = node.where();
+    truth.image_file.where = node.where();
+    if (node.children().empty()) {
+        // Read as disabled: an empty element names no file and no collector.
+        truth.enabled = false;
+        diagnostics.warning(node.where(), "empty <truthcollection>: nothing to collect");
+        return truth;
+    }
+    truth.enabled = node.optional_bool("enabled", diagnostics).value_or(true);
+    truth.name = node.optional_text("name").value_or("");
+    if (const std::optional<io::XmlNode> image = node.child("imagefile")) {
+        truth.image_file = read_image_file(*image, false, diagnostics);
+    } else if (truth.enabled) {
+        diagnostics.error(node.where(), "missing required element <imagefile>");
+    }
+    if (const std::optional<io::XmlNode> list = node.child("collectorlist")) {
+        for (const io::XmlNode& collector : list->children("collector")) {
+            truth.collectors.push_back(read_collector(collector, diagnostics));
+        }
+        list->warn_unknown_children({"collector"}, diagnostics);
+    }
+    if (truth.enabled && truth.collectors.empty()) {
+        diagnostics.warning(node.where(),
+                            "truth collection has no <collector>: nothing to collect");
+    }
+    node.warn_unknown_children({"enabled", "name", "imagefile", "collectorlist"}, diagnostics);
+    return truth;
+}
+
+model::FocalPlane read_focal_plane(const io::XmlNode& node, const ReadContext& context,
+                                   Diagnostics& diagnostics) {
+    model::FocalPlane plane;
+    plane.where = node.where();
+    plane.enabled = node.attribute_bool("enabled", diagnostics).value_or(true);
+    plane.name = node.attribute("name").value_or("");
+    const std::optional<io::XmlNode> capture = node.child("capturemethod");
+    if (capture) {
+        plane.capture_method = read_capture_method(*capture, context, diagnostics);
+    } else {
+        diagnostics.error(node.where(), "missing required element <capturemethod>");
+        plane.capture_method.where = node.where();
+    }
+    read_focal_plane_extras(node, plane.capture_method, context, diagnostics);
+    const std::optional<io::XmlNode> array = node.child("detectorarray");
+    if (array) {
+        plane.detector_array = read_detector_array(*array, context, diagnostics);
+    } else {
+        diagnostics.error(node.where(), "missing required element <detectorarray>");
+        plane.detector_array.where = node.where();
+    }
+    for (const io::XmlNode& truth : node.children("truthcollection")) {
+        plane.truth_collections.push_back(read_truth_collection(truth, diagnostics));
+    }
+    node.warn_unknown_children({"capturemethod", "detectorarray", "truthcollection", "psf",
+                                "activearea", "convergence", "processing", "detectormodel"},
+                               diagnostics);
+    if (capture && array) check_focal_plane(plane, diagnostics);
+    return plane;
+}
+
+}  // namespace
+
+model::Instrument read_instrument(const io::XmlNode& node, const ReadContext& context,
+                                  Diagnostics& diagnostics) {
+    model::Instrument instrument;
+    instrument.where = node.where();
+    instrument.name = node.attribute("name").value_or("");
+    bool known_type = true;
+    if (const std::optional<std::string> raw = node.attribute("type")) {
+        instrument.type_text = *raw;
+        const std::string type = squeezed(*raw);
+        if (type == "generic") {
+            instrument.type = model::InstrumentType::generic;
+        } else if (type == "lidar") {
+            instrument.type = model::InstrumentType::lidar;
+        } else if (type == "datarecorder") {
+            instrument.type = model::InstrumentType::data_recorder;
+        } else {
+            known_type = false;
+            diagnostics.error(node.where_attribute("type"),
+                              "unknown instrument type \"" + *raw +
+                                  "\", expected generic, lidar or datarecorder");
+        }
+    }
+    if (const std::optional<io::XmlNode> properties = node.child("properties")) {
+        instrument.properties =
+            read_properties(*properties, instrument.type, known_type, diagnostics);
+    } else {
+        instrument.properties.where = node.where();
+        if (known_type && instrument.type == model::InstrumentType::generic) {
+            diagnostics.error(node.where(),
+                              "missing required element <properties> (a generic instrument "
+                              "needs a focal length in mm)");
+        }
+    }
+    for (const io::XmlNode& plane : node.children("focalplane")) {
+        instrument.focal_planes.push_back(read_focal_plane(plane, context, diagnostics));
+    }
+    static constexpr std::array<std::string_view, 8> kNotUsed = {
+        "frame", "options", "clock", "datetime", "source", "transmitter", "receiver", "output"};
+    for (const io::XmlNode& child : node.children()) {
+        if (std::find(kNotUsed.begin(), kNotUsed.end(), child.name()) != kNotUsed.end()) {
+            warn_not_used(child, diagnostics);
+        }
+    }
+    node.warn_unknown_children({"properties", "focalplane", "frame", "options", "clock", "datetime",
+                                "source", "transmitter", "receiver", "output"},
+                               diagnostics);
+    if (known_type && instrument.focal_planes.empty() &&
+        instrument.type != model::InstrumentType::data_recorder) {
+        diagnostics.warning(node.where(), "instrument has no <focalplane>: it captures nothing");
+    }
+    return instrument;
+}
+
+}  // namespace glint::legacy::detail
