@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # The default example that `make demo` runs. Until glint-render exists it exercises the
-# richest pipeline that works: a generated three-band scene becomes an ENVI cube that is
+# richest pipeline that works: the DIRSIG4 simulation in examples/demo/sim/ is converted to
+# a DIRSIG5 .jsim, checked, and its camera dumped as normalized JSON; a generated three-band scene becomes an ENVI cube that is
 # inspected, measured and previewed; then a short "capture per file" sequence of a moving
 # scene is written as ENVI frames named as DIRSIG's capture schedule names them, each frame
 # is converted to PNG with the image_tool spellings of the BasicPlatform manual's
@@ -12,6 +13,8 @@ set -euo pipefail
 bin=$(cd "${1:?usage: run.sh BIN_DIR OUT_DIR}" && pwd)
 out=${2:?usage: run.sh BIN_DIR OUT_DIR}
 envi="$bin/glint-envi"
+p2j="$bin/glint-platform2jsim"
+here=$(cd "$(dirname "$0")" && pwd)
 frames=24
 
 step() { printf '\n== %s\n' "$*" >&2; }
@@ -26,6 +29,15 @@ scene_pattern() {  # $1: checker offset in pixels; $2: output
              --pattern "checker:width=20:height=20:color1=0,0,0:color2=0.15,0.15,0.15:xoffset=$1" 160x120 3 \
              --add -d float -o "$2"
 }
+
+step "0. the DIRSIG4 simulation examples/demo/sim/demo.sim becomes a DIRSIG5 .jsim"
+run "$p2j" "$here/sim/demo.sim" -o "$out/demo.jsim"
+run "$p2j" --check "$out/demo.jsim"
+run "$p2j" --dump-platform "$here/sim/demo.platform" -o "$out/demo.platform.json"
+printf 'camera: F# %s, G# %s 1/sr, bandpass samples %s (from demo.platform.json)\n' \
+    "$(grep -m1 '"f_number"' "$out/demo.platform.json" | tr -dc '0-9.')" \
+    "$(grep -m1 '"g_number_per_sr"' "$out/demo.platform.json" | tr -dc '0-9.')" \
+    "$(grep -m1 '"count"' "$out/demo.platform.json" | tr -dc '0-9')" >&2
 
 step "1. a generated scene becomes an ENVI cube (BIP float32, band names R, G, B)"
 scene_pattern 0 "$out/scene.exr"
@@ -59,6 +71,8 @@ run "$envi" encode --framerate 12 --output "$out/demo.mp4" "$out/frames/demo-t00
 cat >&2 <<MSG
 
 glint demo finished. Outputs in $out/:
+  demo.jsim                    examples/demo/sim/demo.sim as a DIRSIG5 .jsim
+  demo.platform.json           the camera as glint understood it (SI units, F#, G#, IFOV)
   scene.img, scene.img.hdr     ENVI cube (160 x 120 x 3, float32, BIP)
   scene.info.txt/.json         glint-envi info
   scene.stats.json             per-band min/max/mean/std
