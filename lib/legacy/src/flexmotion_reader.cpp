@@ -3,7 +3,7 @@
 // the location engines (waypoints, straight, fixed, sgp4), the orientation engines
 // (velocity, lookat, euler, quaternions, spin) and the platform jitter. The XML glint
 // defines where DIRSIG's is unknown (fixed, lookat targets, euler/quaternion tables, spin)
-// is listed in glint/model/motion.h and docs/motion-draft-trajectories.md.
+// is listed in glint/model/motion.h and docs/motion.md ("Platform motion files and trajectories").
 #include <algorithm>
 #include <array>
 #include <cmath>

@@ -76,7 +76,7 @@ void check_options(const JitterSynthesisOptions& o) {
 }
 
 /// Sample count N and rate fs (Hz) for a PSD over a span: see "Sampling" in
-/// docs/motion-draft-jitter.md.
+/// docs/motion.md ("Jitter").
 struct Grid {
     std::size_t count = 0;
     double rate_hz = 0.0;

@@ -237,7 +237,7 @@ void check_welch(const WelchCase& c) {
         const double expected = psd_integral(c.psd, a, b);
         const double measured = band_integral(estimate, fs, length, a, b);
         EXPECT_NEAR(measured / expected, 1.0, 0.10) << "band " << a << "–" << b << " Hz";
-        // The accuracy figure of docs/motion-draft-jitter.md.
+        // The accuracy figure of docs/motion.md ("Jitter").
         std::printf("[ welch    ] %-10s %5.1f–%4.1f Hz: measured/input = %.4f\n", c.name, a, b,
                     measured / expected);
     }

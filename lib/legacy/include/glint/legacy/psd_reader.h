@@ -3,7 +3,7 @@
 // `psdfile` of `<rotationdeviates>` axes and of platform jitter) and the validation shared
 // with inline tables (FlexMotion `<psd>` entries). The synthesis lives in glint/motion/jitter.h.
 //
-// File format (glint's definition, docs/motion-draft-jitter.md):
+// File format (glint's definition, docs/motion.md ("Jitter")):
 //
 // | item | rule |
 // |---|---|

@@ -3,8 +3,8 @@
 // timed positions and Euler attitudes) or FlexMotion (`.motion`, one location engine and one
 // orientation engine), each with optional six-degree-of-freedom platform jitter. Plain data
 // in SI units (m, s, rad; geodetic latitude/longitude in degrees, `_deg`); glint::motion
-// turns it into a trajectory (glint/motion/trajectory.h). docs/motion-draft-trajectories.md
-// has the formulas; the XML read is (GenericMotion, DIRSIG's GUI layout):
+// turns it into a trajectory (glint/motion/trajectory.h). docs/motion.md ("Platform motion files
+// and trajectories") has the formulas; the XML read is (GenericMotion, DIRSIG's GUI layout):
 //
 // clang-format off
 // | element / attribute | type | unit | default |

@@ -4,7 +4,7 @@
 // correlated series synthesised from a one-sided PSD with an inverse FFT — and the samplers
 // bundle the six of platform jitter (model::PlatformJitter) and the three of mount jitter
 // (model::RotationDeviates). Everything is keyed by (seed, stream ids), so the same inputs give
-// the same values on any thread. docs/motion-draft-jitter.md has the formulas.
+// the same values on any thread. docs/motion.md ("Jitter") has the formulas.
 //
 // Parameters read from the model (units as the model stores them):
 //
@@ -50,7 +50,7 @@ struct JitterModel {
     ErrorContext where;                    ///< where the jitter was specified, for errors
 };
 
-/// How a PSD series is sampled (see docs/motion-draft-jitter.md, "Sampling").
+/// How a PSD series is sampled (see docs/motion.md ("Jitter"), "Sampling").
 struct JitterSynthesisOptions {
     double oversampling = 10.0;          ///< preferred sample rate / highest PSD frequency
     double min_oversampling = 2.5;       ///< the least accepted when the span needs more samples

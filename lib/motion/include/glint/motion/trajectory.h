@@ -4,7 +4,8 @@
 // (glint/model/motion.h). Conventions (docs/motion.md): positions in scene ENU metres; the
 // orientation rotates vehicle vectors (X right wing, Y forward, Z up) into scene ENU; times
 // are seconds after the tasks reference time. Jitter is not applied here (glint/motion/
-// jitter.h adds it). docs/motion-draft-trajectories.md has every engine's formula.
+// jitter.h adds it). docs/motion.md ("Platform motion files and trajectories") has every engine's
+// formula.
 //
 // Times outside the span of the data (tables of entries, waypoints, angles) are clamped to
 // its nearest end; the first clamp of a trajectory logs one warning, later ones are silent.
