@@ -39,6 +39,9 @@ printf 'camera: F# %s, G# %s 1/sr, bandpass samples %s (from demo.platform.json)
     "$(grep -m1 '"g_number_per_sr"' "$out/demo.platform.json" | tr -dc '0-9.')" \
     "$(grep -m1 '"count"' "$out/demo.platform.json" | tr -dc '0-9')" >&2
 
+step "0b. where the camera is: poses from the .ppd through the mount chain (pose_dump harness)"
+run "$bin/../tests/pose_dump" --poses "$out/demo.jsim" --from 0 --to 2 --step 0.5 | tee "$out/demo.poses.csv" >&2
+
 step "1. a generated scene becomes an ENVI cube (BIP float32, band names R, G, B)"
 scene_pattern 0 "$out/scene.exr"
 run "$envi" convert "$out/scene.exr" "$out/scene.img"
@@ -73,6 +76,7 @@ cat >&2 <<MSG
 glint demo finished. Outputs in $out/:
   demo.jsim                    examples/demo/sim/demo.sim as a DIRSIG5 .jsim
   demo.platform.json           the camera as glint understood it (SI units, F#, G#, IFOV)
+  demo.poses.csv               camera position, orientation and boresight every 0.5 s
   scene.img, scene.img.hdr     ENVI cube (160 x 120 x 3, float32, BIP)
   scene.info.txt/.json         glint-envi info
   scene.stats.json             per-band min/max/mean/std
