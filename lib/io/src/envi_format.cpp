@@ -8,6 +8,7 @@
 #include <system_error>
 
 #include "envi_text.h"
+#include "glint/core/text.h"
 #include "glint/io/envi.h"
 
 namespace glint::io {
@@ -21,11 +22,7 @@ using detail::trim;
 constexpr std::size_t kMaxLineChars = 200;
 constexpr std::string_view kIndent = "  ";
 
-std::string format_number(double value) {
-    char buffer[64];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-    return std::string(buffer, result.ptr);
-}
+std::string format_number(double value) { return format_shortest(value); }
 
 /// No line breaks inside a one-line value.
 std::string one_line(std::string_view text) {

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 
+#include "glint/core/text.h"
 #include "glint/io/xml.h"
 
 namespace glint::io {
@@ -47,9 +48,7 @@ std::string format_number(double value) {
     if (std::abs(value) < 1e15 && value == std::trunc(value)) {
         return std::to_string(static_cast<std::int64_t>(value));
     }
-    char buffer[64];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-    return std::string(buffer, result.ptr);
+    return format_shortest(value);
 }
 
 /// The offending text, quoted and cut short when long.

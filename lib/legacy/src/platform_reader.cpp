@@ -12,6 +12,7 @@
 #include <system_error>
 #include <vector>
 
+#include "glint/core/text.h"
 #include "glint/core/units.h"
 #include "glint/legacy/readers.h"
 #include "platform_tree.h"
@@ -34,11 +35,7 @@ std::string lower_trimmed(std::string_view text) {
     return out;
 }
 
-std::string number_text(double value) {
-    char buffer[64];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
-    return std::string(buffer, result.ptr);
-}
+std::string number_text(double value) { return format_shortest(value); }
 
 double angular_unit_factor(const io::XmlNode& node, Diagnostics& diagnostics) {
     const std::optional<std::string> raw = node.attribute("angularunits");

@@ -13,18 +13,14 @@
 #include <system_error>
 #include <vector>
 
+#include "glint/core/text.h"
 #include "glint/io/xml.h"
 
 namespace glint::legacy {
 namespace {
 
 /// Shortest text that reads back as `value`.
-std::string num(double value) {
-    char buffer[32];
-    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
-    if (ec != std::errc()) return "?";
-    return std::string(buffer, end);
-}
+std::string num(double value) { return format_shortest(value); }
 
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 

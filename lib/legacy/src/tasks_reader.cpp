@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "glint/core/datetime.h"
+#include "glint/core/text.h"
 #include "glint/io/xml.h"
 #include "glint/legacy/readers.h"
 
@@ -13,11 +14,7 @@ namespace glint::legacy {
 namespace {
 
 /// A number of seconds for messages, in shortest round-trip form.
-std::string seconds_text(double seconds) {
-    char buffer[64];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, seconds);
-    return std::string(buffer, result.ptr) + " s";
-}
+std::string seconds_text(double seconds) { return format_shortest(seconds) + " s"; }
 
 /// A `<datetime>` as read: seconds after the reference and, when written absolute, the instant.
 struct TimeValue {

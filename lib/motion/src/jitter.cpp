@@ -15,18 +15,14 @@
 
 #include "glint/core/diagnostics.h"
 #include "glint/core/error.h"
+#include "glint/core/text.h"
 #include "glint/legacy/psd_reader.h"
 #include "glint/motion/fft.h"
 
 namespace glint::motion {
 namespace {
 
-std::string num(double value) {
-    char buffer[32];
-    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, value);
-    if (ec != std::errc()) return "?";
-    return std::string(buffer, end);
-}
+std::string num(double value) { return format_shortest(value); }
 
 /// Index i of the segment [f_i, f_i+1] holding f (f within the table's range).
 std::size_t segment_of(const std::vector<double>& frequency_hz, double f) {

@@ -10,6 +10,7 @@
 #include <string>
 #include <utility>
 
+#include "glint/core/text.h"
 #include "trajectory_parts.h"
 
 namespace glint::motion {
@@ -27,11 +28,7 @@ constexpr double kParallel = 1e-9;
 
 }  // namespace
 
-std::string seconds_text(double seconds) {
-    char buffer[64];
-    const auto result = std::to_chars(buffer, buffer + sizeof buffer, seconds);
-    return std::string(buffer, result.ptr) + " s";
-}
+std::string seconds_text(double seconds) { return format_shortest(seconds) + " s"; }
 
 double ClampNotice::clamp(double t_s, double begin_s, double end_s, const ErrorContext& where,
                           const char* what) const {
