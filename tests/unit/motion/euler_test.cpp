@@ -12,23 +12,12 @@
 #include <random>
 
 #include "glint/motion/frames.h"
+#include "motion_expect.h"
 
 namespace glint::motion {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-void expect_near(const Vec3& a, const Vec3& b, double tol) {
-    EXPECT_NEAR(a.x, b.x, tol);
-    EXPECT_NEAR(a.y, b.y, tol);
-    EXPECT_NEAR(a.z, b.z, tol);
-}
-
-void expect_near(const Mat3& a, const Mat3& b, double tol) {
-    for (std::size_t i = 0; i < 3; ++i) {
-        for (std::size_t j = 0; j < 3; ++j) EXPECT_NEAR(a(i, j), b(i, j), tol) << i << "," << j;
-    }
-}
 
 /// The rotation of order `order` built by hand: the first-applied matrix on the right.
 Mat3 by_hand(const Vec3& a, EulerOrder order) {

@@ -13,15 +13,10 @@
 #include <vector>
 
 #include "glint/core/error.h"
+#include "motion_expect.h"
 
 namespace glint::motion {
 namespace {
-
-void expect_near(const Vec3& a, const Vec3& b, double tol) {
-    EXPECT_NEAR(a.x, b.x, tol);
-    EXPECT_NEAR(a.y, b.y, tol);
-    EXPECT_NEAR(a.z, b.z, tol);
-}
 
 constexpr double kLeoM = 700e3;
 constexpr double kGeoM = 35786e3;

@@ -9,31 +9,12 @@
 #include <numbers>
 #include <random>
 
+#include "motion_expect.h"
+
 namespace glint::motion {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-void expect_near(const Vec3& a, const Vec3& b, double tol) {
-    EXPECT_NEAR(a.x, b.x, tol);
-    EXPECT_NEAR(a.y, b.y, tol);
-    EXPECT_NEAR(a.z, b.z, tol);
-}
-
-void expect_near(const Mat3& a, const Mat3& b, double tol) {
-    for (std::size_t i = 0; i < 3; ++i) {
-        for (std::size_t j = 0; j < 3; ++j) EXPECT_NEAR(a(i, j), b(i, j), tol) << i << "," << j;
-    }
-}
-
-/// True when q and r are the same rotation (q = ±r).
-void expect_same_rotation(const Quaternion& q, const Quaternion& r, double tol) {
-    const double sign = dot(q, r) < 0.0 ? -1.0 : 1.0;
-    EXPECT_NEAR(q.w, sign * r.w, tol);
-    EXPECT_NEAR(q.x, sign * r.x, tol);
-    EXPECT_NEAR(q.y, sign * r.y, tol);
-    EXPECT_NEAR(q.z, sign * r.z, tol);
-}
 
 Quaternion random_rotation(std::mt19937_64& rng) {
     std::normal_distribution<double> n(0.0, 1.0);

@@ -15,18 +15,13 @@
 #include "glint/core/error.h"
 #include "glint/motion/euler.h"
 #include "glint/motion/frames.h"
+#include "motion_expect.h"
 
 namespace glint::motion {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180.0;
-
-void expect_near(const Vec3& a, const Vec3& b, double tol) {
-    EXPECT_NEAR(a.x, b.x, tol);
-    EXPECT_NEAR(a.y, b.y, tol);
-    EXPECT_NEAR(a.z, b.z, tol);
-}
 
 Vec3 boresight(const Rigid& r) { return apply_direction(r, kInstrumentBoresight); }
 

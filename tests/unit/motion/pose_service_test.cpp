@@ -17,6 +17,7 @@
 #include "glint/core/error.h"
 #include "glint/legacy/readers.h"
 #include "glint/motion/euler.h"
+#include "motion_expect.h"
 
 namespace glint::motion {
 namespace {
@@ -24,12 +25,6 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180.0;
 const std::string kData = GLINT_TEST_DATA_DIR;
-
-void expect_near(const Vec3& a, const Vec3& b, double tol) {
-    EXPECT_NEAR(a.x, b.x, tol);
-    EXPECT_NEAR(a.y, b.y, tol);
-    EXPECT_NEAR(a.z, b.z, tol);
-}
 
 double angle(const Vec3& a, const Vec3& b) { return std::atan2(norm(cross(a, b)), dot(a, b)); }
 

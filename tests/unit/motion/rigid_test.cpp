@@ -8,16 +8,12 @@
 #include <numbers>
 #include <random>
 
+#include "motion_expect.h"
+
 namespace glint::motion {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-
-void expect_near(const Vec3& a, const Vec3& b, double tol) {
-    EXPECT_NEAR(a.x, b.x, tol);
-    EXPECT_NEAR(a.y, b.y, tol);
-    EXPECT_NEAR(a.z, b.z, tol);
-}
 
 Rigid random_rigid(std::mt19937_64& rng) {
     std::normal_distribution<double> n(0.0, 1.0);

@@ -24,6 +24,7 @@
 #include "glint/motion/teme.h"
 #include "glint/motion/tle.h"
 #include "glint/test/temp_dir.h"
+#include "motion_expect.h"
 
 namespace glint::motion {
 namespace {
@@ -54,12 +55,6 @@ model::PlatformMotion read(const std::filesystem::path& file) {
     model::PlatformMotion motion = legacy::read_motion(file, legacy::ReadOptions{}, diagnostics);
     EXPECT_FALSE(diagnostics.has_errors()) << diagnostics.items().at(0).text();
     return motion;
-}
-
-void expect_near(const Vec3& a, const Vec3& b, double tolerance) {
-    EXPECT_NEAR(a.x, b.x, tolerance) << "x";
-    EXPECT_NEAR(a.y, b.y, tolerance) << "y";
-    EXPECT_NEAR(a.z, b.z, tolerance) << "z";
 }
 
 /// A FlexMotion with the given engines.
