@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: Apache-2.0
+// The capture schedule (the paper's Figure 1): every enabled focal plane of every instrument
+// of every BasicPlatform entry has a clock; its ticks inside each task window are captures;
+// all captures are sorted by start time (ties: plugin, instrument, focal plane) and numbered.
+// Schedules can be huge (a 10-hour task at a 10 kHz line rate is 3.6e8 captures), so
+// captures are generated in order by a streaming generator and counted analytically; nothing
+// holds them all in memory.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "glint/core/diagnostics.h"
+#include "glint/core/log.h"
+#include "glint/legacy/read_options.h"
+#include "glint/model/platform.h"
+#include "glint/model/simulation.h"
+#include "glint/model/tasks.h"
+#include "glint/motion/pose_service.h"
+
+namespace glint::schedule {
+
+/// Run options that shape the schedule (the seed's Options section: `.jsim` values of
+/// output_folder/output_prefix take precedence over these).
+struct ScheduleOptions {
+    std::optional<std::string> output_folder;  ///< --output_folder
+    std::optional<std::string> output_prefix;  ///< --output_prefix
+    double scale_resolution = 1.0;             ///< --scale_resolution: pixel counts × this
+    std::uint64_t seed = 1;                    ///< jitter in the poses
+};
+
+/// One BasicPlatform entry of the simulation, loaded.
+struct PluginSchedule {
+    std::size_t plugin_index = 0;  ///< index in the .jsim's plugin_list
+    std::string output_folder;     ///< effective (jsim value, else option, else "")
+    std::string output_prefix;     ///< effective (jsim value, else option, else "")
+    std::shared_ptr<const model::Platform> platform;
+    model::TaskList tasks;
+    std::shared_ptr<const motion::PoseService> poses;
+};
+
+/// One capturing focal plane (a clock): an enabled focal plane of a generic instrument, or a
+/// data recorder's sample clock.
+struct Source {
+    std::size_t plugin = 0;            ///< index into Schedule::plugins()
+    std::size_t instrument_index = 0;  ///< list_instruments order within the platform
+    std::size_t focal_plane_index = 0; ///< index within the instrument
+    const model::Instrument* instrument = nullptr;
+    const model::FocalPlane* focal_plane = nullptr;  ///< null for a data recorder
+    std::size_t x_count = 0;           ///< pixel counts after scale_resolution
+    std::size_t y_count = 0;
+    double integration_time_s = 0.0;
+    /// Trigger times (s after the reference) of an external clock, one period of them.
+    std::vector<double> trigger_times_s;
+};
+
+/// One capture.
+struct Capture {
+    std::uint64_t index = 0;          ///< global, over the whole schedule, in order
+    std::size_t task_index = 0;       ///< within its plugin's task list
+    std::uint64_t capture_index = 0;  ///< within its task, counting its own source's captures
+    std::size_t source = 0;           ///< index into Schedule::sources()
+    double t0_s = 0.0;                ///< integration window [t0, t1], s after the reference
+    double t1_s = 0.0;
+};
+
+/// The loaded simulation: plugins, sources, and how to enumerate and name captures.
+class Schedule {
+public:
+    /// Loads a `.jsim` or `.sim` and everything each BasicPlatform references (platform,
+    /// motion, tasks, trigger files). Problems go to `diagnostics`; throws glint::Error
+    /// (input) summarising them when there are errors.
+    static Schedule load(const std::filesystem::path& simulation_file,
+                         const ScheduleOptions& options, const legacy::ReadOptions& read_options,
+                         const Log& log, Diagnostics& diagnostics);
+
+    const std::filesystem::path& simulation_file() const;
+    const std::vector<PluginSchedule>& plugins() const;
+    const std::vector<Source>& sources() const;
+
+    /// Number of captures of `source` in task `task` (analytic for rate clocks: O(1)).
+    std::uint64_t count(std::size_t source, std::size_t task) const;
+    /// Total captures and total problems (pixels) over the schedule, without enumerating.
+    std::uint64_t total_captures() const;
+    std::uint64_t total_problems() const;
+
+    /// Output file of a capture's image (`<imagefile>` schedule simulation/task/capture:
+    /// `<folder>/<prefix><basename>[-tTTTT[-cCCCC]].<ext>`, 4-digit zero-based indices).
+    std::filesystem::path image_file(const Capture& capture) const;
+    /// Output files of the capture's enabled truth collections, in order.
+    std::vector<std::filesystem::path> truth_files(const Capture& capture) const;
+
+    /// Streams the captures in schedule order.
+    class Generator {
+    public:
+        /// Next capture, or nullopt at the end.
+        std::optional<Capture> next();
+        ~Generator();
+        Generator(Generator&&) noexcept;
+
+    private:
+        friend class Schedule;
+        struct State;
+        explicit Generator(std::unique_ptr<State> state);
+        std::unique_ptr<State> m_state;
+    };
+    Generator captures() const;
+
+    Schedule(Schedule&&) noexcept;
+    Schedule& operator=(Schedule&&) noexcept;
+    ~Schedule();
+
+private:
+    Schedule();
+    struct Impl;
+    std::unique_ptr<Impl> m_impl;
+};
+
+/// Tick times of `clock` inside [start_s, stop_s] (both ends included; a tick within 1e-9 s
+/// of stop counts as at stop), in order, for a rate clock (independent, or synchronous
+/// resolved against `clock_table`) or a trigger list (repeated with the period of the list:
+/// last trigger time rounded up to the list's mean spacing — see docs). Streaming callers
+/// use ClockTicks; this helper materialises them (tests, small windows).
+std::vector<double> clock_ticks(const model::Clock& clock,
+                                const std::vector<model::MasterClock>& clock_table,
+                                const std::vector<double>& trigger_times_s, double start_s,
+                                double stop_s);
+
+}  // namespace glint::schedule
