@@ -22,6 +22,7 @@
 #include "glint/model/simulation.h"
 #include "glint/model/tasks.h"
 #include "glint/motion/pose_service.h"
+#include "glint/schedule/clock_ticks.h"
 
 namespace glint::schedule {
 
@@ -44,19 +45,25 @@ struct PluginSchedule {
     std::shared_ptr<const motion::PoseService> poses;
 };
 
-/// One capturing focal plane (a clock): an enabled focal plane of a generic instrument, or a
-/// data recorder's sample clock.
+/// One capturing focal plane (a clock): an enabled focal plane of any instrument (generic,
+/// lidar, or a data recorder's: its clock is the recorder's sample clock). A data recorder
+/// without a focal plane has no clock in the model and is skipped with a warning.
 struct Source {
-    std::size_t plugin = 0;            ///< index into Schedule::plugins()
-    std::size_t instrument_index = 0;  ///< list_instruments order within the platform
-    std::size_t focal_plane_index = 0; ///< index within the instrument
+    std::size_t plugin = 0;             ///< index into Schedule::plugins()
+    std::size_t instrument_index = 0;   ///< list_instruments order within the platform
+    std::size_t focal_plane_index = 0;  ///< index within the instrument
     const model::Instrument* instrument = nullptr;
-    const model::FocalPlane* focal_plane = nullptr;  ///< null for a data recorder
-    std::size_t x_count = 0;           ///< pixel counts after scale_resolution
+    const model::FocalPlane* focal_plane = nullptr;  ///< never null in this version
+    std::size_t x_count = 0;                         ///< pixel counts after scale_resolution
     std::size_t y_count = 0;
+    /// Problems (pixels rendered) per capture: x_count · y_count, or x_count for TDI (the
+    /// stages of one output pixel are one problem).
+    std::uint64_t problems_per_capture = 0;
     double integration_time_s = 0.0;
     /// Trigger times (s after the reference) of an external clock, one period of them.
     std::vector<double> trigger_times_s;
+    /// The focal plane's clock (same as focal_plane->detector_array.clock).
+    const model::Clock& clock() const { return focal_plane->detector_array.clock; }
 };
 
 /// One capture.
@@ -83,19 +90,26 @@ public:
     const std::vector<PluginSchedule>& plugins() const;
     const std::vector<Source>& sources() const;
 
-    /// Number of captures of `source` in task `task` (analytic for rate clocks: O(1)).
+    /// Number of captures of `source` in task `task` of its plugin (analytic: O(1) here, the
+    /// clock ranges are computed at load). Throws glint::Error (usage) for an index out of
+    /// range.
     std::uint64_t count(std::size_t source, std::size_t task) const;
+    /// The ticks of `source` in task `task` of its plugin (capture i starts at time_s(i)).
+    const ClockTicks& ticks(std::size_t source, std::size_t task) const;
     /// Total captures and total problems (pixels) over the schedule, without enumerating.
     std::uint64_t total_captures() const;
     std::uint64_t total_problems() const;
 
     /// Output file of a capture's image (`<imagefile>` schedule simulation/task/capture:
-    /// `<folder>/<prefix><basename>[-tTTTT[-cCCCC]].<ext>`, 4-digit zero-based indices).
+    /// `<folder>/<prefix><basename>[-tTTTT[-cCCCC]].<ext>`, 4-digit zero-based indices);
+    /// empty when the capture method has no image file (a lidar without `<imagefile>`).
     std::filesystem::path image_file(const Capture& capture) const;
     /// Output files of the capture's enabled truth collections, in order.
     std::vector<std::filesystem::path> truth_files(const Capture& capture) const;
 
-    /// Streams the captures in schedule order.
+    /// Streams the captures in schedule order: start time, then plugin, instrument, focal
+    /// plane (i.e. source index), then task. One cursor per (source, task) with captures in
+    /// a binary min-heap: O(log cursors) per capture, no allocation after captures().
     class Generator {
     public:
         /// Next capture, or nullopt at the end.
@@ -109,6 +123,8 @@ public:
         explicit Generator(std::unique_ptr<State> state);
         std::unique_ptr<State> m_state;
     };
+    /// A generator from the first capture. It refers to this schedule: keep the schedule
+    /// alive (moving the schedule is fine) while it is used.
     Generator captures() const;
 
     Schedule(Schedule&&) noexcept;
@@ -121,14 +137,24 @@ private:
     std::unique_ptr<Impl> m_impl;
 };
 
-/// Tick times of `clock` inside [start_s, stop_s] (both ends included; a tick within 1e-9 s
-/// of stop counts as at stop), in order, for a rate clock (independent, or synchronous
-/// resolved against `clock_table`) or a trigger list (repeated with the period of the list:
-/// last trigger time rounded up to the list's mean spacing — see docs). Streaming callers
-/// use ClockTicks; this helper materialises them (tests, small windows).
+/// Tick times of `clock` inside [start_s, stop_s] (both ends included; a tick within
+/// kTickTolerance_s = 1e-9 s of either end counts as inside), in order, for a rate clock
+/// (independent, or synchronous resolved against `clock_table`) or a trigger list (repeated
+/// with the period trigger_period_s: the list's span plus its mean spacing; a single trigger
+/// fires once). A zero-length window (start == stop) gives the one tick at start. Streaming
+/// callers use ClockTicks; this helper materialises them (tests, small windows).
 std::vector<double> clock_ticks(const model::Clock& clock,
                                 const std::vector<model::MasterClock>& clock_table,
                                 const std::vector<double>& trigger_times_s, double start_s,
                                 double stop_s);
+
+/// Output file name of `image` for capture `capture_index` of task `task_index`, with the
+/// effective folder and prefix: `<folder>/<prefix><basename>.<ext>` (schedule simulation),
+/// `…<basename>-tTTTT.<ext>` (task) or `…<basename>-tTTTT-cCCCC.<ext>` (capture); indices
+/// zero-based, zero-padded to 4 digits and written in full beyond (t10000); no folder when
+/// `folder` is empty; no `.` when the extension is empty.
+std::filesystem::path output_file(const model::ImageFile& image, const std::string& folder,
+                                  const std::string& prefix, std::size_t task_index,
+                                  std::uint64_t capture_index);
 
 }  // namespace glint::schedule

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: Apache-2.0
+// Trigger files of external (irregular) clocks: a text file of trigger times in seconds after
+// the tasks' reference time, and the period with which the list repeats when a task outlasts
+// it (docs/schedule-draft.md, "External triggers").
+//
+// clang-format off
+// | content | rule |
+// |---|---|
+// | numbers | decimal or exponent notation (`0.1`, `+2.5e-3`, `-1`), finite; negative allowed (task times may be negative) |
+// | separators | blanks, tabs, commas, semicolons, newlines (LF or CRLF) |
+// | comments | `#` to the end of the line |
+// | order | strictly increasing: a time equal to or before the previous one is an error |
+// | count | at least one time |
+// clang-format on
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "glint/core/diagnostics.h"
+
+namespace glint::schedule {
+
+/// Reads the trigger times of `file`. Every problem (unreadable file, a token that is not a
+/// finite number, a time not after the previous one, no time at all) goes to `diagnostics`
+/// as an error at `file:line`; the times that were valid are returned.
+std::vector<double> read_trigger_file(const std::filesystem::path& file, Diagnostics& diagnostics);
+
+/// Parses trigger times from `text` (the content of a file named `file_name` in messages),
+/// with the rules of read_trigger_file.
+std::vector<double> parse_trigger_times(std::string_view text, const std::string& file_name,
+                                        Diagnostics& diagnostics);
+
+/// The period with which a list of n >= 2 increasing trigger times repeats:
+/// P = (last − first) · n / (n − 1), i.e. the list's span plus its mean spacing, so that
+/// 0.0 0.1 0.2 repeats at 0.3 0.4 0.5, 0.6 … (trigger i of repetition r fires at
+/// times[i] + r · P). None for a single trigger (it fires once) or an empty list.
+std::optional<double> trigger_period_s(std::span<const double> times_s);
+
+}  // namespace glint::schedule

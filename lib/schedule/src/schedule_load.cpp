@@ -1,0 +1,309 @@
+// SPDX-License-Identifier: Apache-2.0
+// Schedule::load: reads the simulation, builds one pose service per BasicPlatform entry (it
+// reads the platform, motion and tasks), lists the sources (enabled focal planes, pixel
+// counts scaled by --scale_resolution, trigger files read once each), checks that no two
+// outputs share a file name, and computes the tick range of every (source, task).
+#include <cmath>
+#include <map>
+#include <memory>
+#include <string>
+#include <utility>
+
+#include "glint/core/error.h"
+#include "glint/core/text.h"
+#include "glint/legacy/readers.h"
+#include "glint/model/platform.h"
+#include "glint/schedule/schedule.h"
+#include "glint/schedule/trigger_file.h"
+#include "schedule_impl.h"
+
+namespace glint::schedule {
+
+namespace {
+
+/// Largest scaled element count along one axis and of the whole array (the reader's limits).
+constexpr double kMaxAxisCount = 1e6;
+constexpr double kMaxElementCount = 2147483648.0;  // 2^31
+
+std::string quoted(const std::string& text) { return "\"" + text + "\""; }
+
+std::string plugin_name(std::size_t plugin_index) {
+    return "plugin_list[" + std::to_string(plugin_index) + "]";
+}
+
+std::string focal_plane_name(const Source& source) {
+    return "instrument " + quoted(source.instrument->name) + " focal plane " +
+           quoted(source.focal_plane->name);
+}
+
+void merge(const Diagnostics& from, Diagnostics& into) {
+    for (const Diagnostic& d : from.items()) {
+        if (d.severity == Diagnostic::Severity::error) {
+            into.error(d.where, d.message);
+        } else {
+            into.warning(d.where, d.message);
+        }
+    }
+}
+
+/// An element count scaled by `factor`: rounded to the nearest integer, at least 1.
+double scaled_count(std::size_t count, double factor) {
+    return std::max(1.0, std::round(static_cast<double>(count) * factor));
+}
+
+/// Sets the source's pixel counts from its detector array and --scale_resolution; false (with
+/// an error) when they exceed the reader's limits.
+bool set_pixel_counts(Source& source, double factor, Diagnostics& diagnostics) {
+    const model::DetectorArray& array = source.focal_plane->detector_array;
+    const double x = scaled_count(array.x_count, factor);
+    const double y = scaled_count(array.y_count, factor);
+    if (x > kMaxAxisCount || y > kMaxAxisCount || x * y > kMaxElementCount) {
+        diagnostics.error(array.where,
+                          "--scale_resolution " + format_shortest(factor) + " makes the " +
+                              std::to_string(array.x_count) + "x" + std::to_string(array.y_count) +
+                              " detector array " + std::to_string(static_cast<std::uint64_t>(x)) +
+                              "x" + std::to_string(static_cast<std::uint64_t>(y)) +
+                              " elements, expected at most 1000000 per axis and 2^31 in all");
+        return false;
+    }
+    source.x_count = static_cast<std::size_t>(x);
+    source.y_count = static_cast<std::size_t>(y);
+    const bool tdi = source.focal_plane->capture_method.temporal_integration.tdi;
+    source.problems_per_capture = static_cast<std::uint64_t>(source.x_count) *
+                                  (tdi ? 1 : static_cast<std::uint64_t>(source.y_count));
+    return true;
+}
+
+/// Everything load() works with besides the Impl being filled.
+struct Loader {
+    const model::Simulation& simulation;
+    const ScheduleOptions& options;
+    const legacy::ReadOptions& read_options;
+    const Log& log;
+    Diagnostics& diagnostics;
+    detail::ScheduleData& impl;
+    /// Trigger files read so far (each file is read and reported once).
+    std::map<std::filesystem::path, std::vector<double>> trigger_files;
+
+    void load_plugin(std::size_t plugin_index);
+    void add_sources(std::size_t plugin_slot);
+    void check_output_names();
+    void compute_ticks();
+};
+
+void Loader::load_plugin(std::size_t plugin_index) {
+    const model::Plugin& plugin = simulation.plugins[plugin_index];
+    // Each entry reads into its own diagnostics: make_pose_service throws when its
+    // diagnostics hold any error, which must not be another entry's.
+    Diagnostics local;
+    std::shared_ptr<const motion::PoseService> poses;
+    try {
+        poses = std::make_shared<const motion::PoseService>(motion::make_pose_service(
+            simulation, plugin_index, read_options, options.seed, log, local));
+    } catch (const Error& error) {
+        if (!local.has_errors()) local.add(error);  // else it repeats local's first error
+    }
+    merge(local, diagnostics);
+    if (!poses) return;
+
+    const model::BasicPlatformInputs& inputs = *plugin.basic_platform;
+    PluginSchedule entry;
+    entry.plugin_index = plugin_index;
+    entry.output_folder = inputs.output_folder.value_or(options.output_folder.value_or(""));
+    entry.output_prefix = inputs.output_prefix.value_or(options.output_prefix.value_or(""));
+    // The platform the pose service read (and keeps alive): one copy, one instrument order.
+    entry.platform = std::shared_ptr<const model::Platform>(poses, &poses->platform());
+    Diagnostics reread;  // make_pose_service read this file already and reported its problems
+    entry.tasks = legacy::read_tasks(inputs.tasks_file.resolved, read_options, reread);
+    entry.poses = poses;
+    for (const model::Task& task : entry.tasks.tasks) {
+        if (!std::isfinite(task.start_s) || !std::isfinite(task.stop_s) ||
+            task.stop_s < task.start_s) {
+            diagnostics.error(task.where, "task window [" + format_shortest(task.start_s) + " s, " +
+                                              format_shortest(task.stop_s) +
+                                              " s] is not finite with stop >= start");
+        }
+    }
+    impl.plugins.push_back(std::move(entry));
+    add_sources(impl.plugins.size() - 1);
+}
+
+void Loader::add_sources(std::size_t plugin_slot) {
+    const PluginSchedule& entry = impl.plugins[plugin_slot];
+    const motion::PoseService& poses = *entry.poses;
+    for (std::size_t k = 0; k < poses.instrument_count(); ++k) {
+        const model::Instrument& instrument = *poses.instrument_path(k).instrument;
+        if (instrument.type == model::InstrumentType::data_recorder &&
+            instrument.focal_planes.empty()) {
+            diagnostics.warning(instrument.where,
+                                "data recorder " + quoted(instrument.name) +
+                                    " has no focal plane, so no sample clock: it is not "
+                                    "scheduled (see docs/schedule-draft.md)");
+            continue;
+        }
+        for (std::size_t f = 0; f < instrument.focal_planes.size(); ++f) {
+            const model::FocalPlane& plane = instrument.focal_planes[f];
+            if (!plane.enabled) continue;
+            Source source;
+            source.plugin = plugin_slot;
+            source.instrument_index = k;
+            source.focal_plane_index = f;
+            source.instrument = &instrument;
+            source.focal_plane = &plane;
+            source.integration_time_s = plane.capture_method.temporal_integration.time_s;
+            if (!set_pixel_counts(source, options.scale_resolution, diagnostics)) continue;
+            const model::Clock& clock = plane.detector_array.clock;
+            if (clock.type == model::ClockType::external_trigger &&
+                !clock.trigger_file.resolved.empty()) {
+                const std::filesystem::path& file = clock.trigger_file.resolved;
+                auto found = trigger_files.find(file);
+                if (found == trigger_files.end()) {
+                    found = trigger_files.emplace(file, read_trigger_file(file, diagnostics)).first;
+                }
+                source.trigger_times_s = found->second;
+            }
+            impl.sources.push_back(std::move(source));
+        }
+    }
+}
+
+void Loader::check_output_names() {
+    struct Owner {
+        std::size_t plugin_index;
+        std::string what;
+    };
+    std::map<std::string, Owner> owners;
+    const auto claim = [&](const Source& source, const model::ImageFile& image,
+                           const std::string& what) {
+        if (image.basename.empty()) return;
+        const PluginSchedule& entry = impl.plugins[source.plugin];
+        const std::string name = output_file(image, entry.output_folder, entry.output_prefix, 0, 0)
+                                     .lexically_normal()
+                                     .string();
+        const auto [it, inserted] = owners.emplace(name, Owner{entry.plugin_index, what});
+        if (inserted) return;
+        const Owner& first = it->second;
+        if (first.plugin_index != entry.plugin_index) {
+            diagnostics.error(simulation.plugins[entry.plugin_index].where,
+                              "output file " + quoted(name) + " of " +
+                                  plugin_name(entry.plugin_index) + " (" + what +
+                                  ") is also written by " + plugin_name(first.plugin_index) + " (" +
+                                  first.what +
+                                  "): give the BasicPlatform entries different output_prefix "
+                                  "or output_folder values");
+        } else {
+            diagnostics.error(image.where, "output file " + quoted(name) + " of " + what +
+                                               " is also written by " + first.what +
+                                               ", expected different basenames");
+        }
+    };
+    for (const Source& source : impl.sources) {
+        const std::string plane = focal_plane_name(source);
+        claim(source, source.focal_plane->capture_method.image_file, plane);
+        for (const model::TruthCollection& truth : source.focal_plane->truth_collections) {
+            if (!truth.enabled) continue;
+            claim(source, truth.image_file,
+                  "truth collection " + quoted(truth.name) + " of " + plane);
+        }
+    }
+}
+
+void Loader::compute_ticks() {
+    impl.ticks.resize(impl.sources.size());
+    for (std::size_t s = 0; s < impl.sources.size(); ++s) {
+        const Source& source = impl.sources[s];
+        const PluginSchedule& entry = impl.plugins[source.plugin];
+        const model::Clock& clock = source.clock();
+        std::vector<ClockTicks>& ticks = impl.ticks[s];
+        ticks.resize(entry.tasks.tasks.size());
+        // A missing or bad trigger file was reported when it was read.
+        if (clock.type == model::ClockType::external_trigger && source.trigger_times_s.empty()) {
+            continue;
+        }
+        for (std::size_t t = 0; t < ticks.size(); ++t) {
+            const model::Task& task = entry.tasks.tasks[t];
+            if (!std::isfinite(task.start_s) || !std::isfinite(task.stop_s) ||
+                task.stop_s < task.start_s) {
+                continue;  // reported with the task
+            }
+            try {
+                ticks[t] = ClockTicks(clock, entry.platform->clock_table, source.trigger_times_s,
+                                      task.start_s, task.stop_s);
+            } catch (const Error& error) {
+                diagnostics.add(error);
+                break;  // the clock is bad: once is enough
+            }
+            if (ticks[t].empty()) {
+                diagnostics.warning(
+                    task.where, plugin_name(entry.plugin_index) + " " + focal_plane_name(source) +
+                                    " has no capture in task " + std::to_string(t) + " " +
+                                    quoted(task.name) + " [" + format_shortest(task.start_s) +
+                                    " s, " + format_shortest(task.stop_s) + " s]");
+            }
+        }
+    }
+}
+
+/// a + b, or an error when it overflows.
+std::uint64_t checked_add(std::uint64_t a, std::uint64_t b) {
+    std::uint64_t sum = 0;
+    if (__builtin_add_overflow(a, b, &sum)) {
+        throw runtime_error("the schedule has more than 2^64 captures or problems");
+    }
+    return sum;
+}
+
+std::uint64_t checked_multiply(std::uint64_t a, std::uint64_t b) {
+    std::uint64_t product = 0;
+    if (__builtin_mul_overflow(a, b, &product)) {
+        throw runtime_error("the schedule has more than 2^64 problems");
+    }
+    return product;
+}
+
+}  // namespace
+
+Schedule Schedule::load(const std::filesystem::path& simulation_file,
+                        const ScheduleOptions& options, const legacy::ReadOptions& read_options,
+                        const Log& log, Diagnostics& diagnostics) {
+    if (!std::isfinite(options.scale_resolution) || options.scale_resolution <= 0.0) {
+        throw usage_error("--scale_resolution " + format_shortest(options.scale_resolution) +
+                          " is not a positive number, expected a factor > 0");
+    }
+    const std::vector<model::Simulation> simulations =
+        legacy::read_simulation(simulation_file, read_options, diagnostics);
+    diagnostics.throw_if_errors();
+    if (simulations.size() != 1) {
+        throw input_error("the file holds " + std::to_string(simulations.size()) +
+                              " simulations, expected one (split the array into one .jsim "
+                              "per simulation)",
+                          ErrorContext{simulation_file.string(), 0, ""});
+    }
+    const model::Simulation& simulation = simulations.front();
+
+    Schedule schedule;
+    Impl& impl = *schedule.m_impl;
+    impl.simulation_file = simulation_file;
+    Loader loader{simulation, options, read_options, log, diagnostics, impl, {}};
+    const std::vector<std::size_t> entries = simulation.basic_platform_indices();
+    if (entries.empty()) {
+        diagnostics.warning(ErrorContext{simulation_file.string(), 0, ""},
+                            "no BasicPlatform entry in plugin_list: the schedule is empty");
+    }
+    for (const std::size_t plugin_index : entries) loader.load_plugin(plugin_index);
+    loader.check_output_names();
+    loader.compute_ticks();
+    diagnostics.throw_if_errors();
+
+    for (std::size_t s = 0; s < impl.sources.size(); ++s) {
+        for (const ClockTicks& ticks : impl.ticks[s]) {
+            impl.total_captures = checked_add(impl.total_captures, ticks.size());
+            impl.total_problems =
+                checked_add(impl.total_problems,
+                            checked_multiply(ticks.size(), impl.sources[s].problems_per_capture));
+        }
+    }
+    return schedule;
+}
+
+}  // namespace glint::schedule
