@@ -138,7 +138,7 @@ void Loader::add_sources(std::size_t plugin_slot) {
             diagnostics.warning(instrument.where,
                                 "data recorder " + quoted(instrument.name) +
                                     " has no focal plane, so no sample clock: it is not "
-                                    "scheduled (see docs/schedule-draft.md)");
+                                    "scheduled (see docs/schedule.md)");
             continue;
         }
         for (std::size_t f = 0; f < instrument.focal_planes.size(); ++f) {

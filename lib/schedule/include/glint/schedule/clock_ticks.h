@@ -3,7 +3,7 @@
 // count comes from integer tick ranges (O(1) for rate clocks, O(log n) for a list of n
 // triggers), tick i is computed from i (t = offset + j / rate, never accumulated), and
 // nothing is allocated. The capture generator keeps one of these per (source, task).
-// docs/schedule-draft.md has the definitions (tolerance, synchronous ticks, trigger repeat).
+// docs/schedule.md has the definitions (tolerance, synchronous ticks, trigger repeat).
 #pragma once
 
 #include <cstdint>

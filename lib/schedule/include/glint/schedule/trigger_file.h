@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Trigger files of external (irregular) clocks: a text file of trigger times in seconds after
 // the tasks' reference time, and the period with which the list repeats when a task outlasts
-// it (docs/schedule-draft.md, "External triggers").
+// it (docs/schedule.md, "External triggers").
 //
 // clang-format off
 // | content | rule |
