@@ -380,8 +380,9 @@ TEST(FormatJsim, SimToJsimRoundTripInAnotherFolder) {
     // (the clone may live under the temporary folder itself).
     const std::filesystem::path platform = kData / "cam.platform";
     const auto first_step = [](const std::filesystem::path& p) {
-        auto it = p.lexically_normal().begin();
-        return it == p.end() ? std::string() : (++it)->string();
+        const std::filesystem::path normal = p.lexically_normal();
+        auto it = normal.begin();
+        return it == normal.end() ? std::string() : (++it)->string();
     };
     const bool share_only_root = first_step(platform) != first_step(dir.path());
     const std::string expected =
