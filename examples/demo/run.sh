@@ -2,7 +2,8 @@
 # SPDX-License-Identifier: Apache-2.0
 # The default example that `make demo` runs. Until glint-render exists it exercises the
 # richest pipeline that works: the DIRSIG4 simulation in examples/demo/sim/ is converted to
-# a DIRSIG5 .jsim, checked, and its camera dumped as normalized JSON; a generated three-band scene becomes an ENVI cube that is
+# a DIRSIG5 .jsim, checked, its camera dumped as normalized JSON and its capture schedule
+# written; a generated three-band scene becomes an ENVI cube that is
 # inspected, measured and previewed; then a short "capture per file" sequence of a moving
 # scene is written as ENVI frames named as DIRSIG's capture schedule names them, each frame
 # is converted to PNG with the image_tool spellings of the BasicPlatform manual's
@@ -39,8 +40,10 @@ printf 'camera: F# %s, G# %s 1/sr, bandpass samples %s (from demo.platform.json)
     "$(grep -m1 '"g_number_per_sr"' "$out/demo.platform.json" | tr -dc '0-9.')" \
     "$(grep -m1 '"count"' "$out/demo.platform.json" | tr -dc '0-9')" >&2
 
-step "0b. where the camera is: poses from the .ppd through the mount chain (pose_dump harness)"
-run "$bin/../tests/pose_dump" --poses "$out/demo.jsim" --from 0 --to 2 --step 0.5 | tee "$out/demo.poses.csv" >&2
+step "0b. the capture schedule: 12 Hz frames over the 2 s task, with poses, sun and file names"
+run "$bin/glint-schedule" --summary "$out/demo.jsim" >&2
+run "$bin/glint-schedule" "$out/demo.jsim" -o "$out/demo.schedule.json"
+run "$bin/glint-schedule" --format text --captures 0:4 "$out/demo.jsim" >&2
 
 step "1. a generated scene becomes an ENVI cube (BIP float32, band names R, G, B)"
 scene_pattern 0 "$out/scene.exr"
@@ -76,7 +79,7 @@ cat >&2 <<MSG
 glint demo finished. Outputs in $out/:
   demo.jsim                    examples/demo/sim/demo.sim as a DIRSIG5 .jsim
   demo.platform.json           the camera as glint understood it (SI units, F#, G#, IFOV)
-  demo.poses.csv               camera position, orientation and boresight every 0.5 s
+  demo.schedule.json           25 captures: time windows, camera poses, sun angles, file names
   scene.img, scene.img.hdr     ENVI cube (160 x 120 x 3, float32, BIP)
   scene.info.txt/.json         glint-envi info
   scene.stats.json             per-band min/max/mean/std
