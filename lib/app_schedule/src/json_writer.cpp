@@ -5,35 +5,12 @@
 // run_info). Field by field in docs/tools/glint-schedule.md.
 
 #include "glint/core/runner.h"
+#include "glint/model/names.h"
 #include "pose_json.h"
 #include "writers.h"
 
 namespace glint::app_schedule::internal {
 namespace {
-
-const char* instrument_type_name(model::InstrumentType type) {
-    switch (type) {
-        case model::InstrumentType::lidar:
-            return "lidar";
-        case model::InstrumentType::data_recorder:
-            return "datarecorder";
-        case model::InstrumentType::generic:
-            break;
-    }
-    return "generic";
-}
-
-const char* image_schedule_name(model::ImageSchedule schedule) {
-    switch (schedule) {
-        case model::ImageSchedule::task:
-            return "task";
-        case model::ImageSchedule::capture:
-            return "capture";
-        case model::ImageSchedule::simulation:
-            break;
-    }
-    return "simulation";
-}
 
 Json paths_json(const std::vector<std::filesystem::path>& paths) {
     Json j = Json::array();
@@ -56,7 +33,7 @@ Json focal_plane_json(const schedule::Source& source) {
                             {"maximum", band.max_um},
                             {"delta", band.delta_um},
                             {"count", band.count}};
-    j["image_schedule"] = image_schedule_name(fp.capture_method.image_file.schedule);
+    j["image_schedule"] = model::name_of(fp.capture_method.image_file.schedule);
     return j;
 }
 
@@ -77,10 +54,10 @@ Json capture_json(const CaptureRecord& record, const motion::SceneFrame& frame) 
                        {"output_folder", record.plugin->output_folder},
                        {"output_prefix", record.plugin->output_prefix},
                        {"reference_datetime", datetime_utc(reference_of(record), 0)}};
-    j["instrument"] = Json{
-        {"index", source.instrument_index},
-        {"name", source.instrument ? source.instrument->name : ""},
-        {"type", source.instrument ? instrument_type_name(source.instrument->type) : "generic"}};
+    j["instrument"] =
+        Json{{"index", source.instrument_index},
+             {"name", source.instrument ? source.instrument->name : ""},
+             {"type", source.instrument ? model::name_of(source.instrument->type) : "generic"}};
     j["focal_plane"] = focal_plane_json(source);
     j["time_window_s"] = Json::array({c.t0_s, c.t1_s});
     j["datetime_utc"] = datetime_utc(reference_of(record), c.t0_s);

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "glint/core/spectral.h"
+#include "glint/model/names.h"
 
 namespace glint::legacy::detail::capture_io {
 namespace {
@@ -32,10 +33,6 @@ constexpr std::array<std::string_view, 4> kTrueSenseFilters = {"pan", "red", "gr
 std::span<const std::string_view> filters_of(ChannelPatternKind kind) {
     if (kind == ChannelPatternKind::bayer) return kBayerFilters;
     return kTrueSenseFilters;
-}
-
-const char* pattern_name(ChannelPatternKind kind) {
-    return kind == ChannelPatternKind::bayer ? "bayer" : "truesense";
 }
 
 /// "red, green or blue".
@@ -239,7 +236,7 @@ std::optional<ChannelPattern> read_pattern(const io::XmlNode& node, Diagnostics&
         if (std::find(filters.begin(), filters.end(), filter_name) == filters.end()) {
             diagnostics.error(mapping.where_attribute("filtername"),
                               "filter '" + trim(*filter) + "' is not a filter of the " +
-                                  pattern_name(pattern.kind) + " pattern, expected " +
+                                  model::name_of(pattern.kind) + " pattern, expected " +
                                   or_list(filters));
             continue;
         }
@@ -290,7 +287,7 @@ void check_channel_in_bandpass(const Channel& channel, const Bandpass& bandpass,
 void check_pattern(const ChannelPattern& pattern, const std::vector<Channel>& channels,
                    Diagnostics& diagnostics) {
     const auto filters = filters_of(pattern.kind);
-    const std::string kind = pattern_name(pattern.kind);
+    const std::string kind = model::name_of(pattern.kind);
     for (const auto filter : filters) {
         const auto count = std::count_if(pattern.mappings.begin(), pattern.mappings.end(),
                                          [&](const auto& m) { return m.first == filter; });
