@@ -1,0 +1,183 @@
+// SPDX-License-Identifier: Apache-2.0
+// The scene as glint renders it: a geodetic origin, materials (spectral reflectance, an
+// optional specular lobe, emissivity, temperature), geometry objects (an OBJ file or a
+// tessellated primitive, each held as a validated triangle mesh) and their static or
+// dynamic instances. Plain data in SI units (m, rad, K; wavelengths µm). The glint YAML
+// scene reader (glint/legacy/scene_reader.h) fills it; docs/scene.md is the full reference.
+// The YAML keys read:
+//
+// clang-format off
+// | key | type | unit | default |
+// |---|---|---|---|
+// | origin/latitude, longitude | [-90, 90], [-180, 180] | deg | required in origin |
+// | origin/altitude | number | m (above the WGS84 ellipsoid) | 0 |
+// | materials[]/id | scalar (number or text, kept as text), unique | - | required |
+// | materials[]/name | text, unique (OBJ `usemtl` binds by it) | - | the id |
+// | materials[]/reflectance | {wavelengths, values, units} or {file, units}; values in [0, 1] | µm or nm | required |
+// | materials[]/reflectance/units | um, nm | - | um (file: its `# units:` header, else um) |
+// | materials[]/specular/fraction, roughness | [0, 1], [0, 1] | - | 0, 0 |
+// | materials[]/emissivity | as reflectance; values in [0, 1] | µm or nm | 1 − reflectance |
+// | materials[]/temperature | number > 0 | K | 300 |
+// | objects[]/name | text | - | "object<index>" |
+// | objects[]/obj | path of a Wavefront OBJ (exclusive with primitive) | - | - |
+// | objects[]/primitive | ground_plane, box, sphere, disk, cylinder (exclusive with obj) | - | - |
+// | objects[]/material | material id (primitives: required; OBJ: faces before any usemtl) | - | - |
+// | objects[]/size (ground_plane) | number > 0, side of the square | m | 100000 |
+// | objects[]/center (ground_plane, sphere, disk, cylinder) | [x, y, z] (cylinder: centre of the base) | m | [0, 0, 0] |
+// | objects[]/lower, upper (box) | [x, y, z], lower < upper on every axis | m | required |
+// | objects[]/radius (sphere, disk, cylinder) | number > 0 | m | required |
+// | objects[]/height (cylinder) | number > 0 | m | required |
+// | objects[]/segments (sphere, disk, cylinder) | integer 3–4096 | - | 32 |
+// | objects[]/rings (sphere) | integer 2–4096 | - | 16 |
+// | objects[]/caps (cylinder) | bool | - | true |
+// | objects[]/instances | list; absent: one identity static instance | - | [{}] |
+// | instances[]/name | text | - | the object name |
+// | instances[]/tags | list of text | - | [] |
+// | instances[]/translation | [x, y, z] | m | [0, 0, 0] |
+// | instances[]/rotation_deg | [x, y, z] | deg | [0, 0, 0] |
+// | instances[]/rotation_order | permutation of xyz | - | xyz |
+// | instances[]/scale | number or [x, y, z], non-zero | - | 1 |
+// | instances[]/matrix | 16 numbers, row-major 4×4, last row 0 0 0 1 (exclusive with the three above) | m | - |
+// | instances[]/motion | path of a .ppd or .motion (dynamic; exclusive with flex_motion and the static keys) | - | - |
+// | instances[]/flex_motion | text: an inline `<motion type="flexible">` element | - | - |
+// clang-format on
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "glint/model/common.h"
+#include "glint/model/motion.h"
+
+namespace glint::model {
+
+/// The label that marks an instance for hypersampling when its name or one of its tags
+/// starts with it.
+inline constexpr std::string_view kImportantLabel = "::IMPORTANT::";
+
+/// Side of the default ground plane square.
+inline constexpr double kDefaultGroundPlaneSize_m = 100'000.0;
+/// Default longitude segments of spheres, disks and cylinders.
+inline constexpr int kDefaultSegments = 32;
+/// Default latitude rings of spheres.
+inline constexpr int kDefaultRings = 16;
+/// Default material temperature.
+inline constexpr double kDefaultTemperature_k = 300.0;
+
+/// The geodetic origin of the scene's ENU frame (WGS84).
+struct SceneOrigin {
+    double latitude_deg = 0.0;
+    double longitude_deg = 0.0;
+    double altitude_m = 0.0;  ///< height above the ellipsoid
+    ErrorContext where;
+};
+
+/// A spectral quantity tabulated at strictly increasing wavelengths, linearly interpolated
+/// between them (as glint::SpectralCurve, which the radiometry builds from it).
+struct SpectralTable {
+    std::vector<double> wavelengths_um;
+    std::vector<double> values;
+    FileRef file;  ///< the two-column file it came from; empty when given inline
+    ErrorContext where;
+
+    bool empty() const { return wavelengths_um.empty(); }
+};
+
+/// The specular part of a material's reflectance: `fraction` of the reflectance goes into
+/// a lobe of the given roughness (0 = mirror); the rest is Lambertian.
+struct SpecularLobe {
+    double fraction = 0.0;
+    double roughness = 0.0;
+};
+
+/// An opaque surface material.
+struct Material {
+    std::string id;    ///< as written (a number is kept as its text)
+    std::string name;  ///< OBJ `usemtl` names bind to it; defaults to the id
+    SpectralTable reflectance;
+    SpecularLobe specular;
+    /// Emissivity; when not given it is 1 − reflectance at the reflectance wavelengths and
+    /// `emissivity_is_default` is true.
+    SpectralTable emissivity;
+    bool emissivity_is_default = true;
+    double temperature_k = kDefaultTemperature_k;
+    ErrorContext where;
+};
+
+/// A triangle mesh in object coordinates, validated: finite vertices, indices in range, no
+/// degenerate triangles, at least one triangle, every triangle with a material.
+struct Mesh {
+    std::vector<std::array<float, 3>> vertices_m;
+    /// Vertex indices, counter-clockwise seen from the front (outside) of the surface.
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+    /// Per triangle: index into Scene::materials.
+    std::vector<std::uint32_t> triangle_materials;
+};
+
+enum class PrimitiveKind { ground_plane, box, sphere, disk, cylinder };
+
+/// A primitive's parameters as written; only those of `kind` are meaningful. docs/scene.md
+/// gives the exact tessellation.
+struct Primitive {
+    PrimitiveKind kind = PrimitiveKind::box;
+    double size_m = kDefaultGroundPlaneSize_m;  ///< ground_plane: side of the square
+    std::array<double, 3> center_m{};           ///< ground_plane, sphere, disk; cylinder base
+    std::array<double, 3> lower_m{};            ///< box
+    std::array<double, 3> upper_m{};            ///< box
+    double radius_m = 0.0;                      ///< sphere, disk, cylinder
+    double height_m = 0.0;                      ///< cylinder, along +z
+    int segments = kDefaultSegments;            ///< sphere, disk, cylinder
+    int rings = kDefaultRings;                  ///< sphere
+    bool caps = true;                           ///< cylinder: close both ends
+};
+
+/// One piece of geometry, instanced zero or more times.
+struct GeometryObject {
+    std::string name;
+    FileRef obj_file;                    ///< an OBJ object; empty for a primitive
+    std::optional<Primitive> primitive;  ///< a primitive object
+    std::string material_id;             ///< primitives: their material; OBJ: faces before usemtl
+    Mesh mesh;
+    ErrorContext where;
+};
+
+/// A static placement: p' = translation + R · (scale ∘ p), R the rotations about x, y, z
+/// applied in `rotation_order` (first letter first), or p' = matrix · [p, 1] when given.
+struct StaticTransform {
+    std::array<double, 3> translation_m{};
+    std::array<double, 3> rotation_rad{};
+    std::string rotation_order = "xyz";
+    std::array<double, 3> scale{1.0, 1.0, 1.0};
+    std::optional<std::array<double, 16>> matrix;  ///< row-major 4×4
+};
+
+/// A placement of an object: static (`transform`) or dynamic (`motion`).
+struct Instance {
+    std::size_t object_index = 0;  ///< into Scene::objects
+    std::string name;
+    std::vector<std::string> tags;
+    bool important = false;  ///< name or a tag starts with kImportantLabel
+    StaticTransform transform;
+    /// Dynamic instances: the motion read from `motion_file` or from an inline FlexMotion.
+    std::optional<PlatformMotion> motion;
+    FileRef motion_file;  ///< empty for static and inline-FlexMotion instances
+    ErrorContext where;
+
+    bool dynamic() const { return motion.has_value(); }
+};
+
+/// A whole scene.
+struct Scene {
+    std::string file;  ///< as named to the reader
+    std::optional<SceneOrigin> origin;
+    std::vector<Material> materials;
+    std::vector<GeometryObject> objects;
+    std::vector<Instance> instances;
+};
+
+}  // namespace glint::model
