@@ -1,0 +1,214 @@
+// SPDX-License-Identifier: Apache-2.0
+// The glint YAML scene's materials: reflectance and emissivity spectra (inline or from a
+// two-column file in µm or nm), the specular lobe and the temperature.
+#include "yaml_scene_parts.h"
+
+namespace glint::legacy::yaml_scene {
+namespace {
+
+// ---- spectra --------------------------------------------------------------------------------
+
+/// The scale from `units` ("um" or "nm") to µm; nullopt for anything else.
+std::optional<double> unit_scale(const std::string& units) {
+    const std::string u = to_lower(units);
+    if (u == "um" || u == "micrometers" || u == "microns") return 1.0;
+    if (u == "nm" || u == "nanometers") return 1e-3;
+    return std::nullopt;
+}
+
+/// Reads a two-column file: wavelength and value per line, blanks or commas between, `#`
+/// comments; a comment `# units: nm` (or `um`) gives the wavelength unit.
+void read_table_file(model::SpectralTable& table, std::optional<double> yaml_scale,
+                     const std::string& key_path, Diagnostics& diagnostics) {
+    const std::string name = table.file.resolved.string();
+    std::string text;
+    try {
+        text = io::read_input_file(table.file.resolved, name);
+    } catch (const Error& error) {
+        diagnostics.add(error.with_file(table.where.file, table.where.line));
+        return;
+    }
+    std::optional<double> header_scale;
+    std::istringstream lines(text);
+    std::string line;
+    int number = 0;
+    while (std::getline(lines, line)) {
+        ++number;
+        const std::size_t hash = line.find('#');
+        if (hash != std::string::npos) {
+            std::string comment = to_lower(line.substr(hash + 1));
+            for (char& c : comment) {
+                if (c == ':' || c == '=') c = ' ';
+            }
+            std::istringstream words(comment);
+            std::string word;
+            std::string unit;
+            if (words >> word && word == "units" && words >> unit) {
+                header_scale = unit_scale(unit);
+                if (!header_scale) {
+                    diagnostics.error({name, number, key_path}, "unknown wavelength units \"" +
+                                                                    unit + "\", expected um or nm");
+                }
+            }
+            line.resize(hash);
+        }
+        for (char& c : line) {
+            if (c == ',' || c == '\t' || c == ';' || c == '\r') c = ' ';
+        }
+        std::istringstream fields(line);
+        std::string a;
+        std::string b;
+        if (!(fields >> a)) continue;
+        if (!(fields >> b)) {
+            diagnostics.error({name, number, key_path}, "expected two columns (wavelength value)");
+            continue;
+        }
+        const auto w = io::parse_double(a);
+        const auto v = io::parse_double(b);
+        if (!w || !v) {
+            diagnostics.error({name, number, key_path},
+                              "expected two numbers, got \"" + a + "\" and \"" + b + "\"");
+            continue;
+        }
+        table.wavelengths_um.push_back(*w);
+        table.values.push_back(*v);
+    }
+    if (yaml_scale && header_scale && *yaml_scale != *header_scale) {
+        diagnostics.warning(table.where,
+                            "units given in the scene differ from the file's "
+                            "header; the scene's are used");
+    }
+    const double scale = yaml_scale.value_or(header_scale.value_or(1.0));
+    for (double& w : table.wavelengths_um) w *= scale;
+}
+
+/// Reads a spectrum key (`reflectance`, `emissivity`): inline lists or a file; checks
+/// wavelengths (positive, strictly increasing) and values (in [0, 1]).
+model::SpectralTable read_spectrum(Reader& r, const YAML::Node& node, const std::string& path,
+                                   const std::string& quantity) {
+    model::SpectralTable table;
+    table.where = r.where(node, path);
+    if (!r.expect_map(node, path)) return table;
+    r.warn_unknown(node, path, {"wavelengths", "values", "units", "file"});
+    std::optional<double> scale;
+    if (const auto units = r.text_key(node, path, "units", false)) {
+        scale = unit_scale(*units);
+        if (!scale) {
+            r.error(node["units"], Reader::join(path, "units"),
+                    "unknown wavelength units \"" + *units + "\", expected um or nm");
+            return table;
+        }
+    }
+    const std::size_t errors = r.diagnostics.error_count();
+    if (node["file"]) {
+        if (node["wavelengths"] || node["values"]) {
+            r.error(node, path, "give either file or wavelengths and values, not both");
+            return table;
+        }
+        const auto text = r.text_key(node, path, "file", true);
+        if (!text) return table;
+        table.file = r.options.paths.resolve(
+            *text, r.base_dir, r.where(node["file"], Reader::join(path, "file")), r.diagnostics);
+        if (table.file.resolved.empty()) return table;
+        read_table_file(table, scale, path, r.diagnostics);
+    } else {
+        if (!node["wavelengths"] || !node["values"]) {
+            r.error(node, path,
+                    std::string("missing required key \"") +
+                        (node["wavelengths"] ? "values" : "wavelengths") + "\" (or give \"file\")");
+            return table;
+        }
+        table.wavelengths_um = r.numbers(node["wavelengths"], Reader::join(path, "wavelengths"));
+        table.values = r.numbers(node["values"], Reader::join(path, "values"));
+        for (double& w : table.wavelengths_um) w *= scale.value_or(1.0);
+        if (table.wavelengths_um.size() != table.values.size()) {
+            r.error(node, path,
+                    std::to_string(table.wavelengths_um.size()) + " wavelengths but " +
+                        std::to_string(table.values.size()) + " values");
+            return table;
+        }
+    }
+    if (r.diagnostics.error_count() != errors) return table;
+    // Inline values are reported at their own key; file values at the spectrum key.
+    const bool inline_values = table.file.empty();
+    if (table.empty()) r.error(node, path, "spectrum has no samples");
+    for (std::size_t i = 0; i < table.values.size(); ++i) {
+        const std::string index = "[" + std::to_string(i) + "]";
+        const double w = table.wavelengths_um[i];
+        if (!(w > 0.0) || (i > 0 && !(w > table.wavelengths_um[i - 1]))) {
+            r.diagnostics.error(
+                inline_values
+                    ? r.where(node["wavelengths"][i], Reader::join(path, "wavelengths") + index)
+                    : table.where,
+                "wavelength " + format_shortest(w) + " um is not positive and strictly increasing" +
+                    (inline_values ? "" : " (row " + std::to_string(i + 1) + " of the file)"));
+        }
+        const double v = table.values[i];
+        if (!(v >= 0.0 && v <= 1.0)) {
+            r.diagnostics.error(
+                inline_values ? r.where(node["values"][i], Reader::join(path, "values") + index)
+                              : table.where,
+                quantity + " " + format_shortest(v) + " is outside [0, 1]" +
+                    (inline_values ? "" : " (row " + std::to_string(i + 1) + " of the file)"));
+        }
+    }
+    return table;
+}
+
+}  // namespace
+
+// ---- materials ------------------------------------------------------------------------------
+
+model::Material read_material(Reader& r, const YAML::Node& node, const std::string& path) {
+    model::Material m;
+    m.where = r.where(node, path);
+    if (!r.expect_map(node, path)) return m;
+    r.warn_unknown(node, path,
+                   {"id", "name", "reflectance", "specular", "emissivity", "temperature"});
+    m.id = r.text_key(node, path, "id", true).value_or("");
+    m.name = r.text_key(node, path, "name", false).value_or(m.id);
+    if (node["reflectance"]) {
+        m.reflectance =
+            read_spectrum(r, node["reflectance"], Reader::join(path, "reflectance"), "reflectance");
+    } else {
+        r.error(node, path, "missing required key \"reflectance\"");
+    }
+    if (const YAML::Node specular = node["specular"]) {
+        const std::string sp = Reader::join(path, "specular");
+        if (r.expect_map(specular, sp)) {
+            r.warn_unknown(specular, sp, {"fraction", "roughness"});
+            for (const auto& [key, field] : {std::pair{"fraction", &m.specular.fraction},
+                                             std::pair{"roughness", &m.specular.roughness}}) {
+                if (const auto value = r.number_key(specular, sp, key, false)) {
+                    if (*value < 0.0 || *value > 1.0) {
+                        r.error(specular[key], Reader::join(sp, key),
+                                std::string("specular ") + key + " " + format_shortest(*value) +
+                                    " is outside [0, 1]");
+                    } else {
+                        *field = *value;
+                    }
+                }
+            }
+        }
+    }
+    if (node["emissivity"]) {
+        m.emissivity =
+            read_spectrum(r, node["emissivity"], Reader::join(path, "emissivity"), "emissivity");
+        m.emissivity_is_default = false;
+    } else {
+        m.emissivity.wavelengths_um = m.reflectance.wavelengths_um;
+        for (const double rho : m.reflectance.values) m.emissivity.values.push_back(1.0 - rho);
+        m.emissivity.where = m.reflectance.where;
+    }
+    if (const auto t = r.number_key(node, path, "temperature", false)) {
+        if (*t > 0.0) {
+            m.temperature_k = *t;
+        } else {
+            r.error(node["temperature"], Reader::join(path, "temperature"),
+                    "temperature " + format_shortest(*t) + " K is not > 0");
+        }
+    }
+    return m;
+}
+
+}  // namespace glint::legacy::yaml_scene
