@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: Apache-2.0
+// Reading atmosphere descriptions: the glint YAML atmosphere (model none, parametric,
+// tabulated; keys in glint/model/atmosphere.h), the simpleradiativetransfer subset of a DIRSIG
+// `.atm` file, and the table file of the tabulated model. Files starting with `<` (after
+// blanks and a BOM) are read as XML, anything else as YAML.
+//
+// Table file format (glint's definition, docs/atmosphere-draft.md):
+//
+// | item | rule |
+// |---|---|
+// | row | 5 or 6 numbers (columns below), separated by blanks or commas |
+// | wavelength_um | µm, > 0, strictly increasing |
+// | sun_T | direct transmittance top of atmosphere → surface, [0, 1] |
+// | sensor_T | direct transmittance surface → sensor, [0, 1] |
+// | path_radiance | W/(cm² sr µm) at the sensor, ≥ 0 |
+// | sky_irradiance | diffuse irradiance on a horizontal surface, W/(cm² µm), ≥ 0 |
+// | thermal_sky | optional 6th column: sky emission, W/(cm² sr µm), ≥ 0 |
+// | rows | at least 2, all with the same number of columns |
+// | comments | `#` to the end of the line; blank lines skipped; CRLF accepted |
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "glint/core/diagnostics.h"
+#include "glint/legacy/read_options.h"
+#include "glint/model/atmosphere.h"
+
+namespace glint::legacy {
+
+/// Reads a YAML atmosphere or a DIRSIG `.atm`. Problems go to `diagnostics` with file:line
+/// (YAML syntax errors, an unknown or missing `model`, values out of range, an unreadable
+/// table, unsupported `.atm` radiative-transfer blocks — named — as errors; unknown keys and
+/// ignored `.atm` blocks such as the weather as warnings). A file that cannot be read throws
+/// glint::Error (io). `display_name` names the file in messages (default: the path).
+model::Atmosphere read_atmosphere(const std::filesystem::path& path, const ReadOptions& options,
+                                  Diagnostics& diagnostics, const std::string& display_name = {});
+
+/// Reads a tabulated-atmosphere table file (format above), reporting each bad row with the
+/// file and line. `display_name` names the file in messages (default: the path).
+model::TabulatedAtmosphere read_atmosphere_table(const std::filesystem::path& path,
+                                                 Diagnostics& diagnostics,
+                                                 const std::string& display_name = {});
+
+}  // namespace glint::legacy

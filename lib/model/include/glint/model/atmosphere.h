@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: Apache-2.0
+// The atmosphere description read from a .jsim BasicAtmosphere's atmosphere_filename: a glint
+// YAML atmosphere (model none, parametric or tabulated) or the simpleradiativetransfer subset
+// of a DIRSIG .atm file. Plain data; the physics lives in glint/scene/atmosphere.h and the
+// formulas in docs/atmosphere-draft.md.
+//
+// YAML keys (glint/legacy/atmosphere_reader.h reads them; unknown keys are warnings):
+//
+// | key | type | unit | default | model |
+// |---|---|---|---|---|
+// | `model` | none, parametric, tabulated | – | (required) | all |
+// | `aerosol_optical_depth_550` | number ≥ 0 | – | 0.1 | parametric |
+// | `angstrom_exponent` | number | – | 1.3 | parametric |
+// | `aerosol_scale_height_m` | number > 0 | m | 1200 | parametric |
+// | `aerosol_asymmetry` | number in (−1, 1) | – | 0.7 | parametric (Henyey–Greenstein g) |
+// | `aerosol_single_scatter_albedo` | number in [0, 1] | – | 0.95 | parametric |
+// | `rayleigh_scale_height_m` | number > 0 | m | 8000 | parametric |
+// | `sea_level_pressure_hpa` | number ≥ 0 | hPa | 1013.25 | parametric (0: no Rayleigh) |
+// | `air_temperature_k` | number ≥ 0 | K | 288.15 | parametric (thermal sky) |
+// | `water_vapor_pressure_hpa` | number ≥ 0 | hPa | 10 | parametric (sky emissivity) |
+// | `table` | path | – | (required) | tabulated (relative to the YAML file) |
+// | `sky_temperature_k` | number ≥ 0 | K | 0 (black) | tabulated without a thermal column |
+//
+// DIRSIG .atm subset: `<atmosphericconditions>` > `<simpleradiativetransfer>` >
+// `<apparentskytemperature>` (K, default 0) gives kind simple.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "glint/core/error.h"
+
+namespace glint::model {
+
+/// Which atmosphere model a description selects.
+enum class AtmosphereKind {
+    none,        ///< exo-atmospheric sun, black sky, no path effects
+    parametric,  ///< Rayleigh + aerosol extinction and single scattering
+    tabulated,   ///< a user table (MODTRAN, libRadtran, 6S output) for one geometry
+    simple,      ///< DIRSIG .atm simpleradiativetransfer: no path effects, sky at a temperature
+};
+
+/// Parameters of the parametric model (units in the names; defaults in the file table).
+struct ParametricAtmosphere {
+    double aerosol_optical_depth_550 = 0.1;       ///< vertical, at 0.55 µm, from sea level
+    double angstrom_exponent = 1.3;               ///< α in τ_a(λ) = τ_550 (λ/0.55)^−α
+    double aerosol_scale_height_m = 1200.0;       ///< aerosol extinction ∝ exp(−z/H_a)
+    double aerosol_asymmetry = 0.7;               ///< Henyey–Greenstein asymmetry g
+    double aerosol_single_scatter_albedo = 0.95;  ///< ω_a
+    double rayleigh_scale_height_m = 8000.0;      ///< Rayleigh extinction ∝ exp(−z/H_R)
+    double sea_level_pressure_hpa = 1013.25;      ///< Rayleigh optical depth ∝ pressure
+    double air_temperature_k = 288.15;            ///< effective air temperature of the sky
+    double water_vapor_pressure_hpa = 10.0;       ///< for the Brutsaert clear-sky emissivity
+};
+
+/// A tabulated atmosphere for one sun/sensor geometry; every column has one entry per row.
+struct TabulatedAtmosphere {
+    std::string table_file;                             ///< the table file, as resolved
+    std::vector<double> wavelengths_um;                 ///< strictly increasing
+    std::vector<double> sun_transmittance;              ///< TOA → surface, direct beam, [0, 1]
+    std::vector<double> sensor_transmittance;           ///< surface → sensor, [0, 1]
+    std::vector<double> path_radiance_w_per_cm2_sr_um;  ///< at the sensor, ≥ 0
+    std::vector<double> sky_irradiance_w_per_cm2_um;    ///< diffuse, horizontal surface, ≥ 0
+    std::vector<double> thermal_sky_radiance_w_per_cm2_sr_um;  ///< empty: from sky_temperature_k
+    double sky_temperature_k = 0.0;  ///< used when the thermal column is absent
+};
+
+/// DIRSIG's simpleradiativetransfer subset.
+struct SimpleAtmosphere {
+    double apparent_sky_temperature_k = 0.0;  ///< isotropic sky radiance B(λ, T)
+};
+
+/// An atmosphere description; only the member for `kind` is meaningful.
+struct Atmosphere {
+    AtmosphereKind kind = AtmosphereKind::none;
+    ParametricAtmosphere parametric;
+    TabulatedAtmosphere tabulated;
+    SimpleAtmosphere simple;
+    ErrorContext where;  ///< the file (and line of `model`) it was read from
+};
+
+/// "none", "parametric", "tabulated" or "simple".
+inline const char* to_string(AtmosphereKind kind) noexcept {
+    switch (kind) {
+        case AtmosphereKind::none:
+            return "none";
+        case AtmosphereKind::parametric:
+            return "parametric";
+        case AtmosphereKind::tabulated:
+            return "tabulated";
+        case AtmosphereKind::simple:
+            return "simple";
+    }
+    return "none";
+}
+
+}  // namespace glint::model
