@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The atmosphere models of glint/scene/atmosphere.h: none, simple (.atm), parametric
 // (Rayleigh + aerosol, Beer–Lambert with the Kasten–Young air mass, single scattering
-// integrated over altitude layers) and tabulated. Formulas: docs/atmosphere-draft.md.
+// integrated over altitude layers) and tabulated. Formulas: docs/physics.md ("Atmosphere and sun").
 #include "glint/scene/atmosphere.h"
 
 #include <algorithm>

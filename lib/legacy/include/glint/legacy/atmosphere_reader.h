@@ -4,7 +4,7 @@
 // `.atm` file, and the table file of the tabulated model. Files starting with `<` (after
 // blanks and a BOM) are read as XML, anything else as YAML.
 //
-// Table file format (glint's definition, docs/atmosphere-draft.md):
+// Table file format (glint's definition, docs/physics.md ("Atmosphere and sun")):
 //
 // | item | rule |
 // |---|---|

@@ -2,7 +2,7 @@
 // The atmosphere description read from a .jsim BasicAtmosphere's atmosphere_filename: a glint
 // YAML atmosphere (model none, parametric or tabulated) or the simpleradiativetransfer subset
 // of a DIRSIG .atm file. Plain data; the physics lives in glint/scene/atmosphere.h and the
-// formulas in docs/atmosphere-draft.md.
+// formulas in docs/physics.md ("Atmosphere and sun").
 //
 // YAML keys (glint/legacy/atmosphere_reader.h reads them; unknown keys are warnings):
 //

@@ -4,8 +4,8 @@
 // isotropic sky radiance (scattered + thermal emission). Implementations: none (exo-atmospheric
 // sun, black sky, no path effects), parametric (Rayleigh + aerosol, single scattering),
 // tabulated (a user table for one geometry) and simple (DIRSIG .atm: sky at a temperature).
-// Formulas, parameters and limits: docs/atmosphere-draft.md. Units: radiance W/(cm² sr µm),
-// irradiance W/(cm² µm), altitudes m, angles degrees.
+// Formulas, parameters and limits: docs/physics.md ("Atmosphere and sun"). Units: radiance W/(cm²
+// sr µm), irradiance W/(cm² µm), altitudes m, angles degrees.
 #pragma once
 
 #include <memory>
