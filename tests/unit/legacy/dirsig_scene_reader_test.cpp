@@ -11,6 +11,7 @@
 #include <fstream>
 #include <string>
 
+#include "glint/test/diagnostics.h"
 #include "glint/test/temp_dir.h"
 
 namespace glint::legacy {
@@ -36,14 +37,7 @@ void write(const std::filesystem::path& path, const std::string& text) {
 }
 
 /// The one error of `diagnostics`; fails the test unless there is exactly one.
-Diagnostic only_error(const Diagnostics& diagnostics) {
-    std::vector<Diagnostic> errors;
-    for (const Diagnostic& d : diagnostics.items()) {
-        if (d.severity == Diagnostic::Severity::error) errors.push_back(d);
-    }
-    EXPECT_EQ(errors.size(), 1u) << dump(diagnostics);
-    return errors.empty() ? Diagnostic{} : errors.front();
-}
+using glint::test::only_error;
 
 const model::Instance* find_instance(const model::Scene& scene, const std::string& name) {
     for (const model::Instance& in : scene.instances) {

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "glint/legacy/readers.h"
+#include "glint/test/diagnostics.h"
 #include "glint/test/temp_dir.h"
 
 namespace glint::legacy {
@@ -35,14 +36,7 @@ std::vector<model::Simulation> read_text(const TempDir& dir, const std::string& 
     return read_jsim(dir / name, options, diagnostics);
 }
 
-Diagnostic only_error(const Diagnostics& diagnostics) {
-    EXPECT_EQ(diagnostics.error_count(), 1u);
-    for (const Diagnostic& d : diagnostics.items()) {
-        if (d.severity == Diagnostic::Severity::error) return d;
-    }
-    ADD_FAILURE() << "no error";
-    return {};
-}
+using glint::test::only_error;
 
 /// Every field of two simulations that a rewrite must keep (resolved paths, not their text).
 void expect_same(const model::Simulation& a, const model::Simulation& b) {

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "glint/legacy/readers.h"
+#include "glint/test/diagnostics.h"
 #include "glint/test/temp_dir.h"
 
 namespace glint::legacy {
@@ -31,14 +32,7 @@ std::filesystem::path write_sim(const TempDir& dir, const std::string& sim_text)
     return dir / "a.sim";
 }
 
-Diagnostic only_error(const Diagnostics& diagnostics) {
-    EXPECT_EQ(diagnostics.error_count(), 1u);
-    for (const Diagnostic& d : diagnostics.items()) {
-        if (d.severity == Diagnostic::Severity::error) return d;
-    }
-    ADD_FAILURE() << "no error";
-    return {};
-}
+using glint::test::only_error;
 
 TEST(SimReader, ReadsTheFormatNotesExample) {
     Diagnostics diagnostics;

@@ -11,6 +11,7 @@
 
 #include "glint/core/datetime.h"
 #include "glint/legacy/readers.h"
+#include "glint/test/diagnostics.h"
 #include "glint/test/temp_dir.h"
 
 namespace glint::legacy {
@@ -30,14 +31,7 @@ model::TaskList read_text(const TempDir& dir, const std::string& text, Diagnosti
 }
 
 /// The only error diagnostic (fails the test unless there is exactly one).
-Diagnostic only_error(const Diagnostics& diagnostics) {
-    EXPECT_EQ(diagnostics.error_count(), 1u);
-    for (const Diagnostic& d : diagnostics.items()) {
-        if (d.severity == Diagnostic::Severity::error) return d;
-    }
-    ADD_FAILURE() << "no error";
-    return {};
-}
+using glint::test::only_error;
 
 constexpr const char* kHeader =
     "<tasklist>\n"
