@@ -1,13 +1,17 @@
 // SPDX-License-Identifier: Apache-2.0
 // Loading a simulation and the files it references into LoadedInputs, with every problem
-// collected in its diagnostics: the platform and tasks readers, existence checks for the
-// files that have no reader yet, and the output-name clash check.
+// collected in its diagnostics: the platform and tasks readers, the scene and atmosphere
+// readers (--check), existence checks for the other files, and the output-name clash check.
 #include "glint/app_platform2jsim/inputs.h"
 
 #include <algorithm>
 #include <cctype>
 
+#include "glint/core/text.h"
+#include "glint/legacy/atmosphere_reader.h"
+#include "glint/legacy/dirsig_scene_reader.h"
 #include "glint/legacy/readers.h"
+#include "glint/legacy/simulation_inputs.h"
 
 namespace glint::app_platform2jsim {
 namespace {
@@ -89,10 +93,110 @@ void check_platform_references(const model::Platform& platform, LoadedInputs& in
     }
 }
 
+std::string plural(std::size_t count, const char* noun) {
+    return std::to_string(count) + " " + noun + (count == 1 ? "" : "s");
+}
+
+/// "2 materials, 3 objects, 4 instances, 26 triangles".
+std::string describe(const model::Scene& scene) {
+    std::size_t triangles = 0;
+    for (const model::GeometryObject& object : scene.objects) {
+        triangles += object.mesh.triangles.size();
+    }
+    return plural(scene.materials.size(), "material") + ", " +
+           plural(scene.objects.size(), "object") + ", " +
+           plural(scene.instances.size(), "instance") + ", " + plural(triangles, "triangle");
+}
+
+/// "parametric, aerosol optical depth 0.1 at 0.55 um" and the like.
+std::string describe(const model::Atmosphere& atmosphere) {
+    const std::string kind = model::to_string(atmosphere.kind);
+    switch (atmosphere.kind) {
+        case model::AtmosphereKind::none:
+            return kind;
+        case model::AtmosphereKind::parametric:
+            return kind + ", aerosol optical depth " +
+                   format_shortest(atmosphere.parametric.aerosol_optical_depth_550) + " at 0.55 um";
+        case model::AtmosphereKind::tabulated: {
+            const std::vector<double>& w = atmosphere.tabulated.wavelengths_um;
+            std::string text = kind + ", " + plural(w.size(), "row");
+            if (!w.empty()) {
+                text += ", " + format_shortest(w.front()) + "-" + format_shortest(w.back()) + " um";
+            }
+            return text;
+        }
+        case model::AtmosphereKind::simple:
+            return kind + ", sky at " +
+                   format_shortest(atmosphere.simple.apparent_sky_temperature_k) + " K";
+    }
+    return kind;
+}
+
+/// The contents line of a file read by a reader that found `errors` errors in it.
+std::string contents_line(const std::string& role, const fs::path& file, std::size_t errors,
+                          const std::string& description) {
+    return role + " " + file.string() + ": " +
+           (errors == 0 ? description : "not usable, " + plural(errors, "error"));
+}
+
+/// Reads a scene file (once); nullptr when it does not exist.
+const model::Scene* load_scene_ref(const model::FileRef& ref, LoadedInputs& inputs,
+                                   const legacy::ReadOptions& options) {
+    if (!check_exists(ref, "scene", inputs)) return nullptr;
+    const fs::path key = key_of(ref.resolved);
+    if (const auto it = inputs.scenes.find(key); it != inputs.scenes.end()) return &it->second;
+    const std::size_t errors = inputs.diagnostics.error_count();
+    model::Scene scene;
+    try {
+        scene = legacy::read_scene(ref.resolved, options, inputs.diagnostics);
+    } catch (const Error& error) {
+        inputs.diagnostics.add(error);
+    }
+    inputs.contents.push_back(contents_line(
+        "scene", ref.resolved, inputs.diagnostics.error_count() - errors, describe(scene)));
+    return &inputs.scenes.emplace(key, std::move(scene)).first->second;
+}
+
+/// Reads every scene of a simulation and, when there are several, merges them as a run
+/// would (materials by id, origin), reporting what the merge finds.
+void load_scenes(const model::Simulation& simulation, LoadedInputs& inputs,
+                 const legacy::ReadOptions& options) {
+    std::vector<const model::Scene*> parts;
+    for (const model::SceneEntry& entry : simulation.scenes) {
+        legacy::check_scene_offset(entry, inputs.diagnostics);
+        if (const model::Scene* scene = load_scene_ref(entry.file, inputs, options)) {
+            parts.push_back(scene);
+        }
+    }
+    if (parts.size() < 2) return;
+    model::Scene merged;
+    for (const model::Scene* part : parts) legacy::merge_scene(merged, *part, inputs.diagnostics);
+}
+
+/// Reads an atmosphere file (once).
+void load_atmosphere_ref(const model::FileRef& ref, LoadedInputs& inputs,
+                         const legacy::ReadOptions& options) {
+    if (!check_exists(ref, "atmosphere", inputs)) return;
+    const fs::path key = key_of(ref.resolved);
+    if (inputs.atmospheres.count(key) > 0) return;
+    const std::size_t errors = inputs.diagnostics.error_count();
+    model::Atmosphere atmosphere;
+    try {
+        atmosphere = legacy::read_atmosphere(ref.resolved, options, inputs.diagnostics,
+                                             ref.resolved.string());
+    } catch (const Error& error) {
+        inputs.diagnostics.add(error);
+    }
+    inputs.contents.push_back(contents_line("atmosphere", ref.resolved,
+                                            inputs.diagnostics.error_count() - errors,
+                                            describe(atmosphere)));
+    inputs.atmospheres.emplace(key, std::move(atmosphere));
+}
+
 const model::Platform* load_platform_ref(const model::FileRef& ref, LoadedInputs& inputs,
                                          const legacy::ReadOptions& options, LoadDepth depth) {
     if (!check_exists(ref, "platform", inputs)) return nullptr;
-    return load_platform_file(ref.resolved, inputs, options, depth == LoadDepth::everything);
+    return load_platform_file(ref.resolved, inputs, options, depth != LoadDepth::platforms);
 }
 
 void load_tasks_ref(const model::FileRef& ref, LoadedInputs& inputs,
@@ -107,28 +211,38 @@ void load_one_simulation(std::size_t index, LoadedInputs& inputs,
                          const legacy::ReadOptions& options, LoadDepth depth) {
     // Copy what is needed: loading may not touch inputs.simulations, but keep it simple.
     const model::Simulation simulation = inputs.simulations[index];
-    if (depth == LoadDepth::everything) {
+    const bool contents = depth == LoadDepth::contents;
+    if (contents) {
+        load_scenes(simulation, inputs, options);
+    } else if (depth == LoadDepth::everything) {
         for (const model::SceneEntry& scene : simulation.scenes) {
             check_exists(scene.file, "scene", inputs);
         }
     }
+    const model::Plugin* used_atmosphere =
+        contents ? legacy::used_atmosphere_plugin(simulation, inputs.diagnostics) : nullptr;
+    if (contents && used_atmosphere == nullptr) {
+        inputs.contents.push_back("atmosphere (default: " + simulation.file +
+                                  " names none): " + describe(legacy::default_atmosphere()));
+    }
     for (const model::Plugin& plugin : simulation.plugins) {
         if (plugin.basic_platform) {
             load_basic_platform(*plugin.basic_platform, inputs, options, depth);
-        } else if (plugin.basic_atmosphere && depth == LoadDepth::everything) {
-            check_exists(plugin.basic_atmosphere->atmosphere_file, "atmosphere", inputs);
+        } else if (plugin.basic_atmosphere && depth != LoadDepth::platforms) {
+            const model::FileRef& ref = plugin.basic_atmosphere->atmosphere_file;
+            if (&plugin == used_atmosphere) {
+                load_atmosphere_ref(ref, inputs, options);
+            } else {
+                check_exists(ref, "atmosphere", inputs);
+            }
         }
     }
-    if (depth == LoadDepth::everything) check_output_names(simulation, inputs.diagnostics);
+    if (depth != LoadDepth::platforms) check_output_names(simulation, inputs.diagnostics);
 }
 
 std::string lowercase(std::string text) {
     for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     return text;
-}
-
-std::string plural(std::size_t count, const char* noun) {
-    return std::to_string(count) + " " + noun + (count == 1 ? "" : "s");
 }
 
 }  // namespace
@@ -192,7 +306,7 @@ void check_file(const fs::path& file, LoadedInputs& inputs, const legacy::ReadOp
     const std::size_t first = inputs.simulations.size();
     load_simulation_file(file, inputs, options);
     for (std::size_t i = first; i < inputs.simulations.size(); ++i) {
-        load_one_simulation(i, inputs, options, LoadDepth::everything);
+        load_one_simulation(i, inputs, options, LoadDepth::contents);
     }
 }
 

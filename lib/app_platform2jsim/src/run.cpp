@@ -218,6 +218,7 @@ int run_check(const Options& options, Context& ctx, std::ostream& out) {
     LoadedInputs inputs;
     for (const fs::path& file : options.check_files) check_file(file, inputs, options.read_options);
     report(inputs, ctx, false);
+    for (const std::string& line : inputs.contents) out << line << '\n';
     out << "check: "
         << summary_text(inputs.diagnostics.error_count(), inputs.diagnostics.warning_count(),
                         inputs.files.size())

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // Reader of the glint YAML scene (docs/scene.md): origin, materials (inline or two-column
-// file spectra), geometry objects (OBJ or primitive) and their static or dynamic instances.
+// file spectra), geometry objects (OBJ or primitive) and their static or dynamic instances,
+// and DIRSIG `.glist` geometry lists included with `glists:` (read with read_glist).
 // yaml-cpp parses the text; every problem is reported with the YAML file line and the key
 // path (e.g. "materials[1].reflectance.values[2]") and the reader carries on.
+#include "glint/legacy/dirsig_scene_reader.h"
 #include "yaml_scene_parts.h"
 
 namespace glint::legacy {
@@ -32,12 +34,38 @@ void read_origin(Reader& r, const YAML::Node& node, model::Scene& scene) {
     scene.origin = origin;
 }
 
-void read_document(Reader& r, const YAML::Node& root, model::Scene& scene) {
-    if (!root.IsMap()) {
-        r.error(root, "", "expected a mapping with keys origin, materials and objects");
+/// Appends the objects and instances of every `glists[i]` to `scene`, whose materials the
+/// glists' `matid` and `usemtl` bind to (by id text).
+void read_glists(Reader& r, const YAML::Node& node, model::Scene& scene) {
+    if (!node.IsSequence()) {
+        r.error(node, "glists", "expected a list of .glist paths");
         return;
     }
-    r.warn_unknown(root, "", {"origin", "materials", "objects"});
+    for (std::size_t i = 0; i < node.size(); ++i) {
+        const std::string path = "glists[" + std::to_string(i) + "]";
+        const YAML::Node item = node[i];
+        if (!item.IsScalar() || item.Scalar().empty()) {
+            r.error(item, path, "expected the path of a .glist file");
+            continue;
+        }
+        const model::FileRef ref =
+            r.options.paths.resolve(item.Scalar(), r.base_dir, r.where(item, path), r.diagnostics);
+        if (ref.resolved.empty()) continue;
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(ref.resolved, ec)) {
+            r.error(item, path, "glist " + ref.text + " not found (" + ref.resolved.string() + ")");
+            continue;
+        }
+        read_glist(ref.resolved, r.options, scene, r.diagnostics);
+    }
+}
+
+void read_document(Reader& r, const YAML::Node& root, model::Scene& scene) {
+    if (!root.IsMap()) {
+        r.error(root, "", "expected a mapping with keys origin, materials, objects and glists");
+        return;
+    }
+    r.warn_unknown(root, "", {"origin", "materials", "objects", "glists"});
     if (const YAML::Node origin = root["origin"]) read_origin(r, origin, scene);
 
     if (const YAML::Node materials = root["materials"]) {
@@ -62,8 +90,9 @@ void read_document(Reader& r, const YAML::Node& root, model::Scene& scene) {
     }
 
     const YAML::Node objects = root["objects"];
+    const YAML::Node glists = root["glists"];
     if (!objects) {
-        r.error(root, "", "missing required key \"objects\"");
+        if (!glists) r.error(root, "", "missing required key \"objects\" (or \"glists\")");
     } else if (!objects.IsSequence()) {
         r.error(objects, "objects", "expected a list of objects");
     } else {
@@ -71,6 +100,7 @@ void read_document(Reader& r, const YAML::Node& root, model::Scene& scene) {
             read_object(r, objects[i], "objects[" + std::to_string(i) + "]", scene);
         }
     }
+    if (glists) read_glists(r, glists, scene);
 }
 
 }  // namespace

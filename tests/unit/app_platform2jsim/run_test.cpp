@@ -3,6 +3,7 @@
 // rewriting, building from parts, --append (constellations), --check, --dump-platform, and
 // the failure cases (missing files, clashing prefixes, outputs naming inputs), each checked
 // for its message, its status and that nothing was written.
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -284,7 +285,12 @@ TEST_F(Platform2JsimTest, CheckPrintsASummaryAndExitsZeroOnGoodInputs) {
     o.mode = Mode::check;
     o.check_files = {kData / "demo.sim"};
     EXPECT_EQ(run_mode(o), 0) << log_text();
-    EXPECT_EQ(m_out.str(), "check: 0 errors, 0 warnings in 6 files\n");
+    EXPECT_EQ(m_out.str(), "scene " + (kData / "site.scene").string() +
+                               ": 1 material, 1 object, 1 instance, 2 triangles\n"
+                               "atmosphere " +
+                               (kData / "clear.atm").string() +
+                               ": simple, sky at 260 K\n"
+                               "check: 0 errors, 0 warnings in 6 files\n");
     EXPECT_TRUE(m_log.empty()) << log_text();
 }
 
@@ -293,7 +299,7 @@ TEST_F(Platform2JsimTest, CheckListsEveryProblem) {
     o.mode = Mode::check;
     o.check_files = {kData / "bad" / "broken.sim"};
     EXPECT_EQ(run_mode(o), 1);
-    EXPECT_EQ(m_out.str(), "check: 4 errors, 0 warnings in 6 files\n");
+    EXPECT_THAT(m_out.str(), ::testing::EndsWith("check: 4 errors, 0 warnings in 6 files\n"));
     EXPECT_EQ(m_log.size(), 4u) << log_text();
     EXPECT_FALSE(logged("nothing written"));
 }
@@ -323,7 +329,36 @@ TEST_F(Platform2JsimTest, CheckWarnsAboutEntriesThatWriteTheSameFiles) {
         logged("plugin_list[1] (BasicPlatform) has the same output_folder '' and "
                "output_prefix ''"))
         << log_text();
-    EXPECT_EQ(m_out.str(), "check: 0 errors, 1 warning in 6 files\n");
+    EXPECT_EQ(m_out.str(), "atmosphere (default: " + (in / "twice.jsim").string() +
+                               " names none): parametric, aerosol optical depth 0.1 at 0.55 um\n"
+                               "check: 0 errors, 1 warning in 6 files\n");
+}
+
+TEST_F(Platform2JsimTest, CheckReadsScenesAndAtmospheres) {
+    const fs::path in = copy_inputs("in");
+    std::ofstream(in / "bad.yaml") << "materials: []\nobjects:\n  - primitive: box\n"
+                                      "    material: 1\n    lower: [0, 0, x]\n";
+    std::ofstream(in / "sky.yaml") << "model: parametric\naerosol_optical_depth_550: -1\n";
+    std::ofstream(in / "two.jsim") << R"([{"scene_list": [{"inputs": "bad.yaml"}],
+        "plugin_list": [{"name": "BasicAtmosphere", "inputs": {"atmosphere_filename": "sky.yaml"}},
+        {"name": "BasicPlatform", "inputs": {"platform_filename": "cam.platform",
+         "motion_filename": "hover.ppd", "tasks_filename": "one_frame.tasks"}}]}])";
+    Options o;
+    o.mode = Mode::check;
+    o.check_files = {in / "two.jsim"};
+    EXPECT_EQ(run_mode(o), 1) << log_text();
+    EXPECT_TRUE(logged("error: " + (in / "bad.yaml").string() +
+                       ":5: objects[0].lower[2]: expected a finite number, got \"x\""))
+        << log_text();
+    EXPECT_TRUE(logged("error: " + (in / "sky.yaml").string() +
+                       ":2: aerosol_optical_depth_550: value -1 out of range"))
+        << log_text();
+    EXPECT_EQ(m_out.str(), "scene " + (in / "bad.yaml").string() +
+                               ": not usable, 3 errors\n"
+                               "atmosphere " +
+                               (in / "sky.yaml").string() +
+                               ": not usable, 1 error\n"
+                               "check: 4 errors, 0 warnings in 6 files\n");
 }
 
 TEST_F(Platform2JsimTest, DumpsAPlatformToTheStreamOrAFile) {

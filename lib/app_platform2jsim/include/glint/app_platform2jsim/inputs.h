@@ -1,20 +1,24 @@
 // SPDX-License-Identifier: Apache-2.0
 // Loading a simulation and every file it references, collecting every problem: the shared
 // first stage of all glint-platform2jsim modes. `.platform` and `.tasks` files are read
-// with their readers; motion, scene and atmosphere files (and the files a platform names:
-// PSF and active-area images, trigger files, jitter PSD tables) are checked for existence
-// only until their readers exist. A file referenced several times is read once.
+// with their readers; scenes and atmospheres are read with theirs by --check (LoadDepth::
+// contents) and checked for existence otherwise; motion files and the files a platform
+// names (PSF and active-area images, trigger files, jitter PSD tables) are checked for
+// existence only. A file referenced several times is read once.
 #pragma once
 
 #include <cstddef>
 #include <filesystem>
 #include <map>
 #include <set>
+#include <string>
 #include <vector>
 
 #include "glint/core/diagnostics.h"
 #include "glint/legacy/read_options.h"
+#include "glint/model/atmosphere.h"
 #include "glint/model/platform.h"
+#include "glint/model/scene.h"
 #include "glint/model/simulation.h"
 #include "glint/model/tasks.h"
 
@@ -26,6 +30,12 @@ struct LoadedInputs {
     /// Platforms and task lists that were read, by resolved path.
     std::map<std::filesystem::path, model::Platform> platforms;
     std::map<std::filesystem::path, model::TaskList> task_lists;
+    /// Scenes and atmospheres that were read (LoadDepth::contents), by resolved path.
+    std::map<std::filesystem::path, model::Scene> scenes;
+    std::map<std::filesystem::path, model::Atmosphere> atmospheres;
+    /// One line per scene or atmosphere read, or default atmosphere used, in reading order:
+    /// what it holds (e.g. "scene /d/site.scene: 2 materials, 3 objects, 4 instances").
+    std::vector<std::string> contents;
     /// Every distinct file read or checked (the count in the check summary).
     std::set<std::filesystem::path> files;
     Diagnostics diagnostics;
@@ -38,6 +48,7 @@ struct LoadedInputs {
 enum class LoadDepth {
     platforms,   ///< the platforms only, not the files they name (what --dump-platform needs)
     everything,  ///< platforms, task lists and the existence of every other file
+    contents,    ///< everything, and scenes and atmospheres read with their readers (--check)
 };
 
 /// Reads a `.sim` or `.jsim` into inputs.simulations (appended).
@@ -60,7 +71,7 @@ const model::Platform* load_platform_file(const std::filesystem::path& file, Loa
                                           bool check_references = true);
 
 /// What --check does with one file: by extension, `.platform` or `.tasks` alone, anything
-/// else as a simulation with load_references(everything).
+/// else as a simulation with load_references(contents).
 void check_file(const std::filesystem::path& file, LoadedInputs& inputs,
                 const legacy::ReadOptions& options);
 

@@ -22,6 +22,8 @@ namespace glint::legacy {
 
 /// Reads a glint YAML scene, loading and tessellating its geometry and reading the motion
 /// of its dynamic instances. `$SCENE_DIR` is the folder of `file` unless `options` sets it.
+/// The DIRSIG `.glist` files of its `glists` key are read with read_glist into the same
+/// scene, after its `objects`; their `matid` and `usemtl` bind to its materials by id.
 model::Scene read_yaml_scene(const std::filesystem::path& file, const ReadOptions& options,
                              Diagnostics& diagnostics);
 

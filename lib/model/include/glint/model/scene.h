@@ -3,7 +3,8 @@
 // optional specular lobe, emissivity, temperature), geometry objects (an OBJ file or a
 // tessellated primitive, each held as a validated triangle mesh) and their static or
 // dynamic instances. Plain data in SI units (m, rad, K; wavelengths µm). The glint YAML
-// scene reader (glint/legacy/scene_reader.h) fills it; docs/scene.md is the full reference.
+// scene reader (glint/legacy/scene_reader.h) fills it, as do the DIRSIG scene readers
+// (glint/legacy/dirsig_scene_reader.h); docs/scene.md is the full reference.
 // The YAML keys read:
 //
 // clang-format off
@@ -18,6 +19,7 @@
 // | materials[]/specular/fraction, roughness | [0, 1], [0, 1] | - | 0, 0 |
 // | materials[]/emissivity | as reflectance; values in [0, 1] | µm or nm | 1 − reflectance |
 // | materials[]/temperature | number > 0 | K | 300 |
+// | objects | list of objects | - | required unless glists is given |
 // | objects[]/name | text | - | "object<index>" |
 // | objects[]/obj | path of a Wavefront OBJ (exclusive with primitive) | - | - |
 // | objects[]/primitive | ground_plane, box, sphere, disk, cylinder (exclusive with obj) | - | - |
@@ -40,6 +42,7 @@
 // | instances[]/matrix | 16 numbers, row-major 4×4, last row 0 0 0 1 (exclusive with the three above) | m | - |
 // | instances[]/motion | path of a .ppd or .motion (dynamic; exclusive with flex_motion and the static keys) | - | - |
 // | instances[]/flex_motion | text: an inline `<motion type="flexible">` element | - | - |
+// | glists[] | path of a DIRSIG .glist ($SCENE_DIR = the YAML file's folder); its objects and instances are appended after `objects`; matid and usemtl bind to materials[]/id (usemtl also to name) | - | [] |
 // clang-format on
 #pragma once
 
