@@ -1,0 +1,169 @@
+// SPDX-License-Identifier: Apache-2.0
+// The Embree 3 scene the path tracer traces: every geometry object of a model::Scene becomes
+// one triangle mesh in its own Embree scene (built once, shared by all its instances), and
+// every instance an Embree instance of it in the top-level scene (a two-level BVH). Static
+// instances carry their fixed transform; dynamic instances carry a quaternion-decomposed
+// motion transform with time steps spanning the capture window, so a ray's time inside the
+// window sees the instance where its trajectory puts it (Embree interpolates between steps;
+// quaternion interpolation keeps a spinning rotor rigid).
+//
+// Precision: Embree works in single precision. intersect() and occluded() take double-
+// precision rays and first clip them to the scene's bounding box (slightly enlarged) in
+// double precision, so a sensor 700 km up does not lose the ground to float rounding; the
+// distances they report are from the caller's origin. spawn_origin() offsets a secondary
+// ray's origin off the surface by a distance that grows with the coordinates' magnitude.
+//
+// Errors: Embree device errors (out of memory, invalid arguments, unsupported CPU) are
+// collected by the device's error callback and rethrown as glint::Error (runtime) after the
+// call that raised them. A memory cap (bytes) is enforced by Embree's memory monitor: a build
+// that would exceed it fails with glint::Error (runtime: glint::ErrorCategory has no resource
+// category) naming the cap and the amount requested.
+//
+// Thread safety: after build(), intersect/occluded/normal queries may be called from any
+// number of threads at once. The object owns its Embree device and scenes.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "glint/core/datetime.h"
+#include "glint/core/log.h"
+#include "glint/model/scene.h"
+#include "glint/motion/frames.h"
+#include "glint/motion/geometry.h"
+#include "glint/motion/trajectory.h"
+
+namespace glint::scene {
+
+using motion::Vec3;
+
+/// Embree device settings (recorded in provenance through DeviceInfo).
+struct DeviceSettings {
+    unsigned threads = 0;  ///< threads Embree may use to build; 0 = all hardware threads
+    /// ISA Embree should use ("sse2", "sse4.2", "avx", "avx2", "avx512"); empty = best the
+    /// CPU supports. An unknown name is a glint::Error (usage).
+    std::string isa;
+    /// Cap on the memory Embree may allocate, bytes; 0 = no cap (--max-memory).
+    std::uint64_t max_memory_bytes = 0;
+};
+
+/// What the device reports about itself, for provenance.
+struct DeviceInfo {
+    std::string embree_version;  ///< e.g. "3.13.5"
+    std::string config;          ///< the rtcNewDevice configuration string used
+    unsigned threads = 0;        ///< as requested (0 = all)
+};
+
+/// The time window dynamic instances are sampled over, seconds after the tasks reference
+/// time. begin_s == end_s is an instant (one pose per dynamic instance).
+struct TimeWindow {
+    double begin_s = 0.0;
+    double end_s = 0.0;
+};
+
+/// How finely dynamic instances are sampled in time.
+struct MotionSampling {
+    /// At least this many time steps over a window of non-zero length (≥ 2).
+    unsigned min_time_steps = 2;
+    /// At most this many (Embree allows up to 129).
+    unsigned max_time_steps = 129;
+    /// Steps are added until no step turns the instance by more than this angle, or moves
+    /// it by more than max_step_fraction of its object's bounding-box diagonal beyond what
+    /// linear interpolation between the step poses reproduces.
+    double max_step_rotation_deg = 5.0;
+    double max_step_fraction = 0.01;
+};
+
+/// Everything build() needs besides the scene.
+struct BuildOptions {
+    DeviceSettings device;
+    TimeWindow window;
+    MotionSampling motion;
+};
+
+/// A ray's closest hit.
+struct RayHit {
+    double distance_m = 0.0;  ///< along the (unit) direction, from the caller's origin
+    Vec3 position_m;          ///< origin + distance · direction, scene ENU
+    /// Unit geometric normal in scene ENU at the ray's time, on the side of the triangle's
+    /// front face (counter-clockwise vertices); not flipped towards the ray.
+    Vec3 normal;
+    std::uint32_t material = 0;  ///< index into model::Scene::materials
+    std::uint32_t instance = 0;  ///< index into model::Scene::instances
+    std::uint32_t triangle = 0;  ///< index into the object's mesh triangles
+};
+
+/// Axis-aligned bounds in scene ENU metres (of every instance over the whole window).
+struct Bounds {
+    Vec3 lower;
+    Vec3 upper;
+    bool empty() const noexcept {
+        return !(lower.x <= upper.x && lower.y <= upper.y && lower.z <= upper.z);
+    }
+};
+
+/// The trajectories of a scene's dynamic instances, indexed like model::Scene::instances
+/// (nullptr for static instances). `frame` places geodetic motion; `reference_utc` is the
+/// tasks reference time. Throws glint::Error (input, at the instance) for a motion that
+/// cannot be used.
+std::vector<std::unique_ptr<motion::Trajectory>> make_instance_trajectories(
+    const model::Scene& scene, const motion::SceneFrame& frame, const DateTime& reference_utc,
+    Log log = {});
+
+/// The built Embree scene.
+class GeometryScene {
+public:
+    /// Builds the scene. `trajectories` is indexed like scene.instances (make_instance_
+    /// trajectories); it must hold a trajectory for every dynamic instance. Throws
+    /// glint::Error: usage for bad settings (unknown ISA, min_time_steps < 2, window end <
+    /// begin), input when a dynamic instance has no trajectory or a mesh has a material
+    /// index out of range or a static transform is singular, runtime when the memory cap
+    /// is exceeded and for other Embree errors. An empty scene (no instances) is valid:
+    /// every ray misses.
+    static GeometryScene build(const model::Scene& scene,
+                               const std::vector<std::unique_ptr<motion::Trajectory>>& trajectories,
+                               const BuildOptions& options, Log log = {});
+
+    GeometryScene(GeometryScene&&) noexcept;
+    GeometryScene& operator=(GeometryScene&&) noexcept;
+    ~GeometryScene();
+
+    /// The closest hit of the ray origin + s · direction with s in (tmin_m, tmax_m), at time
+    /// `time_s` (clamped into the window). `direction` must be unit length.
+    std::optional<RayHit> intersect(const Vec3& origin_m, const Vec3& direction, double time_s,
+                                    double tmin_m = 0.0,
+                                    double tmax_m = std::numeric_limits<double>::infinity()) const;
+    /// Whether anything lies on the ray for s in (tmin_m, tmax_m) at `time_s`.
+    bool occluded(const Vec3& origin_m, const Vec3& direction, double time_s, double tmin_m = 0.0,
+                  double tmax_m = std::numeric_limits<double>::infinity()) const;
+
+    /// An origin for a ray leaving `hit` towards `direction`: the hit position moved off the
+    /// surface along the normal (to the side `direction` points to) by spawn_offset_m().
+    Vec3 spawn_origin(const RayHit& hit, const Vec3& direction) const noexcept;
+    /// The offset spawn_origin uses at `position_m`: 1e-4 m + 2⁻¹⁶ × the largest absolute
+    /// coordinate (128–256 float ulps), enough to clear Embree's single-precision hit.
+    static double spawn_offset_m(const Vec3& position_m) noexcept;
+
+    /// Bounds of the whole scene over the window (empty for an empty scene).
+    const Bounds& bounds() const noexcept;
+    /// The window the scene was built for.
+    const TimeWindow& window() const noexcept;
+    /// Device information for provenance.
+    const DeviceInfo& device() const noexcept;
+    /// Total triangles over all instances (instanced triangles counted once per instance).
+    std::uint64_t instanced_triangle_count() const noexcept;
+    /// Time steps used by each instance (1 for static ones), indexed like scene.instances.
+    const std::vector<unsigned>& time_steps() const noexcept;
+
+private:
+    struct Impl;
+    explicit GeometryScene(std::unique_ptr<Impl> impl);
+    std::unique_ptr<Impl> m_impl;
+};
+
+}  // namespace glint::scene

@@ -1,0 +1,224 @@
+// SPDX-License-Identifier: Apache-2.0
+// GeometryScene::build: checks the options and the scene, builds one Embree scene per
+// instanced object, then the top-level scene of instances — static ones with their fixed
+// transform, dynamic ones with quaternion-decomposed transforms at the time steps
+// instance_motion.cpp chooses — and the scene bounds (every step pose, padded for what
+// interpolation between steps may add). Also the small accessors.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "geometry_scene_impl.h"
+#include "glint/core/error.h"
+#include "glint/core/text.h"
+#include "instance_motion.h"
+#include "object_scene.h"
+
+namespace glint::scene {
+namespace {
+
+using detail::Affine;
+
+/// Embree's limit on time steps (RTC_MAX_TIME_STEP_COUNT).
+constexpr unsigned kMaxEmbreeTimeSteps = RTC_MAX_TIME_STEP_COUNT;
+/// Enlargement of the clipping box: relative part (× its size or coordinates) and absolute.
+constexpr double kClipPadRelative = 1e-3;
+constexpr double kClipPad_m = 1.0;
+
+void check_options(const BuildOptions& options) {
+    const MotionSampling& m = options.motion;
+    if (m.min_time_steps < 2) {
+        throw usage_error("min_time_steps is " + std::to_string(m.min_time_steps) +
+                          ", expected at least 2");
+    }
+    if (m.max_time_steps < m.min_time_steps || m.max_time_steps > kMaxEmbreeTimeSteps) {
+        throw usage_error("max_time_steps is " + std::to_string(m.max_time_steps) + ", expected " +
+                          std::to_string(m.min_time_steps) + " (min_time_steps) to " +
+                          std::to_string(kMaxEmbreeTimeSteps));
+    }
+    if (!(m.max_step_rotation_deg > 0.0) || !std::isfinite(m.max_step_rotation_deg)) {
+        throw usage_error("max_step_rotation_deg is " + format_shortest(m.max_step_rotation_deg) +
+                          ", expected a positive angle");
+    }
+    if (!(m.max_step_fraction > 0.0) || !std::isfinite(m.max_step_fraction)) {
+        throw usage_error("max_step_fraction is " + format_shortest(m.max_step_fraction) +
+                          ", expected a positive fraction");
+    }
+    const TimeWindow& w = options.window;
+    if (!std::isfinite(w.begin_s) || !std::isfinite(w.end_s)) {
+        throw usage_error("the time window is not finite");
+    }
+    if (w.end_s < w.begin_s) {
+        throw usage_error("the time window ends (" + format_shortest(w.end_s) +
+                          " s) before it begins (" + format_shortest(w.begin_s) + " s)");
+    }
+}
+
+/// Places a static (or instantaneous) instance: fixed transform, normal matrix, bounds.
+void place_fixed(RTCGeometry geometry, const Affine& affine, const Bounds& object_box,
+                 detail::InstanceData& data, Bounds& bounds) {
+    const std::array<float, 12> xfm = detail::to_float3x4(affine);
+    rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm.data());
+    data.normal_matrix = detail::inverse_transpose(affine.linear);
+    detail::expand(bounds, detail::transformed(object_box, affine));
+}
+
+/// Places a moving instance: one quaternion decomposition per step.
+void place_moving(RTCGeometry geometry, const detail::MotionSamples& samples,
+                  const Bounds& object_box, const detail::ObjectExtent& extent,
+                  const MotionSampling& sampling, detail::InstanceData& data, Bounds& bounds) {
+    rtcSetGeometryTimeStepCount(geometry, static_cast<unsigned>(samples.poses.size()));
+    Bounds swept = detail::empty_bounds();
+    for (std::size_t k = 0; k < samples.poses.size(); ++k) {
+        const motion::Pose& pose = samples.poses[k];
+        RTCQuaternionDecomposition qd;
+        rtcInitQuaternionDecomposition(&qd);
+        const motion::Quaternion& q = pose.orientation;
+        rtcQuaternionDecompositionSetQuaternion(&qd, static_cast<float>(q.w),
+                                                static_cast<float>(q.x), static_cast<float>(q.y),
+                                                static_cast<float>(q.z));
+        rtcQuaternionDecompositionSetTranslation(&qd, static_cast<float>(pose.position_m.x),
+                                                 static_cast<float>(pose.position_m.y),
+                                                 static_cast<float>(pose.position_m.z));
+        rtcSetGeometryTransformQuaternion(geometry, static_cast<unsigned>(k), &qd);
+        detail::expand(swept, detail::transformed(object_box, detail::pose_affine(pose)));
+    }
+    // Between steps a point turns on an arc that leaves the chord by at most
+    // r (1 − cos(θ/2)); the trajectory itself may stray from the interpolation by the
+    // sampling tolerance.
+    const double arc_m = extent.radius_m * (1.0 - std::cos(0.5 * samples.max_step_rotation_rad));
+    const double pad_m =
+        arc_m + std::max(samples.max_error_m, sampling.max_step_fraction * extent.diagonal_m);
+    detail::expand(bounds, detail::padded(swept, pad_m));
+    data.moving = true;
+    data.geometry = geometry;
+}
+
+Bounds clip_box(const Bounds& bounds) {
+    if (bounds.empty()) return bounds;
+    double size_m = norm(bounds.upper - bounds.lower);
+    for (std::size_t i = 0; i < 3; ++i) {
+        size_m = std::max({size_m, std::abs(bounds.lower[i]), std::abs(bounds.upper[i])});
+    }
+    return detail::padded(bounds, kClipPad_m + kClipPadRelative * size_m);
+}
+
+}  // namespace
+
+GeometryScene GeometryScene::build(
+    const model::Scene& scene, const std::vector<std::unique_ptr<motion::Trajectory>>& trajectories,
+    const BuildOptions& options, Log log) {
+    check_options(options);
+    for (const model::Instance& instance : scene.instances) {
+        if (instance.object_index >= scene.objects.size()) {
+            throw input_error("instance \"" + instance.name + "\" refers to object " +
+                                  std::to_string(instance.object_index) + ", out of range (" +
+                                  std::to_string(scene.objects.size()) + " objects)",
+                              instance.where);
+        }
+    }
+    for (const model::GeometryObject& object : scene.objects) {
+        detail::check_mesh(object, scene.materials.size());
+    }
+
+    auto impl = std::make_unique<Impl>();
+    impl->window = options.window;
+    impl->device = std::make_unique<detail::EmbreeDevice>(options.device);
+    detail::EmbreeDevice& device = *impl->device;
+
+    impl->objects.resize(scene.objects.size());
+    for (const model::Instance& instance : scene.instances) {
+        detail::ObjectData& data = impl->objects[instance.object_index];
+        if (!data.scene)
+            data = detail::build_object_scene(device, scene.objects[instance.object_index]);
+    }
+
+    bool any_moving = false;
+    const std::size_t n = scene.instances.size();
+    impl->instances.resize(n);
+    impl->time_steps.assign(n, 1);
+    impl->instance_geometries.reserve(n);
+    impl->bounds = detail::empty_bounds();
+    std::vector<detail::MotionSamples> samples(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const model::Instance& instance = scene.instances[i];
+        if (!instance.dynamic()) continue;
+        const motion::Trajectory* trajectory =
+            i < trajectories.size() ? trajectories[i].get() : nullptr;
+        if (!trajectory) {
+            throw input_error("dynamic instance \"" + instance.name + "\" has no trajectory",
+                              instance.where);
+        }
+        const model::Mesh& mesh = scene.objects[instance.object_index].mesh;
+        samples[i] = detail::sample_motion(*trajectory, options.window, options.motion,
+                                           detail::mesh_extent(mesh), instance.where);
+        if (!samples[i].within_tolerance) {
+            log.warning(format_located(
+                instance.where,
+                "instance \"" + instance.name + "\": " + std::to_string(samples[i].poses.size()) +
+                    " time steps leave steps of up to " +
+                    format_shortest(samples[i].max_step_rotation_rad * 180.0 / std::numbers::pi) +
+                    " deg and an interpolation error of up to " +
+                    format_shortest(samples[i].max_error_m) + " m (above the tolerances)"));
+        }
+        any_moving = any_moving || samples[i].poses.size() > 1;
+    }
+
+    impl->top = device.new_scene(RTC_SCENE_FLAG_ROBUST,
+                                 any_moving ? RTC_BUILD_QUALITY_MEDIUM : RTC_BUILD_QUALITY_HIGH,
+                                 "building the top-level scene");
+    for (std::size_t i = 0; i < n; ++i) {
+        const model::Instance& instance = scene.instances[i];
+        const model::Mesh& mesh = scene.objects[instance.object_index].mesh;
+        const std::string what = "placing instance \"" + instance.name + "\"";
+        detail::InstanceData& data = impl->instances[i];
+        data.object = instance.object_index;
+        const detail::ObjectData& object = impl->objects[data.object];
+        impl->instanced_triangles += object.triangle_count;
+
+        detail::GeometryPtr geometry = device.new_geometry(RTC_GEOMETRY_TYPE_INSTANCE, what);
+        rtcSetGeometryInstancedScene(geometry.get(), object.scene.get());
+        const Bounds object_box = detail::mesh_bounds(mesh);
+        if (!instance.dynamic()) {
+            place_fixed(geometry.get(), detail::static_affine(instance.transform, instance.where),
+                        object_box, data, impl->bounds);
+        } else if (samples[i].poses.size() == 1) {
+            place_fixed(geometry.get(), detail::pose_affine(samples[i].poses.front()), object_box,
+                        data, impl->bounds);
+        } else {
+            place_moving(geometry.get(), samples[i], object_box, detail::mesh_extent(mesh),
+                         options.motion, data, impl->bounds);
+            impl->time_steps[i] = static_cast<unsigned>(samples[i].poses.size());
+        }
+        rtcCommitGeometry(geometry.get());
+        device.check(what);
+        rtcAttachGeometryByID(impl->top.get(), geometry.get(), static_cast<unsigned>(i));
+        device.check(what);
+        impl->instance_geometries.push_back(std::move(geometry));
+    }
+    rtcCommitScene(impl->top.get());
+    device.check("building the top-level scene");
+    impl->clip_bounds = clip_box(impl->bounds);
+    log.debug("Embree scene: " + std::to_string(n) + " instances, " +
+              std::to_string(impl->instanced_triangles) + " instanced triangles, " +
+              std::to_string(device.used_bytes()) + " bytes held by Embree");
+    return GeometryScene(std::move(impl));
+}
+
+GeometryScene::GeometryScene(std::unique_ptr<Impl> impl) : m_impl(std::move(impl)) {}
+GeometryScene::GeometryScene(GeometryScene&&) noexcept = default;
+GeometryScene& GeometryScene::operator=(GeometryScene&&) noexcept = default;
+GeometryScene::~GeometryScene() = default;
+
+const Bounds& GeometryScene::bounds() const noexcept { return m_impl->bounds; }
+const TimeWindow& GeometryScene::window() const noexcept { return m_impl->window; }
+const DeviceInfo& GeometryScene::device() const noexcept { return m_impl->device->info(); }
+std::uint64_t GeometryScene::instanced_triangle_count() const noexcept {
+    return m_impl->instanced_triangles;
+}
+const std::vector<unsigned>& GeometryScene::time_steps() const noexcept {
+    return m_impl->time_steps;
+}
+
+}  // namespace glint::scene

@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: Apache-2.0
+// Object scenes: the mesh checks, the Embree triangle geometry (vertex and index buffers
+// allocated by Embree, so they are padded as its SSE loads need and counted by the memory
+// monitor), the robust high-quality BVH, and the object's bounds and extent.
+#include "object_scene.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#include "glint/core/error.h"
+
+namespace glint::scene::detail {
+
+static_assert(sizeof(std::array<float, 3>) == 3 * sizeof(float), "vertices are copied as a block");
+static_assert(sizeof(std::array<std::uint32_t, 3>) == 3 * sizeof(std::uint32_t),
+              "triangles are copied as a block");
+
+void check_mesh(const model::GeometryObject& object, std::size_t material_count) {
+    const model::Mesh& mesh = object.mesh;
+    const std::string name = "object \"" + object.name + "\"";
+    if (mesh.triangles.empty()) throw input_error(name + ": mesh has no triangles", object.where);
+    if (mesh.triangle_materials.size() != mesh.triangles.size()) {
+        throw input_error(name + ": mesh has " + std::to_string(mesh.triangles.size()) +
+                              " triangles but " + std::to_string(mesh.triangle_materials.size()) +
+                              " triangle materials",
+                          object.where);
+    }
+    for (const auto& v : mesh.vertices_m) {
+        if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) {
+            throw input_error(name + ": mesh has a vertex that is not finite", object.where);
+        }
+    }
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+        for (const std::uint32_t index : mesh.triangles[t]) {
+            if (index >= mesh.vertices_m.size()) {
+                throw input_error(name + ": triangle " + std::to_string(t) + " has vertex index " +
+                                      std::to_string(index) + ", out of range (" +
+                                      std::to_string(mesh.vertices_m.size()) + " vertices)",
+                                  object.where);
+            }
+        }
+        if (mesh.triangle_materials[t] >= material_count) {
+            throw input_error(name + ": triangle " + std::to_string(t) + " has material index " +
+                                  std::to_string(mesh.triangle_materials[t]) + ", out of range (" +
+                                  std::to_string(material_count) + " materials)",
+                              object.where);
+        }
+    }
+}
+
+ObjectData build_object_scene(EmbreeDevice& device, const model::GeometryObject& object) {
+    const model::Mesh& mesh = object.mesh;
+    const std::string what = "building object \"" + object.name + "\"";
+    ObjectData data;
+    GeometryPtr geometry = device.new_geometry(RTC_GEOMETRY_TYPE_TRIANGLE, what);
+
+    auto* vertices = static_cast<float*>(
+        rtcSetNewGeometryBuffer(geometry.get(), RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                3 * sizeof(float), mesh.vertices_m.size()));
+    device.check(what);
+    if (!vertices) throw runtime_error("Embree failed while " + what + ": no vertex buffer");
+    std::memcpy(vertices, mesh.vertices_m.data(), mesh.vertices_m.size() * 3 * sizeof(float));
+
+    auto* triangles = static_cast<std::uint32_t*>(
+        rtcSetNewGeometryBuffer(geometry.get(), RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                3 * sizeof(std::uint32_t), mesh.triangles.size()));
+    device.check(what);
+    if (!triangles) throw runtime_error("Embree failed while " + what + ": no index buffer");
+    std::memcpy(triangles, mesh.triangles.data(),
+                mesh.triangles.size() * 3 * sizeof(std::uint32_t));
+
+    rtcCommitGeometry(geometry.get());
+    device.check(what);
+
+    data.scene = device.new_scene(RTC_SCENE_FLAG_ROBUST, RTC_BUILD_QUALITY_HIGH, what);
+    rtcAttachGeometryByID(data.scene.get(), geometry.get(), 0);
+    device.check(what);
+    rtcCommitScene(data.scene.get());
+    device.check(what);
+
+    // The scene holds a reference to the geometry, which owns the buffers.
+    data.vertices = vertices;
+    data.triangles = triangles;
+    data.materials = mesh.triangle_materials;
+    data.triangle_count = mesh.triangles.size();
+    return data;
+}
+
+Bounds mesh_bounds(const model::Mesh& mesh) noexcept {
+    Bounds box = empty_bounds();
+    for (const auto& v : mesh.vertices_m) {
+        const Vec3 p{v[0], v[1], v[2]};
+        expand(box, {p, p});
+    }
+    return box;
+}
+
+ObjectExtent mesh_extent(const model::Mesh& mesh) noexcept {
+    ObjectExtent extent;
+    const Bounds box = mesh_bounds(mesh);
+    if (!box.empty()) extent.diagonal_m = norm(box.upper - box.lower);
+    for (const auto& v : mesh.vertices_m) {
+        extent.radius_m = std::max(extent.radius_m, norm(Vec3{v[0], v[1], v[2]}));
+    }
+    return extent;
+}
+
+}  // namespace glint::scene::detail

@@ -1,0 +1,165 @@
+// SPDX-License-Identifier: Apache-2.0
+// Ray queries on a built GeometryScene. A double-precision ray is first clipped to the
+// enlarged scene box (slab test in double); a ray that misses the box never reaches Embree.
+// Otherwise its origin moves to where the wanted interval starts inside the box (the box
+// entry, or tmin when that is later), which keeps the single-precision trace short and its
+// coordinates at the scene's own magnitude; distances are then reported from the caller's
+// origin, corrected for the rounding of the moved origin to float. The hit normal is
+// computed in double from the triangle's vertices (counter-clockwise front face) and taken
+// to scene ENU by the instance's normal matrix, at the ray's time for moving instances.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "geometry_scene_impl.h"
+
+namespace glint::scene {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+/// A caller's ray as Embree traces it.
+struct ClippedRay {
+    double shift_m = 0.0;  ///< distance along the ray from the caller's origin to `origin`
+    float origin[3] = {0.0f, 0.0f, 0.0f};
+    float direction[3] = {0.0f, 0.0f, 0.0f};
+    float tnear = 0.0f;
+    float tfar = 0.0f;
+};
+
+/// The part of origin + s · direction, s in (tmin, tmax), inside `box`; nullopt when empty.
+std::optional<ClippedRay> clip(const Bounds& box, const Vec3& origin, const Vec3& direction,
+                               double tmin_m, double tmax_m) noexcept {
+    if (box.empty() || !(tmin_m < tmax_m)) return std::nullopt;
+    // A ray Embree could not trace sensibly (NaN, infinite or zero) hits nothing.
+    const double span = dot(direction, direction);
+    if (!(span > 0.0) || !std::isfinite(span) || !std::isfinite(dot(origin, origin))) {
+        return std::nullopt;
+    }
+    double enter = -kInfinity;
+    double leave = kInfinity;
+    for (std::size_t i = 0; i < 3; ++i) {
+        if (direction[i] == 0.0) {
+            if (!(origin[i] >= box.lower[i] && origin[i] <= box.upper[i])) return std::nullopt;
+            continue;
+        }
+        const double inverse = 1.0 / direction[i];
+        double a = (box.lower[i] - origin[i]) * inverse;
+        double b = (box.upper[i] - origin[i]) * inverse;
+        if (a > b) std::swap(a, b);
+        enter = std::max(enter, a);
+        leave = std::min(leave, b);
+    }
+    const double from = std::max(tmin_m, enter);
+    const double to = std::min(tmax_m, leave);
+    if (!(from <= to) || !std::isfinite(from)) return std::nullopt;
+    ClippedRay ray;
+    ray.shift_m = from;
+    const Vec3 start = origin + direction * from;
+    for (std::size_t i = 0; i < 3; ++i) {
+        ray.origin[i] = static_cast<float>(start[i]);
+        ray.direction[i] = static_cast<float>(direction[i]);
+    }
+    ray.tnear = 0.0f;
+    ray.tfar = static_cast<float>(to - from);
+    return ray;
+}
+
+void fill(RTCRay& out, const ClippedRay& ray, float time01) noexcept {
+    out.org_x = ray.origin[0];
+    out.org_y = ray.origin[1];
+    out.org_z = ray.origin[2];
+    out.dir_x = ray.direction[0];
+    out.dir_y = ray.direction[1];
+    out.dir_z = ray.direction[2];
+    out.tnear = ray.tnear;
+    out.tfar = ray.tfar;
+    out.time = time01;
+    out.mask = 0xFFFFFFFFu;
+    out.id = 0;
+    out.flags = 0;
+}
+
+/// `time_s` clamped into the window and mapped to Embree's [0, 1].
+float ray_time(const TimeWindow& window, double time_s) noexcept {
+    const double length_s = window.end_s - window.begin_s;
+    if (!(length_s > 0.0) || !(time_s > window.begin_s)) return 0.0f;
+    if (!(time_s < window.end_s)) return 1.0f;
+    return static_cast<float>((time_s - window.begin_s) / length_s);
+}
+
+Vec3 vertex(const detail::ObjectData& object, std::uint32_t index) noexcept {
+    const float* v = object.vertices + 3 * static_cast<std::size_t>(index);
+    return {v[0], v[1], v[2]};
+}
+
+}  // namespace
+
+std::optional<RayHit> GeometryScene::intersect(const Vec3& origin_m, const Vec3& direction,
+                                               double time_s, double tmin_m, double tmax_m) const {
+    const Impl& impl = *m_impl;
+    const auto clipped = clip(impl.clip_bounds, origin_m, direction, tmin_m, tmax_m);
+    if (!clipped) return std::nullopt;
+    const float time01 = ray_time(impl.window, time_s);
+
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rayhit;
+    fill(rayhit.ray, *clipped, time01);
+    rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
+    rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(impl.top.get(), &context, &rayhit);
+    if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+
+    RayHit hit;
+    // The float origin and direction as Embree used them, measured along the caller's ray.
+    const Vec3 float_origin{clipped->origin[0], clipped->origin[1], clipped->origin[2]};
+    const Vec3 float_direction{clipped->direction[0], clipped->direction[1], clipped->direction[2]};
+    hit.distance_m = dot(float_origin - origin_m, direction) +
+                     static_cast<double>(rayhit.ray.tfar) * dot(float_direction, direction);
+    hit.position_m = origin_m + direction * hit.distance_m;
+    hit.instance = rayhit.hit.instID[0];
+    hit.triangle = rayhit.hit.primID;
+
+    const detail::InstanceData& instance = impl.instances[hit.instance];
+    const detail::ObjectData& object = impl.objects[instance.object];
+    hit.material = object.materials[hit.triangle];
+    const std::uint32_t* t = object.triangles + 3 * static_cast<std::size_t>(hit.triangle);
+    const Vec3 v0 = vertex(object, t[0]);
+    const Vec3 object_normal = cross(vertex(object, t[1]) - v0, vertex(object, t[2]) - v0);
+    detail::Mat3 normal_matrix = instance.normal_matrix;
+    if (instance.moving) {
+        float xfm[12];
+        rtcGetGeometryTransform(instance.geometry, time01, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+        normal_matrix = detail::inverse_transpose(detail::from_float3x4(xfm).linear);
+    }
+    hit.normal = normalized(normal_matrix * object_normal);
+    return hit;
+}
+
+bool GeometryScene::occluded(const Vec3& origin_m, const Vec3& direction, double time_s,
+                             double tmin_m, double tmax_m) const {
+    const Impl& impl = *m_impl;
+    const auto clipped = clip(impl.clip_bounds, origin_m, direction, tmin_m, tmax_m);
+    if (!clipped) return false;
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRay ray;
+    fill(ray, *clipped, ray_time(impl.window, time_s));
+    rtcOccluded1(impl.top.get(), &context, &ray);
+    return ray.tfar < 0.0f;  // Embree sets tfar to −inf on a hit
+}
+
+Vec3 GeometryScene::spawn_origin(const RayHit& hit, const Vec3& direction) const noexcept {
+    const double side = dot(direction, hit.normal) >= 0.0 ? 1.0 : -1.0;
+    return hit.position_m + hit.normal * (side * spawn_offset_m(hit.position_m));
+}
+
+double GeometryScene::spawn_offset_m(const Vec3& position_m) noexcept {
+    const double largest =
+        std::max({std::abs(position_m.x), std::abs(position_m.y), std::abs(position_m.z)});
+    return 1e-4 + std::ldexp(largest, -16);
+}
+
+}  // namespace glint::scene
