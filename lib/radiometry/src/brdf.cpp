@@ -144,15 +144,11 @@ SurfaceBrdf::SurfaceBrdf(double reflectance, double specular_fraction, double ro
     : m_diffuse(reflectance),
       m_specular(make_ggx(roughness)),
       m_specular_fraction(checked_fraction(specular_fraction)),
-      m_specular_probability(0.0) {
-    const double diffuse_weight = (1.0 - specular_fraction) * reflectance;
-    const double total = diffuse_weight + specular_fraction;
-    m_specular_probability = total > 0.0 ? specular_fraction / total : 0.0;
-}
+      m_specular_probability(specular_fraction) {}
 
 double SurfaceBrdf::eval(const Vec3& wo, const Vec3& wi) const noexcept {
     return (1.0 - m_specular_fraction) * m_diffuse.eval(wo, wi) +
-           m_specular_fraction * m_specular.eval(wo, wi);
+           m_specular_fraction * m_diffuse.reflectance() * m_specular.eval(wo, wi);
 }
 
 double SurfaceBrdf::pdf_per_sr(const Vec3& wo, const Vec3& wi) const noexcept {
@@ -168,7 +164,7 @@ std::optional<BrdfSample> SurfaceBrdf::sample(const Vec3& wo, double u_lobe, dou
                                               double u2) const noexcept {
     if (wo.z <= 0.0) return std::nullopt;
     const double ps = m_specular_probability;
-    if (ps <= 0.0 && m_diffuse.reflectance() <= 0.0) return std::nullopt;  // black
+    if (m_diffuse.reflectance() <= 0.0) return std::nullopt;  // black
     Vec3 wi;
     if (u_lobe < ps) {
         const auto s = m_specular.sample(wo, u1, u2);

@@ -14,8 +14,8 @@
 // Material parameters (SurfaceBrdf):
 // | name              | type   | unit | range   | meaning                                   |
 // |-------------------|--------|------|---------|-------------------------------------------|
-// | reflectance       | double | 1    | [0, 1]  | diffuse (Lambertian) reflectance ρ         |
-// | specular_fraction | double | 1    | [0, 1]  | s: weight of the GGX lobe, 1 − s of diffuse|
+// | reflectance       | double | 1    | [0, 1]  | reflectance ρ scaling both lobes           |
+// | specular_fraction | double | 1    | [0, 1]  | s: share of ρ in the GGX lobe, 1 − s diffuse|
 // | roughness         | double | 1    | [0, 1]  | r: GGX α = max(r², 10⁻³)                   |
 #pragma once
 
@@ -98,12 +98,15 @@ private:
     double m_alpha;
 };
 
-/// The material BRDF: f = (1 − s) ρ / π + s f_GGX(α), with s the specular fraction, ρ the
-/// diffuse reflectance and α = max(roughness², kMinGgxAlpha). Its directional albedo is
-/// (1 − s) ρ + s E_GGX(wo) ≤ 1. Sampling picks the GGX lobe with probability
-/// P_s = s / (s + (1 − s) ρ) and the cosine lobe otherwise, and weights the sample by the
-/// full f cos θi / pdf with pdf = (1 − P_s) cos θi/π + P_s pdf_GGX (one-sample MIS with the
-/// balance heuristic), so a direction either lobe could give is weighted consistently.
+/// The material BRDF: f = ρ [(1 − s) / π + s f_GGX(α)], with ρ the reflectance, s the
+/// specular fraction (the share of the reflectance that goes into the lobe) and α =
+/// max(roughness², kMinGgxAlpha). Its directional albedo is ρ [(1 − s) + s E_GGX(wo)] ≤ ρ.
+/// Because ρ scales the whole BRDF, a spectral reflectance ρ(λ) keeps the lobe shape and
+/// sampling independent of wavelength (the path tracer samples once for all bands).
+/// Sampling picks the GGX lobe with probability P_s = s and the cosine lobe otherwise, and
+/// weights the sample by the full f cos θi / pdf with pdf = (1 − s) cos θi/π + s pdf_GGX
+/// (one-sample MIS with the balance heuristic), so a direction either lobe could give is
+/// weighted consistently.
 class SurfaceBrdf {
 public:
     /// Throws glint::Error (input) unless all three parameters lie in [0, 1].

@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: Apache-2.0
+// The illumination and path terms of one capture, precomputed on the focal plane's spectral
+// grid from an atmosphere model and the solar spectrum so that tracing a path queries no
+// model and allocates nothing:
+//   - the sun: its direction in scene ENU at the window's begin and end (interpolated per
+//     sample time), its angular radius, and its spectral irradiance at the surface normal to
+//     the beam, E_sun(λ) = E_toa(λ, d) T_sun(λ, θs) [W/(cm² µm)];
+//   - the isotropic sky radiance L_sky(λ) = E_diffuse/π + L_thermal [W/(cm² sr µm)];
+//   - the sensor path: transmittance T_v(λ) and path radiance L_p(λ) [W/(cm² sr µm)] for the
+//     direction surface → sensor, tabulated over view zenith (0–88° every 4°) and azimuth
+//     relative to the sun (0–180° every 15°; the single-scatter terms are symmetric about
+//     the sun's vertical plane) and bilinearly interpolated.
+// The surface altitude of every query is the scene origin's; paths between surfaces inside
+// the scene have no atmospheric effects. docs/physics.md ("Path tracer") gives the formulas.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "glint/core/spectral.h"
+#include "glint/motion/geometry.h"
+#include "glint/scene/atmosphere.h"
+#include "glint/scene/solar.h"
+
+namespace glint::radiometry {
+
+using motion::Vec3;
+
+/// Everything make_environment needs.
+struct EnvironmentInputs {
+    /// Unit direction towards the sun (scene ENU) at the window's begin and end.
+    Vec3 sun_direction_begin{0.0, 0.0, 1.0};
+    Vec3 sun_direction_end{0.0, 0.0, 1.0};
+    double window_begin_s = 0.0;
+    double window_end_s = 0.0;
+    double sun_distance_au = 1.0;
+    double surface_altitude_m = 0.0;  ///< the scene origin's altitude
+    double sensor_altitude_m = 0.0;   ///< the sensor's altitude (≥ surface; clamped to it)
+};
+
+/// The precomputed illumination of one capture.
+class Environment {
+public:
+    /// View-zenith nodes of the sensor-path tables, degrees.
+    static constexpr double kViewZenithStepDeg = 4.0;
+    static constexpr double kViewZenithMaxDeg = 88.0;
+    /// Relative-azimuth nodes, degrees.
+    static constexpr double kAzimuthStepDeg = 15.0;
+
+    /// An environment given directly (tests, user-defined skies): no path effects
+    /// (T_v = 1, L_p = 0). Throws glint::Error (input) for vectors of the wrong size,
+    /// negative or non-finite values, or a zero sun direction.
+    static Environment uniform(const SpectralGrid& grid, const Vec3& sun_direction,
+                               std::vector<double> sun_irradiance_w_per_cm2_um,
+                               std::vector<double> sky_radiance_w_per_cm2_sr_um);
+
+    /// The environment of a capture from an atmosphere model and the solar spectrum.
+    /// Throws glint::Error (input) for non-finite inputs, a zero sun direction or a window
+    /// with end < begin.
+    static Environment make(const SpectralGrid& grid, const scene::AtmosphereModel& atmosphere,
+                            const scene::SolarSpectrum& sun, const EnvironmentInputs& inputs);
+
+    /// Number of bands.
+    std::size_t bands() const noexcept { return m_bands; }
+    /// The grid.
+    const SpectralGrid& grid() const noexcept { return m_grid; }
+    /// Unit direction towards the sun at `time_s` (normalized linear interpolation over the
+    /// window, clamped outside it).
+    Vec3 sun_direction(double time_s) const noexcept;
+    /// Angular radius of the sun disk, rad.
+    double sun_half_angle_rad() const noexcept { return m_sun_half_angle_rad; }
+    /// E_sun(λ) at the surface, normal to the beam, W/(cm² µm) (0 with the sun below the
+    /// horizon).
+    std::span<const double> sun_irradiance_w_per_cm2_um() const noexcept { return m_sun; }
+    /// Whether the sun contributes at all (any band > 0).
+    bool sun_visible() const noexcept { return m_sun_visible; }
+    /// L_sky(λ), W/(cm² sr µm), seen by rays that leave the scene upwards.
+    std::span<const double> sky_radiance_w_per_cm2_sr_um() const noexcept { return m_sky; }
+    /// Whether the sky is black on the whole grid.
+    bool sky_black() const noexcept { return m_sky_black; }
+    /// Whether the sensor path changes anything (T_v ≠ 1 or L_p ≠ 0 somewhere).
+    bool has_sensor_path() const noexcept { return m_has_sensor_path; }
+    /// Writes T_v(λ) and L_p(λ) for the unit direction `to_sensor` (surface → sensor, scene
+    /// ENU) at `time_s` (the sun's azimuth at that time sets the relative azimuth). A
+    /// direction below the horizon uses the 88° node.
+    void sensor_path(const Vec3& to_sensor, double time_s, std::span<double> transmittance,
+                     std::span<double> path_radiance_w_per_cm2_sr_um) const noexcept;
+
+private:
+    Environment(const SpectralGrid& grid);
+
+    SpectralGrid m_grid;
+    std::size_t m_bands = 0;
+    Vec3 m_sun_begin{0.0, 0.0, 1.0};
+    Vec3 m_sun_end{0.0, 0.0, 1.0};
+    double m_window_begin_s = 0.0;
+    double m_window_end_s = 0.0;
+    double m_sun_half_angle_rad = 0.0;
+    std::vector<double> m_sun;
+    std::vector<double> m_sky;
+    bool m_sun_visible = false;
+    bool m_sky_black = true;
+    bool m_has_sensor_path = false;
+    std::size_t m_zenith_nodes = 0;
+    std::size_t m_azimuth_nodes = 0;
+    /// [zenith][band]
+    std::vector<double> m_view_transmittance;
+    /// [zenith][azimuth][band]
+    std::vector<double> m_path_radiance;
+};
+
+}  // namespace glint::radiometry

@@ -1,0 +1,58 @@
+// SPDX-License-Identifier: Apache-2.0
+// A scene's materials sampled on one spectral grid, as the path tracer uses them: per band
+// the reflectance ρ(λ) and the emitted radiance ε(λ) B(λ, T); per material the wavelength-
+// independent lobe shape (SurfaceBrdf with ρ = 1, so f_λ = ρ(λ) · shape). Tables are held
+// flat ([material][band]) so a path touches no allocation. Curves are linearly interpolated
+// and held constant beyond their first and last wavelength (a warning names each material
+// whose curve does not cover the grid). Units: emitted radiance W/(cm² sr µm).
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include "glint/core/log.h"
+#include "glint/core/spectral.h"
+#include "glint/model/scene.h"
+#include "glint/radiometry/brdf.h"
+
+namespace glint::radiometry {
+
+/// The materials of a scene on a spectral grid.
+class MaterialTable {
+public:
+    /// Samples every material of `materials` on `grid`. Throws glint::Error (input, at the
+    /// material) for a reflectance or emissivity outside [0, 1] after interpolation, ε + ρ > 1
+    /// + 1e-9 at any band, or a non-positive temperature.
+    MaterialTable(std::span<const model::Material> materials, const SpectralGrid& grid,
+                  Log log = {});
+
+    /// Number of materials.
+    std::size_t size() const noexcept { return m_shapes.size(); }
+    /// Number of bands.
+    std::size_t bands() const noexcept { return m_bands; }
+    /// ρ(λ) of material `m`, one value per band.
+    std::span<const double> reflectance(std::size_t m) const noexcept {
+        return {m_reflectance.data() + m * m_bands, m_bands};
+    }
+    /// ε(λ) B(λ, T) of material `m`, W/(cm² sr µm), one value per band.
+    std::span<const double> emission_w_per_cm2_sr_um(std::size_t m) const noexcept {
+        return {m_emission.data() + m * m_bands, m_bands};
+    }
+    /// Whether material `m` emits anything on the grid (skips a loop per hit when not).
+    bool emits(std::size_t m) const noexcept { return m_emits[m] != 0; }
+    /// Whether material `m` reflects anything on the grid.
+    bool reflects(std::size_t m) const noexcept { return m_reflects[m] != 0; }
+    /// The lobe shape of material `m`: SurfaceBrdf(1, s, roughness).
+    const SurfaceBrdf& shape(std::size_t m) const noexcept { return m_shapes[m]; }
+
+private:
+    std::size_t m_bands = 0;
+    std::vector<double> m_reflectance;
+    std::vector<double> m_emission;
+    std::vector<unsigned char> m_emits;
+    std::vector<unsigned char> m_reflects;
+    std::vector<SurfaceBrdf> m_shapes;
+};
+
+}  // namespace glint::radiometry

@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: Apache-2.0
+// The spectral path tracer. One path carries a whole spectral vector over the environment's
+// grid; its geometry (directions, Russian roulette) is wavelength-independent, because every
+// material's BRDF is ρ(λ) times one lobe shape. At each surface vertex the path adds the
+// surface's emission ε B(λ, T) and the sun by next-event estimation (a direction drawn
+// uniformly in the sun's disk, one shadow ray), then continues in a direction drawn from the
+// lobe shape (cosine-weighted diffuse or GGX visible normals). A path that leaves the scene
+// upwards sees the isotropic sky; one that leaves it downwards sees nothing. Primary rays
+// that hit a surface get the sensor path: L = T_v ⊙ L_surface + L_p. Triangles are two-sided
+// (the shading normal is flipped to face the incoming ray). After `roulette_start_bounce`
+// bounces a path survives with probability min(1, max_λ β(λ)) (β the throughput), and it
+// stops after `max_bounces`. docs/physics.md ("Path tracer") states the estimator.
+//
+// trace() allocates nothing: scratch vectors live in a PathScratch the caller keeps per
+// thread.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "glint/core/rng.h"
+#include "glint/radiometry/environment.h"
+#include "glint/radiometry/materials.h"
+#include "glint/scene/geometry_scene.h"
+
+namespace glint::radiometry {
+
+/// One sample ray of a pixel problem.
+struct SampleRay {
+    Vec3 origin_m;      ///< scene ENU
+    Vec3 direction;     ///< unit, scene ENU
+    double time_s = 0;  ///< seconds after the tasks reference time
+    double weight = 1;  ///< relative weight of the sample in the pixel (e.g. a PSF weight), > 0
+};
+
+/// Path tracer settings.
+struct TracerSettings {
+    unsigned max_bounces = 8;           ///< surface scatterings after the first hit
+    unsigned roulette_start_bounce = 3;  ///< Russian roulette from this bounce on
+};
+
+/// Per-thread scratch space for trace().
+class PathScratch {
+public:
+    explicit PathScratch(std::size_t bands) : throughput(bands), sun(bands), path(bands) {}
+    std::vector<double> throughput;
+    std::vector<double> sun;
+    std::vector<double> path;
+    std::uint64_t rays = 0;  ///< intersection and shadow queries traced so far (statistics)
+};
+
+/// Traces sample rays through a built scene.
+class PathTracer {
+public:
+    /// The tracer keeps references: the scene, materials and environment must outlive it.
+    /// Throws glint::Error (input) when the materials and environment have different band
+    /// counts, or (usage) for max_bounces > 10000.
+    PathTracer(const scene::GeometryScene& scene, const MaterialTable& materials,
+               const Environment& environment, TracerSettings settings = {});
+
+    /// Number of bands of the radiance trace() writes.
+    std::size_t bands() const noexcept { return m_environment.bands(); }
+    /// The environment.
+    const Environment& environment() const noexcept { return m_environment; }
+
+    /// Traces one path for `ray` and writes its at-aperture radiance, W/(cm² sr µm), to
+    /// `radiance` (bands() values; overwritten). Draws from `rng` only. `scratch` must have
+    /// been made for bands().
+    void trace(const SampleRay& ray, RandomStream& rng, PathScratch& scratch,
+               std::span<double> radiance) const;
+
+private:
+    const scene::GeometryScene& m_scene;
+    const MaterialTable& m_materials;
+    const Environment& m_environment;
+    TracerSettings m_settings;
+};
+
+}  // namespace glint::radiometry

@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: Apache-2.0
+// Pixel problems, as DIRSIG5's sensor plugins hand them to the core: a problem is a pixel
+// (or any radiometric measurement) whose sample rays a RaySource generates, with a
+// convergence rule; solve() traces sample after sample until the rule is met and returns the
+// weighted mean spectral radiance, the sample count and the standard error at the reference
+// wavelength.
+//
+// Convergence (DESIGN.md): after at least min_samples, stop when the weighted mean radiance
+// at the reference band changed by less than threshold (absolute, W/(cm² sr µm)) between
+// N − 1 and N samples; always stop at max_samples. The weighted mean is Σ wᵢ Lᵢ / Σ wᵢ; its
+// standard error uses the weighted variance and Kish's effective sample size (Σw)²/Σw².
+//
+// Determinism: sample n of problem p draws every random number (the RaySource's first, then
+// the tracer's) from RandomStream(seed, {plugin, task, capture, p, n}). A problem is solved
+// by one thread in sample order, so the results are bit-identical for any thread count.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "glint/core/context.h"
+#include "glint/core/rng.h"
+#include "glint/radiometry/path_tracer.h"
+
+namespace glint::radiometry {
+
+/// Where a set of problems sits in a simulation: the stream key's leading parts.
+struct StreamKey {
+    std::uint64_t seed = kDefaultSeed;
+    std::uint64_t plugin = 0;
+    std::uint64_t task = 0;
+    std::uint64_t capture = 0;
+};
+
+/// The convergence rule of a problem.
+struct Convergence {
+    std::uint64_t min_samples = 1;
+    std::uint64_t max_samples = 1;
+    double threshold_w_per_cm2_sr_um = 0.0;  ///< ≤ 0: always max_samples
+};
+
+/// Generates the sample rays of problems. generate() is called concurrently from many
+/// threads and must depend only on its arguments (and draw only from `rng`).
+class RaySource {
+public:
+    virtual ~RaySource() = default;
+    /// Sample `sample` (0-based) of problem `problem`.
+    virtual SampleRay generate(std::uint64_t problem, std::uint64_t sample,
+                               RandomStream& rng) const = 0;
+};
+
+/// The result of one problem.
+struct Solution {
+    std::vector<double> radiance_w_per_cm2_sr_um;  ///< weighted mean, one per band
+    std::uint64_t samples = 0;
+    double standard_error_w_per_cm2_sr_um = 0.0;  ///< at the reference band
+};
+
+/// The results of problems first … first + count − 1, flat: radiance[i · bands + b].
+struct Solutions {
+    std::size_t bands = 0;
+    std::vector<double> radiance_w_per_cm2_sr_um;
+    std::vector<std::uint64_t> samples;
+    std::vector<double> standard_error_w_per_cm2_sr_um;
+    std::uint64_t rays = 0;  ///< rays traced in all (primary, bounce and shadow; statistics)
+
+    std::span<const double> radiance(std::size_t i) const noexcept {
+        return {radiance_w_per_cm2_sr_um.data() + i * bands, bands};
+    }
+};
+
+/// A batch of problems that share a ray source and a convergence rule.
+struct ProblemBatch {
+    StreamKey key;
+    const RaySource* source = nullptr;
+    Convergence convergence;
+    std::size_t reference_band = 0;  ///< the band the convergence rule watches
+    std::uint64_t first_problem = 0;
+    std::uint64_t count = 0;
+};
+
+/// Index of the band nearest to `wavelength_um` (the lower one on a tie).
+std::size_t nearest_band(const SpectralGrid& grid, double wavelength_um) noexcept;
+
+/// Solves one problem on the calling thread. Throws glint::Error (usage) for min_samples
+/// < 1, max_samples < min_samples, a reference band out of range, or a null source; (input)
+/// for a sample with a non-positive or non-finite weight.
+Solution solve(const PathTracer& tracer, const ProblemBatch& batch, std::uint64_t problem);
+
+/// Solves a batch in parallel on context.threads threads (0: all), reporting progress as
+/// "radiance" and stopping with glint::Error (cancelled) when context.cancel is raised.
+/// Same errors as the single-problem solve.
+Solutions solve(const PathTracer& tracer, const ProblemBatch& batch, const Context& context);
+
+}  // namespace glint::radiometry

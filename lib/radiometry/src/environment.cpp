@@ -1,0 +1,176 @@
+// SPDX-License-Identifier: Apache-2.0
+// Environment: the per-capture illumination and sensor-path tables
+// (glint/radiometry/environment.h).
+#include "glint/radiometry/environment.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <utility>
+
+#include "glint/core/error.h"
+#include "glint/radiometry/sampling.h"
+
+namespace glint::radiometry {
+namespace {
+
+constexpr double kRadToDeg = 180.0 / std::numbers::pi;
+
+Vec3 checked_unit(const Vec3& v, const char* what) {
+    const double n = norm(v);
+    if (!std::isfinite(n) || !(n > 0.0)) {
+        throw input_error(std::string(what) + " must be a finite non-zero vector");
+    }
+    return v / n;
+}
+
+void check_spectrum(const std::vector<double>& values, std::size_t bands, const char* what) {
+    if (values.size() != bands) {
+        throw input_error(std::string(what) + " has " + std::to_string(values.size()) +
+                          " values for a grid of " + std::to_string(bands));
+    }
+    for (double v : values) {
+        if (!std::isfinite(v) || v < 0.0) {
+            throw input_error(std::string(what) + " values must be finite and >= 0");
+        }
+    }
+}
+
+bool any_positive(const std::vector<double>& values) {
+    return std::any_of(values.begin(), values.end(), [](double v) { return v > 0.0; });
+}
+
+double zenith_deg(const Vec3& unit) { return std::acos(std::clamp(unit.z, -1.0, 1.0)) * kRadToDeg; }
+
+/// Azimuth clockwise from north (+y) towards east (+x), degrees in [0, 360).
+double azimuth_deg(const Vec3& unit) {
+    const double a = std::atan2(unit.x, unit.y) * kRadToDeg;
+    return a < 0.0 ? a + 360.0 : a;
+}
+
+/// Position of `value` on nodes 0, step, 2·step … (count nodes): lower index and fraction.
+std::pair<std::size_t, double> locate(double value, double step, std::size_t count) {
+    if (count < 2) return {0, 0.0};
+    const double x = std::clamp(value / step, 0.0, static_cast<double>(count - 1));
+    const auto lo = std::min(static_cast<std::size_t>(x), count - 2);
+    return {lo, x - static_cast<double>(lo)};
+}
+
+}  // namespace
+
+Environment::Environment(const SpectralGrid& grid)
+    : m_grid(grid),
+      m_bands(grid.size()),
+      m_sun_half_angle_rad(kSunAngularRadiusRad),
+      m_sun(grid.size(), 0.0),
+      m_sky(grid.size(), 0.0) {}
+
+Environment Environment::uniform(const SpectralGrid& grid, const Vec3& sun_direction,
+                                 std::vector<double> sun_irradiance_w_per_cm2_um,
+                                 std::vector<double> sky_radiance_w_per_cm2_sr_um) {
+    Environment env(grid);
+    env.m_sun_begin = env.m_sun_end = checked_unit(sun_direction, "the sun direction");
+    check_spectrum(sun_irradiance_w_per_cm2_um, grid.size(), "the sun irradiance");
+    check_spectrum(sky_radiance_w_per_cm2_sr_um, grid.size(), "the sky radiance");
+    env.m_sun = std::move(sun_irradiance_w_per_cm2_um);
+    env.m_sky = std::move(sky_radiance_w_per_cm2_sr_um);
+    env.m_sun_visible = any_positive(env.m_sun);
+    env.m_sky_black = !any_positive(env.m_sky);
+    return env;
+}
+
+Environment Environment::make(const SpectralGrid& grid, const scene::AtmosphereModel& atmosphere,
+                              const scene::SolarSpectrum& sun, const EnvironmentInputs& in) {
+    if (!std::isfinite(in.window_begin_s) || !std::isfinite(in.window_end_s) ||
+        in.window_end_s < in.window_begin_s) {
+        throw input_error("the capture window must be finite with end >= begin");
+    }
+    if (!std::isfinite(in.surface_altitude_m) || !std::isfinite(in.sensor_altitude_m)) {
+        throw input_error("the surface and sensor altitudes must be finite");
+    }
+    Environment env(grid);
+    env.m_sun_begin = checked_unit(in.sun_direction_begin, "the sun direction at the window begin");
+    env.m_sun_end = checked_unit(in.sun_direction_end, "the sun direction at the window end");
+    env.m_window_begin_s = in.window_begin_s;
+    env.m_window_end_s = in.window_end_s;
+
+    const Vec3 sun_mid = env.sun_direction(0.5 * (in.window_begin_s + in.window_end_s));
+    scene::AtmosphereGeometry geometry;
+    geometry.sun_zenith_deg = zenith_deg(sun_mid);
+    geometry.sun_azimuth_deg = azimuth_deg(sun_mid);
+    geometry.surface_altitude_m = in.surface_altitude_m;
+    geometry.sensor_altitude_m = std::max(in.sensor_altitude_m, in.surface_altitude_m);
+
+    const std::vector<double> toa = sun.resample(grid, in.sun_distance_au);
+    const std::vector<double> t_sun = atmosphere.sun_transmittance(grid, geometry);
+    for (std::size_t b = 0; b < env.m_bands; ++b) env.m_sun[b] = toa[b] * t_sun[b];
+    env.m_sky = atmosphere.sky_radiance_w_per_cm2_sr_um(grid, geometry, toa);
+    env.m_sun_visible = any_positive(env.m_sun);
+    env.m_sky_black = !any_positive(env.m_sky);
+
+    env.m_zenith_nodes =
+        static_cast<std::size_t>(std::lround(kViewZenithMaxDeg / kViewZenithStepDeg)) + 1;
+    env.m_azimuth_nodes = static_cast<std::size_t>(std::lround(180.0 / kAzimuthStepDeg)) + 1;
+    env.m_view_transmittance.resize(env.m_zenith_nodes * env.m_bands);
+    env.m_path_radiance.resize(env.m_zenith_nodes * env.m_azimuth_nodes * env.m_bands);
+    bool effects = false;
+    for (std::size_t z = 0; z < env.m_zenith_nodes; ++z) {
+        geometry.view_zenith_deg = static_cast<double>(z) * kViewZenithStepDeg;
+        geometry.view_azimuth_deg = geometry.sun_azimuth_deg;
+        const std::vector<double> t_view = atmosphere.sensor_transmittance(grid, geometry);
+        std::copy(t_view.begin(), t_view.end(),
+                  env.m_view_transmittance.begin() + static_cast<std::ptrdiff_t>(z * env.m_bands));
+        effects = effects || std::any_of(t_view.begin(), t_view.end(),
+                                         [](double t) { return t != 1.0; });
+        for (std::size_t a = 0; a < env.m_azimuth_nodes; ++a) {
+            geometry.view_azimuth_deg =
+                std::fmod(geometry.sun_azimuth_deg + static_cast<double>(a) * kAzimuthStepDeg,
+                          360.0);
+            const std::vector<double> lp =
+                atmosphere.path_radiance_w_per_cm2_sr_um(grid, geometry, toa);
+            std::copy(lp.begin(), lp.end(),
+                      env.m_path_radiance.begin() +
+                          static_cast<std::ptrdiff_t>((z * env.m_azimuth_nodes + a) * env.m_bands));
+            effects = effects || any_positive(lp);
+        }
+    }
+    env.m_has_sensor_path = effects;
+    return env;
+}
+
+Vec3 Environment::sun_direction(double time_s) const noexcept {
+    const double span = m_window_end_s - m_window_begin_s;
+    if (!(span > 0.0)) return m_sun_begin;
+    const double f = std::clamp((time_s - m_window_begin_s) / span, 0.0, 1.0);
+    return normalized(m_sun_begin * (1.0 - f) + m_sun_end * f);
+}
+
+void Environment::sensor_path(const Vec3& to_sensor, double time_s, std::span<double> transmittance,
+                              std::span<double> path_radiance) const noexcept {
+    if (!m_has_sensor_path) {
+        std::fill(transmittance.begin(), transmittance.end(), 1.0);
+        std::fill(path_radiance.begin(), path_radiance.end(), 0.0);
+        return;
+    }
+    const auto [z0, fz] = locate(zenith_deg(to_sensor), kViewZenithStepDeg, m_zenith_nodes);
+    double relative = std::fabs(azimuth_deg(to_sensor) - azimuth_deg(sun_direction(time_s)));
+    if (relative > 180.0) relative = 360.0 - relative;
+    const auto [a0, fa] = locate(relative, kAzimuthStepDeg, m_azimuth_nodes);
+    const double* t0 = m_view_transmittance.data() + z0 * m_bands;
+    const double* t1 = t0 + m_bands;
+    const double* p00 = m_path_radiance.data() + (z0 * m_azimuth_nodes + a0) * m_bands;
+    const double* p01 = p00 + m_bands;
+    const double* p10 = p00 + m_azimuth_nodes * m_bands;
+    const double* p11 = p10 + m_bands;
+    const double w00 = (1.0 - fz) * (1.0 - fa);
+    const double w01 = (1.0 - fz) * fa;
+    const double w10 = fz * (1.0 - fa);
+    const double w11 = fz * fa;
+    for (std::size_t b = 0; b < m_bands; ++b) {
+        transmittance[b] = (1.0 - fz) * t0[b] + fz * t1[b];
+        path_radiance[b] = w00 * p00[b] + w01 * p01[b] + w10 * p10[b] + w11 * p11[b];
+    }
+}
+
+}  // namespace glint::radiometry

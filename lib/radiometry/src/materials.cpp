@@ -1,0 +1,121 @@
+// SPDX-License-Identifier: Apache-2.0
+// MaterialTable: scene materials sampled on a spectral grid (glint/radiometry/materials.h).
+#include "glint/radiometry/materials.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "glint/core/error.h"
+#include "glint/core/text.h"
+
+namespace glint::radiometry {
+namespace {
+
+/// Tolerance on ε + ρ ≤ 1 and on the [0, 1] ranges (interpolation rounding).
+constexpr double kRangeSlack = 1e-9;
+
+/// The table sampled at the grid's wavelengths, held constant beyond its ends; `covered` is
+/// cleared when the grid reaches outside the table.
+std::vector<double> sample_held(const model::SpectralTable& table, const SpectralGrid& grid,
+                                bool& covered) {
+    const std::vector<double>& x = table.wavelengths_um;
+    const std::vector<double>& y = table.values;
+    std::vector<double> out(grid.size());
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+        const double w = grid.wavelength_um(i);
+        if (w <= x.front()) {
+            out[i] = y.front();
+            if (w < x.front()) covered = false;
+        } else if (w >= x.back()) {
+            out[i] = y.back();
+            if (w > x.back()) covered = false;
+        } else {
+            const auto hi = static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), w) -
+                                                     x.begin());
+            const std::size_t lo = hi - 1;
+            const double f = (w - x[lo]) / (x[hi] - x[lo]);
+            out[i] = y[lo] + f * (y[hi] - y[lo]);
+        }
+    }
+    return out;
+}
+
+void check_unit_range(const std::vector<double>& values, const model::Material& material,
+                      const char* what, const SpectralGrid& grid) {
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        if (!(values[i] >= -kRangeSlack && values[i] <= 1.0 + kRangeSlack)) {
+            throw input_error("material '" + material.id + "': " + what + " " +
+                                  format_shortest(values[i]) + " at " +
+                                  format_shortest(grid.wavelength_um(i)) +
+                                  " um lies outside [0, 1]",
+                              material.where);
+        }
+    }
+}
+
+}  // namespace
+
+MaterialTable::MaterialTable(std::span<const model::Material> materials, const SpectralGrid& grid,
+                             Log log)
+    : m_bands(grid.size()) {
+    m_reflectance.reserve(materials.size() * m_bands);
+    m_emission.reserve(materials.size() * m_bands);
+    m_shapes.reserve(materials.size());
+    for (const model::Material& material : materials) {
+        if (material.reflectance.empty()) {
+            throw input_error("material '" + material.id + "' has no reflectance",
+                              material.where);
+        }
+        if (!(material.temperature_k > 0.0) || !std::isfinite(material.temperature_k)) {
+            throw input_error("material '" + material.id + "': temperature " +
+                                  format_shortest(material.temperature_k) +
+                                  " K must be a finite number > 0",
+                              material.where);
+        }
+        bool covered = true;
+        std::vector<double> rho = sample_held(material.reflectance, grid, covered);
+        std::vector<double> eps;
+        if (material.emissivity.empty()) {
+            eps.resize(rho.size());
+            for (std::size_t i = 0; i < rho.size(); ++i) eps[i] = 1.0 - rho[i];
+        } else {
+            eps = sample_held(material.emissivity, grid, covered);
+        }
+        check_unit_range(rho, material, "reflectance", grid);
+        check_unit_range(eps, material, "emissivity", grid);
+        bool emits = false;
+        bool reflects = false;
+        for (std::size_t i = 0; i < m_bands; ++i) {
+            if (eps[i] + rho[i] > 1.0 + kRangeSlack) {
+                throw input_error("material '" + material.id + "': emissivity " +
+                                      format_shortest(eps[i]) + " + reflectance " +
+                                      format_shortest(rho[i]) + " exceed 1 at " +
+                                      format_shortest(grid.wavelength_um(i)) +
+                                      " um (an opaque surface cannot emit and reflect more "
+                                      "than a blackbody)",
+                                  material.where);
+            }
+            rho[i] = std::clamp(rho[i], 0.0, 1.0);
+            const double e = std::clamp(eps[i], 0.0, 1.0) *
+                             planck_radiance_w_per_cm2_sr_um(grid.wavelength_um(i),
+                                                             material.temperature_k);
+            emits = emits || e > 0.0;
+            reflects = reflects || rho[i] > 0.0;
+            m_reflectance.push_back(rho[i]);
+            m_emission.push_back(e);
+        }
+        if (!covered) {
+            const std::string where =
+                material.where.file.empty() ? std::string() : material.where.file + ": ";
+            log.warning(where + "material '" + material.id + "': its curves do not cover " +
+                        format_shortest(grid.min_um()) + "-" + format_shortest(grid.max_um()) +
+                        " um; the end values are held beyond them");
+        }
+        m_emits.push_back(emits ? 1 : 0);
+        m_reflects.push_back(reflects ? 1 : 0);
+        m_shapes.emplace_back(1.0, material.specular.fraction, material.specular.roughness);
+    }
+}
+
+}  // namespace glint::radiometry

@@ -1,0 +1,149 @@
+// SPDX-License-Identifier: Apache-2.0
+// The spectral path tracer (glint/radiometry/path_tracer.h).
+#include "glint/radiometry/path_tracer.h"
+
+#include <algorithm>
+#include <string>
+
+#include "glint/core/error.h"
+#include "glint/radiometry/sampling.h"
+
+namespace glint::radiometry {
+namespace {
+
+/// The largest max_bounces accepted (a guard against a typo turning into a hang).
+constexpr unsigned kMaxBouncesLimit = 10'000;
+
+/// One surface vertex's contribution: L += β ⊙ (emission + ρ ⊙ E_sun · sun_factor), any of
+/// the two terms switched off by a null pointer.
+void add_vertex_light(std::span<double> radiance, std::span<const double> throughput,
+                      const double* emission, const double* reflectance, const double* sun,
+                      double sun_factor) {
+    const std::size_t n = radiance.size();
+    if (emission != nullptr && sun != nullptr) {
+        for (std::size_t b = 0; b < n; ++b) {
+            radiance[b] += throughput[b] * (emission[b] + reflectance[b] * sun[b] * sun_factor);
+        }
+    } else if (emission != nullptr) {
+        for (std::size_t b = 0; b < n; ++b) radiance[b] += throughput[b] * emission[b];
+    } else if (sun != nullptr) {
+        for (std::size_t b = 0; b < n; ++b) {
+            radiance[b] += throughput[b] * reflectance[b] * sun[b] * sun_factor;
+        }
+    }
+}
+
+/// β ← β ⊙ ρ · weight; returns max β.
+double scale_throughput(std::span<double> throughput, std::span<const double> reflectance,
+                        double weight) {
+    double largest = 0.0;
+    for (std::size_t b = 0; b < throughput.size(); ++b) {
+        throughput[b] *= reflectance[b] * weight;
+        largest = std::max(largest, throughput[b]);
+    }
+    return largest;
+}
+
+}  // namespace
+
+PathTracer::PathTracer(const scene::GeometryScene& scene, const MaterialTable& materials,
+                       const Environment& environment, TracerSettings settings)
+    : m_scene(scene), m_materials(materials), m_environment(environment), m_settings(settings) {
+    if (materials.size() > 0 && materials.bands() != environment.bands()) {
+        throw input_error("the materials have " + std::to_string(materials.bands()) +
+                          " bands and the environment " + std::to_string(environment.bands()));
+    }
+    if (settings.max_bounces > kMaxBouncesLimit) {
+        throw usage_error("max bounces " + std::to_string(settings.max_bounces) +
+                          " exceeds the limit of " + std::to_string(kMaxBouncesLimit));
+    }
+}
+
+void PathTracer::trace(const SampleRay& ray, RandomStream& rng, PathScratch& scratch,
+                       std::span<double> radiance) const {
+    const Environment& env = m_environment;
+    std::fill(radiance.begin(), radiance.end(), 0.0);
+    std::span<double> beta(scratch.throughput);
+    std::fill(beta.begin(), beta.end(), 1.0);
+    const double time = ray.time_s;
+
+    std::optional<scene::RayHit> hit = m_scene.intersect(ray.origin_m, ray.direction, time);
+    ++scratch.rays;
+    if (!hit) {
+        if (ray.direction.z > 0.0 && !env.sky_black()) {
+            const auto sky = env.sky_radiance_w_per_cm2_sr_um();
+            std::copy(sky.begin(), sky.end(), radiance.begin());
+        }
+        return;
+    }
+
+    Vec3 direction = ray.direction;
+    for (unsigned bounce = 0;; ++bounce) {
+        const std::size_t m = hit->material;
+        const Vec3 wo = -direction;
+        const Vec3 normal = dot(hit->normal, wo) < 0.0 ? -hit->normal : hit->normal;
+        const bool reflects = m_materials.reflects(m);
+        const auto rho = m_materials.reflectance(m);
+
+        // Emission and the sun by next-event estimation.
+        const double* emission =
+            m_materials.emits(m) ? m_materials.emission_w_per_cm2_sr_um(m).data() : nullptr;
+        double sun_factor = 0.0;
+        const Frame frame = Frame::from_normal(normal);
+        const Vec3 wo_local = frame.to_local(wo);
+        if (reflects && env.sun_visible()) {
+            const Vec3 sun = env.sun_direction(time);
+            const Vec3 local = sample_uniform_cone(rng.uniform(), rng.uniform(),
+                                                   env.sun_half_angle_rad());
+            const Vec3 wi = Frame::from_normal(sun).to_world(local);
+            const double cos_i = dot(normal, wi);
+            if (cos_i > 0.0 && wo_local.z > 0.0) {
+                ++scratch.rays;
+                if (!m_scene.occluded(m_scene.spawn_origin(*hit, wi), wi, time)) {
+                    sun_factor = m_materials.shape(m).eval(wo_local, frame.to_local(wi)) * cos_i;
+                }
+            }
+        }
+        add_vertex_light(radiance, beta, emission, rho.data(),
+                         sun_factor > 0.0 ? env.sun_irradiance_w_per_cm2_um().data() : nullptr,
+                         sun_factor);
+
+        // Continue the path.
+        if (!reflects || bounce >= m_settings.max_bounces) break;
+        const double u_lobe = rng.uniform();
+        const double u1 = rng.uniform();
+        const double u2 = rng.uniform();
+        const auto sample = m_materials.shape(m).sample(wo_local, u_lobe, u1, u2);
+        if (!sample || !(sample->weight > 0.0)) break;
+        const Vec3 wi = normalized(frame.to_world(sample->wi));
+        const double largest = scale_throughput(beta, rho, sample->weight);
+        if (!(largest > 0.0)) break;
+        if (bounce + 1 >= m_settings.roulette_start_bounce) {
+            const double survive = std::min(1.0, largest);
+            if (rng.uniform() >= survive) break;
+            if (survive < 1.0) {
+                for (double& b : beta) b /= survive;
+            }
+        }
+        const Vec3 origin = m_scene.spawn_origin(*hit, wi);
+        hit = m_scene.intersect(origin, wi, time);
+        ++scratch.rays;
+        if (!hit) {
+            if (wi.z > 0.0 && !env.sky_black()) {
+                const auto sky = env.sky_radiance_w_per_cm2_sr_um();
+                for (std::size_t b = 0; b < radiance.size(); ++b) radiance[b] += beta[b] * sky[b];
+            }
+            break;
+        }
+        direction = wi;
+    }
+
+    if (env.has_sensor_path()) {
+        env.sensor_path(-ray.direction, time, scratch.sun, scratch.path);
+        for (std::size_t b = 0; b < radiance.size(); ++b) {
+            radiance[b] = scratch.sun[b] * radiance[b] + scratch.path[b];
+        }
+    }
+}
+
+}  // namespace glint::radiometry

@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: Apache-2.0
+// solve(): the per-pixel convergence loop, on one thread or in parallel over problems with
+// oneTBB (glint/radiometry/problem.h).
+#include "glint/radiometry/problem.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <mutex>
+#include <string>
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include "glint/core/error.h"
+#include "glint/core/text.h"
+
+namespace glint::radiometry {
+namespace {
+
+/// Per-thread buffers of the convergence loop (the "arena" of one worker).
+struct Workspace {
+    explicit Workspace(std::size_t bands) : path(bands), sample(bands), sum(bands) {}
+    PathScratch path;
+    std::vector<double> sample;  ///< one sample's radiance
+    std::vector<double> sum;     ///< Σ w L per band
+};
+
+void check_batch(const PathTracer& tracer, const ProblemBatch& batch) {
+    const Convergence& c = batch.convergence;
+    if (batch.source == nullptr) throw usage_error("a problem batch needs a ray source");
+    if (c.min_samples < 1) throw usage_error("the minimum sample count must be at least 1");
+    if (c.max_samples < c.min_samples) {
+        throw usage_error("the maximum sample count " + std::to_string(c.max_samples) +
+                          " is below the minimum " + std::to_string(c.min_samples));
+    }
+    if (!std::isfinite(c.threshold_w_per_cm2_sr_um)) {
+        throw usage_error("the convergence threshold must be a finite number");
+    }
+    if (batch.reference_band >= tracer.bands()) {
+        throw usage_error("reference band " + std::to_string(batch.reference_band) +
+                          " is out of range for " + std::to_string(tracer.bands()) + " bands");
+    }
+}
+
+/// Solves `problem` into `radiance` (bands values); returns the sample count and the standard
+/// error at the reference band.
+std::pair<std::uint64_t, double> solve_into(const PathTracer& tracer, const ProblemBatch& batch,
+                                            std::uint64_t problem, Workspace& ws,
+                                            std::span<double> radiance) {
+    const Convergence& c = batch.convergence;
+    const StreamKey& k = batch.key;
+    std::fill(ws.sum.begin(), ws.sum.end(), 0.0);
+    double weight_sum = 0.0;
+    double weight_sq_sum = 0.0;
+    double mean = 0.0;  // weighted mean at the reference band (West 1979)
+    double spread = 0.0;
+    std::uint64_t n = 0;
+    while (n < c.max_samples) {
+        RandomStream rng(k.seed, {k.plugin, k.task, k.capture, problem, n});
+        const SampleRay ray = batch.source->generate(problem, n, rng);
+        if (!(ray.weight > 0.0) || !std::isfinite(ray.weight)) {
+            throw input_error("sample " + std::to_string(n) + " of problem " +
+                              std::to_string(problem) + " has weight " +
+                              format_shortest(ray.weight) + "; weights must be finite and > 0");
+        }
+        tracer.trace(ray, rng, ws.path, ws.sample);
+        for (std::size_t b = 0; b < ws.sum.size(); ++b) ws.sum[b] += ray.weight * ws.sample[b];
+        ++n;
+        const double x = ws.sample[batch.reference_band];
+        const double previous = mean;
+        weight_sum += ray.weight;
+        weight_sq_sum += ray.weight * ray.weight;
+        mean += (ray.weight / weight_sum) * (x - previous);
+        spread += ray.weight * (x - previous) * (x - mean);
+        if (n >= 2 && n >= c.min_samples && c.threshold_w_per_cm2_sr_um > 0.0 &&
+            std::fabs(mean - previous) < c.threshold_w_per_cm2_sr_um) {
+            break;
+        }
+    }
+    for (std::size_t b = 0; b < radiance.size(); ++b) radiance[b] = ws.sum[b] / weight_sum;
+    const double effective = weight_sum * weight_sum / weight_sq_sum;
+    const double error =
+        effective > 1.0 ? std::sqrt(std::max(0.0, spread / weight_sum) / (effective - 1.0)) : 0.0;
+    return {n, error};
+}
+
+}  // namespace
+
+std::size_t nearest_band(const SpectralGrid& grid, double wavelength_um) noexcept {
+    const auto w = grid.wavelengths_um();
+    std::size_t best = 0;
+    for (std::size_t i = 1; i < w.size(); ++i) {
+        if (std::fabs(w[i] - wavelength_um) < std::fabs(w[best] - wavelength_um)) best = i;
+    }
+    return best;
+}
+
+Solution solve(const PathTracer& tracer, const ProblemBatch& batch, std::uint64_t problem) {
+    check_batch(tracer, batch);
+    Workspace ws(tracer.bands());
+    Solution solution;
+    solution.radiance_w_per_cm2_sr_um.resize(tracer.bands());
+    const auto [samples, error] =
+        solve_into(tracer, batch, problem, ws, solution.radiance_w_per_cm2_sr_um);
+    solution.samples = samples;
+    solution.standard_error_w_per_cm2_sr_um = error;
+    return solution;
+}
+
+Solutions solve(const PathTracer& tracer, const ProblemBatch& batch, const Context& context) {
+    check_batch(tracer, batch);
+    Solutions out;
+    out.bands = tracer.bands();
+    out.radiance_w_per_cm2_sr_um.assign(batch.count * out.bands, 0.0);
+    out.samples.assign(batch.count, 0);
+    out.standard_error_w_per_cm2_sr_um.assign(batch.count, 0.0);
+
+    const int threads = context.threads == 0 ? tbb::task_arena::automatic
+                                             : static_cast<int>(context.threads);
+    tbb::task_arena arena(threads);
+    tbb::enumerable_thread_specific<Workspace> workspaces(
+        [&] { return Workspace(tracer.bands()); });
+    std::atomic<std::uint64_t> done{0};
+    std::mutex progress_mutex;
+    const std::uint64_t report_every = std::max<std::uint64_t>(1, batch.count / 100);
+    arena.execute([&] {
+        tbb::parallel_for(
+            tbb::blocked_range<std::uint64_t>(0, batch.count, 16),
+            [&](const tbb::blocked_range<std::uint64_t>& range) {
+                Workspace& ws = workspaces.local();
+                for (std::uint64_t i = range.begin(); i != range.end(); ++i) {
+                    if (context.cancel.cancelled()) return;
+                    std::span<double> radiance(out.radiance_w_per_cm2_sr_um.data() + i * out.bands,
+                                               out.bands);
+                    const auto [samples, error] =
+                        solve_into(tracer, batch, batch.first_problem + i, ws, radiance);
+                    out.samples[i] = samples;
+                    out.standard_error_w_per_cm2_sr_um[i] = error;
+                    const std::uint64_t finished = ++done;
+                    if (finished % report_every == 0) {
+                        const std::lock_guard lock(progress_mutex);
+                        context.progress.update("radiance", finished, batch.count);
+                    }
+                }
+            });
+    });
+    context.cancel.throw_if_cancelled();
+    for (const Workspace& ws : workspaces) out.rays += ws.path.rays;
+    context.progress.finish("radiance", batch.count);
+    return out;
+}
+
+}  // namespace glint::radiometry

@@ -1,0 +1,168 @@
+// SPDX-License-Identifier: Apache-2.0
+// Small scenes and ray sources for the path tracer tests: constant-reflectance materials,
+// primitives tessellated by the scene reader's own code, a built GeometryScene, and ray
+// sources (one fixed ray, random directions from a point, random times in a window).
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "glint/core/diagnostics.h"
+#include "glint/core/spectral.h"
+#include "glint/legacy/scene_reader.h"
+#include "glint/model/scene.h"
+#include "glint/radiometry/environment.h"
+#include "glint/radiometry/materials.h"
+#include "glint/radiometry/path_tracer.h"
+#include "glint/radiometry/problem.h"
+#include "glint/radiometry/sampling.h"
+#include "glint/scene/geometry_scene.h"
+
+namespace glint::radiometry::test {
+
+/// A material of constant reflectance over 0.1–100 µm; emissivity 1 − ρ unless given.
+inline model::Material flat_material(const std::string& id, double reflectance,
+                                     double temperature_k = 300.0,
+                                     std::optional<double> emissivity = std::nullopt,
+                                     model::SpecularLobe specular = {}) {
+    model::Material m;
+    m.id = id;
+    m.name = id;
+    m.reflectance.wavelengths_um = {0.1, 100.0};
+    m.reflectance.values = {reflectance, reflectance};
+    if (emissivity) {
+        m.emissivity.wavelengths_um = {0.1, 100.0};
+        m.emissivity.values = {*emissivity, *emissivity};
+        m.emissivity_is_default = false;
+    } else {
+        m.emissivity.wavelengths_um = {0.1, 100.0};
+        m.emissivity.values = {1.0 - reflectance, 1.0 - reflectance};
+    }
+    m.temperature_k = temperature_k;
+    m.specular = specular;
+    return m;
+}
+
+/// Adds a primitive object of material `material` with one static identity instance, or a
+/// dynamic instance moving with `motion`; returns the instance index.
+inline std::size_t add_primitive(model::Scene& scene, const model::Primitive& primitive,
+                                 std::uint32_t material,
+                                 std::optional<model::PlatformMotion> motion = std::nullopt) {
+    Diagnostics diagnostics;
+    model::GeometryObject object;
+    object.name = "object" + std::to_string(scene.objects.size());
+    object.primitive = primitive;
+    object.mesh = legacy::tessellate_primitive(primitive, material, {}, diagnostics);
+    EXPECT_FALSE(diagnostics.has_errors());
+    scene.objects.push_back(std::move(object));
+    model::Instance instance;
+    instance.object_index = scene.objects.size() - 1;
+    instance.name = scene.objects.back().name;
+    instance.motion = std::move(motion);
+    scene.instances.push_back(std::move(instance));
+    return scene.instances.size() - 1;
+}
+
+inline model::Primitive ground_plane(double size_m = model::kDefaultGroundPlaneSize_m) {
+    model::Primitive p;
+    p.kind = model::PrimitiveKind::ground_plane;
+    p.size_m = size_m;
+    return p;
+}
+
+inline model::Primitive box(std::array<double, 3> lower_m, std::array<double, 3> upper_m) {
+    model::Primitive p;
+    p.kind = model::PrimitiveKind::box;
+    p.lower_m = lower_m;
+    p.upper_m = upper_m;
+    return p;
+}
+
+/// A scene built for rendering with the tracer over a spectral grid and an environment.
+struct Rig {
+    Rig(model::Scene scene_in, SpectralGrid grid_in, Environment environment_in,
+        TracerSettings settings = {}, scene::TimeWindow window = {})
+        : scene(std::move(scene_in)),
+          grid(std::move(grid_in)),
+          trajectories(scene::make_instance_trajectories(scene, motion::SceneFrame(),
+                                                         DateTime{})),
+          geometry(scene::GeometryScene::build(scene, trajectories,
+                                               scene::BuildOptions{{}, window, {}})),
+          materials(scene.materials, grid),
+          environment(std::move(environment_in)),
+          tracer(geometry, materials, environment, settings) {}
+
+    model::Scene scene;
+    SpectralGrid grid;
+    std::vector<std::unique_ptr<motion::Trajectory>> trajectories;
+    scene::GeometryScene geometry;
+    MaterialTable materials;
+    Environment environment;
+    PathTracer tracer;
+};
+
+/// Every sample is the same ray.
+class FixedRay final : public RaySource {
+public:
+    explicit FixedRay(SampleRay ray) : m_ray(ray) {}
+    SampleRay generate(std::uint64_t, std::uint64_t, RandomStream&) const override { return m_ray; }
+
+private:
+    SampleRay m_ray;
+};
+
+/// Directions uniform over the sphere from one point.
+class SphereRays final : public RaySource {
+public:
+    explicit SphereRays(Vec3 origin_m) : m_origin(origin_m) {}
+    SampleRay generate(std::uint64_t, std::uint64_t, RandomStream& rng) const override {
+        Vec3 d = sample_uniform_hemisphere(rng.uniform(), rng.uniform());
+        if (rng.uniform() < 0.5) d.z = -d.z;
+        return {m_origin, d, 0.0, 1.0};
+    }
+
+private:
+    Vec3 m_origin;
+};
+
+/// A fixed origin and direction at times uniform over [begin, end].
+class WindowRays final : public RaySource {
+public:
+    WindowRays(SampleRay ray, double begin_s, double end_s)
+        : m_ray(ray), m_begin_s(begin_s), m_end_s(end_s) {}
+    SampleRay generate(std::uint64_t, std::uint64_t, RandomStream& rng) const override {
+        SampleRay r = m_ray;
+        r.time_s = m_begin_s + (m_end_s - m_begin_s) * rng.uniform();
+        return r;
+    }
+
+private:
+    SampleRay m_ray;
+    double m_begin_s;
+    double m_end_s;
+};
+
+/// Problems of a fixed convergence rule with a given sample count.
+inline ProblemBatch batch_of(const RaySource& source, std::uint64_t samples,
+                             std::uint64_t count = 1, std::uint64_t seed = 7) {
+    ProblemBatch b;
+    b.key.seed = seed;
+    b.source = &source;
+    b.convergence = {samples, samples, 0.0};
+    b.count = count;
+    return b;
+}
+
+/// The unit direction at zenith angle `zenith_deg` and azimuth `azimuth_deg` (clockwise from
+/// north, scene ENU).
+inline Vec3 direction_from(double zenith_deg, double azimuth_deg) {
+    const double t = zenith_deg * kPi / 180.0;
+    const double p = azimuth_deg * kPi / 180.0;
+    return {std::sin(t) * std::sin(p), std::sin(t) * std::cos(p), std::cos(t)};
+}
+
+}  // namespace glint::radiometry::test
