@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <utility>
 
 #include "glint/core/error.h"
 #include "glint/io/envi.h"
@@ -129,6 +130,14 @@ void EnviWriter::write_line(std::span<const double> line) {
     }
     double_to_raw(m_header.data_type, line.data(), m_scratch.data(), values);
     write_line_raw(m_scratch);
+}
+
+void EnviWriter::set_extra(const std::string& key, const std::string& value) {
+    if (m_data.committed()) throw internal_error("EnviWriter: set_extra after commit");
+    EnviHeader updated = m_header;
+    updated.set_extra(key, value);
+    validate_envi_header(updated, m_data.target().string());
+    m_header = std::move(updated);
 }
 
 void EnviWriter::commit() {

@@ -199,7 +199,7 @@ TimeSpan jitter_span_of(const model::TaskList& tasks) noexcept {
 
 PoseService make_pose_service(const model::Simulation& simulation, std::size_t plugin_index,
                               const legacy::ReadOptions& read_options, std::uint64_t seed,
-                              const Log& log, Diagnostics& diagnostics) {
+                              const Log& log, Diagnostics& diagnostics, const SceneFrame& scene) {
     if (plugin_index >= simulation.plugins.size()) {
         throw usage_error("plugin index " + std::to_string(plugin_index) + " out of range (" +
                           simulation.file + " has " + std::to_string(simulation.plugins.size()) +
@@ -221,7 +221,6 @@ PoseService make_pose_service(const model::Simulation& simulation, std::size_t p
         required_file(inputs.tasks_file, "tasks_filename", plugin), read_options, diagnostics);
     diagnostics.throw_if_errors();
 
-    const SceneFrame scene;  // kDefaultSceneOrigin until scenes land (issue [E])
     std::unique_ptr<Trajectory> trajectory = make_trajectory(motion, scene, tasks.reference, log);
     PoseServiceOptions options;
     model::PlatformJitter jitter;

@@ -99,7 +99,8 @@ void Loader::load_plugin(std::size_t plugin_index) {
     std::shared_ptr<const motion::PoseService> poses;
     try {
         poses = std::make_shared<const motion::PoseService>(motion::make_pose_service(
-            simulation, plugin_index, read_options, options.seed, log, local));
+            simulation, plugin_index, read_options, options.seed, log, local,
+            options.scene_origin ? motion::SceneFrame(*options.scene_origin) : motion::SceneFrame()));
     } catch (const Error& error) {
         if (!local.has_errors()) local.add(error);  // else it repeats local's first error
     }

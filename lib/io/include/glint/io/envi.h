@@ -152,6 +152,10 @@ public:
     void write_line(std::span<const double> line);
     /// Number of lines written so far.
     std::size_t lines_written() const { return m_lines_written; }
+    /// Sets (replacing) an extra header key before commit(), for values known only at the
+    /// end (e.g. capture times). Throws glint::Error (internal) after commit, (input) for a
+    /// key or value the header cannot hold (validate_envi_header's rules).
+    void set_extra(const std::string& key, const std::string& value);
     /// Checks that exactly `lines` lines were written, then publishes data and header.
     void commit();
 

@@ -128,7 +128,7 @@ TimeSpan jitter_span_of(const model::TaskList& tasks) noexcept;
 
 /// Builds the pose service of the BasicPlatform at `plugin_index` of `simulation.plugins`:
 /// reads its platform, motion and tasks files (legacy readers, problems to `diagnostics`),
-/// places the scene at kDefaultSceneOrigin (scene origins arrive with scenes, issue [E]),
+/// places the scene frame at `scene` (the scene's origin; kDefaultSceneOrigin by default),
 /// builds the trajectory (tasks reference date-time; `log` gets its clamp warning) and the
 /// jitter (seed; streams as described above; span jitter_span_of(tasks); platform jitter
 /// angles in the `.ppd` rotation order, or a FlexMotion euler engine's, else xyz). Throws
@@ -137,6 +137,7 @@ TimeSpan jitter_span_of(const model::TaskList& tasks) noexcept;
 /// platform or motion cannot be used.
 PoseService make_pose_service(const model::Simulation& simulation, std::size_t plugin_index,
                               const legacy::ReadOptions& read_options, std::uint64_t seed,
-                              const Log& log, Diagnostics& diagnostics);
+                              const Log& log, Diagnostics& diagnostics,
+                              const SceneFrame& scene = SceneFrame());
 
 }  // namespace glint::motion

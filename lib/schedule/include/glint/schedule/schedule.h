@@ -33,6 +33,9 @@ struct ScheduleOptions {
     std::optional<std::string> output_prefix;  ///< --output_prefix
     double scale_resolution = 1.0;             ///< --scale_resolution: pixel counts × this
     std::uint64_t seed = 1;                    ///< jitter in the poses
+    /// The scene origin the poses are placed about (the scene's; kDefaultSceneOrigin when
+    /// not set).
+    std::optional<motion::Geodetic> scene_origin;
 };
 
 /// One BasicPlatform entry of the simulation, loaded.
