@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: Apache-2.0
+// glint-render's entry point: renders a .jsim or .sim (glint/sensor/render.h) or, with
+// --dry-run, prints the plan; on stdout it lists the files written (one path per line) or
+// the plan. docs/tools/glint-render.md documents every option.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "glint/core/context.h"
+#include "glint/sensor/render.h"
+
+namespace glint::app_render {
+
+struct Options {
+    std::filesystem::path input;       ///< the .jsim or .sim
+    std::filesystem::path schedule;    ///< --schedule FILE (empty: the whole schedule)
+    bool dry_run = false;              ///< print the plan, trace nothing
+    bool radiance_only = false;        ///< stop at radiance (the detector stage is [G]'s)
+    sensor::RenderOptions render;      ///< everything else
+    std::vector<std::string> arguments;  ///< the command line, program first
+};
+
+/// Parses --convergence's "min,max,threshold" (threshold in W/(cm² sr µm)). Throws
+/// glint::Error (usage) naming the option.
+radiometry::Convergence parse_convergence(const std::string& text);
+
+/// Parses --max-memory's size: bytes, or a number with K, M, G or T (powers of 1024;
+/// optional trailing "B" or "iB"). Throws glint::Error (usage).
+std::uint64_t parse_memory_size(const std::string& text);
+
+/// The data folder: $GLINT_DATA_DIR when set, else the source tree's data/ this build was
+/// configured from.
+std::filesystem::path default_data_dir();
+
+/// Runs glint-render; returns the exit status.
+int run(Options options, Context& ctx, std::ostream& out);
+
+}  // namespace glint::app_render

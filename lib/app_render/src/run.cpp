@@ -1,0 +1,122 @@
+// SPDX-License-Identifier: Apache-2.0
+// glint-render: option parsing helpers, the dry-run plan and the render report.
+#include <cctype>
+#include <cstdlib>
+#include <ostream>
+#include <string>
+
+#include "glint/app_render/render_tool.h"
+#include "glint/core/error.h"
+#include "glint/core/runner.h"
+#include "glint/core/text.h"
+
+namespace glint::app_render {
+namespace {
+
+double parse_number(const std::string& text, const std::string& what) {
+    std::size_t used = 0;
+    double value = 0.0;
+    try {
+        value = std::stod(text, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used == 0 || used != text.size() || !std::isfinite(value)) {
+        throw usage_error(what + ": expected a number, got \"" + text + "\"");
+    }
+    return value;
+}
+
+std::string join_arguments(const std::vector<std::string>& arguments) {
+    std::string out;
+    for (const std::string& a : arguments) out += (out.empty() ? "" : " ") + a;
+    return out;
+}
+
+std::string mebibytes(std::uint64_t bytes) {
+    return format_shortest(static_cast<double>(bytes) / (1024.0 * 1024.0)) + " MiB";
+}
+
+}  // namespace
+
+radiometry::Convergence parse_convergence(const std::string& text) {
+    std::vector<std::string> parts;
+    std::string part;
+    for (char c : text + ",") {
+        if (c == ',') {
+            parts.push_back(part);
+            part.clear();
+        } else {
+            part += c;
+        }
+    }
+    if (parts.size() != 3) {
+        throw usage_error("--convergence: expected MIN,MAX,THRESHOLD, got \"" + text + "\"");
+    }
+    const double min = parse_number(parts[0], "--convergence minimum");
+    const double max = parse_number(parts[1], "--convergence maximum");
+    const double threshold = parse_number(parts[2], "--convergence threshold");
+    if (min < 1 || max < min || min != std::floor(min) || max != std::floor(max) || max > 1e12) {
+        throw usage_error("--convergence: expected whole numbers 1 <= MIN <= MAX, got \"" + text +
+                          "\"");
+    }
+    if (threshold < 0) throw usage_error("--convergence: the threshold must be >= 0");
+    return {static_cast<std::uint64_t>(min), static_cast<std::uint64_t>(max), threshold};
+}
+
+std::uint64_t parse_memory_size(const std::string& text) {
+    std::string number = text;
+    std::string suffix;
+    while (!number.empty() && std::isalpha(static_cast<unsigned char>(number.back()))) {
+        suffix.insert(suffix.begin(),
+                      static_cast<char>(std::toupper(static_cast<unsigned char>(number.back()))));
+        number.pop_back();
+    }
+    if (suffix == "B") suffix.clear();
+    if (suffix.size() == 3 && suffix.substr(1) == "IB") suffix = suffix.substr(0, 1);
+    if (suffix.size() == 2 && suffix[1] == 'B') suffix = suffix.substr(0, 1);
+    double scale = 1.0;
+    if (suffix == "K") scale = 1024.0;
+    else if (suffix == "M") scale = 1024.0 * 1024.0;
+    else if (suffix == "G") scale = 1024.0 * 1024.0 * 1024.0;
+    else if (suffix == "T") scale = 1024.0 * 1024.0 * 1024.0 * 1024.0;
+    else if (!suffix.empty()) {
+        throw usage_error("--max-memory: unknown unit in \"" + text + "\" (use K, M, G or T)");
+    }
+    const double value = parse_number(number, "--max-memory");
+    if (!(value > 0) || value * scale > 1.8e19) {
+        throw usage_error("--max-memory: expected a size > 0, got \"" + text + "\"");
+    }
+    return static_cast<std::uint64_t>(value * scale);
+}
+
+std::filesystem::path default_data_dir() {
+    if (const char* dir = std::getenv("GLINT_DATA_DIR"); dir != nullptr && *dir != '\0') {
+        return dir;
+    }
+    return GLINT_SOURCE_DATA_DIR;
+}
+
+int run(Options options, Context& ctx, std::ostream& out) {
+    sensor::RenderOptions& render = options.render;
+    render.schedule.seed = ctx.seed;
+    render.version = version();
+    render.command_line = join_arguments(options.arguments);
+    if (render.data_dir.empty()) render.data_dir = default_data_dir();
+    if (!options.schedule.empty()) {
+        render.only_captures = sensor::read_schedule_selection(options.schedule);
+    }
+    if (options.dry_run) {
+        const sensor::RenderReport plan = sensor::plan(options.input, render, ctx);
+        out << "captures: " << plan.captures.size() << "\n";
+        out << "pixels: " << plan.pixels << "\n";
+        out << "memory estimate: " << mebibytes(plan.memory_estimate_bytes) << "\n";
+        for (const auto& file : plan.files) out << "output: " << file.string() << "\n";
+        return kExitSuccess;
+    }
+    const sensor::RenderReport report = sensor::render(options.input, render, ctx);
+    for (const auto& file : report.files) out << file.string() << "\n";
+    return kExitSuccess;
+}
+
+}  // namespace glint::app_render

@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: Apache-2.0
+// The ENVI image files of a render: each file is planned with its header and the number of
+// captures it will hold, opened at its first capture, receives each capture's lines in
+// schedule order (several captures of one file are appended along the line axis, as a
+// pushbroom builds its image line by line), and is published atomically — data, then
+// header — when its last capture has arrived. The header's `glint capture times` and
+// `glint captures` keys list the captures the file holds. Files not complete when the object
+// is destroyed (an error or an interrupt) leave nothing under their final names.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "glint/io/envi.h"
+
+namespace glint::sensor {
+
+/// One capture as a file records it.
+struct CaptureStamp {
+    std::uint64_t task = 0;     ///< task index within its plugin
+    std::uint64_t capture = 0;  ///< capture index within its task
+    double t0_s = 0.0;          ///< window start, s after the tasks reference
+    double t1_s = 0.0;          ///< window end
+    std::string datetime_utc;   ///< ISO 8601 of t0
+};
+
+class ImageOutputs {
+public:
+    ImageOutputs();
+    ~ImageOutputs();
+    ImageOutputs(const ImageOutputs&) = delete;
+    ImageOutputs& operator=(const ImageOutputs&) = delete;
+
+    /// Declares that `path` receives `captures` captures of `lines_per_capture` lines each,
+    /// with `header` (its `lines` is set here). Nothing is created yet. Throws glint::Error
+    /// (usage) when `path` is planned twice with a different header shape.
+    void plan(const std::filesystem::path& path, io::EnviHeader header,
+              std::uint64_t lines_per_capture, std::uint64_t captures);
+
+    /// Writes one capture (lines_per_capture × samples × bands values, BIP) to `path`: opens
+    /// the file at its first capture, publishes it after its last. Throws glint::Error
+    /// (internal) for an unplanned path or a wrong size, (io) when the file cannot be
+    /// written.
+    void write_capture(const std::filesystem::path& path, std::span<const double> image,
+                       const CaptureStamp& stamp);
+
+    /// Files published so far, in the order they were completed.
+    const std::vector<std::filesystem::path>& published() const noexcept { return m_published; }
+    /// Files planned, in planning order.
+    std::vector<std::filesystem::path> planned() const;
+
+private:
+    struct File;
+    std::map<std::filesystem::path, std::unique_ptr<File>> m_files;
+    std::vector<std::filesystem::path> m_order;
+    std::vector<std::filesystem::path> m_published;
+};
+
+}  // namespace glint::sensor

@@ -1,0 +1,89 @@
+// SPDX-License-Identifier: Apache-2.0
+// The capture loop of glint-render (the paper's Figure 2): load the simulation (scenes,
+// atmosphere, every BasicPlatform's platform, motion and tasks), walk its capture schedule
+// in order, and for each capture: build what the capture needs (the Embree scene over the
+// capture window when something in the scene moves, the environment — sun, sky, sensor path
+// — at its time), hand one problem per pixel to the radiometry core, turn each converged
+// spectral radiance into the output units of the focal plane, and append the capture's lines
+// to its ENVI file, which is published when its last capture is in. Everything between
+// tools and library goes through Context: log lines (the DIRSIG-style "Starting capture"
+// block at info level), progress ("captures"), cancellation, threads and the seed.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "glint/core/context.h"
+#include "glint/legacy/read_options.h"
+#include "glint/radiometry/path_tracer.h"
+#include "glint/radiometry/problem.h"
+#include "glint/scene/geometry_scene.h"
+#include "glint/schedule/schedule.h"
+
+namespace glint::sensor {
+
+/// Convergence used when neither --convergence nor the focal plane gives one.
+inline constexpr radiometry::Convergence kDefaultConvergence{10, 100, 1e-6};
+
+/// What glint-render was asked to do.
+struct RenderOptions {
+    schedule::ScheduleOptions schedule;  ///< folder, prefix, scale_resolution, seed
+    legacy::ReadOptions read;
+    /// --convergence; a focal plane's <convergence> overrides it.
+    std::optional<radiometry::Convergence> convergence;
+    bool split_channels = false;  ///< accepted and recorded; no dispersion is modelled
+    radiometry::TracerSettings tracer;
+    scene::DeviceSettings device;
+    /// glint's data folder (solar/astm_g173.csv).
+    std::filesystem::path data_dir;
+    /// Global capture indices to render (--schedule FILE); empty: all.
+    std::set<std::uint64_t> only_captures;
+    /// Provenance written into every header.
+    std::string version;
+    std::string command_line;
+};
+
+/// Statistics of one rendered capture.
+struct CaptureReport {
+    std::uint64_t index = 0;  ///< global schedule index
+    std::uint64_t pixels = 0;
+    std::uint64_t min_samples = 0;
+    double mean_samples = 0.0;
+    std::uint64_t max_samples = 0;
+    std::uint64_t rays = 0;
+    double seconds = 0.0;
+};
+
+/// What a render did (or, for plan(), would do).
+struct RenderReport {
+    std::vector<CaptureReport> captures;
+    std::vector<std::filesystem::path> files;  ///< published (render) or planned (plan)
+    std::uint64_t pixels = 0;
+    /// Rough peak memory: scene (Embree ≈ 85 B per triangle plus meshes) and the largest
+    /// capture's radiance (pixels × bands × 8 B), bytes.
+    std::uint64_t memory_estimate_bytes = 0;
+    scene::DeviceInfo device;
+};
+
+/// Renders `simulation_file` (.jsim or .sim). Throws glint::Error: input for bad inputs (all
+/// problems of the inputs are in the message's diagnostics, each with file:line), usage for
+/// bad options, io when an output cannot be written, cancelled on an interrupt (every file
+/// not yet complete is discarded).
+RenderReport render(const std::filesystem::path& simulation_file, const RenderOptions& options,
+                    const Context& context);
+
+/// Loads everything like render() and returns the captures, pixel counts, output files and
+/// memory estimate without tracing a ray (--dry-run).
+RenderReport plan(const std::filesystem::path& simulation_file, const RenderOptions& options,
+                  const Context& context);
+
+/// The global capture indices listed in a glint-schedule JSON file (its `captures[].index`).
+/// Throws glint::Error (io) when unreadable, (input, with the file) when it is not a
+/// glint-schedule file.
+std::set<std::uint64_t> read_schedule_selection(const std::filesystem::path& file);
+
+}  // namespace glint::sensor

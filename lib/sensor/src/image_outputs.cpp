@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: Apache-2.0
+// ImageOutputs: planned ENVI files filled capture by capture (glint/sensor/image_outputs.h).
+#include "glint/sensor/image_outputs.h"
+
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "glint/core/error.h"
+#include "glint/core/text.h"
+
+namespace glint::sensor {
+
+struct ImageOutputs::File {
+    io::EnviHeader header;
+    std::uint64_t lines_per_capture = 0;
+    std::uint64_t captures = 0;
+    std::uint64_t written = 0;
+    std::vector<CaptureStamp> stamps;
+    std::optional<io::EnviWriter> writer;
+};
+
+namespace {
+
+std::string brace_list(const std::vector<std::string>& items) {
+    std::string out = "{";
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        if (i > 0) out += ", ";
+        out += items[i];
+    }
+    return out + "}";
+}
+
+}  // namespace
+
+ImageOutputs::ImageOutputs() = default;
+ImageOutputs::~ImageOutputs() = default;
+
+void ImageOutputs::plan(const std::filesystem::path& path, io::EnviHeader header,
+                        std::uint64_t lines_per_capture, std::uint64_t captures) {
+    header.lines = static_cast<std::size_t>(lines_per_capture * captures);
+    auto it = m_files.find(path);
+    if (it != m_files.end()) {
+        const File& f = *it->second;
+        if (f.header.samples != header.samples || f.header.bands != header.bands ||
+            f.lines_per_capture != lines_per_capture) {
+            throw usage_error("output " + path.string() +
+                              " is written by two focal planes of different shapes");
+        }
+        it->second->captures += captures;
+        it->second->header.lines = static_cast<std::size_t>(
+            it->second->lines_per_capture * it->second->captures);
+        return;
+    }
+    auto file = std::make_unique<File>();
+    file->header = std::move(header);
+    file->lines_per_capture = lines_per_capture;
+    file->captures = captures;
+    m_files.emplace(path, std::move(file));
+    m_order.push_back(path);
+}
+
+void ImageOutputs::write_capture(const std::filesystem::path& path, std::span<const double> image,
+                                 const CaptureStamp& stamp) {
+    auto it = m_files.find(path);
+    if (it == m_files.end()) throw internal_error("write to unplanned output " + path.string());
+    File& f = *it->second;
+    const std::size_t line_values = f.header.samples * f.header.bands;
+    if (image.size() != line_values * f.lines_per_capture) {
+        throw internal_error("capture image of " + std::to_string(image.size()) +
+                             " values for " + path.string() + ", expected " +
+                             std::to_string(line_values * f.lines_per_capture));
+    }
+    if (f.written >= f.captures) {
+        throw internal_error("more captures than planned for " + path.string());
+    }
+    if (!f.writer) {
+        // The output folder is created as DIRSIG does; an existing file in its place, or a
+        // folder that cannot be created, is an io error naming it.
+        const std::filesystem::path folder = path.parent_path();
+        if (!folder.empty()) {
+            std::error_code ec;
+            std::filesystem::create_directories(folder, ec);
+            if (ec) {
+                throw io_error("cannot create the output folder: " + ec.message(),
+                               folder.string());
+            }
+        }
+        f.writer.emplace(path, f.header);
+    }
+    for (std::uint64_t line = 0; line < f.lines_per_capture; ++line) {
+        f.writer->write_line(image.subspan(line * line_values, line_values));
+    }
+    f.stamps.push_back(stamp);
+    ++f.written;
+    if (f.written < f.captures) return;
+
+    std::vector<std::string> times;
+    std::vector<std::string> ids;
+    std::vector<std::string> datetimes;
+    for (const CaptureStamp& s : f.stamps) {
+        times.push_back(format_shortest(s.t0_s) + " " + format_shortest(s.t1_s));
+        ids.push_back("t" + std::to_string(s.task) + "c" + std::to_string(s.capture));
+        datetimes.push_back(s.datetime_utc);
+    }
+    f.writer->set_extra("glint captures", std::to_string(f.stamps.size()));
+    f.writer->set_extra("glint lines per capture", std::to_string(f.lines_per_capture));
+    f.writer->set_extra("glint capture ids", brace_list(ids));
+    f.writer->set_extra("glint capture windows s", brace_list(times));
+    f.writer->set_extra("glint capture datetimes utc", brace_list(datetimes));
+    f.writer->commit();
+    f.writer.reset();
+    m_published.push_back(path);
+}
+
+std::vector<std::filesystem::path> ImageOutputs::planned() const { return m_order; }
+
+}  // namespace glint::sensor

@@ -1,0 +1,229 @@
+// SPDX-License-Identifier: Apache-2.0
+// The output-units map of the simple and raw capture methods: per-channel band weights
+// (trapezoid weight × response × flux, area, aperture and time factors × gain / ∫R), the
+// bias, the ENVI `data units` strings (Table 1's spelling) and the channels' ENVI centres and
+// FWHMs. Formulas and conventions are in output_units.h and docs/units.md.
+#include "glint/sensor/output_units.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <optional>
+#include <string>
+
+#include "glint/core/error.h"
+#include "glint/core/units.h"
+#include "glint/model/derived.h"
+
+namespace glint::sensor {
+namespace {
+
+std::string number_text(double value) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%g", value);
+    return buffer;
+}
+
+/// Trapezoid weights Δ_b (µm) of the grid: Σ_b Δ_b f_b = Σ_i ½ (λ_i − λ_{i−1}) (f_i + f_{i−1}),
+/// i.e. integrate_trapezoid(grid, f) up to rounding. Δ_0 = ½(λ_1 − λ_0), Δ_last =
+/// ½(λ_last − λ_{last−1}), inner Δ_b = ½(λ_b − λ_{b−1}) + ½(λ_{b+1} − λ_b) (each half-interval
+/// rounded as integrate_trapezoid rounds it). A one-point grid has Δ = 0.
+std::vector<double> trapezoid_weights_um(const SpectralGrid& grid) {
+    const std::span<const double> wl = grid.wavelengths_um();
+    std::vector<double> weights(wl.size(), 0.0);
+    for (std::size_t i = 1; i < wl.size(); ++i) {
+        const double half_um = 0.5 * (wl[i] - wl[i - 1]);
+        weights[i - 1] += half_um;
+        weights[i] += half_um;
+    }
+    return weights;
+}
+
+/// The flux factor at `wavelength_um`: output flux units per watt.
+double flux_factor(model::FluxUnits flux, double wavelength_um) {
+    switch (flux) {
+        case model::FluxUnits::watts:
+            return 1.0;
+        case model::FluxUnits::milliwatts:
+            return w_to_mw(1.0);
+        case model::FluxUnits::microwatts:
+            return w_to_uw(1.0);
+        case model::FluxUnits::photons_per_second:
+        case model::FluxUnits::electrons_per_second:  // the response is the QE
+            return photons_per_joule(wavelength_um);
+    }
+    throw internal_error("unknown flux units");
+}
+
+const char* flux_word(model::FluxUnits flux, bool temporal_integration) {
+    switch (flux) {
+        case model::FluxUnits::watts:
+            return temporal_integration ? "Joules" : "Watts";
+        case model::FluxUnits::milliwatts:
+            return temporal_integration ? "Millijoules" : "Milliwatts";
+        case model::FluxUnits::microwatts:
+            return temporal_integration ? "Microjoules" : "Microwatts";
+        case model::FluxUnits::photons_per_second:
+            return temporal_integration ? "Photons" : "Photons/s";
+        case model::FluxUnits::electrons_per_second:
+            return temporal_integration ? "Electrons" : "Electrons/s";
+    }
+    throw internal_error("unknown flux units");
+}
+
+/// The response-weighted mean wavelength ∫λR dλ / ∫R dλ of the piecewise-linear table (exact).
+double table_centroid_um(const model::Channel& channel) {
+    const std::vector<double>& wl = channel.table_wavelength_um;
+    const std::vector<double>& r = channel.table_value;
+    double moment = 0.0;
+    double area = 0.0;
+    for (std::size_t i = 1; i < wl.size(); ++i) {
+        const double a = wl[i - 1];
+        const double b = wl[i];
+        area += 0.5 * (b - a) * (r[i - 1] + r[i]);
+        moment += (b - a) / 6.0 * (r[i - 1] * (2.0 * a + b) + r[i] * (a + 2.0 * b));
+    }
+    if (area > 0.0) return moment / area;
+    // A one-point table (or an all-zero one, rejected earlier): its own wavelength(s).
+    return 0.5 * (wl.front() + wl.back());
+}
+
+/// Distance between the outermost crossings of half the table's peak (µm).
+double table_fwhm_um(const model::Channel& channel) {
+    const std::vector<double>& wl = channel.table_wavelength_um;
+    const std::vector<double>& r = channel.table_value;
+    const double half = 0.5 * *std::max_element(r.begin(), r.end());
+    std::size_t first = 0;  // the peak itself is >= half, so both loops stop at or before it
+    while (first + 1 < r.size() && r[first] < half) ++first;
+    std::size_t last = r.size() - 1;
+    while (last > first && r[last] < half) --last;
+    double left_um = wl[first];
+    if (first > 0) {
+        const double t = (half - r[first - 1]) / (r[first] - r[first - 1]);
+        left_um = wl[first - 1] + t * (wl[first] - wl[first - 1]);
+    }
+    double right_um = wl[last];
+    if (last + 1 < r.size()) {
+        const double t = (r[last] - half) / (r[last] - r[last + 1]);
+        right_um = wl[last] + t * (wl[last + 1] - wl[last]);
+    }
+    return right_um - left_um;
+}
+
+void set_center_and_fwhm(const model::Channel& channel, double& center_um, double& fwhm_um) {
+    switch (channel.shape) {
+        case model::ChannelShape::gaussian:  // width is the FWHM
+        case model::ChannelShape::tophat:    // a box's FWHM is its full width
+            center_um = channel.center_um;
+            fwhm_um = channel.width_um;
+            return;
+        case model::ChannelShape::triangle:  // half height at ±width/4
+            center_um = channel.center_um;
+            fwhm_um = 0.5 * channel.width_um;
+            return;
+        case model::ChannelShape::tabulated:
+            center_um = table_centroid_um(channel);
+            fwhm_um = table_fwhm_um(channel);
+            return;
+    }
+    throw internal_error("unknown channel shape");
+}
+
+}  // namespace
+
+std::string data_units_string(model::FluxUnits flux, model::AreaUnits area, bool aperture,
+                              bool temporal_integration, bool normalized) {
+    std::string denominator = area == model::AreaUnits::m2 ? "m2" : "cm2";
+    int terms = 1;
+    if (!aperture) {
+        denominator += " sr";
+        ++terms;
+    }
+    if (normalized) {
+        denominator += " um";
+        ++terms;
+    }
+    if (terms > 1) denominator = "(" + denominator + ")";
+    return std::string(flux_word(flux, temporal_integration)) + "/" + denominator;
+}
+
+OutputUnits::OutputUnits(const model::CaptureMethod& method,
+                         const model::InstrumentProperties& properties, const SpectralGrid& grid) {
+    const model::ImageFile& file = method.image_file;
+    const std::vector<model::Channel>& channels = method.spectral_response.channels;
+    m_channels = channels.size();
+    m_bands = grid.size();
+
+    const std::optional<double> g_number = model::g_number(properties);
+    const double time_s = method.temporal_integration.time_s;
+    m_description.aperture = g_number.has_value();
+    m_description.temporal_integration = time_s > 0.0;
+    m_description.g_number_per_sr = g_number.value_or(0.0);
+    m_description.integration_time_s = m_description.temporal_integration ? time_s : 0.0;
+
+    const double k_area = file.area_units == model::AreaUnits::m2 ? per_cm2_to_per_m2(1.0) : 1.0;
+    const double k_aperture = g_number ? 1.0 / *g_number : 1.0;
+    const double k_time = m_description.temporal_integration ? time_s : 1.0;
+    const double k_common = k_area * k_aperture * k_time;
+
+    // Δ_b · k_flux(λ_b): the part of the weight shared by every channel.
+    std::vector<double> band_factor = trapezoid_weights_um(grid);
+    for (std::size_t b = 0; b < m_bands; ++b) {
+        band_factor[b] *= flux_factor(file.flux_units, grid.wavelengths_um()[b]);
+    }
+
+    m_weights.assign(m_channels * m_bands, 0.0);
+    m_bias.resize(m_channels);
+    m_centers_um.resize(m_channels);
+    m_fwhm_um.resize(m_channels);
+    m_description.per_channel_units.reserve(m_channels);
+    bool all_normalized = m_channels > 0;
+    for (std::size_t c = 0; c < m_channels; ++c) {
+        const model::Channel& channel = channels[c];
+        const std::vector<double> response = model::channel_response(channel, grid);
+        const double integral_um = integrate_trapezoid(grid, response);
+        if (!(integral_um > 0.0)) {
+            throw input_error("channel '" + channel.name +
+                                  "': " + (channel.normalize ? "normalized channel has" : "has") +
+                                  " no response on the bandpass " + number_text(grid.min_um()) +
+                                  "-" + number_text(grid.max_um()) + " µm (∫ R dλ = " +
+                                  number_text(integral_um) + " µm), expected a response inside it",
+                              channel.where);
+        }
+        const double scale = channel.gain * k_common / (channel.normalize ? integral_um : 1.0);
+        double* row = m_weights.data() + c * m_bands;
+        for (std::size_t b = 0; b < m_bands; ++b) row[b] = scale * response[b] * band_factor[b];
+        m_bias[c] = channel.bias;
+        set_center_and_fwhm(channel, m_centers_um[c], m_fwhm_um[c]);
+        m_description.per_channel_units.push_back(
+            data_units_string(file.flux_units, file.area_units, m_description.aperture,
+                              m_description.temporal_integration, channel.normalize));
+        all_normalized = all_normalized && channel.normalize;
+    }
+    m_description.normalized = all_normalized;
+    const std::vector<std::string>& each = m_description.per_channel_units;
+    const bool mixed = std::any_of(each.begin(), each.end(),
+                                   [&](const std::string& text) { return text != each.front(); });
+    m_description.data_units =
+        m_channels > 0 ? m_description.per_channel_units.front()
+                       : data_units_string(file.flux_units, file.area_units, m_description.aperture,
+                                           m_description.temporal_integration, false);
+    if (!mixed) m_description.per_channel_units.clear();
+}
+
+void OutputUnits::apply(std::span<const double> radiance_w_per_cm2_sr_um,
+                        std::span<double> out) const {
+    if (radiance_w_per_cm2_sr_um.size() != m_bands || out.size() != m_channels) {
+        throw internal_error("output units: " + std::to_string(radiance_w_per_cm2_sr_um.size()) +
+                             " radiance bands and " + std::to_string(out.size()) +
+                             " outputs, expected " + std::to_string(m_bands) + " and " +
+                             std::to_string(m_channels));
+    }
+    for (std::size_t c = 0; c < m_channels; ++c) {
+        const double* row = m_weights.data() + c * m_bands;
+        double sum = 0.0;
+        for (std::size_t b = 0; b < m_bands; ++b) sum += row[b] * radiance_w_per_cm2_sr_um[b];
+        out[c] = sum + m_bias[c];
+    }
+}
+
+}  // namespace glint::sensor

@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: Apache-2.0
+// PixelRaySource: the sample rays of one capture of a focal plane. Each sample draws a point
+// of the pixel's active element and a time in the pixel's integration window (uniformly, as
+// the BasicPlatform manual's "Spatial and Temporal Sampling" describes), then asks the pose
+// service where the instrument is and how it is turned at that time.
+#include <cmath>
+#include <string>
+
+#include "glint/core/error.h"
+#include "glint/sensor/camera.h"
+
+namespace glint::sensor {
+
+PixelRaySource::PixelRaySource(const CameraModel& camera, const motion::PoseService& poses,
+                               std::size_t instrument, CaptureTiming timing)
+    : m_camera(camera), m_poses(poses), m_instrument(instrument), m_timing(timing) {
+    if (instrument >= poses.instrument_count()) {
+        throw internal_error("pixel ray source: instrument " + std::to_string(instrument) +
+                             " out of range (the platform has " +
+                             std::to_string(poses.instrument_count()) + ")");
+    }
+    if (!std::isfinite(timing.t0_s) || !std::isfinite(timing.t1_s) || timing.t1_s < timing.t0_s) {
+        throw internal_error(
+            "pixel ray source: integration window is not a finite [t0, t1] "
+            "with t1 >= t0");
+    }
+    if (!std::isfinite(timing.rolling_line_time_s) || timing.rolling_line_time_s < 0.0) {
+        throw internal_error("pixel ray source: rolling line time must be finite and >= 0");
+    }
+}
+
+radiometry::SampleRay PixelRaySource::generate(std::uint64_t problem, std::uint64_t /*sample*/,
+                                               RandomStream& rng) const {
+    const std::uint64_t columns = m_camera.columns();
+    const std::uint64_t rows = m_camera.rows();
+    if (problem / columns >= rows) {
+        throw internal_error("pixel ray source: problem " + std::to_string(problem) +
+                             " out of range (" + std::to_string(columns) + " x " +
+                             std::to_string(rows) + " pixels)");
+    }
+    const std::uint64_t column = problem % columns;
+    const std::uint64_t row = problem / columns;
+    // The documented draw order: u, v, then τ.
+    const double u = rng.uniform();
+    const double v = rng.uniform();
+    const double tau = rng.uniform();
+    const double t_s = m_timing.t0_s + static_cast<double>(row) * m_timing.rolling_line_time_s +
+                       tau * (m_timing.t1_s - m_timing.t0_s);
+
+    const Vec3 d_instrument = m_camera.direction(m_camera.focal_plane_point(
+        static_cast<std::size_t>(column), static_cast<std::size_t>(row), u, v));
+    const motion::Rigid pose = m_poses.instrument_to_scene(m_instrument, t_s);
+    radiometry::SampleRay ray;
+    ray.origin_m = pose.translation_m;
+    ray.direction = motion::normalized(motion::apply_direction(pose, d_instrument));
+    ray.time_s = t_s;
+    ray.weight = 1.0;
+    return ray;
+}
+
+}  // namespace glint::sensor

@@ -1,0 +1,125 @@
+// SPDX-License-Identifier: Apache-2.0
+// Per-focal-plane render state: spectral grid, materials on it, camera, output units,
+// convergence and the ENVI header template.
+#include <cmath>
+#include <string>
+
+#include "glint/core/error.h"
+#include "glint/core/text.h"
+#include "glint/model/derived.h"
+#include "glint/model/names.h"
+#include "render_parts.h"
+
+namespace glint::sensor::detail {
+
+bool renders(const schedule::Source& source, std::string& why) {
+    const model::Instrument& instrument = *source.instrument;
+    const model::FocalPlane& fp = *source.focal_plane;
+    if (instrument.type != model::InstrumentType::generic) {
+        why = "instrument \"" + instrument.name + "\" is a " + instrument.type_text +
+              " instrument; glint-render renders generic (camera) instruments";
+        return false;
+    }
+    if (!fp.enabled) {
+        why = "focal plane \"" + fp.name + "\" is disabled";
+        return false;
+    }
+    if (fp.capture_method.image_file.basename.empty()) {
+        why = "focal plane \"" + fp.name + "\" has no <imagefile>";
+        return false;
+    }
+    return true;
+}
+
+io::EnviDataType output_data_type(const model::ImageFile& image) {
+    const std::optional<io::EnviDataType> type = io::envi_type_from_code(image.datatype);
+    if (!type || *type == io::EnviDataType::complex64 || *type == io::EnviDataType::complex128) {
+        throw input_error("<datatype> " + std::to_string(image.datatype) +
+                              " is not a real ENVI data type (1, 2, 3, 4, 5, 12, 13, 14, 15)",
+                          image.where);
+    }
+    return *type;
+}
+
+namespace {
+
+radiometry::Convergence convergence_of(const model::FocalPlane& fp, const RenderOptions& options) {
+    if (const auto& c = fp.capture_method.convergence) {
+        if (c->minimum_samples < 1 || c->maximum_samples < c->minimum_samples) {
+            throw input_error("<convergence> needs 1 <= minimumsamples <= maximumsamples", c->where);
+        }
+        return {static_cast<std::uint64_t>(c->minimum_samples),
+                static_cast<std::uint64_t>(c->maximum_samples), c->threshold};
+    }
+    return options.convergence.value_or(kDefaultConvergence);
+}
+
+io::EnviHeader header_of(const schedule::Source& source, const OutputUnits& units,
+                         const radiometry::Convergence& convergence, const RenderOptions& options,
+                         const RenderInputs& inputs) {
+    const model::FocalPlane& fp = *source.focal_plane;
+    const model::CaptureMethod& method = fp.capture_method;
+    io::EnviHeader h;
+    h.description = std::string("glint-render ") + model::name_of(method.type) + " capture of " +
+                    source.instrument->name + " -> " + fp.name;
+    h.samples = source.x_count;
+    h.bands = units.channels();
+    h.data_type = output_data_type(method.image_file);
+    h.wavelength_units = "Micrometers";
+    h.wavelength = units.centers_um();
+    h.fwhm = units.fwhm_um();
+    for (const model::Channel& channel : method.spectral_response.channels) {
+        h.band_names.push_back(channel.name);
+    }
+    h.data_units = units.description().data_units;
+    h.set_extra("glint version", options.version);
+    h.set_extra("glint command line", options.command_line);
+    h.set_extra("glint seed", std::to_string(options.schedule.seed));
+    h.set_extra("glint simulation", inputs.schedule->simulation_file().string());
+    h.set_extra("glint plugin index",
+                std::to_string(inputs.schedule->plugins()[source.plugin].plugin_index));
+    h.set_extra("glint instrument", source.instrument->name);
+    h.set_extra("glint focal plane", fp.name);
+    h.set_extra("glint convergence", std::to_string(convergence.min_samples) + " " +
+                                         std::to_string(convergence.max_samples) + " " +
+                                         format_shortest(convergence.threshold_w_per_cm2_sr_um));
+    h.set_extra("glint scale resolution", format_shortest(options.schedule.scale_resolution));
+    h.set_extra("glint split channels", options.split_channels ? "true" : "false");
+    h.set_extra("glint atmosphere", model::to_string(inputs.atmosphere.kind));
+    const auto& per_channel = units.description().per_channel_units;
+    if (!per_channel.empty()) {
+        std::string list = "{";
+        for (std::size_t i = 0; i < per_channel.size(); ++i) {
+            list += (i ? ", " : "") + per_channel[i];
+        }
+        h.set_extra("glint channel units", list + "}");
+    }
+    return h;
+}
+
+}  // namespace
+
+FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t source_index,
+                                       const RenderOptions& options, const Context& context) {
+    const schedule::Source& source = inputs.schedule->sources()[source_index];
+    const model::FocalPlane& fp = *source.focal_plane;
+    if (fp.capture_method.temporal_integration.tdi) {
+        throw input_error("focal plane \"" + fp.name +
+                              "\" is a TDI array; rendering TDI stages is not supported yet",
+                          fp.capture_method.temporal_integration.where);
+    }
+    SpectralGrid grid = model::bandpass_grid(fp.capture_method.spectral_response.bandpass);
+    const double centre_um = 0.5 * (grid.min_um() + grid.max_um());
+    const std::size_t reference = radiometry::nearest_band(grid, centre_um);
+    radiometry::MaterialTable materials(inputs.scene.materials, grid, context.log);
+    CameraModel camera(source.instrument->properties, fp.detector_array, source.x_count,
+                       source.y_count);
+    OutputUnits units(fp.capture_method, source.instrument->properties, grid);
+    const radiometry::Convergence convergence = convergence_of(fp, options);
+    io::EnviHeader header = header_of(source, units, convergence, options, inputs);
+    return FocalPlaneState{std::move(grid), reference,         std::move(materials),
+                           std::move(camera), std::move(units), convergence,
+                           std::move(header)};
+}
+
+}  // namespace glint::sensor::detail

@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: Apache-2.0
+// Internal pieces of the capture loop (glint/sensor/render.h): the loaded inputs and the
+// per-focal-plane state built at a focal plane's first capture.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "glint/core/spectral.h"
+#include "glint/io/envi.h"
+#include "glint/model/atmosphere.h"
+#include "glint/model/scene.h"
+#include "glint/model/simulation.h"
+#include "glint/motion/frames.h"
+#include "glint/motion/trajectory.h"
+#include "glint/radiometry/materials.h"
+#include "glint/scene/atmosphere.h"
+#include "glint/scene/solar.h"
+#include "glint/sensor/camera.h"
+#include "glint/sensor/output_units.h"
+#include "glint/sensor/render.h"
+
+namespace glint::sensor::detail {
+
+/// Everything read before the first capture.
+struct RenderInputs {
+    model::Simulation simulation;
+    model::Scene scene;
+    model::Atmosphere atmosphere;
+    std::unique_ptr<scene::AtmosphereModel> atmosphere_model;
+    std::optional<scene::SolarSpectrum> sun;
+    motion::SceneFrame frame;
+    std::optional<schedule::Schedule> schedule;
+    std::vector<std::unique_ptr<motion::Trajectory>> trajectories;
+    bool dynamic_scene = false;  ///< some instance moves: the Embree scene is per capture
+};
+
+/// Reads the simulation, its scenes and atmosphere, the solar spectrum and the schedule
+/// (placed at the scene's origin). Throws glint::Error (input) listing every problem.
+RenderInputs load_inputs(const std::filesystem::path& simulation_file,
+                         const RenderOptions& options, const Context& context);
+
+/// What one focal plane needs for every capture.
+struct FocalPlaneState {
+    SpectralGrid grid;
+    std::size_t reference_band = 0;
+    radiometry::MaterialTable materials;
+    CameraModel camera;
+    OutputUnits units;
+    radiometry::Convergence convergence;
+    io::EnviHeader header;  ///< header template (lines set when planned)
+};
+
+/// Builds the state of schedule source `source`. Throws glint::Error (input, at the focal
+/// plane) for what glint cannot render (TDI focal planes, no focal length).
+FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t source,
+                                       const RenderOptions& options, const Context& context);
+
+/// Whether a schedule source produces an image glint renders (a generic instrument's
+/// enabled focal plane with an image file); `why` gets the reason when not.
+bool renders(const schedule::Source& source, std::string& why);
+
+/// The ENVI data type of an <imagefile> <datatype> code (throws glint::Error (input) at the
+/// image file for an unknown or complex code).
+io::EnviDataType output_data_type(const model::ImageFile& image);
+
+}  // namespace glint::sensor::detail

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: Apache-2.0
+// read_schedule_selection: the capture indices of a glint-schedule JSON file (--schedule).
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "glint/core/error.h"
+#include "glint/sensor/render.h"
+
+namespace glint::sensor {
+
+std::set<std::uint64_t> read_schedule_selection(const std::filesystem::path& file) {
+    std::ifstream stream(file, std::ios::binary);
+    if (!stream) throw io_error("cannot read the schedule file", file.string());
+    std::ostringstream text;
+    text << stream.rdbuf();
+    const ErrorContext where{file.string(), 0, {}};
+    nlohmann::json json;
+    try {
+        json = nlohmann::json::parse(text.str());
+    } catch (const nlohmann::json::parse_error& e) {
+        throw input_error(std::string("not JSON: ") + e.what(), where);
+    }
+    if (!json.is_object() || json.value("format", "") != "glint-schedule") {
+        throw input_error("not a glint-schedule file (expected \"format\": \"glint-schedule\"; "
+                          "write one with glint-schedule --format json)",
+                          where);
+    }
+    const auto captures = json.find("captures");
+    if (captures == json.end() || !captures->is_array()) {
+        throw input_error("the schedule has no \"captures\" array", where);
+    }
+    std::set<std::uint64_t> indices;
+    for (std::size_t i = 0; i < captures->size(); ++i) {
+        const nlohmann::json& capture = (*captures)[i];
+        if (!capture.is_object() || !capture.contains("index") ||
+            !capture["index"].is_number_unsigned()) {
+            throw input_error("captures[" + std::to_string(i) +
+                                  "] has no non-negative integer \"index\"",
+                              where);
+        }
+        indices.insert(capture["index"].get<std::uint64_t>());
+    }
+    if (indices.empty()) throw input_error("the schedule selects no capture", where);
+    return indices;
+}
+
+}  // namespace glint::sensor

@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: Apache-2.0
+// glint-render's options (docs/tools/glint-render.md).
+#include "cli.h"
+
+namespace glint::tools::render {
+
+RenderCli::RenderCli(int argc, const char* const* argv) {
+    for (int i = 0; i < argc; ++i) m_options.arguments.emplace_back(argv[i]);
+}
+
+void RenderCli::configure(CLI::App& app) {
+    m_app = &app;
+    app.add_option("input", m_options.input, "The simulation: a .jsim or a DIRSIG4 .sim")
+        ->type_name("SIM")
+        ->required();
+    app.add_option("--output-folder,--output_folder", m_output_folder,
+                   "Output folder of every BasicPlatform without its own in the .jsim")
+        ->type_name("DIR");
+    app.add_option("--output-prefix,--output_prefix", m_output_prefix,
+                   "Output prefix of every BasicPlatform without its own in the .jsim")
+        ->type_name("PREFIX");
+    app.add_option("--convergence", m_convergence,
+                   "Default MIN,MAX,THRESHOLD samples per pixel and threshold (W/(cm2 sr um) at "
+                   "the reference wavelength); a focal plane's <convergence> wins "
+                   "(default 10,100,1e-6)")
+        ->type_name("MIN,MAX,T");
+    app.add_option("--scale-resolution,--scale_resolution",
+                   m_options.render.schedule.scale_resolution,
+                   "Scale every focal plane's pixel counts by this factor, same field of view")
+        ->type_name("FACTOR")
+        ->check(CLI::PositiveNumber)
+        ->capture_default_str();
+    app.add_flag("--split-channels,--split_channels", m_options.render.split_channels,
+                 "Submit each channel as its own spectral state (recorded; no dispersion is "
+                 "modelled, so the result is the same)");
+    app.add_option("--schedule", m_options.schedule,
+                   "Render only the captures of this glint-schedule JSON (a subset or shard)")
+        ->type_name("FILE");
+    app.add_flag("--radiance-only", m_options.radiance_only,
+                 "Stop at radiance: write the radiometric product even where a detector model, "
+                 "TDI or a colour filter array is configured");
+    app.add_flag("--dry-run", m_options.dry_run,
+                 "Print the plan (captures, pixels, outputs, memory estimate) and trace nothing");
+    app.add_option("--max-memory", m_max_memory,
+                   "Cap the memory of the ray-tracing scene (bytes, or with K, M, G, T)")
+        ->type_name("SIZE");
+    app.add_option("--max-bounces", m_options.render.tracer.max_bounces,
+                   "Surface scatterings after the first hit (Russian roulette ends most paths "
+                   "earlier)")
+        ->type_name("N")
+        ->capture_default_str();
+    app.add_option("--isa", m_isa, "Embree ISA: sse2, sse4.2, avx, avx2 or avx512 (default: best)")
+        ->type_name("ISA");
+    app.add_option("--data-dir", m_options.render.data_dir,
+                   "glint's data folder (solar spectrum); default $GLINT_DATA_DIR or the "
+                   "source tree's data/")
+        ->type_name("DIR");
+}
+
+int RenderCli::execute(Context& ctx, std::ostream& out) {
+    const CLI::App& app = *m_app;
+    sensor::RenderOptions& render = m_options.render;
+    if (app.count("--output-folder") > 0) render.schedule.output_folder = m_output_folder;
+    if (app.count("--output-prefix") > 0) render.schedule.output_prefix = m_output_prefix;
+    if (app.count("--convergence") > 0) {
+        render.convergence = app_render::parse_convergence(m_convergence);
+    }
+    if (app.count("--max-memory") > 0) {
+        render.device.max_memory_bytes = app_render::parse_memory_size(m_max_memory);
+    }
+    render.device.isa = m_isa;
+    render.device.threads = ctx.threads;
+    return app_render::run(m_options, ctx, out);
+}
+
+}  // namespace glint::tools::render

@@ -1,0 +1,34 @@
+// SPDX-License-Identifier: Apache-2.0
+// glint-render's command line: the simulation and the options of the manual's "Usage" and
+// "Options" sections (DIRSIG's underscore spellings and dashed ones), plus glint's.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <ostream>
+#include <string>
+
+#include "glint/app_render/render_tool.h"
+#include "glint/core/context.h"
+
+namespace glint::tools::render {
+
+class RenderCli {
+public:
+    /// Keeps the command line for the provenance of the outputs.
+    RenderCli(int argc, const char* const* argv);
+    /// Adds the options to `app`.
+    void configure(CLI::App& app);
+    /// Turns the parsed values into options and renders; returns the exit status.
+    int execute(Context& ctx, std::ostream& out);
+
+private:
+    CLI::App* m_app = nullptr;
+    app_render::Options m_options;
+    std::string m_output_folder;
+    std::string m_output_prefix;
+    std::string m_convergence;
+    std::string m_max_memory;
+    std::string m_isa;
+};
+
+}  // namespace glint::tools::render
