@@ -51,6 +51,9 @@ void RenderCli::configure(CLI::App& app) {
         ->capture_default_str();
     app.add_option("--isa", m_isa, "Embree ISA: sse2, sse4.2, avx, avx2 or avx512 (default: best)")
         ->type_name("ISA");
+    app.add_option("--log-info-filename,--log_info_filename", m_options.render.log_info_file,
+                   "Write DIRSIG's capture list (captures, time windows, files) to FILE")
+        ->type_name("FILE");
     app.add_option("--data-dir", m_options.render.data_dir,
                    "glint's data folder (solar spectrum); default $GLINT_DATA_DIR or the "
                    "source tree's data/")

@@ -102,6 +102,7 @@ int run(Options options, Context& ctx, std::ostream& out) {
     render.schedule.seed = ctx.seed;
     render.version = version();
     render.command_line = join_arguments(options.arguments);
+    render.arguments = options.arguments;
     if (render.data_dir.empty()) render.data_dir = default_data_dir();
     if (!options.schedule.empty()) {
         render.only_captures = sensor::read_schedule_selection(options.schedule);

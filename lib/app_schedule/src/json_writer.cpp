@@ -6,6 +6,7 @@
 
 #include "glint/core/runner.h"
 #include "glint/model/names.h"
+#include "glint/schedule/capture_list.h"
 #include "pose_json.h"
 #include "writers.h"
 
@@ -132,47 +133,22 @@ private:
     bool m_first = true;
 };
 
-/// DIRSIG's --log_info_filename JSON: capture_list and run_info.
+/// DIRSIG's --log_info_filename JSON: the shared capture-list stream.
 class CaptureListWriter final : public CaptureWriter {
 public:
-    CaptureListWriter(const RunInfo& info, std::ostream& out) : m_info(info), m_out(out) {}
+    CaptureListWriter(const RunInfo& info, std::ostream& out)
+        : m_list(out, *info.schedule,
+                 schedule::CaptureListProvenance{"glint-schedule", info.options->arguments,
+                                                 info.seed}) {}
 
-    void begin() override {
-        const schedule::Schedule& schedule = *m_info.schedule;
-        Json head;
-        head["format"] = "glint-capture-list";
-        head["version"] = 1;
-        head["provenance"] = provenance_json(m_info);
-        head["run_info"] =
-            Json{{"reference_date_time",
-                  schedule.plugins().empty()
-                      ? Json(nullptr)
-                      : Json(datetime_utc(schedule.plugins()[0].tasks.reference, 0))},
-                 {"simulation_file", schedule.simulation_file().generic_string()}};
-        write_open_object(m_out, head);
-        m_out << ",\n  \"capture_list\": [";
-    }
-
+    void begin() override { m_list.begin(); }
     void capture(const CaptureRecord& record) override {
-        const schedule::Capture& c = record.capture;
-        Json j;
-        j["task_index"] = c.task_index;
-        j["capture_index"] = c.capture_index;
-        j["relative_time_window"] = Json::array({c.t0_s, c.t1_s});
-        j["plugin_data"] = Json{{"filename", path_json(record.image)},
-                                {"truth_filenames", paths_json(record.truth)}};
-        j["index"] = c.index;
-        j["plugin_index"] = record.plugin->plugin_index;
-        m_out << (m_first ? "\n    " : ",\n    ") << j.dump();
-        m_first = false;
+        m_list.add(record.capture, record.image, record.truth);
     }
-
-    void end(const WrittenTotals& /*totals*/) override { m_out << "\n  ]\n}\n"; }
+    void end(const WrittenTotals& /*totals*/) override { m_list.end(); }
 
 private:
-    const RunInfo& m_info;
-    std::ostream& m_out;
-    bool m_first = true;
+    schedule::CaptureListWriter m_list;
 };
 
 }  // namespace

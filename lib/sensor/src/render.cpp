@@ -7,13 +7,16 @@
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <sstream>
 #include <string>
 
+#include "glint/core/atomic_file.h"
 #include "glint/core/datetime.h"
 #include "glint/core/error.h"
 #include "glint/core/text.h"
 #include "glint/motion/sun.h"
 #include "glint/radiometry/environment.h"
+#include "glint/schedule/capture_list.h"
 #include "glint/sensor/image_outputs.h"
 #include "render_parts.h"
 
@@ -181,6 +184,22 @@ RenderReport prepare(const std::filesystem::path& simulation_file, const RenderO
     return report;
 }
 
+/// Writes the capture list of the run (--log_info_filename), atomically.
+void write_log_info(const RenderInputs& in, const std::vector<PlannedCapture>& captures,
+                    const RenderOptions& options) {
+    if (options.log_info_file.empty()) return;
+    std::ostringstream text;
+    schedule::CaptureListWriter list(
+        text, *in.schedule,
+        schedule::CaptureListProvenance{"glint-render", options.arguments, options.schedule.seed});
+    list.begin();
+    for (const PlannedCapture& p : captures) {
+        list.add(p.capture, p.file, in.schedule->truth_files(p.capture));
+    }
+    list.end();
+    write_file_atomically(options.log_info_file, text.str());
+}
+
 }  // namespace
 
 RenderReport plan(const std::filesystem::path& simulation_file, const RenderOptions& options,
@@ -196,6 +215,7 @@ RenderReport plan(const std::filesystem::path& simulation_file, const RenderOpti
         c.pixels = in.schedule->sources()[p.capture.source].problems_per_capture;
         report.captures.push_back(c);
     }
+    write_log_info(in, captures, options);
     return report;
 }
 
@@ -283,6 +303,7 @@ RenderReport render(const std::filesystem::path& simulation_file, const RenderOp
         context.progress.update("pixels", pixels_done, report.pixels);
     }
     context.progress.finish("pixels", report.pixels);
+    write_log_info(in, captures, options);
     report.files = outputs.published();
     return report;
 }

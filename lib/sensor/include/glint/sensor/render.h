@@ -45,6 +45,10 @@ struct RenderOptions {
     /// Provenance written into every header.
     std::string version;
     std::string command_line;
+    std::vector<std::string> arguments;  ///< the command line, program first
+    /// DIRSIG's --log_info_filename: the capture list (captures, time windows, files) of the
+    /// run, written atomically when the run ends (also for plan()); empty: none.
+    std::filesystem::path log_info_file;
 };
 
 /// Statistics of one rendered capture.
