@@ -101,9 +101,9 @@ public:
             schedule.plugins().empty()
                 ? Json(nullptr)
                 : Json(datetime_utc(schedule.plugins()[0].tasks.reference, 0));
-        head["scene_origin"] = Json{{"latitude_deg", m_frame.origin().latitude_deg},
-                                    {"longitude_deg", m_frame.origin().longitude_deg},
-                                    {"altitude_m", m_frame.origin().altitude_m}};
+        head["scene_origin"] = Json{{"latitude_deg", m_info.schedule->frame().origin().latitude_deg},
+                                    {"longitude_deg", m_info.schedule->frame().origin().longitude_deg},
+                                    {"altitude_m", m_info.schedule->frame().origin().altitude_m}};
         head["options"] = Json{
             {"output_folder", options.schedule.output_folder ? Json(*options.schedule.output_folder)
                                                              : Json(nullptr)},
@@ -117,7 +117,7 @@ public:
     }
 
     void capture(const CaptureRecord& record) override {
-        m_out << (m_first ? "\n    " : ",\n    ") << capture_json(record, m_frame).dump();
+        m_out << (m_first ? "\n    " : ",\n    ") << capture_json(record, m_info.schedule->frame()).dump();
         m_first = false;
     }
 
@@ -129,7 +129,6 @@ public:
 private:
     const RunInfo& m_info;
     std::ostream& m_out;
-    motion::SceneFrame m_frame;  ///< kDefaultSceneOrigin, as the pose service uses
     bool m_first = true;
 };
 

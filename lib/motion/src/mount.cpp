@@ -251,7 +251,8 @@ Vec3 tracking_target_m(const model::Mount& mount, double t_s, const TargetResolv
     }
     if (targets == nullptr) {
         throw input_error(mount_label(mount) + ": tracking a named target (\"" + target.name +
-                              "\") needs a scene (issue [E]); give a fixed <point> for now",
+                              "\") needs the scene (its instances are the targets), and none "
+                              "is loaded; give a fixed <point> without one",
                           mount.where);
     }
     const std::optional<Vec3> position = targets->target_position_m(target.name, t_s);

@@ -96,9 +96,10 @@ PoseService::PoseService(std::shared_ptr<const model::Platform> platform,
                 if (mount.type == model::MountType::tracking) {
                     chain.needs_scene = true;
                     link.time_varying = true;
-                    if (!mount.tracking->point_m && m_targets == nullptr) {
-                        // Fails now, with the mount's location, rather than at the first pose.
-                        tracking_target_m(mount, 0.0, nullptr);
+                    if (!mount.tracking->point_m) {
+                        // Fails now, with the mount's location, rather than at the first pose:
+                        // no scene, or no instance of that name.
+                        tracking_target_m(mount, 0.0, m_targets);
                     }
                 } else {
                     link.time_varying = mount_is_time_varying(mount);
@@ -199,7 +200,8 @@ TimeSpan jitter_span_of(const model::TaskList& tasks) noexcept {
 
 PoseService make_pose_service(const model::Simulation& simulation, std::size_t plugin_index,
                               const legacy::ReadOptions& read_options, std::uint64_t seed,
-                              const Log& log, Diagnostics& diagnostics, const SceneFrame& scene) {
+                              const Log& log, Diagnostics& diagnostics, const SceneFrame& scene,
+                              const TargetResolver* targets) {
     if (plugin_index >= simulation.plugins.size()) {
         throw usage_error("plugin index " + std::to_string(plugin_index) + " out of range (" +
                           simulation.file + " has " + std::to_string(simulation.plugins.size()) +
@@ -240,6 +242,7 @@ PoseService make_pose_service(const model::Simulation& simulation, std::size_t p
 
     options.seed = seed;
     options.plugin_index = plugin_index;
+    options.targets = targets;
     options.jitter_span = jitter_span_of(tasks);
     return PoseService(std::move(platform), std::move(trajectory), jitter, options);
 }

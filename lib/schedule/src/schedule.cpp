@@ -50,6 +50,7 @@ Schedule& Schedule::operator=(Schedule&&) noexcept = default;
 Schedule::~Schedule() = default;
 
 const std::filesystem::path& Schedule::simulation_file() const { return m_impl->simulation_file; }
+const motion::SceneFrame& Schedule::frame() const { return m_impl->frame; }
 const std::vector<PluginSchedule>& Schedule::plugins() const { return m_impl->plugins; }
 const std::vector<Source>& Schedule::sources() const { return m_impl->sources; }
 

@@ -6,9 +6,11 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <vector>
 
 #include "glint/schedule/clock_ticks.h"
+#include "glint/motion/scene_instances.h"
 #include "glint/schedule/schedule.h"
 
 namespace glint::schedule {
@@ -18,6 +20,9 @@ namespace detail {
 /// The data of Schedule::Impl, in a type code outside the class may name.
 struct ScheduleData {
     std::filesystem::path simulation_file;
+    motion::SceneFrame frame;  ///< where the poses are placed
+    /// Named targets of tracking mounts (the scene's instances); the pose services point at it.
+    std::shared_ptr<const motion::SceneTargets> targets;
     std::vector<PluginSchedule> plugins;
     std::vector<Source> sources;
     /// ticks[source][task]: the source's clock in task `task` of its plugin. The trigger lists

@@ -12,6 +12,7 @@
 #include "glint/core/error.h"
 #include "glint/core/text.h"
 #include "glint/legacy/readers.h"
+#include "glint/legacy/simulation_inputs.h"
 #include "glint/model/platform.h"
 #include "glint/schedule/schedule.h"
 #include "glint/schedule/trigger_file.h"
@@ -99,8 +100,8 @@ void Loader::load_plugin(std::size_t plugin_index) {
     std::shared_ptr<const motion::PoseService> poses;
     try {
         poses = std::make_shared<const motion::PoseService>(motion::make_pose_service(
-            simulation, plugin_index, read_options, options.seed, log, local,
-            options.scene_origin ? motion::SceneFrame(*options.scene_origin) : motion::SceneFrame()));
+            simulation, plugin_index, read_options, options.seed, log, local, impl.frame,
+            impl.targets.get()));
     } catch (const Error& error) {
         if (!local.has_errors()) local.add(error);  // else it repeats local's first error
     }
@@ -262,6 +263,22 @@ std::uint64_t checked_multiply(std::uint64_t a, std::uint64_t b) {
     return product;
 }
 
+/// The tasks reference of the first BasicPlatform (dynamic scene instances move in its
+/// time); the epoch when it cannot be read (the loader reports why).
+DateTime first_reference(const model::Simulation& simulation,
+                         const legacy::ReadOptions& read_options) {
+    for (const std::size_t index : simulation.basic_platform_indices()) {
+        const model::BasicPlatformInputs& inputs = *simulation.plugins[index].basic_platform;
+        Diagnostics ignored;  // read again, and reported, by the loader
+        try {
+            return legacy::read_tasks(inputs.tasks_file.resolved, read_options, ignored).reference;
+        } catch (const Error&) {
+            return DateTime{};
+        }
+    }
+    return DateTime{};
+}
+
 }  // namespace
 
 Schedule Schedule::load(const std::filesystem::path& simulation_file,
@@ -285,6 +302,22 @@ Schedule Schedule::load(const std::filesystem::path& simulation_file,
     Schedule schedule;
     Impl& impl = *schedule.m_impl;
     impl.simulation_file = simulation_file;
+    // The poses live in the scene's frame, and tracking mounts may point at its instances.
+    std::optional<model::Scene> read_scene;
+    const model::Scene* scene = options.scene;
+    if (scene == nullptr) {
+        read_scene = legacy::read_simulation_scene(simulation, read_options, diagnostics);
+        diagnostics.throw_if_errors();
+        scene = &*read_scene;
+    }
+    if (options.scene_origin) {
+        impl.frame = motion::SceneFrame(*options.scene_origin);
+    } else if (scene->origin) {
+        impl.frame = motion::SceneFrame(scene->origin->latitude_deg, scene->origin->longitude_deg,
+                                        scene->origin->altitude_m);
+    }
+    impl.targets = std::make_shared<const motion::SceneTargets>(
+        *scene, impl.frame, first_reference(simulation, read_options), log);
     Loader loader{simulation, options, read_options, log, diagnostics, impl, {}};
     const std::vector<std::size_t> entries = simulation.basic_platform_indices();
     if (entries.empty()) {

@@ -32,21 +32,17 @@ void read_all(RenderInputs& in, const std::filesystem::path& simulation_file,
     in.atmosphere_model = scene::make_atmosphere_model(in.atmosphere);
 
     schedule::ScheduleOptions schedule_options = options.schedule;
-    if (in.scene.origin) {
-        schedule_options.scene_origin = motion::Geodetic{
-            in.scene.origin->latitude_deg, in.scene.origin->longitude_deg,
-            in.scene.origin->altitude_m};
-        in.frame = motion::SceneFrame(*schedule_options.scene_origin);
-    }
+    schedule_options.scene = &in.scene;  // its origin and named targets
     in.schedule.emplace(schedule::Schedule::load(simulation_file, schedule_options, options.read,
                                                  context.log, diagnostics));
+    in.frame = in.schedule->frame();
     const std::filesystem::path solar = options.data_dir / scene::SolarSpectrum::kAstmRelativePath;
     in.sun.emplace(scene::SolarSpectrum::load_astm_g173(solar, solar.string()));
 
     const DateTime reference = in.schedule->plugins().empty()
                                    ? DateTime{}
                                    : in.schedule->plugins().front().tasks.reference;
-    in.trajectories = scene::make_instance_trajectories(in.scene, in.frame, reference, context.log);
+    in.trajectories = motion::make_instance_trajectories(in.scene, in.frame, reference, context.log);
     for (const model::Instance& instance : in.scene.instances) {
         in.dynamic_scene = in.dynamic_scene || instance.dynamic();
     }

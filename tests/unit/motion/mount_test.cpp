@@ -341,7 +341,7 @@ TEST(Mount, TrackingErrors) {
     EXPECT_THAT(error_of([&] { mount_transform(m, 0.0, context); }),
                 testing::HasSubstr("mounts.platform:160: platform/attachment/mount[Tracker]: "
                                    "mount \"Tracker\": tracking a named target (\"truck_01\") "
-                                   "needs a scene (issue [E])"));
+                                   "needs the scene (its instances are the targets)"));
     const MovingTarget targets;
     context.targets = &targets;
     m.tracking->name = "car_02";

@@ -247,7 +247,7 @@ TEST(PoseService, NamedTrackingTargetNeedsAScene) {
     });
     EXPECT_THAT(msg, testing::HasSubstr("mounts.platform:"));
     EXPECT_THAT(msg, testing::HasSubstr("mount \"Tracker\": tracking a named target "
-                                        "(\"truck_01\") needs a scene (issue [E])"));
+                                        "(\"truck_01\") needs the scene (its instances are the targets)"));
 }
 
 TEST(PoseService, BadPluginIndexAndInstrumentIndex) {

@@ -88,7 +88,7 @@ struct Rig {
         TracerSettings settings = {}, scene::TimeWindow window = {})
         : scene(std::move(scene_in)),
           grid(std::move(grid_in)),
-          trajectories(scene::make_instance_trajectories(scene, motion::SceneFrame(),
+          trajectories(motion::make_instance_trajectories(scene, motion::SceneFrame(),
                                                          DateTime{})),
           geometry(scene::GeometryScene::build(scene, trajectories,
                                                scene::BuildOptions{{}, window, {}})),

@@ -205,7 +205,7 @@ inline BuildOptions options_over(double begin_s, double end_s) {
 inline GeometryScene build(const model::Scene& scene, const BuildOptions& options = {},
                            Log log = {}) {
     const auto trajectories =
-        make_instance_trajectories(scene, motion::SceneFrame(), DateTime{}, log);
+        motion::make_instance_trajectories(scene, motion::SceneFrame(), DateTime{}, log);
     return GeometryScene::build(scene, trajectories, options, log);
 }
 

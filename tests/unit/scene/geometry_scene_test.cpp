@@ -430,7 +430,7 @@ TEST(GeometryScene, InstanceTrajectoriesFollowTheInstances) {
     const std::size_t box = add_object(scene, box_mesh({-1, -1, 0}, {1, 1, 2}, 0), "box");
     add_static(scene, box);
     add_dynamic(scene, box, straight_motion({0, 0, 0}, 90.0, 2.0), "car");
-    auto trajectories = make_instance_trajectories(scene, motion::SceneFrame(), DateTime{});
+    auto trajectories = motion::make_instance_trajectories(scene, motion::SceneFrame(), DateTime{});
     ASSERT_EQ(trajectories.size(), 2u);
     EXPECT_FALSE(trajectories[0]);
     ASSERT_TRUE(trajectories[1]);
@@ -439,7 +439,7 @@ TEST(GeometryScene, InstanceTrajectoriesFollowTheInstances) {
     // A motion with neither kind is refused at the instance.
     scene.instances[1].motion = model::PlatformMotion{};
     const Error e =
-        error_of([&] { make_instance_trajectories(scene, motion::SceneFrame(), DateTime{}); });
+        error_of([&] { motion::make_instance_trajectories(scene, motion::SceneFrame(), DateTime{}); });
     EXPECT_EQ(e.category(), ErrorCategory::input);
     EXPECT_THAT(e.message(), HasSubstr("instance \"car\": no motion was read"));
     EXPECT_EQ(e.context().file, "test.yaml");

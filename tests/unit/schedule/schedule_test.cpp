@@ -443,3 +443,43 @@ TEST(Schedule, MissingSimulationIsAnError) {
 
 }  // namespace
 }  // namespace glint::schedule
+
+namespace glint::schedule {
+namespace {
+
+TEST(ScheduleScene, PosesUseTheSceneOriginAndTrackNamedInstances) {
+    // A camera hovering 500 m over the origin tracks the instance truck_01, which drives east
+    // from (100, 50, 0) at 10 m/s: its boresight must point at the truck at every capture.
+    Diagnostics diagnostics;
+    const Schedule schedule = load("tracking/tracking.jsim", {}, diagnostics);
+    EXPECT_DOUBLE_EQ(schedule.frame().origin().latitude_deg, 43.1);
+    EXPECT_DOUBLE_EQ(schedule.frame().origin().altitude_m, 120.0);
+    const motion::PoseService& poses = *schedule.plugins().front().poses;
+    for (double t : {0.0, 2.5, 7.0, 10.0}) {
+        const motion::Rigid r = poses.instrument_to_scene(0, t);
+        const motion::Vec3 look = motion::apply_direction(r, motion::kInstrumentBoresight);
+        const motion::Vec3 truck{100.0 + 10.0 * t, 50.0, 0.0};
+        const motion::Vec3 expected = motion::normalized(truck - r.translation_m);
+        // Both unit vectors: 1e-9 rad is rounding in the mount chain.
+        EXPECT_LT(motion::norm(look - expected), 1e-9) << "t = " << t;
+    }
+}
+
+TEST(ScheduleScene, AnUnknownTargetNameIsAnInputErrorAtTheMount) {
+    model::Scene scene;  // no instances at all
+    ScheduleOptions options;
+    options.scene = &scene;
+    Diagnostics diagnostics;
+    try {
+        load("tracking/tracking.jsim", options, diagnostics);
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        EXPECT_THAT(std::string(e.what()),
+                    testing::HasSubstr("tracker.platform:5: platform/attachment/mount[Tracker]: "
+                                       "mount \"Tracker\": the scene has no target named "
+                                       "\"truck_01\""));
+    }
+}
+
+}  // namespace
+}  // namespace glint::schedule

@@ -38,7 +38,7 @@
 
 namespace glint::motion {
 
-/// Resolves named scene targets for tracking mounts. Implemented by the scene (issue [E]);
+/// Resolves named scene targets for tracking mounts (SceneTargets, scene_instances.h);
 /// implementations must be thread-safe and should not allocate.
 class TargetResolver {
 public:
@@ -93,7 +93,7 @@ Quaternion tracking_rotation(const Vec3& direction) noexcept;
 
 /// The target point (scene ENU, m) of a tracking mount at `t_s`: the fixed point, or the named
 /// target from `targets`, plus offset_m. Throws glint::Error (input, at mount.where) for a
-/// named target without a resolver ("tracking a named target needs a scene (issue [E])") or a
+/// named target without a resolver ("tracking a named target ... needs the scene") or a
 /// name the resolver does not know.
 Vec3 tracking_target_m(const model::Mount& mount, double t_s, const TargetResolver* targets);
 

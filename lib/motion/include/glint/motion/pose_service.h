@@ -48,7 +48,8 @@ struct PoseServiceOptions {
     /// Order of the platform orientation jitter angles (the motion file's rotation order).
     EulerOrder platform_jitter_order = EulerOrder::xyz;
     JitterSynthesisOptions synthesis{};
-    /// Named tracking targets; null until scenes exist (issue [E]). Must outlive the service.
+    /// Named tracking targets (the scene's instances, SceneTargets); null: a named target is
+    /// an input error. Must outlive the service.
     const TargetResolver* targets = nullptr;
 };
 
@@ -129,6 +130,8 @@ TimeSpan jitter_span_of(const model::TaskList& tasks) noexcept;
 /// Builds the pose service of the BasicPlatform at `plugin_index` of `simulation.plugins`:
 /// reads its platform, motion and tasks files (legacy readers, problems to `diagnostics`),
 /// places the scene frame at `scene` (the scene's origin; kDefaultSceneOrigin by default),
+/// resolves named tracking targets with `targets` (must outlive the service; null: a named
+/// target is an input error),
 /// builds the trajectory (tasks reference date-time; `log` gets its clamp warning) and the
 /// jitter (seed; streams as described above; span jitter_span_of(tasks); platform jitter
 /// angles in the `.ppd` rotation order, or a FlexMotion euler engine's, else xyz). Throws
@@ -138,6 +141,7 @@ TimeSpan jitter_span_of(const model::TaskList& tasks) noexcept;
 PoseService make_pose_service(const model::Simulation& simulation, std::size_t plugin_index,
                               const legacy::ReadOptions& read_options, std::uint64_t seed,
                               const Log& log, Diagnostics& diagnostics,
-                              const SceneFrame& scene = SceneFrame());
+                              const SceneFrame& scene = SceneFrame(),
+                              const TargetResolver* targets = nullptr);
 
 }  // namespace glint::motion

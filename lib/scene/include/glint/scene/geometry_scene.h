@@ -36,6 +36,7 @@
 #include "glint/model/scene.h"
 #include "glint/motion/frames.h"
 #include "glint/motion/geometry.h"
+#include "glint/motion/scene_instances.h"
 #include "glint/motion/trajectory.h"
 
 namespace glint::scene {
@@ -107,19 +108,12 @@ struct Bounds {
     }
 };
 
-/// The trajectories of a scene's dynamic instances, indexed like model::Scene::instances
-/// (nullptr for static instances). `frame` places geodetic motion; `reference_utc` is the
-/// tasks reference time. Throws glint::Error (input, at the instance) for a motion that
-/// cannot be used.
-std::vector<std::unique_ptr<motion::Trajectory>> make_instance_trajectories(
-    const model::Scene& scene, const motion::SceneFrame& frame, const DateTime& reference_utc,
-    Log log = {});
-
 /// The built Embree scene.
 class GeometryScene {
 public:
-    /// Builds the scene. `trajectories` is indexed like scene.instances (make_instance_
-    /// trajectories); it must hold a trajectory for every dynamic instance. Throws
+    /// Builds the scene. `trajectories` is indexed like scene.instances
+    /// (motion::make_instance_trajectories); it must hold a trajectory for every dynamic
+    /// instance. Throws
     /// glint::Error: usage for bad settings (unknown ISA, min_time_steps < 2, window end <
     /// begin), input when a dynamic instance has no trajectory or a mesh has a material
     /// index out of range or a static transform is singular, runtime when the memory cap

@@ -19,6 +19,7 @@
 #include "glint/core/log.h"
 #include "glint/legacy/read_options.h"
 #include "glint/model/platform.h"
+#include "glint/model/scene.h"
 #include "glint/model/simulation.h"
 #include "glint/model/tasks.h"
 #include "glint/motion/pose_service.h"
@@ -33,9 +34,13 @@ struct ScheduleOptions {
     std::optional<std::string> output_prefix;  ///< --output_prefix
     double scale_resolution = 1.0;             ///< --scale_resolution: pixel counts × this
     std::uint64_t seed = 1;                    ///< jitter in the poses
-    /// The scene origin the poses are placed about (the scene's; kDefaultSceneOrigin when
-    /// not set).
+    /// The scene origin the poses are placed about; when not set, the scene's origin
+    /// (kDefaultSceneOrigin when it gives none).
     std::optional<motion::Geodetic> scene_origin;
+    /// The simulation's scene, already read (glint-render), for its origin and the named
+    /// targets of tracking mounts; null: load() reads the simulation's scenes itself. Only
+    /// used during load().
+    const model::Scene* scene = nullptr;
 };
 
 /// One BasicPlatform entry of the simulation, loaded.
@@ -90,6 +95,9 @@ public:
                          const Log& log, Diagnostics& diagnostics);
 
     const std::filesystem::path& simulation_file() const;
+    /// The scene frame the poses are placed in (ScheduleOptions::scene_origin, else the
+    /// scenes' origin, else kDefaultSceneOrigin).
+    const motion::SceneFrame& frame() const;
     const std::vector<PluginSchedule>& plugins() const;
     const std::vector<Source>& sources() const;
 
