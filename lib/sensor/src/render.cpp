@@ -263,8 +263,10 @@ RenderReport render(const std::filesystem::path& simulation_file, const RenderOp
                              source.focal_plane->detector_array.rolling_line_time_s.value_or(0.0)};
         const PixelRaySource rays(state.camera, *plugin.poses, source.instrument_index, timing);
         radiometry::ProblemBatch batch;
+        // The capture's global schedule index: unique per focal plane and capture, so focal
+        // planes imaging at the same moment draw independent numbers.
         batch.key = {options.schedule.seed, plugin.plugin_index, capture.task_index,
-                     capture.capture_index};
+                     capture.index};
         batch.source = &rays;
         batch.convergence = state.convergence;
         batch.reference_band = state.reference_band;
