@@ -39,10 +39,27 @@ void check_batch(const PathTracer& tracer, const ProblemBatch& batch) {
     if (!std::isfinite(c.threshold_w_per_cm2_sr_um)) {
         throw usage_error("the convergence threshold must be a finite number");
     }
+    if (!std::isfinite(batch.hypersampling_multiplier) || batch.hypersampling_multiplier < 1.0 ||
+        batch.hypersampling_multiplier > 1e9) {
+        throw usage_error("the hypersampling multiplier must be a number in [1, 1e9]");
+    }
     if (batch.reference_band >= tracer.bands()) {
         throw usage_error("reference band " + std::to_string(batch.reference_band) +
                           " is out of range for " + std::to_string(tracer.bands()) + " bands");
     }
+}
+
+/// The batch's convergence, multiplied for a hypersampled problem.
+Convergence effective_convergence(const ProblemBatch& batch, std::uint64_t problem) {
+    Convergence c = batch.convergence;
+    const std::uint64_t slot = problem - batch.first_problem;
+    if (problem >= batch.first_problem && slot < batch.hypersampled.size() &&
+        batch.hypersampled[slot] != 0 && batch.hypersampling_multiplier > 1.0) {
+        const double m = batch.hypersampling_multiplier;
+        c.min_samples = static_cast<std::uint64_t>(std::ceil(static_cast<double>(c.min_samples) * m));
+        c.max_samples = static_cast<std::uint64_t>(std::ceil(static_cast<double>(c.max_samples) * m));
+    }
+    return c;
 }
 
 /// Solves `problem` into `radiance` (bands values); returns the sample count and the standard
@@ -50,7 +67,7 @@ void check_batch(const PathTracer& tracer, const ProblemBatch& batch) {
 std::pair<std::uint64_t, double> solve_into(const PathTracer& tracer, const ProblemBatch& batch,
                                             std::uint64_t problem, Workspace& ws,
                                             std::span<double> radiance) {
-    const Convergence& c = batch.convergence;
+    const Convergence c = effective_convergence(batch, problem);
     const StreamKey& k = batch.key;
     std::fill(ws.sum.begin(), ws.sum.end(), 0.0);
     double weight_sum = 0.0;

@@ -61,7 +61,8 @@ void place_fixed(RTCGeometry geometry, const Affine& affine, const Bounds& objec
     const std::array<float, 12> xfm = detail::to_float3x4(affine);
     rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm.data());
     data.normal_matrix = detail::inverse_transpose(affine.linear);
-    detail::expand(bounds, detail::transformed(object_box, affine));
+    data.bounds = detail::transformed(object_box, affine);
+    detail::expand(bounds, data.bounds);
 }
 
 /// Places a moving instance: one quaternion decomposition per step.
@@ -90,7 +91,8 @@ void place_moving(RTCGeometry geometry, const detail::MotionSamples& samples,
     const double arc_m = extent.radius_m * (1.0 - std::cos(0.5 * samples.max_step_rotation_rad));
     const double pad_m =
         arc_m + std::max(samples.max_error_m, sampling.max_step_fraction * extent.diagonal_m);
-    detail::expand(bounds, detail::padded(swept, pad_m));
+    data.bounds = detail::padded(swept, pad_m);
+    detail::expand(bounds, data.bounds);
     data.moving = true;
     data.geometry = geometry;
 }
@@ -212,6 +214,11 @@ GeometryScene& GeometryScene::operator=(GeometryScene&&) noexcept = default;
 GeometryScene::~GeometryScene() = default;
 
 const Bounds& GeometryScene::bounds() const noexcept { return m_impl->bounds; }
+Bounds GeometryScene::instance_bounds(std::size_t instance) const noexcept {
+    if (instance >= m_impl->instances.size()) return detail::empty_bounds();
+    return m_impl->instances[instance].bounds;
+}
+
 const TimeWindow& GeometryScene::window() const noexcept { return m_impl->window; }
 const DeviceInfo& GeometryScene::device() const noexcept { return m_impl->device->info(); }
 std::uint64_t GeometryScene::instanced_triangle_count() const noexcept {

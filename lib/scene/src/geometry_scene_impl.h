@@ -34,6 +34,8 @@ struct InstanceData {
     Mat3 normal_matrix = Mat3::identity();
     /// Moving instances: the geometry, to ask Embree for its transform at a ray's time.
     RTCGeometry geometry = nullptr;
+    /// Where the instance is over the window (moving ones: swept and padded).
+    Bounds bounds;
 };
 
 }  // namespace detail

@@ -271,6 +271,15 @@ RenderReport render(const std::filesystem::path& simulation_file, const RenderOp
         batch.convergence = state.convergence;
         batch.reference_band = state.reference_band;
         batch.count = source.problems_per_capture;
+        const double multiplier =
+            source.focal_plane->capture_method.sample_strategy.hypersampling_multiplier;
+        std::vector<std::uint8_t> important;
+        if (multiplier > 1.0) {
+            important = detail::hypersampled_pixels(in.scene, geometry, state.camera, *plugin.poses,
+                                                    source.instrument_index, timing);
+            batch.hypersampled = important;
+            batch.hypersampling_multiplier = multiplier;
+        }
         const radiometry::Solutions solutions = radiometry::solve(tracer, batch, quiet);
 
         const std::size_t channels = state.units.channels();

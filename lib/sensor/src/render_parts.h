@@ -17,6 +17,7 @@
 #include "glint/motion/trajectory.h"
 #include "glint/radiometry/materials.h"
 #include "glint/scene/atmosphere.h"
+#include "glint/scene/geometry_scene.h"
 #include "glint/scene/solar.h"
 #include "glint/sensor/camera.h"
 #include "glint/sensor/output_units.h"
@@ -61,6 +62,16 @@ FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t s
 /// Whether a schedule source produces an image glint renders (a generic instrument's
 /// enabled focal plane with an image file); `why` gets the reason when not.
 bool renders(const schedule::Source& source, std::string& why);
+
+/// Hypersampling: one entry per pixel (problem), 1 where the capture's field of view may
+/// contain an instance marked ::IMPORTANT:: (its bounds over the window projected from the
+/// instrument's poses at the window's start and end, one pixel of margin; every pixel when
+/// the box reaches behind the camera); empty when no instance is important.
+std::vector<std::uint8_t> hypersampled_pixels(const model::Scene& scene,
+                                              const scene::GeometryScene& geometry,
+                                              const CameraModel& camera,
+                                              const motion::PoseService& poses,
+                                              std::size_t instrument, const CaptureTiming& timing);
 
 /// The ENVI data type of an <imagefile> <datatype> code (throws glint::Error (input) at the
 /// image file for an unknown or complex code).

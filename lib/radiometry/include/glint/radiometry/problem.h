@@ -79,6 +79,11 @@ struct ProblemBatch {
     std::size_t reference_band = 0;  ///< the band the convergence rule watches
     std::uint64_t first_problem = 0;
     std::uint64_t count = 0;
+    /// Hypersampling (the manual's ::IMPORTANT:: targets): problems whose entry is non-zero
+    /// (indexed by problem − first_problem; empty: none) take min and max samples ×
+    /// hypersampling_multiplier (rounded up), the threshold unchanged.
+    std::span<const std::uint8_t> hypersampled;
+    double hypersampling_multiplier = 1.0;
 };
 
 /// Index of the band nearest to `wavelength_um` (the lower one on a tie).

@@ -145,6 +145,9 @@ public:
 
     /// Bounds of the whole scene over the window (empty for an empty scene).
     const Bounds& bounds() const noexcept;
+    /// Bounds of instance `instance` (index into scene.instances) over the window — a moving
+    /// instance's swept box; empty for an index out of range.
+    Bounds instance_bounds(std::size_t instance) const noexcept;
     /// The window the scene was built for.
     const TimeWindow& window() const noexcept;
     /// Device information for provenance.
