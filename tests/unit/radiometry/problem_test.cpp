@@ -221,6 +221,21 @@ TEST(Solve, CancellationStopsTheBatch) {
     }
 }
 
+TEST(Solve, HypersampledProblemsTakeMoreSamples) {
+    Rig rig = busy_rig();
+    const Pinhole source;
+    ProblemBatch batch = batch_of(source, 3, 4);
+    batch.first_problem = 10;
+    const std::vector<std::uint8_t> mask{0, 1, 0, 1};  // problems 11 and 13
+    batch.hypersampled = mask;
+    batch.hypersampling_multiplier = 2.5;  // 3 × 2.5 = 7.5 → 8
+    const Solutions s = solve(rig.tracer, batch, Context{});
+    EXPECT_EQ(s.samples, (std::vector<std::uint64_t>{3, 8, 3, 8}));
+    EXPECT_EQ(solve(rig.tracer, batch, 13).samples, 8u);
+    batch.hypersampling_multiplier = 0.5;
+    EXPECT_THROW(solve(rig.tracer, batch, 10), Error);
+}
+
 TEST(Solve, NearestBand) {
     const SpectralGrid grid({0.25, 0.5, 0.75});
     EXPECT_EQ(nearest_band(grid, 0.1), 0u);
