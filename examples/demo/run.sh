@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
-# The default example that `make demo` runs. Until glint-render exists it exercises the
-# richest pipeline that works: the DIRSIG4 simulation in examples/demo/sim/ is converted to
-# a DIRSIG5 .jsim, checked, its camera dumped as normalized JSON and its capture schedule
-# written; a generated three-band scene becomes an ENVI cube that is
-# inspected, measured and previewed; then a short "capture per file" sequence of a moving
-# scene is written as ENVI frames named as DIRSIG's capture schedule names them, each frame
-# is converted to PNG with the image_tool spellings of the BasicPlatform manual's
-# processing-task example, and the frames are encoded into a video through ffmpeg.
+# The default example that `make demo` runs (examples/demo/README.md describes the scene).
+# The DIRSIG4 simulation examples/demo/sim/demo.sim (a glint YAML scene, a parametric
+# atmosphere, an aircraft carrying an RGB frame camera and a multispectral pushbroom, a .ppd
+# flight line, a .tasks window) is converted to a DIRSIG5 .jsim and checked, its platform
+# dumped as normalized JSON and its capture schedule written; glint-render renders every
+# capture into ENVI files; glint-envi reports on them and converts the RGB frames and a
+# false-colour composite of the pushbroom image to PNG; the frames are encoded into a video
+# through ffmpeg. Takes about half a minute on two cores once the tools are built.
 # Usage: examples/demo/run.sh BIN_DIR OUT_DIR
 set -euo pipefail
 
@@ -16,74 +16,87 @@ out=${2:?usage: run.sh BIN_DIR OUT_DIR}
 envi="$bin/glint-envi"
 p2j="$bin/glint-platform2jsim"
 here=$(cd "$(dirname "$0")" && pwd)
-frames=24
+# Samples per pixel: at least 8, at most 64, stop when the pixel's mean radiance at the
+# bandpass centre moved by less than 1e-5 W/(cm2 sr um) (about 0.3% of the grass) with the
+# last sample.
+convergence=8,64,1e-5
+fps=6  # the RGB camera's clock rate: the video plays in real time
 
 step() { printf '\n== %s\n' "$*" >&2; }
 run() { printf '$ %s\n' "$*" >&2; "$@"; }
 
 rm -rf "$out"
-mkdir -p "$out/frames"
+mkdir -p "$out/render"
 
-# A 160x120 scene: a smooth colour gradient under a checkerboard, as linear float data.
-scene_pattern() {  # $1: checker offset in pixels; $2: output
-    oiiotool --pattern "fill:topleft=0.05,0.10,0.20:topright=0.60,0.50,0.30:bottomleft=0.10,0.40,0.10:bottomright=0.90,0.80,0.70" 160x120 3 \
-             --pattern "checker:width=20:height=20:color1=0,0,0:color2=0.15,0.15,0.15:xoffset=$1" 160x120 3 \
-             --add -d float -o "$2"
-}
-
-step "0. the DIRSIG4 simulation examples/demo/sim/demo.sim becomes a DIRSIG5 .jsim"
+step "1. the DIRSIG4 simulation examples/demo/sim/demo.sim becomes a DIRSIG5 .jsim"
 run "$p2j" "$here/sim/demo.sim" -o "$out/demo.jsim"
-run "$p2j" --check "$out/demo.jsim"
+run "$p2j" --check "$out/demo.jsim" >&2
 run "$p2j" --dump-platform "$here/sim/demo.platform" -o "$out/demo.platform.json"
-printf 'camera: F# %s, G# %s 1/sr, bandpass samples %s (from demo.platform.json)\n' \
-    "$(grep -m1 '"f_number"' "$out/demo.platform.json" | tr -dc '0-9.')" \
-    "$(grep -m1 '"g_number_per_sr"' "$out/demo.platform.json" | tr -dc '0-9.')" \
-    "$(grep -m1 '"count"' "$out/demo.platform.json" | tr -dc '0-9')" >&2
+# F# and G# of the camera, then of the pushbroom
+mapfile -t optics < <(grep -e '"f_number"' -e '"g_number_per_sr"' "$out/demo.platform.json" |
+                          tr -dc '0-9.\n')
+printf 'Camera: F# %s, G# %s 1/sr; Pushbroom: F# %s, G# %s 1/sr (from demo.platform.json)\n' \
+    "${optics[@]}" >&2
 
-step "0b. the capture schedule: 12 Hz frames over the 2 s task, with poses, sun and file names"
+step "2. the capture schedule: 25 RGB frames (6 Hz) and 241 pushbroom lines (60 Hz) in 4 s"
 run "$bin/glint-schedule" --summary "$out/demo.jsim" >&2
 run "$bin/glint-schedule" "$out/demo.jsim" -o "$out/demo.schedule.json"
 run "$bin/glint-schedule" --format text --captures 0:4 "$out/demo.jsim" >&2
 
-step "1. a generated scene becomes an ENVI cube (BIP float32, band names R, G, B)"
-scene_pattern 0 "$out/scene.exr"
-run "$envi" convert "$out/scene.exr" "$out/scene.img"
+step "3. glint-render: every capture into ENVI files (the log of the first capture below)"
+printf '$ %s -v %s --output-folder %s --convergence %s > %s 2> %s\n' "$bin/glint-render" \
+    "$out/demo.jsim" "$out/render" "$convergence" "$out/render/files.txt" \
+    "$out/render/render.log" >&2
+SECONDS=0
+"$bin/glint-render" -v "$out/demo.jsim" --output-folder "$out/render" \
+    --convergence "$convergence" > "$out/render/files.txt" 2> "$out/render/render.log" || {
+    cat "$out/render/render.log" >&2
+    exit 1
+}
+grep -m1 -A5 'Starting capture' "$out/render/render.log" >&2
+printf '... %d captures in %d s, %d files written (list in render/files.txt)\n' \
+    "$(grep -c 'Starting capture' "$out/render/render.log")" "$SECONDS" \
+    "$(wc -l < "$out/render/files.txt")" >&2
 
-step "2. what the cube is (glint-envi info) and what it holds (glint-envi stats)"
-run "$envi" info "$out/scene.img" | tee "$out/scene.info.txt" >&2
-run "$envi" info --format json "$out/scene.img" > "$out/scene.info.json"
-run "$envi" stats --format json "$out/scene.img" > "$out/scene.stats.json"
-run "$envi" stats "$out/scene.img" >&2
+step "4. what the files are and hold (glint-envi info and stats)"
+frame0="$out/render/rgb-t0000-c0000.img"
+run "$envi" info "$frame0" >&2
+run "$envi" stats "$frame0" >&2
+"$envi" stats --format json "$frame0" > "$out/render/rgb-t0000-c0000.stats.json"
+# The pushbroom's header lists its 241 capture ids, windows and times: kept in a file.
+run "$envi" info "$out/render/msi.img" > "$out/render/msi.info.txt"
+run "$envi" stats "$out/render/msi.img" | tee "$out/render/msi.stats.txt" >&2
 
-step "3. PNG previews: 2% percentile stretch, and band 1 alone with gamma 2.2"
-run "$envi" convert --percent 2 "$out/scene.img" "$out/scene.png"
-run "$envi" convert --band 1 --gamma 2.2 "$out/scene.img" "$out/scene-band1.png"
-
-step "4. $frames captures written one file per capture (schedule 'capture'), each converted to PNG"
-for ((c = 0; c < frames; c++)); do
-    name=$(printf 'demo-t0000-c%04d' "$c")
-    scene_pattern $((2 * c)) "$out/frames/$name.exr"
-    "$envi" convert "$out/frames/$name.exr" "$out/frames/$name.img"
-    rm "$out/frames/$name.exr"
-    # The processing task of the manual's video example, with glint-envi for image_tool:
-    "$envi" convert --gamma=1 --format=png --output_filename="$out/frames/$name.png" \
-        "$out/frames/$name.img"
+step "5. PNG previews: RGB frames on one fixed stretch, the pushbroom as false colour"
+# One stretch for every frame, so the video does not flicker: 0 to the brightest green value
+# of the first frame (the 80% panel), display gamma 2.2.
+white=$(grep '"max"' "$out/render/rgb-t0000-c0000.stats.json" | sed -n 2p | tr -dc '0-9.e+-')
+printf 'frames: --min 0 --max %s --gamma 2.2\n' "$white" >&2
+converted=0
+for img in "$out"/render/rgb-t0000-c*.img; do
+    "$envi" convert --min 0 --max "$white" --gamma 2.2 "$img" "${img%.img}.png"
+    converted=$((converted + 1))
 done
-printf '%d ENVI frames and PNGs in %s\n' "$frames" "$out/frames" >&2
+printf '%d frames converted to PNG (render/rgb-t0000-cNNNN.png)\n' "$converted" >&2
+# NIR, red, green as red, green, blue: vegetation shows red. The first line (south) is at
+# the top: a pushbroom image is stacked in acquisition order.
+run "$envi" convert --bands 4,2,1 --per-band --percent 1 --gamma 2.2 \
+    "$out/render/msi.img" "$out/render/msi-false-colour.png"
 
-step "5. the PNG frames encoded into a video (ffmpeg through glint-envi encode)"
-run "$envi" encode --framerate 12 --output "$out/demo.mp4" "$out/frames/demo-t0000-c%04d.png"
+step "6. the RGB frames encoded into a video (ffmpeg through glint-envi encode)"
+run "$envi" encode --framerate "$fps" --output "$out/demo.mp4" "$out/render/rgb-t0000-c%04d.png"
 
 cat >&2 <<MSG
 
 glint demo finished. Outputs in $out/:
-  demo.jsim                    examples/demo/sim/demo.sim as a DIRSIG5 .jsim
-  demo.platform.json           the camera as glint understood it (SI units, F#, G#, IFOV)
-  demo.schedule.json           25 captures: time windows, camera poses, sun angles, file names
-  scene.img, scene.img.hdr     ENVI cube (160 x 120 x 3, float32, BIP)
-  scene.info.txt/.json         glint-envi info
-  scene.stats.json             per-band min/max/mean/std
-  scene.png, scene-band1.png   previews
-  frames/demo-t0000-cNNNN.img  $frames per-capture ENVI frames (+ .png)
-  demo.mp4                     the frames as a 12 fps video
+  demo.jsim                          examples/demo/sim/demo.sim as a DIRSIG5 .jsim
+  demo.platform.json                 the platform as glint understood it (SI units, F#, G#)
+  demo.schedule.json                 266 captures: time windows, poses, sun angles, file names
+  render/rgb-t0000-cNNNN.img (.hdr)  25 RGB frames, 160 x 120 x 3, Joules/(cm2 um)
+  render/rgb-t0000-cNNNN.png         the same frames as PNG
+  render/msi.img (.hdr)              the pushbroom image, 256 x 241 x 5 (blue to NIR)
+  render/msi-false-colour.png        NIR, red, green composite (first line, south, on top)
+  render/render.log, files.txt       glint-render's log (-v) and the files it wrote
+  render/*.stats.*, msi.info.txt     glint-envi stats and info reports
+  demo.mp4                           the RGB frames as a ${fps} fps video
 MSG

@@ -57,7 +57,52 @@ std::pair<std::size_t, double> locate(double value, double step, std::size_t cou
     return {lo, x - static_cast<double>(lo)};
 }
 
+/// T_v over the view-zenith nodes and L_p over the (zenith, relative azimuth) nodes.
+std::shared_ptr<const SensorPathTables> sensor_path_tables(
+    const SpectralGrid& grid, const scene::AtmosphereModel& atmosphere,
+    scene::AtmosphereGeometry geometry, const std::vector<double>& toa) {
+    auto t = std::make_shared<SensorPathTables>();
+    const std::size_t bands = grid.size();
+    t->zenith_nodes = static_cast<std::size_t>(std::lround(
+                          Environment::kViewZenithMaxDeg / Environment::kViewZenithStepDeg)) +
+                      1;
+    t->azimuth_nodes =
+        static_cast<std::size_t>(std::lround(180.0 / Environment::kAzimuthStepDeg)) + 1;
+    t->transmittance.resize(t->zenith_nodes * bands);
+    t->path_radiance.resize(t->zenith_nodes * t->azimuth_nodes * bands);
+    for (std::size_t z = 0; z < t->zenith_nodes; ++z) {
+        geometry.view_zenith_deg = static_cast<double>(z) * Environment::kViewZenithStepDeg;
+        geometry.view_azimuth_deg = geometry.sun_azimuth_deg;
+        const std::vector<double> t_view = atmosphere.sensor_transmittance(grid, geometry);
+        std::copy(t_view.begin(), t_view.end(),
+                  t->transmittance.begin() + static_cast<std::ptrdiff_t>(z * bands));
+        t->effects = t->effects || std::any_of(t_view.begin(), t_view.end(),
+                                               [](double v) { return v != 1.0; });
+        for (std::size_t a = 0; a < t->azimuth_nodes; ++a) {
+            geometry.view_azimuth_deg = std::fmod(
+                geometry.sun_azimuth_deg + static_cast<double>(a) * Environment::kAzimuthStepDeg,
+                360.0);
+            const std::vector<double> lp =
+                atmosphere.path_radiance_w_per_cm2_sr_um(grid, geometry, toa);
+            std::copy(lp.begin(), lp.end(),
+                      t->path_radiance.begin() +
+                          static_cast<std::ptrdiff_t>((z * t->azimuth_nodes + a) * bands));
+            t->effects = t->effects || any_positive(lp);
+        }
+    }
+    return t;
+}
+
 }  // namespace
+
+std::shared_ptr<const SensorPathTables> SensorPathCache::find(const Key& key) const {
+    const auto it = m_tables.find(key);
+    return it == m_tables.end() ? nullptr : it->second;
+}
+
+void SensorPathCache::insert(const Key& key, std::shared_ptr<const SensorPathTables> tables) {
+    m_tables[key] = std::move(tables);
+}
 
 Environment::Environment(const SpectralGrid& grid)
     : m_grid(grid),
@@ -81,7 +126,8 @@ Environment Environment::uniform(const SpectralGrid& grid, const Vec3& sun_direc
 }
 
 Environment Environment::make(const SpectralGrid& grid, const scene::AtmosphereModel& atmosphere,
-                              const scene::SolarSpectrum& sun, const EnvironmentInputs& in) {
+                              const scene::SolarSpectrum& sun, const EnvironmentInputs& in,
+                              SensorPathCache* cache) {
     if (!std::isfinite(in.window_begin_s) || !std::isfinite(in.window_end_s) ||
         in.window_end_s < in.window_begin_s) {
         throw input_error("the capture window must be finite with end >= begin");
@@ -109,33 +155,22 @@ Environment Environment::make(const SpectralGrid& grid, const scene::AtmosphereM
     env.m_sun_visible = any_positive(env.m_sun);
     env.m_sky_black = !any_positive(env.m_sky);
 
-    env.m_zenith_nodes =
-        static_cast<std::size_t>(std::lround(kViewZenithMaxDeg / kViewZenithStepDeg)) + 1;
-    env.m_azimuth_nodes = static_cast<std::size_t>(std::lround(180.0 / kAzimuthStepDeg)) + 1;
-    env.m_view_transmittance.resize(env.m_zenith_nodes * env.m_bands);
-    env.m_path_radiance.resize(env.m_zenith_nodes * env.m_azimuth_nodes * env.m_bands);
-    bool effects = false;
-    for (std::size_t z = 0; z < env.m_zenith_nodes; ++z) {
-        geometry.view_zenith_deg = static_cast<double>(z) * kViewZenithStepDeg;
-        geometry.view_azimuth_deg = geometry.sun_azimuth_deg;
-        const std::vector<double> t_view = atmosphere.sensor_transmittance(grid, geometry);
-        std::copy(t_view.begin(), t_view.end(),
-                  env.m_view_transmittance.begin() + static_cast<std::ptrdiff_t>(z * env.m_bands));
-        effects = effects || std::any_of(t_view.begin(), t_view.end(),
-                                         [](double t) { return t != 1.0; });
-        for (std::size_t a = 0; a < env.m_azimuth_nodes; ++a) {
-            geometry.view_azimuth_deg =
-                std::fmod(geometry.sun_azimuth_deg + static_cast<double>(a) * kAzimuthStepDeg,
-                          360.0);
-            const std::vector<double> lp =
-                atmosphere.path_radiance_w_per_cm2_sr_um(grid, geometry, toa);
-            std::copy(lp.begin(), lp.end(),
-                      env.m_path_radiance.begin() +
-                          static_cast<std::ptrdiff_t>((z * env.m_azimuth_nodes + a) * env.m_bands));
-            effects = effects || any_positive(lp);
-        }
+    // The sensor path at the rounded geometry (see SensorPathCache).
+    const SensorPathCache::Key key{
+        std::llround(geometry.sun_zenith_deg / SensorPathCache::kAngleStepDeg),
+        std::llround(geometry.sun_azimuth_deg / SensorPathCache::kAngleStepDeg),
+        std::llround(geometry.surface_altitude_m / SensorPathCache::kAltitudeStepM),
+        std::llround(geometry.sensor_altitude_m / SensorPathCache::kAltitudeStepM)};
+    if (cache != nullptr) env.m_paths = cache->find(key);
+    if (!env.m_paths) {
+        scene::AtmosphereGeometry rounded = geometry;
+        rounded.sun_zenith_deg = static_cast<double>(key[0]) * SensorPathCache::kAngleStepDeg;
+        rounded.sun_azimuth_deg = static_cast<double>(key[1]) * SensorPathCache::kAngleStepDeg;
+        rounded.surface_altitude_m = static_cast<double>(key[2]) * SensorPathCache::kAltitudeStepM;
+        rounded.sensor_altitude_m = static_cast<double>(key[3]) * SensorPathCache::kAltitudeStepM;
+        env.m_paths = sensor_path_tables(grid, atmosphere, rounded, toa);
+        if (cache != nullptr) cache->insert(key, env.m_paths);
     }
-    env.m_has_sensor_path = effects;
     return env;
 }
 
@@ -148,20 +183,21 @@ Vec3 Environment::sun_direction(double time_s) const noexcept {
 
 void Environment::sensor_path(const Vec3& to_sensor, double time_s, std::span<double> transmittance,
                               std::span<double> path_radiance) const noexcept {
-    if (!m_has_sensor_path) {
+    if (!has_sensor_path()) {
         std::fill(transmittance.begin(), transmittance.end(), 1.0);
         std::fill(path_radiance.begin(), path_radiance.end(), 0.0);
         return;
     }
-    const auto [z0, fz] = locate(zenith_deg(to_sensor), kViewZenithStepDeg, m_zenith_nodes);
+    const SensorPathTables& tables = *m_paths;
+    const auto [z0, fz] = locate(zenith_deg(to_sensor), kViewZenithStepDeg, tables.zenith_nodes);
     double relative = std::fabs(azimuth_deg(to_sensor) - azimuth_deg(sun_direction(time_s)));
     if (relative > 180.0) relative = 360.0 - relative;
-    const auto [a0, fa] = locate(relative, kAzimuthStepDeg, m_azimuth_nodes);
-    const double* t0 = m_view_transmittance.data() + z0 * m_bands;
+    const auto [a0, fa] = locate(relative, kAzimuthStepDeg, tables.azimuth_nodes);
+    const double* t0 = tables.transmittance.data() + z0 * m_bands;
     const double* t1 = t0 + m_bands;
-    const double* p00 = m_path_radiance.data() + (z0 * m_azimuth_nodes + a0) * m_bands;
+    const double* p00 = tables.path_radiance.data() + (z0 * tables.azimuth_nodes + a0) * m_bands;
     const double* p01 = p00 + m_bands;
-    const double* p10 = p00 + m_azimuth_nodes * m_bands;
+    const double* p10 = p00 + tables.azimuth_nodes * m_bands;
     const double* p11 = p10 + m_bands;
     const double w00 = (1.0 - fz) * (1.0 - fa);
     const double w01 = (1.0 - fz) * fa;

@@ -112,7 +112,8 @@ void log_capture_start(const PlannedCapture& p, const schedule::Source& source,
 /// origin, sensor altitude from the instrument's position at mid-window.
 radiometry::Environment capture_environment(const RenderInputs& in, const FocalPlaneState& state,
                                             const schedule::Capture& capture,
-                                            const schedule::Source& source) {
+                                            const schedule::Source& source,
+                                            radiometry::SensorPathCache& cache) {
     const schedule::PluginSchedule& plugin = in.schedule->plugins()[source.plugin];
     const DateTime& reference = plugin.tasks.reference;
     const motion::SunPosition sun0 =
@@ -129,7 +130,7 @@ radiometry::Environment capture_environment(const RenderInputs& in, const FocalP
     env.sun_distance_au = sun0.distance_au;
     env.surface_altitude_m = in.frame.origin().altitude_m;
     env.sensor_altitude_m = in.frame.origin().altitude_m + pose.translation_m.z;
-    return radiometry::Environment::make(state.grid, *in.atmosphere_model, *in.sun, env);
+    return radiometry::Environment::make(state.grid, *in.atmosphere_model, *in.sun, env, &cache);
 }
 
 scene::BuildOptions build_options(const RenderOptions& options, double t0_s, double t1_s) {
@@ -238,6 +239,7 @@ RenderReport render(const std::filesystem::path& simulation_file, const RenderOp
     quiet.progress = Progress{};
     std::uint64_t pixels_done = 0;
     std::vector<double> image;
+    std::map<std::size_t, radiometry::SensorPathCache> path_caches;  // per focal plane
     for (const PlannedCapture& p : captures) {
         context.cancel.throw_if_cancelled();
         const auto started = std::chrono::steady_clock::now();
@@ -256,7 +258,7 @@ RenderReport render(const std::filesystem::path& simulation_file, const RenderOp
         }
         const scene::GeometryScene& geometry = moving ? *moving : *static_scene;
         const radiometry::Environment environment =
-            capture_environment(in, state, capture, source);
+            capture_environment(in, state, capture, source, path_caches[capture.source]);
         const radiometry::PathTracer tracer(geometry, state.materials, environment,
                                             options.tracer);
         CaptureTiming timing{capture.t0_s, capture.t1_s,

@@ -360,6 +360,32 @@ TEST(Environment, ParametricTendsToNoneAsTheOpticalDepthVanishes) {
     }
 }
 
+TEST(Environment, SensorPathTablesAreSharedByRoundedGeometry) {
+    const model::ParametricAtmosphere parameters;
+    const scene::ParametricAtmosphereModel atmosphere(parameters);
+    const scene::SolarSpectrum sun(SpectralCurve({0.3, 1.0, 4.0}, {0.2, 0.1, 0.001}));
+    EnvironmentInputs a;
+    a.sun_direction_begin = a.sun_direction_end = direction_from(30.0, 90.0);
+    a.sensor_altitude_m = 2000.0;
+    EnvironmentInputs b = a;  // the sun 0.01° lower, the sensor 0.3 m higher: same rounding
+    b.sun_direction_begin = b.sun_direction_end = direction_from(30.01, 90.0);
+    b.sensor_altitude_m = 2000.3;
+    SensorPathCache cache;
+    const Environment ea = Environment::make(kGrid, atmosphere, sun, a, &cache);
+    const Environment eb = Environment::make(kGrid, atmosphere, sun, b, &cache);
+    EXPECT_EQ(cache.size(), 1u);
+    const Environment fresh = Environment::make(kGrid, atmosphere, sun, b);  // no cache
+    std::vector<double> t1(3), l1(3), t2(3), l2(3);
+    eb.sensor_path(direction_from(25.0, 10.0), 0.0, t1, l1);
+    fresh.sensor_path(direction_from(25.0, 10.0), 0.0, t2, l2);
+    EXPECT_EQ(t1, t2);  // the cache changes nothing
+    EXPECT_EQ(l1, l2);
+    EnvironmentInputs c = a;
+    c.sensor_altitude_m = 2500.0;
+    Environment::make(kGrid, atmosphere, sun, c, &cache);
+    EXPECT_EQ(cache.size(), 2u);
+}
+
 TEST(Environment, RefusesBadInputs) {
     EXPECT_THROW(Environment::uniform(kGrid, {0.0, 0.0, 0.0}, kSun, kSky), Error);
     EXPECT_THROW(Environment::uniform(kGrid, {0.0, 0.0, 1.0}, {1.0, 2.0}, kSky), Error);

@@ -14,7 +14,10 @@
 // the scene have no atmospheric effects. docs/physics.md ("Path tracer") gives the formulas.
 #pragma once
 
+#include <array>
 #include <cstddef>
+#include <map>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -26,6 +29,33 @@
 namespace glint::radiometry {
 
 using motion::Vec3;
+
+/// The sensor-path tables of one geometry (shared between captures with the same rounded
+/// geometry).
+struct SensorPathTables {
+    std::size_t zenith_nodes = 0;
+    std::size_t azimuth_nodes = 0;
+    std::vector<double> transmittance;  ///< [zenith][band]
+    std::vector<double> path_radiance;  ///< [zenith][azimuth][band], W/(cm² sr µm)
+    bool effects = false;               ///< T_v ≠ 1 or L_p ≠ 0 somewhere
+};
+
+/// Sensor-path tables already computed, by rounded geometry. One per focal plane (one grid);
+/// not thread-safe.
+class SensorPathCache {
+public:
+    /// The key of a geometry: sun zenith and azimuth rounded to kAngleStepDeg, sensor and
+    /// surface altitude to kAltitudeStepM.
+    static constexpr double kAngleStepDeg = 0.05;
+    static constexpr double kAltitudeStepM = 1.0;
+    using Key = std::array<long long, 4>;
+    std::shared_ptr<const SensorPathTables> find(const Key& key) const;
+    void insert(const Key& key, std::shared_ptr<const SensorPathTables> tables);
+    std::size_t size() const noexcept { return m_tables.size(); }
+
+private:
+    std::map<Key, std::shared_ptr<const SensorPathTables>> m_tables;
+};
 
 /// Everything make_environment needs.
 struct EnvironmentInputs {
@@ -55,11 +85,14 @@ public:
                                std::vector<double> sun_irradiance_w_per_cm2_um,
                                std::vector<double> sky_radiance_w_per_cm2_sr_um);
 
-    /// The environment of a capture from an atmosphere model and the solar spectrum.
-    /// Throws glint::Error (input) for non-finite inputs, a zero sun direction or a window
-    /// with end < begin.
+    /// The environment of a capture from an atmosphere model and the solar spectrum. The
+    /// sensor-path tables are computed for the geometry rounded as SensorPathCache says
+    /// (whether or not a cache is given, so results never depend on what was cached) and
+    /// taken from / stored in `cache` when one is given. Throws glint::Error (input) for
+    /// non-finite inputs, a zero sun direction or a window with end < begin.
     static Environment make(const SpectralGrid& grid, const scene::AtmosphereModel& atmosphere,
-                            const scene::SolarSpectrum& sun, const EnvironmentInputs& inputs);
+                            const scene::SolarSpectrum& sun, const EnvironmentInputs& inputs,
+                            SensorPathCache* cache = nullptr);
 
     /// Number of bands.
     std::size_t bands() const noexcept { return m_bands; }
@@ -80,7 +113,7 @@ public:
     /// Whether the sky is black on the whole grid.
     bool sky_black() const noexcept { return m_sky_black; }
     /// Whether the sensor path changes anything (T_v ≠ 1 or L_p ≠ 0 somewhere).
-    bool has_sensor_path() const noexcept { return m_has_sensor_path; }
+    bool has_sensor_path() const noexcept { return m_paths && m_paths->effects; }
     /// Writes T_v(λ) and L_p(λ) for the unit direction `to_sensor` (surface → sensor, scene
     /// ENU) at `time_s` (the sun's azimuth at that time sets the relative azimuth). A
     /// direction below the horizon uses the 88° node.
@@ -101,13 +134,7 @@ private:
     std::vector<double> m_sky;
     bool m_sun_visible = false;
     bool m_sky_black = true;
-    bool m_has_sensor_path = false;
-    std::size_t m_zenith_nodes = 0;
-    std::size_t m_azimuth_nodes = 0;
-    /// [zenith][band]
-    std::vector<double> m_view_transmittance;
-    /// [zenith][azimuth][band]
-    std::vector<double> m_path_radiance;
+    std::shared_ptr<const SensorPathTables> m_paths;  ///< null: no sensor path
 };
 
 }  // namespace glint::radiometry
