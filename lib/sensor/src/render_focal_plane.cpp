@@ -108,6 +108,12 @@ FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t s
                               "\" is a TDI array; rendering TDI stages is not supported yet",
                           fp.capture_method.temporal_integration.where);
     }
+    if (fp.capture_method.temporal_integration.samples > 1) {
+        context.log.info("focal plane \"" + fp.name + "\": <temporalintegration><samples> " +
+                         std::to_string(fp.capture_method.temporal_integration.samples) +
+                         " is ignored: each pixel's samples are spread uniformly over the "
+                         "integration window (as DIRSIG5 does)");
+    }
     SpectralGrid grid = model::bandpass_grid(fp.capture_method.spectral_response.bandpass);
     const double centre_um = 0.5 * (grid.min_um() + grid.max_um());
     const std::size_t reference = radiometry::nearest_band(grid, centre_um);

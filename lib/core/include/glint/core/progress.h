@@ -41,9 +41,11 @@ private:
 };
 
 /// Renders progress updates. `terminal` (stderr when it is a TTY and not --quiet) gets one
-/// line redrawn in place at most ten times a second; `machine` (the --progress file) gets
-/// `label=... done=... total=... percent=... elapsed_s=...` lines, throttled the same way
-/// except that the first and the finishing update of a stage are always written.
+/// line redrawn in place at most ten times a second (with the stage's rate and ETA once
+/// something is done); `machine` (the --progress file) gets `label=... done=... total=...
+/// percent=... elapsed_s=... rate_per_s=... eta_s=... state=...` lines (rate and ETA of the
+/// current label, −1 while unknown), throttled the same way except that the first and the
+/// finishing update of a stage are always written.
 class ProgressPrinter {
 public:
     ProgressPrinter(std::ostream* terminal, std::ostream* machine);
@@ -54,6 +56,7 @@ private:
     std::ostream* m_machine;
     std::chrono::steady_clock::time_point m_start;
     std::chrono::steady_clock::time_point m_last_draw;
+    std::chrono::steady_clock::time_point m_stage_start;  ///< when the current label began
     std::string m_last_label;
     bool m_line_open = false;
 };
