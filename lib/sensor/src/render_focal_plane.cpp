@@ -46,7 +46,8 @@ namespace {
 radiometry::Convergence convergence_of(const model::FocalPlane& fp, const RenderOptions& options) {
     if (const auto& c = fp.capture_method.convergence) {
         if (c->minimum_samples < 1 || c->maximum_samples < c->minimum_samples) {
-            throw input_error("<convergence> needs 1 <= minimumsamples <= maximumsamples", c->where);
+            throw input_error("<convergence> needs 1 <= minimumsamples <= maximumsamples",
+                              c->where);
         }
         return {static_cast<std::uint64_t>(c->minimum_samples),
                 static_cast<std::uint64_t>(c->maximum_samples), c->threshold};
@@ -123,9 +124,8 @@ FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t s
     OutputUnits units(fp.capture_method, source.instrument->properties, grid);
     const radiometry::Convergence convergence = convergence_of(fp, options);
     io::EnviHeader header = header_of(source, units, convergence, options, inputs);
-    return FocalPlaneState{std::move(grid), reference,         std::move(materials),
-                           std::move(camera), std::move(units), convergence,
-                           std::move(header)};
+    return FocalPlaneState{std::move(grid),  reference,   std::move(materials), std::move(camera),
+                           std::move(units), convergence, std::move(header)};
 }
 
 }  // namespace glint::sensor::detail

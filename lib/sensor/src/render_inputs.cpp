@@ -42,7 +42,8 @@ void read_all(RenderInputs& in, const std::filesystem::path& simulation_file,
     const DateTime reference = in.schedule->plugins().empty()
                                    ? DateTime{}
                                    : in.schedule->plugins().front().tasks.reference;
-    in.trajectories = motion::make_instance_trajectories(in.scene, in.frame, reference, context.log);
+    in.trajectories =
+        motion::make_instance_trajectories(in.scene, in.frame, reference, context.log);
     for (const model::Instance& instance : in.scene.instances) {
         in.dynamic_scene = in.dynamic_scene || instance.dynamic();
     }
@@ -50,8 +51,8 @@ void read_all(RenderInputs& in, const std::filesystem::path& simulation_file,
 
 }  // namespace
 
-RenderInputs load_inputs(const std::filesystem::path& simulation_file,
-                         const RenderOptions& options, const Context& context) {
+RenderInputs load_inputs(const std::filesystem::path& simulation_file, const RenderOptions& options,
+                         const Context& context) {
     RenderInputs in;
     Diagnostics diagnostics;
     try {

@@ -3,7 +3,9 @@
 // per-focal-plane state built at a focal plane's first capture.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -15,11 +17,13 @@
 #include "glint/model/simulation.h"
 #include "glint/motion/frames.h"
 #include "glint/motion/trajectory.h"
+#include "glint/radiometry/environment.h"
 #include "glint/radiometry/materials.h"
 #include "glint/scene/atmosphere.h"
 #include "glint/scene/geometry_scene.h"
 #include "glint/scene/solar.h"
 #include "glint/sensor/camera.h"
+#include "glint/sensor/image_outputs.h"
 #include "glint/sensor/output_units.h"
 #include "glint/sensor/render.h"
 
@@ -40,8 +44,8 @@ struct RenderInputs {
 
 /// Reads the simulation, its scenes and atmosphere, the solar spectrum and the schedule
 /// (placed at the scene's origin). Throws glint::Error (input) listing every problem.
-RenderInputs load_inputs(const std::filesystem::path& simulation_file,
-                         const RenderOptions& options, const Context& context);
+RenderInputs load_inputs(const std::filesystem::path& simulation_file, const RenderOptions& options,
+                         const Context& context);
 
 /// What one focal plane needs for every capture.
 struct FocalPlaneState {
@@ -76,5 +80,41 @@ std::vector<std::uint8_t> hypersampled_pixels(const model::Scene& scene,
 /// The ENVI data type of an <imagefile> <datatype> code (throws glint::Error (input) at the
 /// image file for an unknown or complex code).
 io::EnviDataType output_data_type(const model::ImageFile& image);
+
+/// A capture of the selection with what the loop needs about it.
+struct PlannedCapture {
+    schedule::Capture capture;
+    std::filesystem::path file;
+    std::uint64_t event_number = 0;  ///< DIRSIG's "Event #N of M" within its plugin's task
+    std::uint64_t event_count = 0;
+};
+
+/// Everything loaded and planned before the first capture (shared by render and plan).
+struct Prepared {
+    RenderInputs inputs;
+    std::vector<PlannedCapture> captures;
+    std::map<std::size_t, FocalPlaneState> states;  ///< by schedule source
+    ImageOutputs outputs;
+    RenderReport report;  ///< files planned, pixels, memory estimate
+};
+
+/// Loads the inputs, selects the captures (--schedule), builds every focal plane's state and
+/// plans every output file. Throws what load_inputs and make_focal_plane_state throw.
+std::unique_ptr<Prepared> prepare(const std::filesystem::path& simulation_file,
+                                  const RenderOptions& options, const Context& context);
+
+/// Writes the capture list of the run (--log_info_filename), atomically; nothing when the
+/// option is empty.
+void write_log_info(const Prepared& prepared, const RenderOptions& options);
+
+/// Renders one capture into its file; `geometry` is built for its window, `path_cache` is its
+/// focal plane's. Returns its statistics.
+CaptureReport render_capture(Prepared& prepared, const PlannedCapture& planned,
+                             const scene::GeometryScene& geometry,
+                             radiometry::SensorPathCache& path_cache, const RenderOptions& options,
+                             const Context& context, std::vector<double>& image);
+
+/// The Embree build options of a window.
+scene::BuildOptions build_options(const RenderOptions& options, double t0_s, double t1_s);
 
 }  // namespace glint::sensor::detail

@@ -1,0 +1,137 @@
+// SPDX-License-Identifier: Apache-2.0
+// One capture: DIRSIG's console block, the environment at the capture's time, one problem
+// per pixel through the path tracer, the output units, the lines appended to the file.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <string>
+
+#include "glint/core/datetime.h"
+#include "glint/core/text.h"
+#include "glint/motion/sun.h"
+#include "render_parts.h"
+
+namespace glint::sensor::detail {
+namespace {
+
+std::string bandpass_line(const SpectralGrid& grid) {
+    char text[160];
+    const double delta = grid.size() > 1 ? grid.wavelength_um(1) - grid.wavelength_um(0) : 0.0;
+    std::snprintf(text, sizeof text, "Bandpass = %.6f - %.6f @ %.6f microns (%zu samples)",
+                  grid.min_um(), grid.max_um(), delta, grid.size());
+    return text;
+}
+
+void log_capture_start(const PlannedCapture& p, const schedule::Source& source,
+                       const FocalPlaneState& state, const DateTime& reference,
+                       const Context& context) {
+    if (!context.log.enabled(LogLevel::info)) return;
+    char relative[64];
+    std::snprintf(relative, sizeof relative, "%e", p.capture.t0_s);
+    context.log.info("Starting capture: Task #" + std::to_string(p.capture.task_index + 1) +
+                     ", Capture #" + std::to_string(p.capture.capture_index + 1) + ", Event #" +
+                     std::to_string(p.event_number) + " of " + std::to_string(p.event_count));
+    context.log.info(
+        "    Date/Time = " + format_iso8601_local(add_seconds(reference, p.capture.t0_s), 4) +
+        ", relative time = " + relative);
+    context.log.info("    " + source.instrument->name + " -> " + source.focal_plane->name);
+    context.log.info("        " + bandpass_line(state.grid));
+    context.log.info("        Array size = " + std::to_string(source.x_count) + " x " +
+                     std::to_string(source.y_count));
+}
+
+/// The environment of one capture: sun at both ends of the window seen from the scene
+/// origin, sensor altitude from the instrument's position at mid-window.
+radiometry::Environment capture_environment(const RenderInputs& in, const FocalPlaneState& state,
+                                            const schedule::Capture& capture,
+                                            const schedule::Source& source,
+                                            radiometry::SensorPathCache& cache) {
+    const schedule::PluginSchedule& plugin = in.schedule->plugins()[source.plugin];
+    const DateTime& reference = plugin.tasks.reference;
+    const motion::SunPosition sun0 =
+        motion::sun_position(add_seconds(reference, capture.t0_s), in.frame);
+    const motion::SunPosition sun1 =
+        motion::sun_position(add_seconds(reference, capture.t1_s), in.frame);
+    const double mid = 0.5 * (capture.t0_s + capture.t1_s);
+    const motion::Rigid pose = plugin.poses->instrument_to_scene(source.instrument_index, mid);
+    radiometry::EnvironmentInputs env;
+    env.sun_direction_begin = sun0.direction_enu;
+    env.sun_direction_end = sun1.direction_enu;
+    env.window_begin_s = capture.t0_s;
+    env.window_end_s = capture.t1_s;
+    env.sun_distance_au = sun0.distance_au;
+    env.surface_altitude_m = in.frame.origin().altitude_m;
+    env.sensor_altitude_m = in.frame.origin().altitude_m + pose.translation_m.z;
+    return radiometry::Environment::make(state.grid, *in.atmosphere_model, *in.sun, env, &cache);
+}
+
+}  // namespace
+
+CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
+                             const scene::GeometryScene& geometry,
+                             radiometry::SensorPathCache& path_cache, const RenderOptions& options,
+                             const Context& context, std::vector<double>& image) {
+    const RenderInputs& in = prepared.inputs;
+    Context quiet = context;  // solve() reports nothing: progress is per pixel over captures
+    quiet.progress = Progress{};
+    const auto started = std::chrono::steady_clock::now();
+    const schedule::Capture& capture = p.capture;
+    const schedule::Source& source = in.schedule->sources()[capture.source];
+    const schedule::PluginSchedule& plugin = in.schedule->plugins()[source.plugin];
+    const FocalPlaneState& state = prepared.states.at(capture.source);
+    log_capture_start(p, source, state, plugin.tasks.reference, context);
+
+    const radiometry::Environment environment =
+        capture_environment(in, state, capture, source, path_cache);
+    const radiometry::PathTracer tracer(geometry, state.materials, environment, options.tracer);
+    CaptureTiming timing{capture.t0_s, capture.t1_s,
+                         source.focal_plane->detector_array.rolling_line_time_s.value_or(0.0)};
+    const PixelRaySource rays(state.camera, *plugin.poses, source.instrument_index, timing);
+    radiometry::ProblemBatch batch;
+    // The capture's global schedule index: unique per focal plane and capture, so focal
+    // planes imaging at the same moment draw independent numbers.
+    batch.key = {options.schedule.seed, plugin.plugin_index, capture.task_index, capture.index};
+    batch.source = &rays;
+    batch.convergence = state.convergence;
+    batch.reference_band = state.reference_band;
+    batch.count = source.problems_per_capture;
+    const double multiplier =
+        source.focal_plane->capture_method.sample_strategy.hypersampling_multiplier;
+    std::vector<std::uint8_t> important;
+    if (multiplier > 1.0) {
+        important = hypersampled_pixels(in.scene, geometry, state.camera, *plugin.poses,
+                                        source.instrument_index, timing);
+        batch.hypersampled = important;
+        batch.hypersampling_multiplier = multiplier;
+    }
+    const radiometry::Solutions solutions = radiometry::solve(tracer, batch, quiet);
+
+    const std::size_t channels = state.units.channels();
+    image.assign(batch.count * channels, 0.0);
+    CaptureReport stats;
+    stats.index = capture.index;
+    stats.pixels = batch.count;
+    stats.min_samples = batch.count ? solutions.samples.front() : 0;
+    std::uint64_t total_samples = 0;
+    for (std::uint64_t i = 0; i < batch.count; ++i) {
+        state.units.apply(solutions.radiance(i),
+                          std::span<double>(image.data() + i * channels, channels));
+        stats.min_samples = std::min(stats.min_samples, solutions.samples[i]);
+        stats.max_samples = std::max(stats.max_samples, solutions.samples[i]);
+        total_samples += solutions.samples[i];
+    }
+    stats.mean_samples =
+        batch.count ? static_cast<double>(total_samples) / static_cast<double>(batch.count) : 0.0;
+    stats.rays = solutions.rays;
+    CaptureStamp stamp{capture.task_index, capture.capture_index, capture.t0_s, capture.t1_s,
+                       format_iso8601_utc(add_seconds(plugin.tasks.reference, capture.t0_s))};
+    prepared.outputs.write_capture(p.file, image, stamp);
+    stats.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    context.log.info("    Samples per pixel (min/mean/max) = " + std::to_string(stats.min_samples) +
+                     " / " + format_shortest(stats.mean_samples) + " / " +
+                     std::to_string(stats.max_samples));
+    return stats;
+}
+
+}  // namespace glint::sensor::detail

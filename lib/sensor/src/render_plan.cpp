@@ -1,0 +1,135 @@
+// SPDX-License-Identifier: Apache-2.0
+// Before the first capture: the selected captures, the focal planes' states, the output
+// files planned with their headers, the memory estimate, and the run's capture list.
+#include <algorithm>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "glint/core/atomic_file.h"
+#include "glint/core/error.h"
+#include "glint/schedule/capture_list.h"
+#include "render_parts.h"
+
+namespace glint::sensor::detail {
+namespace {
+
+/// The selected captures in schedule order, skipping (with one info line each) the sources
+/// glint-render does not render.
+std::vector<PlannedCapture> select_captures(const RenderInputs& in, const RenderOptions& options,
+                                            const Context& context) {
+    const schedule::Schedule& schedule = *in.schedule;
+    const auto& sources = schedule.sources();
+    std::vector<bool> skip(sources.size(), false);
+    for (std::size_t s = 0; s < sources.size(); ++s) {
+        std::string why;
+        if (!renders(sources[s], why)) {
+            skip[s] = true;
+            context.log.warning(why + ": not rendered");
+        }
+    }
+    std::map<std::pair<std::size_t, std::size_t>, std::uint64_t> events;  // (plugin, task)
+    std::map<std::pair<std::size_t, std::size_t>, std::uint64_t> event_counts;
+    for (std::size_t s = 0; s < sources.size(); ++s) {
+        const std::size_t tasks = schedule.plugins()[sources[s].plugin].tasks.tasks.size();
+        for (std::size_t t = 0; t < tasks; ++t) {
+            event_counts[{sources[s].plugin, t}] += schedule.count(s, t);
+        }
+    }
+    std::vector<PlannedCapture> out;
+    schedule::Schedule::Generator generator = schedule.captures();
+    while (const std::optional<schedule::Capture> capture = generator.next()) {
+        if ((capture->index & 0x3FF) == 0) context.cancel.throw_if_cancelled();
+        const std::pair key{sources[capture->source].plugin, capture->task_index};
+        const std::uint64_t event = ++events[key];
+        if (skip[capture->source]) continue;
+        if (!options.only_captures.empty() && !options.only_captures.contains(capture->index)) {
+            continue;
+        }
+        out.push_back({*capture, schedule.image_file(*capture), event, event_counts[key]});
+    }
+    if (!options.only_captures.empty()) {
+        std::set<std::uint64_t> found;
+        for (const PlannedCapture& p : out) found.insert(p.capture.index);
+        for (std::uint64_t wanted : options.only_captures) {
+            if (!found.contains(wanted)) {
+                throw input_error("capture " + std::to_string(wanted) +
+                                  " of the --schedule selection is not a rendered capture of " +
+                                  schedule.simulation_file().string());
+            }
+        }
+    }
+    return out;
+}
+
+/// Plans every output file with its header and capture count.
+void plan_outputs(const RenderInputs& in, const std::vector<PlannedCapture>& captures,
+                  std::map<std::size_t, FocalPlaneState>& states, const RenderOptions& options,
+                  const Context& context, ImageOutputs& outputs) {
+    std::map<std::filesystem::path, std::pair<std::size_t, std::uint64_t>> files;
+    for (const PlannedCapture& p : captures) {
+        auto& entry = files[p.file];
+        entry.first = p.capture.source;
+        ++entry.second;
+    }
+    for (const auto& [path, entry] : files) {
+        const std::size_t source = entry.first;
+        if (!states.contains(source)) {
+            states.emplace(source, detail::make_focal_plane_state(in, source, options, context));
+        }
+        const schedule::Source& s = in.schedule->sources()[source];
+        outputs.plan(path, states.at(source).header, s.y_count, entry.second);
+    }
+}
+
+}  // namespace
+
+std::unique_ptr<Prepared> prepare(const std::filesystem::path& simulation_file,
+                                  const RenderOptions& options, const Context& context) {
+    auto p = std::make_unique<Prepared>();
+    p->inputs = load_inputs(simulation_file, options, context);
+    p->captures = select_captures(p->inputs, options, context);
+    plan_outputs(p->inputs, p->captures, p->states, options, context, p->outputs);
+    RenderReport& report = p->report;
+    report.files = p->outputs.planned();
+    const RenderInputs& in = p->inputs;
+    std::uint64_t triangles = 0;
+    for (const model::Instance& instance : in.scene.instances) {
+        triangles += in.scene.objects[instance.object_index].mesh.triangles.size();
+    }
+    std::uint64_t largest = 0;
+    for (const PlannedCapture& planned : p->captures) {
+        const schedule::Source& s = in.schedule->sources()[planned.capture.source];
+        report.pixels += s.problems_per_capture;
+        const FocalPlaneState& state = p->states.at(planned.capture.source);
+        const std::uint64_t bands = state.grid.size() + state.units.channels();
+        largest = std::max<std::uint64_t>(largest, s.problems_per_capture * bands * 8);
+    }
+    report.memory_estimate_bytes = triangles * 85 + largest;
+    return p;
+}
+
+void write_log_info(const Prepared& prepared, const RenderOptions& options) {
+    if (options.log_info_file.empty()) return;
+    const RenderInputs& in = prepared.inputs;
+    std::ostringstream text;
+    schedule::CaptureListWriter list(
+        text, *in.schedule,
+        schedule::CaptureListProvenance{"glint-render", options.arguments, options.schedule.seed});
+    list.begin();
+    for (const PlannedCapture& p : prepared.captures) {
+        list.add(p.capture, p.file, in.schedule->truth_files(p.capture));
+    }
+    list.end();
+    write_file_atomically(options.log_info_file, text.str());
+}
+
+scene::BuildOptions build_options(const RenderOptions& options, double t0_s, double t1_s) {
+    scene::BuildOptions b;
+    b.device = options.device;
+    b.window = {t0_s, t1_s};
+    return b;
+}
+
+}  // namespace glint::sensor::detail
