@@ -76,10 +76,14 @@ std::uint64_t parse_memory_size(const std::string& text) {
     if (suffix.size() == 3 && suffix.substr(1) == "IB") suffix = suffix.substr(0, 1);
     if (suffix.size() == 2 && suffix[1] == 'B') suffix = suffix.substr(0, 1);
     double scale = 1.0;
-    if (suffix == "K") scale = 1024.0;
-    else if (suffix == "M") scale = 1024.0 * 1024.0;
-    else if (suffix == "G") scale = 1024.0 * 1024.0 * 1024.0;
-    else if (suffix == "T") scale = 1024.0 * 1024.0 * 1024.0 * 1024.0;
+    if (suffix == "K")
+        scale = 1024.0;
+    else if (suffix == "M")
+        scale = 1024.0 * 1024.0;
+    else if (suffix == "G")
+        scale = 1024.0 * 1024.0 * 1024.0;
+    else if (suffix == "T")
+        scale = 1024.0 * 1024.0 * 1024.0 * 1024.0;
     else if (!suffix.empty()) {
         throw usage_error("--max-memory: unknown unit in \"" + text + "\" (use K, M, G or T)");
     }

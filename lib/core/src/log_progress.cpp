@@ -58,12 +58,11 @@ void ProgressPrinter::operator()(const ProgressUpdate& update) {
     const double stage_s = std::chrono::duration<double>(now - m_stage_start).count();
     const double percent = percent_of(update);
     // Rate and remaining time of this stage (label); unknown (−1) before anything is done.
-    const double rate = stage_s > 0.0 && update.done > 0 ? static_cast<double>(update.done) / stage_s
-                                                          : -1.0;
-    const double eta_s =
-        rate > 0.0 && update.total >= update.done
-            ? static_cast<double>(update.total - update.done) / rate
-            : -1.0;
+    const double rate =
+        stage_s > 0.0 && update.done > 0 ? static_cast<double>(update.done) / stage_s : -1.0;
+    const double eta_s = rate > 0.0 && update.total >= update.done
+                             ? static_cast<double>(update.total - update.done) / rate
+                             : -1.0;
     char text[200];
     if (m_machine != nullptr) {
         std::snprintf(text, sizeof text,

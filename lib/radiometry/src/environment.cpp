@@ -58,13 +58,14 @@ std::pair<std::size_t, double> locate(double value, double step, std::size_t cou
 }
 
 /// T_v over the view-zenith nodes and L_p over the (zenith, relative azimuth) nodes.
-std::shared_ptr<const SensorPathTables> sensor_path_tables(
-    const SpectralGrid& grid, const scene::AtmosphereModel& atmosphere,
-    scene::AtmosphereGeometry geometry, const std::vector<double>& toa) {
+std::shared_ptr<const SensorPathTables> sensor_path_tables(const SpectralGrid& grid,
+                                                           const scene::AtmosphereModel& atmosphere,
+                                                           scene::AtmosphereGeometry geometry,
+                                                           const std::vector<double>& toa) {
     auto t = std::make_shared<SensorPathTables>();
     const std::size_t bands = grid.size();
-    t->zenith_nodes = static_cast<std::size_t>(std::lround(
-                          Environment::kViewZenithMaxDeg / Environment::kViewZenithStepDeg)) +
+    t->zenith_nodes = static_cast<std::size_t>(std::lround(Environment::kViewZenithMaxDeg /
+                                                           Environment::kViewZenithStepDeg)) +
                       1;
     t->azimuth_nodes =
         static_cast<std::size_t>(std::lround(180.0 / Environment::kAzimuthStepDeg)) + 1;
@@ -76,8 +77,8 @@ std::shared_ptr<const SensorPathTables> sensor_path_tables(
         const std::vector<double> t_view = atmosphere.sensor_transmittance(grid, geometry);
         std::copy(t_view.begin(), t_view.end(),
                   t->transmittance.begin() + static_cast<std::ptrdiff_t>(z * bands));
-        t->effects = t->effects || std::any_of(t_view.begin(), t_view.end(),
-                                               [](double v) { return v != 1.0; });
+        t->effects = t->effects ||
+                     std::any_of(t_view.begin(), t_view.end(), [](double v) { return v != 1.0; });
         for (std::size_t a = 0; a < t->azimuth_nodes; ++a) {
             geometry.view_azimuth_deg = std::fmod(
                 geometry.sun_azimuth_deg + static_cast<double>(a) * Environment::kAzimuthStepDeg,

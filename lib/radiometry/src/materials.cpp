@@ -31,8 +31,8 @@ std::vector<double> sample_held(const model::SpectralTable& table, const Spectra
             out[i] = y.back();
             if (w > x.back()) covered = false;
         } else {
-            const auto hi = static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), w) -
-                                                     x.begin());
+            const auto hi =
+                static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), w) - x.begin());
             const std::size_t lo = hi - 1;
             const double f = (w - x[lo]) / (x[hi] - x[lo]);
             out[i] = y[lo] + f * (y[hi] - y[lo]);
@@ -45,11 +45,10 @@ void check_unit_range(const std::vector<double>& values, const model::Material& 
                       const char* what, const SpectralGrid& grid) {
     for (std::size_t i = 0; i < values.size(); ++i) {
         if (!(values[i] >= -kRangeSlack && values[i] <= 1.0 + kRangeSlack)) {
-            throw input_error("material '" + material.id + "': " + what + " " +
-                                  format_shortest(values[i]) + " at " +
-                                  format_shortest(grid.wavelength_um(i)) +
-                                  " um lies outside [0, 1]",
-                              material.where);
+            throw input_error(
+                "material '" + material.id + "': " + what + " " + format_shortest(values[i]) +
+                    " at " + format_shortest(grid.wavelength_um(i)) + " um lies outside [0, 1]",
+                material.where);
         }
     }
 }
@@ -64,8 +63,7 @@ MaterialTable::MaterialTable(std::span<const model::Material> materials, const S
     m_shapes.reserve(materials.size());
     for (const model::Material& material : materials) {
         if (material.reflectance.empty()) {
-            throw input_error("material '" + material.id + "' has no reflectance",
-                              material.where);
+            throw input_error("material '" + material.id + "' has no reflectance", material.where);
         }
         if (!(material.temperature_k > 0.0) || !std::isfinite(material.temperature_k)) {
             throw input_error("material '" + material.id + "': temperature " +
@@ -97,9 +95,9 @@ MaterialTable::MaterialTable(std::span<const model::Material> materials, const S
                                   material.where);
             }
             rho[i] = std::clamp(rho[i], 0.0, 1.0);
-            const double e = std::clamp(eps[i], 0.0, 1.0) *
-                             planck_radiance_w_per_cm2_sr_um(grid.wavelength_um(i),
-                                                             material.temperature_k);
+            const double e =
+                std::clamp(eps[i], 0.0, 1.0) *
+                planck_radiance_w_per_cm2_sr_um(grid.wavelength_um(i), material.temperature_k);
             emits = emits || e > 0.0;
             reflects = reflects || rho[i] > 0.0;
             m_reflectance.push_back(rho[i]);

@@ -93,8 +93,8 @@ void PathTracer::trace(const SampleRay& ray, RandomStream& rng, PathScratch& scr
         const Vec3 wo_local = frame.to_local(wo);
         if (reflects && env.sun_visible()) {
             const Vec3 sun = env.sun_direction(time);
-            const Vec3 local = sample_uniform_cone(rng.uniform(), rng.uniform(),
-                                                   env.sun_half_angle_rad());
+            const Vec3 local =
+                sample_uniform_cone(rng.uniform(), rng.uniform(), env.sun_half_angle_rad());
             const Vec3 wi = Frame::from_normal(sun).to_world(local);
             const double cos_i = dot(normal, wi);
             if (cos_i > 0.0 && wo_local.z > 0.0) {

@@ -3,16 +3,16 @@
 // oneTBB (glint/radiometry/problem.h).
 #include "glint/radiometry/problem.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <mutex>
 #include <string>
-
-#include <tbb/blocked_range.h>
-#include <tbb/enumerable_thread_specific.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 
 #include "glint/core/error.h"
 #include "glint/core/text.h"
@@ -56,8 +56,10 @@ Convergence effective_convergence(const ProblemBatch& batch, std::uint64_t probl
     if (problem >= batch.first_problem && slot < batch.hypersampled.size() &&
         batch.hypersampled[slot] != 0 && batch.hypersampling_multiplier > 1.0) {
         const double m = batch.hypersampling_multiplier;
-        c.min_samples = static_cast<std::uint64_t>(std::ceil(static_cast<double>(c.min_samples) * m));
-        c.max_samples = static_cast<std::uint64_t>(std::ceil(static_cast<double>(c.max_samples) * m));
+        c.min_samples =
+            static_cast<std::uint64_t>(std::ceil(static_cast<double>(c.min_samples) * m));
+        c.max_samples =
+            static_cast<std::uint64_t>(std::ceil(static_cast<double>(c.max_samples) * m));
     }
     return c;
 }
@@ -135,8 +137,8 @@ Solutions solve(const PathTracer& tracer, const ProblemBatch& batch, const Conte
     out.samples.assign(batch.count, 0);
     out.standard_error_w_per_cm2_sr_um.assign(batch.count, 0.0);
 
-    const int threads = context.threads == 0 ? tbb::task_arena::automatic
-                                             : static_cast<int>(context.threads);
+    const int threads =
+        context.threads == 0 ? tbb::task_arena::automatic : static_cast<int>(context.threads);
     tbb::task_arena arena(threads);
     tbb::enumerable_thread_specific<Workspace> workspaces(
         [&] { return Workspace(tracer.bands()); });

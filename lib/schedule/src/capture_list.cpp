@@ -32,12 +32,12 @@ void CaptureListWriter::begin() {
                               {"glint_version", version()},
                               {"arguments", m_provenance.arguments},
                               {"seed", m_provenance.seed}};
-    head["run_info"] = Json{
-        {"reference_date_time",
-         m_schedule.plugins().empty()
-             ? Json(nullptr)
-             : Json(format_iso8601_utc(m_schedule.plugins()[0].tasks.reference, 6))},
-        {"simulation_file", m_schedule.simulation_file().generic_string()}};
+    head["run_info"] =
+        Json{{"reference_date_time",
+              m_schedule.plugins().empty()
+                  ? Json(nullptr)
+                  : Json(format_iso8601_utc(m_schedule.plugins()[0].tasks.reference, 6))},
+             {"simulation_file", m_schedule.simulation_file().generic_string()}};
     std::string text = head.dump(2);
     text.resize(text.size() - 2);  // drop "\n}": more members follow
     m_out << text << ",\n  \"capture_list\": [";

@@ -283,7 +283,8 @@ TEST(SurfaceBrdf, SampleWeightAndAlbedoBound) {
                 return smp->weight;
             });
             // Albedo ρ [(1 − s) + s E_GGX] ≤ ρ.
-            EXPECT_LE(e.mean, rho + kSigmas * e.standard_error + 1e-12) << rho << " " << s << " " << r;
+            EXPECT_LE(e.mean, rho + kSigmas * e.standard_error + 1e-12)
+                << rho << " " << s << " " << r;
             if (s == 0.0) {
                 EXPECT_NEAR(e.mean, rho, 1e-12);  // pure Lambertian: weight ≡ ρ
             }

@@ -5,10 +5,10 @@
 // a shadowed plate, the GGX lobe's albedo, a moving box's motion blur, and the atmosphere's
 // sensor path. Each is checked within k standard errors at a low sample count and within
 // 0.5 % at a high one.
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <numbers>
-
-#include <gtest/gtest.h>
 
 #include "glint/core/spectral.h"
 #include "glint/radiometry/brdf.h"
@@ -44,8 +44,8 @@ SampleRay nadir_ray(Vec3 target = {0.0, 0.0, 0.0}) {
 model::Scene plate_scene(double reflectance, double temperature_k = 300.0,
                          model::SpecularLobe specular = {}) {
     model::Scene scene;
-    scene.materials.push_back(flat_material("plate", reflectance, temperature_k, std::nullopt,
-                                            specular));
+    scene.materials.push_back(
+        flat_material("plate", reflectance, temperature_k, std::nullopt, specular));
     test::add_primitive(scene, ground_plane(), 0);
     return scene;
 }
@@ -59,8 +59,8 @@ TEST(PathTracer, LambertianPlateUnderTheSunAtSeveralZenithAngles) {
         const Solution s = solve(rig.tracer, batch_of(source, 2000), 0);
         // The only randomness is the direction inside the sun disk (its cosine spreads by
         // ~α tan θ); the disk's mean cosine differs from cos θ by α²/4 ≈ 5e-6 relative.
-        const double relative_error = s.standard_error_w_per_cm2_sr_um /
-                                      s.radiance_w_per_cm2_sr_um[0];
+        const double relative_error =
+            s.standard_error_w_per_cm2_sr_um / s.radiance_w_per_cm2_sr_um[0];
         for (std::size_t b = 0; b < 3; ++b) {
             const double expected = rho * kSun[b] * std::cos(zenith * kPi / 180.0) / kPi;
             EXPECT_NEAR(s.radiance_w_per_cm2_sr_um[b], expected,
@@ -81,7 +81,8 @@ TEST(PathTracer, BlackbodyPlate) {
     const FixedRay source(nadir_ray());
     const Solution s = solve(rig.tracer, batch_of(source, 16), 0);
     for (std::size_t b = 0; b < 3; ++b) {
-        const double expected = 0.9 * planck_radiance_w_per_cm2_sr_um(thermal.wavelength_um(b), 320.0);
+        const double expected =
+            0.9 * planck_radiance_w_per_cm2_sr_um(thermal.wavelength_um(b), 320.0);
         EXPECT_NEAR(s.radiance_w_per_cm2_sr_um[b], expected, 1e-12 * expected);
     }
 }
@@ -135,8 +136,8 @@ TEST(PathTracer, ShadowedPlate) {
     const double rho = 0.5;
     model::Scene scene = plate_scene(rho);
     scene.materials.push_back(flat_material("black", 0.0));
-    // A black 20 m square slab 10 m up (black, so no light bounces off its underside); with the sun at 30° from the south its shadow is centred
-    // 10 tan 30° = 5.77 m north of the origin.
+    // A black 20 m square slab 10 m up (black, so no light bounces off its underside); with the sun
+    // at 30° from the south its shadow is centred 10 tan 30° = 5.77 m north of the origin.
     test::add_primitive(scene, box({-10.0, -10.0, 10.0}, {10.0, 10.0, 11.0}), 1);
     const Vec3 sun = direction_from(30.0, 180.0);
     Rig rig(std::move(scene), kVisible, Environment::uniform(kVisible, sun, kSun, kBlack));
@@ -188,9 +189,9 @@ TEST(PathTracer, SpecularLobeAlbedoUnderAUniformSky) {
     const double view_zenith = 40.0;
     const Vec3 to_eye = direction_from(view_zenith, 0.0);
     const FixedRay source({to_eye * 10.0, -to_eye, 0.0, 1.0});
-    const double expected = rho * ggx_albedo(roughness * roughness,
-                                             {std::sin(view_zenith * kPi / 180.0), 0.0,
-                                              std::cos(view_zenith * kPi / 180.0)});
+    const double expected =
+        rho * ggx_albedo(roughness * roughness, {std::sin(view_zenith * kPi / 180.0), 0.0,
+                                                 std::cos(view_zenith * kPi / 180.0)});
     ASSERT_LT(expected, rho);  // single-scattering GGX loses energy: the bound is strict
 
     const Solution few = solve(rig.tracer, batch_of(source, 1000), 0);

@@ -2,11 +2,11 @@
 // The problem API: convergence rule, standard error, weights, bit-identical results for any
 // thread count and run, bad-input errors; and the material table and environment the
 // tracer reads.
-#include <cmath>
-#include <cstring>
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
 
 #include "glint/core/error.h"
 #include "glint/core/spectral.h"
@@ -16,13 +16,13 @@
 namespace glint::radiometry {
 namespace {
 
-using ::testing::HasSubstr;
 using test::batch_of;
 using test::direction_from;
 using test::FixedRay;
 using test::flat_material;
 using test::ground_plane;
 using test::Rig;
+using ::testing::HasSubstr;
 
 const SpectralGrid kGrid({0.45, 0.55, 0.65});
 const std::vector<double> kSun{0.20, 0.19, 0.16};
@@ -49,7 +49,8 @@ public:
 };
 
 Rig busy_rig() {
-    return Rig(busy_scene(), kGrid, Environment::uniform(kGrid, direction_from(35.0, 200.0), kSun, kSky));
+    return Rig(busy_scene(), kGrid,
+               Environment::uniform(kGrid, direction_from(35.0, 200.0), kSun, kSky));
 }
 
 std::vector<unsigned char> bytes_of(const Solutions& s) {
@@ -57,8 +58,8 @@ std::vector<unsigned char> bytes_of(const Solutions& s) {
                                    s.samples.size() * sizeof(std::uint64_t));
     std::memcpy(out.data(), s.radiance_w_per_cm2_sr_um.data(),
                 s.radiance_w_per_cm2_sr_um.size() * sizeof(double));
-    std::memcpy(out.data() + s.radiance_w_per_cm2_sr_um.size() * sizeof(double),
-                s.samples.data(), s.samples.size() * sizeof(std::uint64_t));
+    std::memcpy(out.data() + s.radiance_w_per_cm2_sr_um.size() * sizeof(double), s.samples.data(),
+                s.samples.size() * sizeof(std::uint64_t));
     return out;
 }
 
@@ -404,9 +405,9 @@ TEST(Environment, SunDirectionFollowsTheWindow) {
     inputs.sun_direction_end = {0.0, 1.0, 1.0};
     inputs.window_begin_s = 10.0;
     inputs.window_end_s = 20.0;
-    const Environment env = Environment::make(kGrid, scene::NoAtmosphere(),
-                                              scene::SolarSpectrum(SpectralCurve({0.3, 4.0}, {0.1, 0.001})),
-                                              inputs);
+    const Environment env =
+        Environment::make(kGrid, scene::NoAtmosphere(),
+                          scene::SolarSpectrum(SpectralCurve({0.3, 4.0}, {0.1, 0.001})), inputs);
     const Vec3 mid = env.sun_direction(15.0);
     EXPECT_NEAR(mid.x, mid.y, 1e-15);
     EXPECT_NEAR(norm(mid), 1.0, 1e-15);

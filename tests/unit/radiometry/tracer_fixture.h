@@ -4,12 +4,12 @@
 // sources (one fixed ray, random directions from a point, random times in a window).
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <memory>
 #include <optional>
 #include <utility>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "glint/core/diagnostics.h"
 #include "glint/core/spectral.h"
@@ -88,8 +88,7 @@ struct Rig {
         TracerSettings settings = {}, scene::TimeWindow window = {})
         : scene(std::move(scene_in)),
           grid(std::move(grid_in)),
-          trajectories(motion::make_instance_trajectories(scene, motion::SceneFrame(),
-                                                         DateTime{})),
+          trajectories(motion::make_instance_trajectories(scene, motion::SceneFrame(), DateTime{})),
           geometry(scene::GeometryScene::build(scene, trajectories,
                                                scene::BuildOptions{{}, window, {}})),
           materials(scene.materials, grid),

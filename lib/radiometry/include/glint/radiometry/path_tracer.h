@@ -36,7 +36,7 @@ struct SampleRay {
 
 /// Path tracer settings.
 struct TracerSettings {
-    unsigned max_bounces = 8;           ///< surface scatterings after the first hit
+    unsigned max_bounces = 8;            ///< surface scatterings after the first hit
     unsigned roulette_start_bounce = 3;  ///< Russian roulette from this bounce on
 };
 
