@@ -98,14 +98,17 @@ void ImageOutputs::write_capture(const std::filesystem::path& path, std::span<co
     std::vector<std::string> times;
     std::vector<std::string> ids;
     std::vector<std::string> datetimes;
+    std::vector<std::string> indices;
     for (const CaptureStamp& s : f.stamps) {
         times.push_back(format_shortest(s.t0_s) + " " + format_shortest(s.t1_s));
         ids.push_back("t" + std::to_string(s.task) + "c" + std::to_string(s.capture));
         datetimes.push_back(s.datetime_utc);
+        indices.push_back(std::to_string(s.index));
     }
     f.writer->set_extra("glint captures", std::to_string(f.stamps.size()));
     f.writer->set_extra("glint lines per capture", std::to_string(f.lines_per_capture));
     f.writer->set_extra("glint capture ids", brace_list(ids));
+    f.writer->set_extra("glint capture indices", brace_list(indices));
     f.writer->set_extra("glint capture windows s", brace_list(times));
     f.writer->set_extra("glint capture datetimes utc", brace_list(datetimes));
     f.writer->commit();

@@ -124,7 +124,8 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
         batch.count ? static_cast<double>(total_samples) / static_cast<double>(batch.count) : 0.0;
     stats.rays = solutions.rays;
     CaptureStamp stamp{capture.task_index, capture.capture_index, capture.t0_s, capture.t1_s,
-                       format_iso8601_utc(add_seconds(plugin.tasks.reference, capture.t0_s))};
+                       format_iso8601_utc(add_seconds(plugin.tasks.reference, capture.t0_s)),
+                       capture.index};
     prepared.outputs.write_capture(p.file, image, stamp);
     stats.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

@@ -79,6 +79,8 @@ io::EnviHeader header_of(const schedule::Source& source, const OutputUnits& unit
     h.set_extra("glint simulation", inputs.schedule->simulation_file().string());
     h.set_extra("glint plugin index",
                 std::to_string(inputs.schedule->plugins()[source.plugin].plugin_index));
+    const schedule::PluginSchedule& plugin = inputs.schedule->plugins()[source.plugin];
+    if (plugin.platform) h.set_extra("glint platform", plugin.platform->file);
     h.set_extra("glint instrument", source.instrument->name);
     h.set_extra("glint focal plane", fp.name);
     h.set_extra("glint convergence", std::to_string(convergence.min_samples) + " " +

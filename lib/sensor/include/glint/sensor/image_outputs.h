@@ -27,6 +27,7 @@ struct CaptureStamp {
     double t0_s = 0.0;          ///< window start, s after the tasks reference
     double t1_s = 0.0;          ///< window end
     std::string datetime_utc;   ///< ISO 8601 of t0
+    std::uint64_t index = 0;    ///< global schedule index (the random streams' capture key)
 };
 
 class ImageOutputs {
