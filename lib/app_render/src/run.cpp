@@ -107,6 +107,7 @@ int run(Options options, Context& ctx, std::ostream& out) {
     render.version = version();
     render.command_line = join_arguments(options.arguments);
     render.arguments = options.arguments;
+    render.radiance_only = options.radiance_only;
     if (render.data_dir.empty()) render.data_dir = default_data_dir();
     if (!options.schedule.empty()) {
         render.only_captures = sensor::read_schedule_selection(options.schedule);

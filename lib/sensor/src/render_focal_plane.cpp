@@ -100,6 +100,25 @@ io::EnviHeader header_of(const schedule::Source& source, const OutputUnits& unit
     return h;
 }
 
+/// The capture method whose units the output takes: with a detector model the <imagefile>'s
+/// fluxunits and areaunits are ignored (as the manual says) for the photon product at the
+/// focal plane, per cm², channels integrated and not normalized, that detection needs.
+model::CaptureMethod units_method(const model::FocalPlane& fp, const Context& context) {
+    model::CaptureMethod method = fp.capture_method;
+    if (!method.detector_model) return method;
+    method.image_file.flux_units = model::FluxUnits::photons_per_second;
+    method.image_file.area_units = model::AreaUnits::cm2;
+    for (model::Channel& channel : method.spectral_response.channels) {
+        if (channel.normalize) {
+            context.log.warning("channel \"" + channel.name + "\" of focal plane \"" + fp.name +
+                                "\": normalize is ignored with a detector model (detection "
+                                "counts photons through the channel's response)");
+            channel.normalize = false;
+        }
+    }
+    return method;
+}
+
 }  // namespace
 
 FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t source_index,
@@ -123,7 +142,13 @@ FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t s
     radiometry::MaterialTable materials(inputs.scene.materials, grid, context.log);
     CameraModel camera(source.instrument->properties, fp.detector_array, source.x_count,
                        source.y_count);
-    OutputUnits units(fp.capture_method, source.instrument->properties, grid);
+    OutputUnits units(units_method(fp, context), source.instrument->properties, grid);
+    if (fp.capture_method.detector_model && !options.radiance_only) {
+        context.log.warning("focal plane \"" + fp.name +
+                            "\" has a detector model: in-render detection is not available "
+                            "yet, so its file holds the photon product (Photons/cm2) that "
+                            "glint-detect turns into counts");
+    }
     const radiometry::Convergence convergence = convergence_of(fp, options);
     io::EnviHeader header = header_of(source, units, convergence, options, inputs);
     return FocalPlaneState{std::move(grid),  reference,   std::move(materials), std::move(camera),

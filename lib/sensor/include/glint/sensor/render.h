@@ -36,6 +36,9 @@ struct RenderOptions {
     /// --convergence; a focal plane's <convergence> overrides it.
     std::optional<radiometry::Convergence> convergence;
     bool split_channels = false;  ///< accepted and recorded; no dispersion is modelled
+    /// --radiance-only: stop at the radiometric product even where a detector model is
+    /// configured (for those focal planes it is the photon product glint-detect reads).
+    bool radiance_only = false;
     radiometry::TracerSettings tracer;
     scene::DeviceSettings device;
     /// glint's data folder (solar/astm_g173.csv).
