@@ -65,7 +65,10 @@ io::EnviHeader header_of(const schedule::Source& source, const OutputUnits& unit
                     source.instrument->name + " -> " + fp.name;
     h.samples = source.x_count;
     h.bands = units.channels();
-    h.data_type = output_data_type(method.image_file);
+    // With a detector model the file holds the photon product detection starts from:
+    // float64 always, <datatype> is for the counts.
+    h.data_type = method.detector_model ? io::EnviDataType::float64
+                                        : output_data_type(method.image_file);
     h.wavelength_units = "Micrometers";
     h.wavelength = units.centers_um();
     h.fwhm = units.fwhm_um();
