@@ -15,7 +15,7 @@ packages=(
     libgeographiclib-dev libtinyobjloader-dev zlib1g-dev
     # programs glint runs and test oracles
     ffmpeg openimageio-tools gdal-bin python3 python3-gdal python3-numpy python3-spectral
-    python3-sgp4 python3-astropy jq
+    python3-sgp4 python3-astropy python3-opencv jq
 )
 
 missing=()

@@ -3,6 +3,7 @@
 // RandomStream. The algorithms and their references are in docs/physics.md.
 #include "glint/core/rng.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -109,6 +110,53 @@ void RandomStream::refill() {
                        static_cast<std::uint32_t>(m_counter_high),
                        static_cast<std::uint32_t>(m_counter_high >> 32)},
                       m_key);
+}
+
+void RandomStream::blocks_at(std::span<const std::uint64_t> word_indices,
+                             std::span<PhiloxCounter> out) const {
+    if (word_indices.size() != out.size()) {
+        throw internal_error("RandomStream::blocks_at: " + std::to_string(word_indices.size()) +
+                             " positions for " + std::to_string(out.size()) + " blocks");
+    }
+    constexpr std::size_t kLanes = 16;
+    const auto high0 = static_cast<std::uint32_t>(m_counter_high);
+    const auto high1 = static_cast<std::uint32_t>(m_counter_high >> 32);
+    for (std::size_t begin = 0; begin < out.size(); begin += kLanes) {
+        const std::size_t n = std::min(kLanes, out.size() - begin);
+        // Lanes side by side so that the rounds of different blocks overlap (and vectorize).
+        std::uint32_t c0[kLanes] = {}, c1[kLanes] = {}, c2[kLanes] = {}, c3[kLanes] = {};
+        for (std::size_t j = 0; j < n; ++j) {
+            const std::uint64_t index = word_indices[begin + j];
+            if ((index & 3u) != 0) {
+                throw internal_error("RandomStream::blocks_at: word position " +
+                                     std::to_string(index) + " is not a multiple of 4");
+            }
+            const std::uint64_t block = index >> 2;
+            c0[j] = static_cast<std::uint32_t>(block);
+            c1[j] = static_cast<std::uint32_t>(block >> 32);
+            c2[j] = high0;
+            c3[j] = high1;
+        }
+        std::uint32_t k0 = m_key[0];
+        std::uint32_t k1 = m_key[1];
+        for (int round = 0; round < 10; ++round) {
+            if (round > 0) {
+                k0 += kPhiloxW0;
+                k1 += kPhiloxW1;
+            }
+            for (std::size_t j = 0; j < kLanes; ++j) {
+                const std::uint64_t p0 = static_cast<std::uint64_t>(kPhiloxM0) * c0[j];
+                const std::uint64_t p1 = static_cast<std::uint64_t>(kPhiloxM1) * c2[j];
+                const auto n0 = static_cast<std::uint32_t>(p1 >> 32) ^ c1[j] ^ k0;
+                const auto n2 = static_cast<std::uint32_t>(p0 >> 32) ^ c3[j] ^ k1;
+                c1[j] = static_cast<std::uint32_t>(p1);
+                c3[j] = static_cast<std::uint32_t>(p0);
+                c0[j] = n0;
+                c2[j] = n2;
+            }
+        }
+        for (std::size_t j = 0; j < n; ++j) out[begin + j] = {c0[j], c1[j], c2[j], c3[j]};
+    }
 }
 
 std::uint32_t RandomStream::next_u32() {

@@ -366,5 +366,24 @@ TEST(RandomStream, PoissonChiSquareInversionLimit) { expect_poisson_fits(9.5, 10
 TEST(RandomStream, PoissonChiSquareMediumMean) { expect_poisson_fits(30.0, 1003); }
 TEST(RandomStream, PoissonChiSquareJustAboveLimit) { expect_poisson_fits(10.0, 1004); }
 
+TEST(RandomStream, BlocksAtMatchSkipToAndDraw) {
+    const RandomStream stream(42, {7, 8, 9});
+    std::vector<std::uint64_t> positions;
+    for (std::uint64_t i = 0; i < 37; ++i) positions.push_back((i * 0x9E3779B97F4Aull) << 2);
+    positions.push_back(0);
+    positions.push_back(std::uint64_t{1} << 40);
+    std::vector<PhiloxCounter> blocks(positions.size());
+    stream.blocks_at(positions, blocks);
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+        RandomStream copy = stream;
+        copy.skip_to(positions[i]);
+        for (int w = 0; w < 4; ++w) ASSERT_EQ(blocks[i][w], copy.next_u32()) << i << " " << w;
+    }
+    EXPECT_EQ(stream.position(), 0u);
+    std::vector<PhiloxCounter> one(1);
+    EXPECT_THROW(stream.blocks_at(std::vector<std::uint64_t>{6}, one), Error);
+    EXPECT_THROW(stream.blocks_at(std::vector<std::uint64_t>{4, 8}, one), Error);
+}
+
 }  // namespace
 }  // namespace glint

@@ -73,6 +73,14 @@ public:
     /// How many 32-bit words have been drawn (or skipped to).
     std::uint64_t position() const noexcept { return m_position; }
 
+    /// The four words the stream gives from each word position `word_indices[i]` (a multiple
+    /// of 4: the start of a 128-bit block), in draw order, into `out[i]`: what skip_to(index)
+    /// then four next_u32() would return. The stream itself is not moved. Many blocks are
+    /// computed together (interleaved Philox rounds), several times faster than one by one.
+    /// Throws glint::Error (internal) for a position that is not a multiple of 4 or spans of
+    /// different sizes.
+    void blocks_at(std::span<const std::uint64_t> word_indices, std::span<PhiloxCounter> out) const;
+
 private:
     void refill();
 

@@ -1,0 +1,154 @@
+// SPDX-License-Identifier: Apache-2.0
+// Writing the demosaiced image of glint-demosaic: ENVI through io::EnviWriter (values
+// unchanged, provenance keys) or an image through io::ImageWriter with glint-envi's stretch
+// (the rules are at the top of demosaic.h).
+#include <cmath>
+#include <string>
+
+#include "glint/core/error.h"
+#include "glint/core/runner.h"
+#include "glint/core/text.h"
+#include "glint/io/image.h"
+#include "stages.h"
+
+namespace glint::app_demosaic::internal {
+namespace {
+
+namespace fs = std::filesystem;
+
+io::EnviDataType default_envi_type(const MosaicSource& source) {
+    if (!source.envi) return io::EnviDataType::float32;
+    switch (source.envi->data_type) {
+        case io::EnviDataType::complex64:
+            return io::EnviDataType::float32;
+        case io::EnviDataType::complex128:
+            return io::EnviDataType::float64;
+        default:
+            return source.envi->data_type;
+    }
+}
+
+io::ImageFormat image_format_of(app_envi::OutputKind kind) {
+    switch (kind) {
+        case app_envi::OutputKind::tiff:
+            return io::ImageFormat::tiff;
+        case app_envi::OutputKind::jpeg:
+            return io::ImageFormat::jpeg;
+        case app_envi::OutputKind::exr:
+            return io::ImageFormat::exr;
+        case app_envi::OutputKind::ppm:
+            return io::ImageFormat::ppm;
+        default:
+            return io::ImageFormat::png;
+    }
+}
+
+/// Min/max or percentile limits over the three channels together.
+app_envi::StretchLimits data_limits(const demosaic::RgbImage& image, double percent, Context& ctx) {
+    app_envi::PercentileHistogram histogram;
+    for (double v : image.rgb) histogram.observe(v);
+    if (percent > 0) {
+        histogram.begin_counting();
+        for (double v : image.rgb) histogram.count(v);
+    }
+    if (histogram.finite_count() == 0) ctx.log.warning("the image holds no finite values");
+    return histogram.limits(percent);
+}
+
+}  // namespace
+
+std::string describe(const Provenance& p) {
+    std::string text = demosaic::cfa_pattern_name(p.used.pattern);
+    if (p.used.pattern == demosaic::CfaPattern::bayer) {
+        text += std::string(" ") + demosaic::bayer_phase_name(p.used.phase);
+    }
+    return text + " " + demosaic::demosaic_method_name(p.used.method) + " demosaic of " +
+           p.source.filename().string();
+}
+
+std::string write_envi(const fs::path& output, const demosaic::RgbImage& image,
+                       const MosaicSource& source, const Provenance& provenance,
+                       std::optional<io::EnviDataType> data_type, Context& ctx) {
+    io::EnviHeader h;
+    h.description = "glint-demosaic: " + describe(provenance);
+    h.samples = image.width;
+    h.lines = image.height;
+    h.bands = 3;
+    h.data_type = data_type.value_or(default_envi_type(source));
+    h.band_names = {"R", "G", "B"};
+    if (source.envi) h.data_units = source.envi->data_units;
+    h.set_extra("glint tool", "glint-demosaic");
+    h.set_extra("glint version", version());
+    h.set_extra("glint source", provenance.source.string());
+    if (!provenance.command_line.empty()) h.set_extra("glint command", provenance.command_line);
+    h.set_extra("glint cfa pattern", demosaic::cfa_pattern_name(provenance.used.pattern));
+    if (provenance.used.pattern == demosaic::CfaPattern::bayer) {
+        h.set_extra("glint cfa phase", demosaic::bayer_phase_name(provenance.used.phase));
+    }
+    h.set_extra("glint demosaic method", demosaic::demosaic_method_name(provenance.used.method));
+    const std::string type_name = io::envi_type_name(h.data_type);
+
+    io::EnviWriter writer(output, std::move(h));
+    const std::size_t line_values = image.width * 3;
+    for (std::size_t y = 0; y < image.height; ++y) {
+        ctx.cancel.throw_if_cancelled();
+        writer.write_line(std::span<const double>(image.rgb).subspan(y * line_values, line_values));
+        ctx.progress.update("demosaic-write", y + 1, image.height);
+    }
+    writer.commit();
+    ctx.progress.finish("demosaic-write", image.height);
+    return type_name;
+}
+
+void write_picture(const DemosaicToolOptions& o, app_envi::OutputKind kind,
+                   const demosaic::RgbImage& image, const Provenance& provenance,
+                   DemosaicToolResult& result, Context& ctx) {
+    const io::ImageFormat format = image_format_of(kind);
+    io::PixelType type = io::default_pixel_type(format);
+    if (o.bit_depth) {
+        const auto chosen = io::pixel_type_for_bit_depth(format, *o.bit_depth);
+        if (!chosen) {
+            throw usage_error(std::string(io::image_format_name(format)) +
+                              " cannot store a bit depth of " + std::to_string(*o.bit_depth) +
+                              " (" + o.output.string() + ")");
+        }
+        type = *chosen;
+    }
+    const bool integer = io::pixel_type_is_integer(type);
+    const double gamma = o.gamma.value_or(1.0);
+    if (o.min) {
+        result.limits = app_envi::StretchLimits{*o.min, *o.max};
+    } else if (o.percent) {
+        result.limits = data_limits(image, *o.percent, ctx);
+    } else if (!o.raw && (integer || gamma != 1.0)) {
+        result.limits = data_limits(image, 0.0, ctx);
+    }
+    if (result.limits) {
+        ctx.log.info("stretch [" + format_shortest(result.limits->low) + ", " +
+                     format_shortest(result.limits->high) + "]");
+    }
+    result.stored_type = io::pixel_type_name(type);
+
+    io::ImageWriteOptions write;
+    write.format = format;
+    write.pixel_type = type;
+    write.channel_names = {"R", "G", "B"};
+    write.software = std::string("glint-demosaic ") + version();
+    write.description = "glint-demosaic: " + describe(provenance);
+    const double scale = integer ? io::pixel_type_max(type) : 1.0;
+    io::ImageWriter writer(o.output, image.width, image.height, 3, write);
+    std::vector<double> line(image.width * 3);
+    for (std::size_t y = 0; y < image.height; ++y) {
+        ctx.cancel.throw_if_cancelled();
+        for (std::size_t i = 0; i < line.size(); ++i) {
+            const double v = image.rgb[y * line.size() + i];
+            line[i] = result.limits ? scale * app_envi::stretch_value(v, *result.limits, gamma) : v;
+        }
+        writer.write_line(line);
+        ctx.progress.update("demosaic-write", y + 1, image.height);
+    }
+    writer.commit();
+    ctx.progress.finish("demosaic-write", image.height);
+}
+
+}  // namespace glint::app_demosaic::internal

@@ -1,0 +1,188 @@
+// SPDX-License-Identifier: Apache-2.0
+// glint-demosaic's entry point: option names and checks, the output kind, then read →
+// demosaic → write (the stages are in source.cpp and output.cpp).
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+#include "glint/core/atomic_file.h"
+#include "glint/core/error.h"
+#include "glint/core/text.h"
+#include "glint/io/image.h"
+#include "stages.h"
+
+namespace glint::app_demosaic {
+namespace {
+
+namespace fs = std::filesystem;
+using app_envi::OutputKind;
+
+std::string lower(std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return text;
+}
+
+OutputKind output_kind(const DemosaicToolOptions& o) {
+    if (!o.format.empty()) {
+        const auto kind = app_envi::output_kind_from_name(o.format);
+        if (!kind) {
+            throw usage_error("unknown output format '" + o.format +
+                              "' (expected png, tiff, jpeg, exr, ppm or envi)");
+        }
+        return *kind;
+    }
+    if (const auto image = io::image_format_from_extension(o.output)) {
+        return *app_envi::output_kind_from_name(io::image_format_name(*image));
+    }
+    const std::string ext = lower(o.output.extension().string());
+    for (const char* envi : {".img", ".dat", ".raw", ".bsq", ".bil", ".bip", ".envi"}) {
+        if (ext == envi) return OutputKind::envi;
+    }
+    throw usage_error("cannot tell the output format from the name " + o.output.string() +
+                      "; use --format png|tiff|jpeg|exr|ppm|envi");
+}
+
+void check_options(const DemosaicToolOptions& o, OutputKind kind) {
+    if (o.input.empty()) throw usage_error("no input file named");
+    if (o.output.empty()) throw usage_error("no output file named");
+    if (o.gamma && !(*o.gamma > 0 && std::isfinite(*o.gamma))) {
+        throw usage_error("--gamma must be a positive number, got " + format_shortest(*o.gamma));
+    }
+    if (o.percent && !(*o.percent >= 0 && *o.percent < 50)) {
+        throw usage_error("--percent must be in [0, 50), got " + format_shortest(*o.percent));
+    }
+    if (o.min.has_value() != o.max.has_value()) throw usage_error("--min and --max go together");
+    if (o.min && !(std::isfinite(*o.min) && std::isfinite(*o.max) && *o.min < *o.max)) {
+        throw usage_error("--min must be less than --max (got " + format_shortest(*o.min) +
+                          " and " + format_shortest(*o.max) + ")");
+    }
+    if (o.min && o.percent) throw usage_error("give --percent or --min/--max, not both");
+    const bool stretch_asked = o.percent || o.min || (o.gamma && *o.gamma != 1.0);
+    if (o.raw && stretch_asked) {
+        throw usage_error(
+            "--raw writes values unchanged; it excludes --percent, --min/--max "
+            "and --gamma");
+    }
+    if (kind == OutputKind::envi) {
+        if (stretch_asked || o.raw || o.bit_depth) {
+            throw usage_error(
+                "--percent, --min/--max, --gamma, --raw and --bit-depth apply to "
+                "image outputs; ENVI outputs keep the values (see --data-type)");
+        }
+    } else if (o.data_type) {
+        throw usage_error("--data-type applies to ENVI outputs; use --bit-depth for images");
+    }
+}
+
+/// What the input's header says about its mosaic (glint-detect's keys), if anything.
+struct HeaderCfa {
+    std::optional<demosaic::CfaPattern> pattern;
+    std::optional<demosaic::BayerPhase> phase;
+};
+
+HeaderCfa header_cfa(const internal::MosaicSource& source) {
+    HeaderCfa cfa;
+    if (!source.envi) return cfa;
+    if (const auto name = source.envi->find_extra("glint cfa pattern")) {
+        cfa.pattern = demosaic::cfa_pattern_from_name(*name);
+    }
+    if (const auto name = source.envi->find_extra("glint cfa phase")) {
+        cfa.phase = demosaic::bayer_phase_from_name(*name);
+    }
+    return cfa;
+}
+
+/// The pattern, phase and method to apply: options first, then the input's header, then the
+/// defaults; throws usage errors for a phase or method that does not fit the pattern.
+demosaic::DemosaicOptions resolve(const DemosaicToolOptions& o,
+                                  const internal::MosaicSource& source, Context& ctx) {
+    const HeaderCfa cfa = header_cfa(source);
+    demosaic::DemosaicOptions used;
+    used.pattern = o.pattern.value_or(cfa.pattern.value_or(demosaic::CfaPattern::bayer));
+    if (o.pattern && cfa.pattern && *o.pattern != *cfa.pattern) {
+        ctx.log.warning(o.input.string() + " records a " +
+                        demosaic::cfa_pattern_name(*cfa.pattern) + " mosaic; demosaicing it as " +
+                        demosaic::cfa_pattern_name(*o.pattern) + " as asked");
+    }
+    const std::string pattern_name = demosaic::cfa_pattern_name(used.pattern);
+    const std::string whose = o.pattern ? "" : " (" + o.input.string() + " records it)";
+    if (o.phase && used.pattern != demosaic::CfaPattern::bayer) {
+        throw usage_error("--phase applies to the bayer pattern only, not to " + pattern_name +
+                          whose);
+    }
+    if (used.pattern == demosaic::CfaPattern::bayer) {
+        used.phase = o.phase.value_or(cfa.phase.value_or(demosaic::BayerPhase::rggb));
+        if (o.phase && cfa.phase && *o.phase != *cfa.phase &&
+            cfa.pattern == demosaic::CfaPattern::bayer) {
+            ctx.log.warning(o.input.string() + " records the Bayer phase " +
+                            demosaic::bayer_phase_name(*cfa.phase) + "; using " +
+                            demosaic::bayer_phase_name(*o.phase) + " as asked");
+        }
+    }
+    used.method = o.method.value_or(demosaic::default_method(used.pattern));
+    if (!demosaic::method_supports(used.method, used.pattern)) {
+        throw usage_error(
+            "method " + std::string(demosaic::demosaic_method_name(used.method)) +
+            " does not apply to the " + pattern_name + " pattern" + whose + " (expected " +
+            (used.pattern == demosaic::CfaPattern::bayer ? "bilinear or mhc" : "pan-guided") + ")");
+    }
+    return used;
+}
+
+}  // namespace
+
+demosaic::CfaPattern parse_pattern(const std::string& name) {
+    if (const auto pattern = demosaic::cfa_pattern_from_name(name)) return *pattern;
+    throw usage_error("unknown pattern '" + name + "' (expected bayer or truesense)");
+}
+
+demosaic::BayerPhase parse_phase(const std::string& name) {
+    if (const auto phase = demosaic::bayer_phase_from_name(name)) return *phase;
+    throw usage_error("unknown Bayer phase '" + name + "' (expected rggb, grbg, gbrg or bggr)");
+}
+
+demosaic::DemosaicMethod parse_method(const std::string& name) {
+    if (const auto method = demosaic::demosaic_method_from_name(name)) return *method;
+    throw usage_error("unknown method '" + name +
+                      "' (expected bilinear or mhc for bayer, "
+                      "pan-guided for truesense)");
+}
+
+DemosaicToolResult run_demosaic(const DemosaicToolOptions& o, Context& ctx) {
+    const OutputKind kind = output_kind(o);
+    check_options(o, kind);
+    const internal::MosaicSource source = internal::read_mosaic(o.input, ctx);
+    ensure_not_an_input(o.output, source.files);
+    if (kind == OutputKind::envi) {
+        fs::path header = o.output;
+        header += ".hdr";
+        ensure_not_an_input(header, source.files);
+    }
+    DemosaicToolResult result;
+    result.kind = kind;
+    result.used = resolve(o, source, ctx);
+    result.width = source.plane.width;
+    result.height = source.plane.height;
+    const internal::Provenance provenance{o.input, result.used, o.command_line};
+    ctx.log.info("demosaicing " + o.input.string() + " (" + std::to_string(result.width) + " x " +
+                 std::to_string(result.height) + ", " + source.type_name +
+                 "): " + internal::describe(provenance) + " to " + o.output.string());
+
+    demosaic::RgbImage image;
+    try {
+        image = demosaic::demosaic(source.plane, result.used, &ctx.cancel);
+    } catch (const Error& e) {
+        if (e.category() != ErrorCategory::input) throw;
+        throw e.with_file(o.input.string());
+    }
+    if (kind == OutputKind::envi) {
+        result.stored_type =
+            internal::write_envi(o.output, image, source, provenance, o.data_type, ctx);
+    } else {
+        internal::write_picture(o, kind, image, provenance, result, ctx);
+    }
+    return result;
+}
+
+}  // namespace glint::app_demosaic

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: Apache-2.0
+// glint-detect's entry point: applies a focal plane's detection (detector model, TDI, CFA
+// mosaic; lib/detect) to a radiometric ENVI product, streaming line by line, and writes the
+// digital counts (or electrons) atomically with a header that records every parameter used.
+// docs/tools/glint-detect.md documents the options; docs/detector.md the physics.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "glint/core/context.h"
+#include "glint/detect/detector.h"
+
+namespace glint::app_detect {
+
+/// Options of glint-detect.
+struct Options {
+    std::filesystem::path input;     ///< the radiometric product (data file or its header)
+    std::filesystem::path output;    ///< -o: the ENVI data file to write (header beside it)
+    std::filesystem::path platform;  ///< --platform; empty: the input header's `glint platform`
+    std::string instrument;   ///< --instrument; empty: the header's `glint instrument`, if any
+    std::string focal_plane;  ///< --focal-plane; empty: the header's `glint focal plane`
+    detect::DetectorOverrides overrides;  ///< --qe, --read-noise, ..., --mosaic, --tdi-mode
+    std::optional<std::uint64_t> seed;    ///< --seed; else the header's `glint seed`, else 1
+    std::string command_line;             ///< recorded as `glint command line`
+};
+
+/// What a run did.
+struct Result {
+    detect::DetectionSettings settings;
+    std::size_t samples = 0;
+    std::size_t lines = 0;
+    std::size_t captures = 0;
+    std::size_t lines_per_capture = 0;
+};
+
+/// Runs glint-detect. Throws glint::Error: usage for missing or contradictory options or an
+/// output that would overwrite the input; input for a platform, focal plane or input cube
+/// that does not fit (units other than Photons/cm2 or Electrons/cm2 with a detector model, a
+/// band count other than the channel count, capture keys that do not match the lines, a
+/// value the detector cannot take); io when a file cannot be read or written. Nothing is
+/// left under the output name unless the run succeeded.
+Result run(const Options& options, Context& ctx);
+
+}  // namespace glint::app_detect

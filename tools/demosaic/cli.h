@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: Apache-2.0
+// The command line of glint-demosaic: options (with the spellings of the DIRSIG manual's
+// processing-task example, --input_filename= and --output_filename=), parsed by CLI11 into
+// app_demosaic::DemosaicToolOptions.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+#include <vector>
+
+#include "glint/app_demosaic/demosaic.h"
+#include "glint/core/context.h"
+
+namespace glint::tools::demosaic {
+
+/// Everything parsed from the command line.
+class DemosaicCli {
+public:
+    /// `command_line`: the arguments as typed, recorded in ENVI outputs' provenance.
+    explicit DemosaicCli(std::string command_line) : m_command_line(std::move(command_line)) {}
+
+    /// Adds the options to `app`.
+    void configure(CLI::App& app);
+    /// Checks and converts what was parsed, runs glint-demosaic; returns the exit status.
+    int execute(Context& ctx);
+
+private:
+    void finish();
+
+    std::string m_command_line;
+    CLI::App* m_app = nullptr;
+    app_demosaic::DemosaicToolOptions m_options;
+    std::vector<std::string> m_files;
+    std::string m_input;
+    std::string m_output;
+    std::string m_pattern;
+    std::string m_phase;
+    std::string m_method;
+    std::string m_data_type;
+    double m_percent = 0.0;
+    double m_min = 0.0;
+    double m_max = 0.0;
+    double m_gamma = 1.0;
+    int m_bit_depth = 8;
+};
+
+}  // namespace glint::tools::demosaic
