@@ -123,6 +123,20 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
     stats.mean_samples =
         batch.count ? static_cast<double>(total_samples) / static_cast<double>(batch.count) : 0.0;
     stats.rays = solutions.rays;
+    if (state.detection) {
+        // Detection line by line, keyed like glint-detect: (capture index, line in capture).
+        const detect::DetectionChain& chain = *state.detection;
+        std::vector<double> detected(chain.output_values_per_line() * source.y_count);
+        for (std::size_t line = 0; line < source.y_count; ++line) {
+            chain.process_line(
+                {capture.index, line},
+                std::span<const double>(image).subspan(line * chain.input_values_per_line(),
+                                                       chain.input_values_per_line()),
+                std::span<double>(detected).subspan(line * chain.output_values_per_line(),
+                                                    chain.output_values_per_line()));
+        }
+        image.swap(detected);
+    }
     CaptureStamp stamp{capture.task_index, capture.capture_index, capture.t0_s, capture.t1_s,
                        format_iso8601_utc(add_seconds(plugin.tasks.reference, capture.t0_s)),
                        capture.index};

@@ -8,6 +8,7 @@
 #include "glint/core/text.h"
 #include "glint/model/derived.h"
 #include "glint/model/names.h"
+#include "glint/detect/header_keys.h"
 #include "render_parts.h"
 
 namespace glint::sensor::detail {
@@ -122,6 +123,22 @@ model::CaptureMethod units_method(const model::FocalPlane& fp, const Context& co
     return method;
 }
 
+/// The header of detected output: counts (or a mosaic), glint-detect's keys.
+void add_detection_header(io::EnviHeader& h, const detect::DetectionSettings& settings) {
+    h.data_units = detect::output_data_units(settings, h.data_units);
+    h.data_type = settings.data_type;
+    h.bands = settings.output_bands();
+    if (settings.cfa) {
+        h.band_names = detect::output_band_names(settings);
+        h.wavelength.clear();
+        h.fwhm.clear();
+        h.wavelength_units.clear();
+    }
+    for (const auto& [key, value] : detect::detection_header_keys(settings)) {
+        h.set_extra(key, value);
+    }
+}
+
 }  // namespace
 
 FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t source_index,
@@ -146,16 +163,22 @@ FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t s
     CameraModel camera(source.instrument->properties, fp.detector_array, source.x_count,
                        source.y_count);
     OutputUnits units(units_method(fp, context), source.instrument->properties, grid);
-    if (fp.capture_method.detector_model && !options.radiance_only) {
-        context.log.warning("focal plane \"" + fp.name +
-                            "\" has a detector model: in-render detection is not available "
-                            "yet, so its file holds the photon product (Photons/cm2) that "
-                            "glint-detect turns into counts");
-    }
+
     const radiometry::Convergence convergence = convergence_of(fp, options);
     io::EnviHeader header = header_of(source, units, convergence, options, inputs);
-    return FocalPlaneState{std::move(grid),  reference,   std::move(materials), std::move(camera),
-                           std::move(units), convergence, std::move(header)};
-}
+    FocalPlaneState state{std::move(grid), reference,         std::move(materials),
+                          std::move(camera), std::move(units), convergence,
+                          std::move(header),  std::nullopt};
+    const bool detects = fp.capture_method.detector_model.has_value() ||
+                         fp.capture_method.spectral_response.pattern.has_value();
+    if (detects && !options.radiance_only) {
+        detect::DetectorOverrides overrides;
+        overrides.scale_resolution = options.schedule.scale_resolution;
+        detect::DetectionSettings settings = detect::resolve_detection(
+            fp, source.instrument->properties, overrides, options.schedule.seed);
+        add_detection_header(state.header, settings);
+        state.detection.emplace(std::move(settings), source.x_count);
+    }
+    return state;}
 
 }  // namespace glint::sensor::detail

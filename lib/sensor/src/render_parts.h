@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "glint/core/spectral.h"
+#include "glint/detect/chain.h"
 #include "glint/io/envi.h"
 #include "glint/model/atmosphere.h"
 #include "glint/model/scene.h"
@@ -56,6 +57,9 @@ struct FocalPlaneState {
     OutputUnits units;
     radiometry::Convergence convergence;
     io::EnviHeader header;  ///< header template (lines set when planned)
+    /// In-render detection (detector model or colour filter array, unless --radiance-only):
+    /// the chain glint-detect applies, fed with the capture's photon product line by line.
+    std::optional<detect::DetectionChain> detection;
 };
 
 /// Builds the state of schedule source `source`. Throws glint::Error (input, at the focal
