@@ -4,6 +4,7 @@
 # wall-clock seconds and throughput. Not run by ctest (speed is measured here, never
 # asserted in a test). Grows as tools land.
 # Usage: bench/run.sh BIN_DIR [SIZE]   (SIZE: square image side in pixels, default 4096)
+# GLINT_BENCH_ARGS: extra arguments for glint-bench (e.g. "--quick", "--threads 1").
 set -euo pipefail
 
 bin=$(cd "${1:?usage: run.sh BIN_DIR [SIZE]}" && pwd)
@@ -28,3 +29,28 @@ echo "glint bench: ${size}x${size}x3 float32 ($(printf '%.0f' "$mb") MB), $(npro
 row "glint-envi convert exr -> envi" "$(seconds "$bin/glint-envi" convert "$work/in.exr" "$work/cube.img")" "$mb"
 row "glint-envi stats" "$(seconds "$bin/glint-envi" stats "$work/cube.img")" "$mb"
 row "glint-envi convert envi -> png (2% stretch)" "$(seconds "$bin/glint-envi" convert --percent 2 "$work/cube.img" "$work/out.png")" "$mb"
+
+# glint-detect: a SIZE x SIZE single-band Photons/cm2 frame (about 4000-8000 electrons per
+# pixel) through bench/detect.platform with every noise on, 2 threads; pixel-channels per second.
+here=$(cd "$(dirname "$0")" && pwd)
+python3 - "$work/photons.img" "$size" <<'PY'
+import array, sys
+path, n = sys.argv[1], int(sys.argv[2])
+line = array.array("d", [6.25e9 * (1 + (x % 97) / 97.0) for x in range(n)])
+with open(path, "wb") as f:
+    for _ in range(n):
+        line.tofile(f)
+with open(path + ".hdr", "w") as f:
+    f.write("ENVI\nsamples = %d\nlines = %d\nbands = 1\nheader offset = 0\n"
+            "file type = ENVI Standard\ndata type = 5\ninterleave = bip\nbyte order = %d\n"
+            "data units = Photons/cm2\n" % (n, n, 0 if sys.byteorder == "little" else 1))
+PY
+detect_s=$(seconds "$bin/glint-detect" "$work/photons.img" -o "$work/dc.img" \
+    --platform "$here/detect.platform" --focal-plane Frame --threads 2 -q)
+awk -v s="$detect_s" -v n="$size" 'BEGIN { printf "%-44s %8.3f s %10.1f M pixel-channels/s (target >= 50)\n", "glint-detect, all noise, 2 threads", s, n * n / s / 1e6 }'
+rm -f "$work/photons.img" "$work/dc.img"
+
+# The Embree scene and the path tracer against bare Embree (docs/performance.md): JSON.
+read -r -a bench_args <<<"${GLINT_BENCH_ARGS:-}"
+echo "glint-bench: Embree scene and path tracer vs bare rtcIntersect1 (docs/performance.md)"
+"$bin/glint-bench" "${bench_args[@]}"

@@ -1,0 +1,122 @@
+// SPDX-License-Identifier: Apache-2.0
+// The path tracer rigs and timings of glint-bench (tracer_runs.h).
+#include "tracer_runs.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+namespace glint::bench {
+namespace {
+
+/// Sun 35° from the zenith, azimuth 150° (clockwise from north).
+constexpr double kSunZenithDeg = 35.0;
+constexpr double kSunAzimuthDeg = 150.0;
+/// Flat solar irradiance at the surface, W/(cm² µm), and sky radiance, W/(cm² sr µm).
+constexpr double kSunIrradiance = 0.15;
+constexpr double kSkyRadiance = 0.004;
+/// Problems per solve() call: an image is solved in batches of this many pixels, as a
+/// renderer would solve it in tiles, so that 256 bands of output stay a modest allocation.
+constexpr std::uint64_t kBatchProblems = 65536;
+
+SpectralGrid make_grid(std::size_t bands) {
+    if (bands <= 1) return SpectralGrid(std::vector<double>{0.55});
+    std::vector<double> w(bands);
+    for (std::size_t i = 0; i < bands; ++i) w[i] = 0.4 + 2.1 * double(i) / double(bands - 1);
+    return SpectralGrid(std::move(w));
+}
+
+radiometry::Environment make_environment(const SpectralGrid& grid) {
+    const double zenith = kSunZenithDeg * std::numbers::pi / 180.0;
+    const double azimuth = kSunAzimuthDeg * std::numbers::pi / 180.0;
+    const motion::Vec3 sun{std::sin(zenith) * std::sin(azimuth),
+                           std::sin(zenith) * std::cos(azimuth), std::cos(zenith)};
+    return radiometry::Environment::uniform(grid, sun,
+                                            std::vector<double>(grid.size(), kSunIrradiance),
+                                            std::vector<double>(grid.size(), kSkyRadiance));
+}
+
+}  // namespace
+
+TracerRig::TracerRig(const model::Scene& scene, const scene::GeometryScene& geometry,
+                     std::size_t bands)
+    : grid(make_grid(bands)),
+      materials(scene.materials, grid),
+      environment(make_environment(grid)),
+      tracer(geometry, materials, environment) {}
+
+TracerTiming time_tracer(const radiometry::PathTracer& tracer, const radiometry::RaySource& source,
+                         std::uint64_t count, std::uint64_t samples,
+                         const radiometry::StreamKey& key, unsigned threads, unsigned repeats,
+                         const Context& context) {
+    radiometry::ProblemBatch batch;
+    batch.key = key;
+    batch.source = &source;
+    batch.convergence = {samples, samples, 0.0};
+    Context run = context;
+    run.threads = threads;
+    TracerTiming best;
+    for (unsigned r = 0; r < std::max(1u, repeats); ++r) {
+        TracerTiming t;
+        const auto start = std::chrono::steady_clock::now();
+        for (std::uint64_t first = 0; first < count; first += kBatchProblems) {
+            batch.first_problem = first;
+            batch.count = std::min(kBatchProblems, count - first);
+            const radiometry::Solutions solutions = radiometry::solve(tracer, batch, run);
+            t.rays += solutions.rays;
+            for (const std::uint64_t n : solutions.samples) t.paths += n;
+        }
+        t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (r == 0 || t.seconds < best.seconds) best = t;
+    }
+    return best;
+}
+
+TracerTiming time_trace_only(const radiometry::PathTracer& tracer,
+                             const radiometry::RaySource& source, std::uint64_t count,
+                             std::uint64_t samples, const radiometry::StreamKey& key,
+                             unsigned threads, unsigned repeats) {
+    struct Workspace {
+        explicit Workspace(std::size_t bands) : scratch(bands), radiance(bands) {}
+        radiometry::PathScratch scratch;
+        std::vector<double> radiance;
+        double checksum = 0.0;  ///< keeps the compiler from dropping the work
+    };
+    tbb::task_arena arena(threads == 0 ? tbb::task_arena::automatic : static_cast<int>(threads));
+    TracerTiming best;
+    for (unsigned r = 0; r < std::max(1u, repeats); ++r) {
+        tbb::enumerable_thread_specific<Workspace> workspaces(
+            [&] { return Workspace(tracer.bands()); });
+        const auto start = std::chrono::steady_clock::now();
+        arena.execute([&] {
+            tbb::parallel_for(
+                tbb::blocked_range<std::uint64_t>(0, count, 16),
+                [&](const tbb::blocked_range<std::uint64_t>& range) {
+                    Workspace& ws = workspaces.local();
+                    for (std::uint64_t p = range.begin(); p != range.end(); ++p) {
+                        for (std::uint64_t n = 0; n < samples; ++n) {
+                            RandomStream rng(key.seed, {key.plugin, key.task, key.capture, p, n});
+                            const radiometry::SampleRay ray = source.generate(p, n, rng);
+                            tracer.trace(ray, rng, ws.scratch, ws.radiance);
+                            ws.checksum += ws.radiance[0];
+                        }
+                    }
+                });
+        });
+        TracerTiming t;
+        t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        t.paths = count * samples;
+        for (const Workspace& ws : workspaces) t.rays += ws.scratch.rays;
+        if (r == 0 || t.seconds < best.seconds) best = t;
+    }
+    return best;
+}
+
+}  // namespace glint::bench
