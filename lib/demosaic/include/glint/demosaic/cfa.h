@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// Colour filter array layouts as glint defines them: which filter covers pixel (x, y), x the
-// sample (column) and y the line (row), both from 0 at the top-left pixel of the image.
+// Colour filter array layouts as glint defines them, in demosaicing's (x, y) terms: which
+// filter covers pixel (x, y), x the sample (column) and y the line (row), both from 0 at the
+// top-left pixel of the image. The layouts are defined once, in glint/detect/cfa.h (the
+// mosaic glint-detect writes); this header names them for the demosaicing code.
 //
 // Bayer (period 2). The phase names the 2×2 block read left to right, top to bottom; its
 // first letter is the filter of pixel (0, 0):
@@ -22,41 +24,35 @@
 #pragma once
 
 #include <cstddef>
-#include <optional>
-#include <string_view>
+
+#include "glint/detect/cfa.h"
 
 namespace glint::demosaic {
 
-/// The filter over one pixel.
-enum class CfaColor { red = 0, green = 1, blue = 2, pan = 3 };
-
-/// A colour filter array layout.
-enum class CfaPattern { bayer, truesense };
-
-/// The phase of a Bayer layout: the 2×2 block from pixel (0, 0), row by row.
-enum class BayerPhase { rggb, grbg, gbrg, bggr };
+/// The filter over a pixel (red, green, blue, pan: the values index colour planes).
+using CfaColor = detect::CfaFilter;
+using detect::BayerPhase;
+using detect::bayer_phase_from_name;
+using detect::bayer_phase_name;
+using detect::cfa_pattern_from_name;
+using detect::cfa_pattern_name;
+using detect::cfa_period;
+using detect::CfaPattern;
 
 /// "red", "green", "blue", "pan".
-const char* cfa_color_name(CfaColor color);
-/// "bayer", "truesense".
-const char* cfa_pattern_name(CfaPattern pattern);
-/// "rggb", "grbg", "gbrg", "bggr".
-const char* bayer_phase_name(BayerPhase phase);
+inline const char* cfa_color_name(CfaColor color) { return detect::cfa_filter_name(color); }
 
-/// Pattern for a command-line name (bayer, truesense; case-insensitive); nullopt otherwise.
-std::optional<CfaPattern> cfa_pattern_from_name(std::string_view name);
-/// Phase for a command-line name (rggb, grbg, gbrg, bggr; case-insensitive); nullopt otherwise.
-std::optional<BayerPhase> bayer_phase_from_name(std::string_view name);
-
-/// Side of the repeating block: 2 for Bayer, 4 for TrueSense. An image must be at least this
-/// many samples wide and lines tall to be demosaiced.
-std::size_t cfa_period(CfaPattern pattern);
-
-/// Filter of pixel (x, y) of a Bayer layout.
-CfaColor bayer_color(BayerPhase phase, std::size_t x, std::size_t y);
-/// Filter of pixel (x, y) of the TrueSense layout.
-CfaColor truesense_color(std::size_t x, std::size_t y);
-/// Filter of pixel (x, y) of `pattern` (the phase is used for Bayer only).
-CfaColor cfa_color(CfaPattern pattern, BayerPhase phase, std::size_t x, std::size_t y);
+/// The filter over pixel (x, y) of `pattern` (the phase matters for Bayer only).
+inline CfaColor cfa_color(CfaPattern pattern, BayerPhase phase, std::size_t x, std::size_t y) {
+    return detect::cfa_filter_at(pattern, phase, y, x);
+}
+/// The Bayer filter over pixel (x, y).
+inline CfaColor bayer_color(BayerPhase phase, std::size_t x, std::size_t y) {
+    return cfa_color(CfaPattern::bayer, phase, x, y);
+}
+/// The TrueSense filter over pixel (x, y).
+inline CfaColor truesense_color(std::size_t x, std::size_t y) {
+    return cfa_color(CfaPattern::truesense, BayerPhase::rggb, x, y);
+}
 
 }  // namespace glint::demosaic
