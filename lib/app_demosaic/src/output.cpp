@@ -80,7 +80,7 @@ std::string write_envi(const fs::path& output, const demosaic::RgbImage& image,
     h.set_extra("glint tool", "glint-demosaic");
     h.set_extra("glint version", version());
     h.set_extra("glint source", provenance.source.string());
-    if (!provenance.command_line.empty()) h.set_extra("glint command", provenance.command_line);
+    if (!provenance.command_line.empty()) h.set_extra("glint command line", provenance.command_line);
     h.set_extra("glint cfa pattern", demosaic::cfa_pattern_name(provenance.used.pattern));
     if (provenance.used.pattern == demosaic::CfaPattern::bayer) {
         h.set_extra("glint cfa phase", demosaic::bayer_phase_name(provenance.used.phase));

@@ -90,7 +90,7 @@ TEST(RunDemosaic, EnviOutputHoldsTheDemosaicedValuesAndProvenance) {
     EXPECT_EQ(h.find_extra("glint cfa phase"), "gbrg");
     EXPECT_EQ(h.find_extra("glint demosaic method"), "mhc");
     EXPECT_EQ(h.find_extra("glint source"), (dir / "in.img").string());
-    EXPECT_EQ(h.find_extra("glint command"), "glint-demosaic in.img out.img");
+    EXPECT_EQ(h.find_extra("glint command line"), "glint-demosaic in.img out.img");
 
     const dm::RgbImage expected = dm::demosaic_bayer_mhc(plane, dm::BayerPhase::gbrg);
     ASSERT_EQ(values.size(), expected.rgb.size());

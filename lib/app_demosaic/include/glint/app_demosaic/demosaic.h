@@ -12,7 +12,7 @@
 // (complex → float32/float64; image inputs: float32); integer types are rounded and clamped
 // (MHC may overshoot the input's range near edges; ask for float32 to keep it). Band names
 // R, G, B; data units copied from an ENVI input; provenance keys `glint tool`, `glint
-// version`, `glint source`, `glint command` (when given), `glint cfa pattern`, `glint cfa
+// version`, `glint source`, `glint command line` (when given), `glint cfa pattern`, `glint cfa
 // phase` (Bayer only) and `glint demosaic method`.
 //
 // Pattern and phase: as given, else as the input's header records them (`glint cfa pattern`,
@@ -61,7 +61,7 @@ struct DemosaicToolOptions {
     bool raw = false;                           ///< image outputs: no stretch
     std::optional<int> bit_depth;               ///< image outputs: 8, 16 or 32
     std::optional<io::EnviDataType> data_type;  ///< ENVI outputs
-    std::string command_line;  ///< recorded as `glint command` in ENVI outputs when not empty
+    std::string command_line;  ///< recorded as `glint command line` in ENVI outputs when not empty
 };
 
 /// What glint-demosaic did.

@@ -25,7 +25,7 @@
 // uint8, int8/int16 → int16, uint16 → uint16, int32 → int32, uint32 → uint32, half/float →
 // float32, double → float64. Image channel names become band names; ENVI band metadata
 // (names, wavelengths, FWHM, units, description, extra keys) is kept for the selected
-// bands; provenance keys `glint tool`, `glint version`, `glint source` (and `glint command`
+// bands; provenance keys `glint tool`, `glint version`, `glint source` (and `glint command line`
 // when given) are set.
 #pragma once
 
@@ -61,7 +61,7 @@ struct ConvertOptions {
     bool raw = false;                           ///< no stretch
     std::optional<int> bit_depth;               ///< 8, 16, 32 (64 for ENVI)
     std::optional<io::EnviDataType> data_type;  ///< ENVI output type
-    std::string command_line;  ///< recorded as `glint command` in ENVI outputs when not empty
+    std::string command_line;  ///< recorded as `glint command line` in ENVI outputs when not empty
 };
 
 /// What convert did.
