@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <iostream>
+#include <optional>
 #include <string>
 
 #include "glint/core/atomic_file.h"
@@ -35,10 +36,14 @@ int main(int argc, char** argv) {
         app.add_option("--samples", options.samples, "Samples per pixel")
             ->check(CLI::Range(1u, 1u << 20))
             ->capture_default_str();
+        app.add_option("--tile", options.tile, "Pixels per solve() call")
+            ->check(CLI::Range(1u, 1u << 28))
+            ->capture_default_str();
         app.add_option("--bands", options.bands, "Bands of the ratio and scaling runs")
             ->check(CLI::Range(1u, 4096u))
             ->capture_default_str();
-        app.add_option("--repeats", options.repeats, "Tracer runs: keep the fastest of N")
+        app.add_option("--repeats", options.repeats,
+                       "Run every measurement N times; keep the fastest")
             ->check(CLI::Range(1u, 100u))
             ->capture_default_str();
         app.add_option("--min-bare-seconds", options.min_bare_seconds,
@@ -66,12 +71,16 @@ int main(int argc, char** argv) {
             if (unset("--buildings")) options.scene.buildings = quick.scene.buildings;
         }
         options.command_line = command_line;
+        // Opened first, so that an unwritable output fails before a minute of measuring.
+        std::optional<glint::AtomicFile> file;
+        if (output != "-") file.emplace(output);
         const std::string text = glint::bench::run_benchmark(options, ctx).dump(2) + "\n";
-        if (output == "-") {
+        if (file) {
+            file->write(text);
+            file->commit();
+        } else {
             std::cout << text << std::flush;
             if (!std::cout) throw glint::io_error("cannot write the report to stdout");
-        } else {
-            glint::write_file_atomically(output, text);
         }
         return glint::kExitSuccess;
     };

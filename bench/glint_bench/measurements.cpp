@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -117,6 +118,12 @@ double agreement(const std::vector<float>& bare, const std::vector<double>& glin
     return double(same) / double(bare.size());
 }
 
+std::string hex(std::uint64_t value) {
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
+    return text;
+}
+
 Json bare_json(const BareTiming& t) {
     return {{"seconds", sig4(t.seconds)},
             {"rays", t.rays},
@@ -132,7 +139,8 @@ Json tracer_json(const TracerTiming& t) {
             {"rays_per_path", sig4(ratio(double(t.rays), double(t.paths)))},
             {"rays_per_s", sig4(t.rays_per_s())},
             {"paths_per_s", sig4(t.paths_per_s())},
-            {"seconds_per_path", t.paths > 0 ? t.seconds / double(t.paths) : 0.0}};
+            {"seconds_per_path", t.paths > 0 ? t.seconds / double(t.paths) : 0.0},
+            {"radiance_hash", hex(t.radiance_hash)}};
 }
 
 Json target(double value, double goal, bool at_least) {
@@ -210,7 +218,7 @@ Json run_benchmark(const BenchOptions& options, const Context& context) {
     const TracerRig& main_rig = *rigs.at(options.bands);
     log.info("warming up the tracer");
     time_tracer(main_rig.tracer, camera, std::min<std::uint64_t>(problems, 4096), options.samples,
-                key, threads, 1, context);
+                options.tile, key, threads, 1, context);
     std::map<unsigned, TracerTiming> by_bands;
     std::map<unsigned, TracerTiming> trace_only;
     for (const auto& [b, rig] : rigs) {
@@ -218,8 +226,8 @@ Json run_benchmark(const BenchOptions& options, const Context& context) {
                  std::to_string(threads) + " thread(s)");
         const std::string name = "tracer_" + std::to_string(b) + "_bands";
         by_bands[b] = interference.run(name, [&] {
-            return time_tracer(rig->tracer, camera, problems, options.samples, key, threads,
-                               options.repeats, context);
+            return time_tracer(rig->tracer, camera, problems, options.samples, options.tile, key,
+                               threads, options.repeats, context);
         });
         trace_only[b] = interference.run(name + "_trace_only", [&] {
             return time_trace_only(rig->tracer, camera, problems, options.samples, key, threads,
@@ -232,7 +240,7 @@ Json run_benchmark(const BenchOptions& options, const Context& context) {
         threads > 1 ? interference.run("tracer_one_thread",
                                        [&] {
                                            return time_tracer(main_rig.tracer, camera, problems,
-                                                              options.samples, key, 1,
+                                                              options.samples, options.tile, key, 1,
                                                               options.repeats, context);
                                        })
                     : tracer_n;
@@ -303,6 +311,7 @@ Json run_benchmark(const BenchOptions& options, const Context& context) {
                        std::to_string(options.image_size) + " pixels, 3000 m above the terrain, " +
                        "+/-29 deg"},
         {"samples_per_pixel", options.samples},
+        {"tile_problems", options.tile},
         {"primary_rays", primary.size()},
         {"incoherent_rays", incoherent.size()},
         {"incoherent", "one cosine-distributed ray from each primary hit, about its normal"},
@@ -317,6 +326,8 @@ Json run_benchmark(const BenchOptions& options, const Context& context) {
     report["tracer"] = tracer_json(tracer_n);
     report["tracer"]["bands"] = options.bands;
     report["tracer"]["one_thread"] = tracer_json(tracer_1);
+    report["tracer"]["same_radiance_on_1_and_n_threads"] =
+        tracer_1.radiance_hash == tracer_n.radiance_hash;
     report["ratio"] = {
         {"primary", sig4(ratio_primary)},
         {"incoherent", sig4(ratio_incoherent)},

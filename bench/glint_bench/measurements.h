@@ -17,8 +17,10 @@ namespace glint::bench {
 
 /// Options of glint-bench.
 struct BenchOptions {
-    unsigned image_size = 1024;     ///< the camera's image is image_size × image_size pixels
-    unsigned samples = 1;           ///< samples per pixel
+    unsigned image_size = 1024;  ///< the camera's image is image_size × image_size pixels
+    unsigned samples = 1;        ///< samples per pixel
+    /// Pixels per solve() call (a 64 × 64 tile); each call allocates its own result arrays.
+    unsigned tile = 4096;
     unsigned bands = 16;            ///< band count of the ratio and thread-scaling runs
     unsigned repeats = 1;           ///< tracer runs: the fastest of this many
     double min_bare_seconds = 2.0;  ///< bare Embree: passes over the rays for at least this long

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <numbers>
 #include <vector>
 
@@ -22,15 +23,24 @@ constexpr double kSunAzimuthDeg = 150.0;
 /// Flat solar irradiance at the surface, W/(cm² µm), and sky radiance, W/(cm² sr µm).
 constexpr double kSunIrradiance = 0.15;
 constexpr double kSkyRadiance = 0.004;
-/// Problems per solve() call: an image is solved in batches of this many pixels, as a
-/// renderer would solve it in tiles, so that 256 bands of output stay a modest allocation.
-constexpr std::uint64_t kBatchProblems = 65536;
 
 SpectralGrid make_grid(std::size_t bands) {
     if (bands <= 1) return SpectralGrid(std::vector<double>{0.55});
     std::vector<double> w(bands);
     for (std::size_t i = 0; i < bands; ++i) w[i] = 0.4 + 2.1 * double(i) / double(bands - 1);
     return SpectralGrid(std::move(w));
+}
+
+constexpr std::uint64_t kHashStart = 14695981039346656037ull;
+
+/// Folds the bit patterns of `values` into `hash` (FNV-1a over 64-bit words).
+std::uint64_t hash_bits(std::uint64_t hash, const std::vector<double>& values) {
+    for (const double v : values) {
+        std::uint64_t word = 0;
+        std::memcpy(&word, &v, sizeof word);
+        hash = (hash ^ word) * 1099511628211ull;
+    }
+    return hash;
 }
 
 radiometry::Environment make_environment(const SpectralGrid& grid) {
@@ -53,9 +63,10 @@ TracerRig::TracerRig(const model::Scene& scene, const scene::GeometryScene& geom
       tracer(geometry, materials, environment) {}
 
 TracerTiming time_tracer(const radiometry::PathTracer& tracer, const radiometry::RaySource& source,
-                         std::uint64_t count, std::uint64_t samples,
+                         std::uint64_t count, std::uint64_t samples, std::uint64_t tile,
                          const radiometry::StreamKey& key, unsigned threads, unsigned repeats,
                          const Context& context) {
+    tile = std::max<std::uint64_t>(1, tile);
     radiometry::ProblemBatch batch;
     batch.key = key;
     batch.source = &source;
@@ -65,15 +76,23 @@ TracerTiming time_tracer(const radiometry::PathTracer& tracer, const radiometry:
     TracerTiming best;
     for (unsigned r = 0; r < std::max(1u, repeats); ++r) {
         TracerTiming t;
-        const auto start = std::chrono::steady_clock::now();
-        for (std::uint64_t first = 0; first < count; first += kBatchProblems) {
+        t.radiance_hash = kHashStart;
+        for (std::uint64_t first = 0; first < count; first += tile) {
             batch.first_problem = first;
-            batch.count = std::min(kBatchProblems, count - first);
-            const radiometry::Solutions solutions = radiometry::solve(tracer, batch, run);
+            batch.count = std::min(tile, count - first);
+            const auto start = std::chrono::steady_clock::now();
+            radiometry::Solutions solutions = radiometry::solve(tracer, batch, run);
+            t.seconds +=
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             t.rays += solutions.rays;
             for (const std::uint64_t n : solutions.samples) t.paths += n;
+            t.radiance_hash = hash_bits(t.radiance_hash, solutions.radiance_w_per_cm2_sr_um);
+            // Freed inside the timed part next time round, as a renderer frees its tiles.
+            const auto release = std::chrono::steady_clock::now();
+            solutions = {};
+            t.seconds +=
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - release).count();
         }
-        t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (r == 0 || t.seconds < best.seconds) best = t;
     }
     return best;

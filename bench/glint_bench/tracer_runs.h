@@ -37,16 +37,19 @@ struct TracerTiming {
     double seconds = 0.0;
     std::uint64_t rays = 0;   ///< Solutions::rays: primary, bounce and shadow rays
     std::uint64_t paths = 0;  ///< samples traced
+    /// A hash of every radiance value's bits (time_tracer only): equal hashes, equal results.
+    std::uint64_t radiance_hash = 0;
     double rays_per_s() const noexcept { return seconds > 0.0 ? double(rays) / seconds : 0.0; }
     double paths_per_s() const noexcept { return seconds > 0.0 ? double(paths) / seconds : 0.0; }
 };
 
 /// Solves problems 0 … count − 1 of `source` with `samples` samples each (a fixed count, no
-/// convergence test) on `threads` threads, in solve() calls of 65,536 problems (tiles), and
-/// does that `repeats` times; returns the fastest run. `context`
-/// supplies the log, progress and cancel flag; its thread count is replaced.
+/// convergence test) on `threads` threads, one solve() call per `tile` problems (as a
+/// renderer solves an image tile by tile), and does that `repeats` times; returns the fastest
+/// run. `context` supplies the log, progress and cancel flag; its thread count is replaced.
+/// The radiance hash is computed outside the timed calls.
 TracerTiming time_tracer(const radiometry::PathTracer& tracer, const radiometry::RaySource& source,
-                         std::uint64_t count, std::uint64_t samples,
+                         std::uint64_t count, std::uint64_t samples, std::uint64_t tile,
                          const radiometry::StreamKey& key, unsigned threads, unsigned repeats,
                          const Context& context);
 
