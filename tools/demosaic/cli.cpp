@@ -5,7 +5,6 @@
 // image stretch of glint-envi convert.
 #include "cli.h"
 
-#include "glint/app_envi/convert.h"
 #include "glint/core/error.h"
 
 namespace glint::tools::demosaic {
@@ -85,7 +84,7 @@ void DemosaicCli::finish() {
     if (m_app->count("--gamma") > 0) o.gamma = m_gamma;
     if (m_app->count("--bit-depth") > 0) o.bit_depth = m_bit_depth;
     if (m_app->count("--data-type") > 0) {
-        o.data_type = app_envi::envi_type_from_string(m_data_type);
+        o.data_type = io::envi_type_from_string(m_data_type);
         if (!o.data_type) throw usage_error("unknown ENVI data type '" + m_data_type + "'");
     }
     o.command_line = m_command_line;

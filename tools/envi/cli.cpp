@@ -135,7 +135,7 @@ void EnviCli::finish_convert() {
     if (c.count("--max") > 0) o.max = m_max;
     if (c.count("--bit-depth") > 0) o.bit_depth = m_bit_depth;
     if (c.count("--data-type") > 0) {
-        o.data_type = app_envi::envi_type_from_string(m_data_type);
+        o.data_type = io::envi_type_from_string(m_data_type);
         if (!o.data_type) throw usage_error("unknown ENVI data type '" + m_data_type + "'");
     }
     o.command_line = m_command_line;

@@ -28,24 +28,9 @@ io::EnviDataType default_envi_type(const MosaicSource& source) {
     }
 }
 
-io::ImageFormat image_format_of(app_envi::OutputKind kind) {
-    switch (kind) {
-        case app_envi::OutputKind::tiff:
-            return io::ImageFormat::tiff;
-        case app_envi::OutputKind::jpeg:
-            return io::ImageFormat::jpeg;
-        case app_envi::OutputKind::exr:
-            return io::ImageFormat::exr;
-        case app_envi::OutputKind::ppm:
-            return io::ImageFormat::ppm;
-        default:
-            return io::ImageFormat::png;
-    }
-}
-
 /// Min/max or percentile limits over the three channels together.
-app_envi::StretchLimits data_limits(const demosaic::RgbImage& image, double percent, Context& ctx) {
-    app_envi::PercentileHistogram histogram;
+io::StretchLimits data_limits(const demosaic::RgbImage& image, double percent, Context& ctx) {
+    io::PercentileHistogram histogram;
     for (double v : image.rgb) histogram.observe(v);
     if (percent > 0) {
         histogram.begin_counting();
@@ -80,7 +65,8 @@ std::string write_envi(const fs::path& output, const demosaic::RgbImage& image,
     h.set_extra("glint tool", "glint-demosaic");
     h.set_extra("glint version", version());
     h.set_extra("glint source", provenance.source.string());
-    if (!provenance.command_line.empty()) h.set_extra("glint command line", provenance.command_line);
+    if (!provenance.command_line.empty())
+        h.set_extra("glint command line", provenance.command_line);
     h.set_extra("glint cfa pattern", demosaic::cfa_pattern_name(provenance.used.pattern));
     if (provenance.used.pattern == demosaic::CfaPattern::bayer) {
         h.set_extra("glint cfa phase", demosaic::bayer_phase_name(provenance.used.phase));
@@ -100,10 +86,10 @@ std::string write_envi(const fs::path& output, const demosaic::RgbImage& image,
     return type_name;
 }
 
-void write_picture(const DemosaicToolOptions& o, app_envi::OutputKind kind,
+void write_picture(const DemosaicToolOptions& o, io::OutputKind kind,
                    const demosaic::RgbImage& image, const Provenance& provenance,
                    DemosaicToolResult& result, Context& ctx) {
-    const io::ImageFormat format = image_format_of(kind);
+    const io::ImageFormat format = io::image_format_of(kind);
     io::PixelType type = io::default_pixel_type(format);
     if (o.bit_depth) {
         const auto chosen = io::pixel_type_for_bit_depth(format, *o.bit_depth);
@@ -117,7 +103,7 @@ void write_picture(const DemosaicToolOptions& o, app_envi::OutputKind kind,
     const bool integer = io::pixel_type_is_integer(type);
     const double gamma = o.gamma.value_or(1.0);
     if (o.min) {
-        result.limits = app_envi::StretchLimits{*o.min, *o.max};
+        result.limits = io::StretchLimits{*o.min, *o.max};
     } else if (o.percent) {
         result.limits = data_limits(image, *o.percent, ctx);
     } else if (!o.raw && (integer || gamma != 1.0)) {
@@ -142,7 +128,7 @@ void write_picture(const DemosaicToolOptions& o, app_envi::OutputKind kind,
         ctx.cancel.throw_if_cancelled();
         for (std::size_t i = 0; i < line.size(); ++i) {
             const double v = image.rgb[y * line.size() + i];
-            line[i] = result.limits ? scale * app_envi::stretch_value(v, *result.limits, gamma) : v;
+            line[i] = result.limits ? scale * io::stretch_value(v, *result.limits, gamma) : v;
         }
         writer.write_line(line);
         ctx.progress.update("demosaic-write", y + 1, image.height);

@@ -1,13 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // glint-demosaic's entry point: option names and checks, the output kind, then read →
 // demosaic → write (the stages are in source.cpp and output.cpp).
-#include <algorithm>
-#include <cctype>
-#include <cmath>
 
 #include "glint/core/atomic_file.h"
 #include "glint/core/error.h"
-#include "glint/core/text.h"
 #include "glint/io/image.h"
 #include "stages.h"
 
@@ -15,49 +11,12 @@ namespace glint::app_demosaic {
 namespace {
 
 namespace fs = std::filesystem;
-using app_envi::OutputKind;
-
-std::string lower(std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return text;
-}
-
-OutputKind output_kind(const DemosaicToolOptions& o) {
-    if (!o.format.empty()) {
-        const auto kind = app_envi::output_kind_from_name(o.format);
-        if (!kind) {
-            throw usage_error("unknown output format '" + o.format +
-                              "' (expected png, tiff, jpeg, exr, ppm or envi)");
-        }
-        return *kind;
-    }
-    if (const auto image = io::image_format_from_extension(o.output)) {
-        return *app_envi::output_kind_from_name(io::image_format_name(*image));
-    }
-    const std::string ext = lower(o.output.extension().string());
-    for (const char* envi : {".img", ".dat", ".raw", ".bsq", ".bil", ".bip", ".envi"}) {
-        if (ext == envi) return OutputKind::envi;
-    }
-    throw usage_error("cannot tell the output format from the name " + o.output.string() +
-                      "; use --format png|tiff|jpeg|exr|ppm|envi");
-}
+using io::OutputKind;
 
 void check_options(const DemosaicToolOptions& o, OutputKind kind) {
     if (o.input.empty()) throw usage_error("no input file named");
     if (o.output.empty()) throw usage_error("no output file named");
-    if (o.gamma && !(*o.gamma > 0 && std::isfinite(*o.gamma))) {
-        throw usage_error("--gamma must be a positive number, got " + format_shortest(*o.gamma));
-    }
-    if (o.percent && !(*o.percent >= 0 && *o.percent < 50)) {
-        throw usage_error("--percent must be in [0, 50), got " + format_shortest(*o.percent));
-    }
-    if (o.min.has_value() != o.max.has_value()) throw usage_error("--min and --max go together");
-    if (o.min && !(std::isfinite(*o.min) && std::isfinite(*o.max) && *o.min < *o.max)) {
-        throw usage_error("--min must be less than --max (got " + format_shortest(*o.min) +
-                          " and " + format_shortest(*o.max) + ")");
-    }
-    if (o.min && o.percent) throw usage_error("give --percent or --min/--max, not both");
+    io::check_stretch_request({o.gamma, o.percent, o.min, o.max});
     const bool stretch_asked = o.percent || o.min || (o.gamma && *o.gamma != 1.0);
     if (o.raw && stretch_asked) {
         throw usage_error(
@@ -150,7 +109,7 @@ demosaic::DemosaicMethod parse_method(const std::string& name) {
 }
 
 DemosaicToolResult run_demosaic(const DemosaicToolOptions& o, Context& ctx) {
-    const OutputKind kind = output_kind(o);
+    const OutputKind kind = io::output_kind_of(o.output, o.format);
     check_options(o, kind);
     const internal::MosaicSource source = internal::read_mosaic(o.input, ctx);
     ensure_not_an_input(o.output, source.files);

@@ -41,7 +41,7 @@ std::string write_envi(const std::filesystem::path& output, const demosaic::RgbI
 
 /// Writes an image of `kind` with the stretch the options ask for; fills the result's
 /// limits and stored type.
-void write_picture(const DemosaicToolOptions& options, app_envi::OutputKind kind,
+void write_picture(const DemosaicToolOptions& options, io::OutputKind kind,
                    const demosaic::RgbImage& image, const Provenance& provenance,
                    DemosaicToolResult& result, Context& ctx);
 

@@ -19,6 +19,9 @@ namespace {
 namespace fs = std::filesystem;
 using internal::format_number;
 using internal::RasterSource;
+using io::OutputKind;
+using io::PercentileHistogram;
+using io::StretchLimits;
 
 enum class StretchMode { none, minmax, percent, fixed };
 
@@ -28,60 +31,11 @@ std::string lower(std::string text) {
     return text;
 }
 
-OutputKind output_kind(const ConvertOptions& o) {
-    if (!o.format.empty()) {
-        const auto kind = output_kind_from_name(o.format);
-        if (!kind) {
-            throw usage_error("unknown output format '" + o.format +
-                              "' (expected png, tiff, jpeg, exr, ppm or envi)");
-        }
-        return *kind;
-    }
-    if (const auto image = io::image_format_from_extension(o.output)) {
-        return *output_kind_from_name(io::image_format_name(*image));
-    }
-    const std::string ext = lower(o.output.extension().string());
-    if (ext == ".img" || ext == ".dat" || ext == ".raw" || ext == ".bsq" || ext == ".bil" ||
-        ext == ".bip" || ext == ".envi") {
-        return OutputKind::envi;
-    }
-    throw usage_error("cannot tell the output format from the name " + o.output.string() +
-                      "; use --format png|tiff|jpeg|exr|ppm|envi");
-}
-
-io::ImageFormat image_format_of(OutputKind kind) {
-    switch (kind) {
-        case OutputKind::tiff:
-            return io::ImageFormat::tiff;
-        case OutputKind::jpeg:
-            return io::ImageFormat::jpeg;
-        case OutputKind::exr:
-            return io::ImageFormat::exr;
-        case OutputKind::ppm:
-            return io::ImageFormat::ppm;
-        default:
-            return io::ImageFormat::png;
-    }
-}
-
 void check_options(const ConvertOptions& o, OutputKind kind) {
     if (o.input.empty()) throw usage_error("no input file named");
     if (o.output.empty()) throw usage_error("no output file named");
     if (o.band && !o.bands.empty()) throw usage_error("give --band or --bands, not both");
-    if (o.gamma && !(*o.gamma > 0 && std::isfinite(*o.gamma))) {
-        throw usage_error("--gamma must be a positive number, got " + format_number(*o.gamma));
-    }
-    if (o.percent && !(*o.percent >= 0 && *o.percent < 50)) {
-        throw usage_error("--percent must be in [0, 50), got " + format_number(*o.percent));
-    }
-    if (o.min.has_value() != o.max.has_value()) {
-        throw usage_error("--min and --max go together");
-    }
-    if (o.min && !(std::isfinite(*o.min) && std::isfinite(*o.max) && *o.min < *o.max)) {
-        throw usage_error("--min must be less than --max (got " + format_number(*o.min) + " and " +
-                          format_number(*o.max) + ")");
-    }
-    if (o.min && o.percent) throw usage_error("give --percent or --min/--max, not both");
+    io::check_stretch_request({o.gamma, o.percent, o.min, o.max});
     const bool stretch_asked = o.percent || o.min || o.per_band || (o.gamma && *o.gamma != 1.0);
     if (o.raw && stretch_asked) {
         throw usage_error(
@@ -210,7 +164,7 @@ std::vector<std::string> channel_names(const RasterSource& source,
 
 ConvertResult to_image(const ConvertOptions& o, OutputKind kind, RasterSource& source,
                        const std::vector<std::size_t>& bands, Context& ctx) {
-    const io::ImageFormat format = image_format_of(kind);
+    const io::ImageFormat format = io::image_format_of(kind);
     io::PixelType type = io::default_pixel_type(format);
     if (o.bit_depth) {
         const auto chosen = io::pixel_type_for_bit_depth(format, *o.bit_depth);
@@ -266,8 +220,9 @@ ConvertResult to_image(const ConvertOptions& o, OutputKind kind, RasterSource& s
             double* dst = out.data() + x * bands.size();
             for (std::size_t c = 0; c < bands.size(); ++c) {
                 const double v = pixel[bands[c]];
-                dst[c] =
-                    result.limits.empty() ? v : scale * stretch_value(v, result.limits[c], gamma);
+                dst[c] = result.limits.empty()
+                             ? v
+                             : scale * io::stretch_value(v, result.limits[c], gamma);
             }
         }
         writer.write_line(out);
@@ -378,38 +333,8 @@ ConvertResult to_envi(const ConvertOptions& o, RasterSource& source,
 
 }  // namespace
 
-std::optional<OutputKind> output_kind_from_name(const std::string& name) {
-    if (lower(name) == "envi") return OutputKind::envi;
-    const auto format = io::image_format_from_name(name);
-    if (!format) return std::nullopt;
-    switch (*format) {
-        case io::ImageFormat::png:
-            return OutputKind::png;
-        case io::ImageFormat::tiff:
-            return OutputKind::tiff;
-        case io::ImageFormat::jpeg:
-            return OutputKind::jpeg;
-        case io::ImageFormat::exr:
-            return OutputKind::exr;
-        case io::ImageFormat::ppm:
-            return OutputKind::ppm;
-    }
-    return std::nullopt;
-}
-
-std::optional<io::EnviDataType> envi_type_from_string(const std::string& text) {
-    const std::string name = lower(text);
-    for (long code : {1L, 2L, 3L, 4L, 5L, 6L, 9L, 12L, 13L, 14L, 15L}) {
-        const auto type = io::envi_type_from_code(code);
-        if (type && (name == io::envi_type_name(*type) || name == std::to_string(code))) {
-            return type;
-        }
-    }
-    return std::nullopt;
-}
-
 ConvertResult run_convert(const ConvertOptions& o, Context& ctx) {
-    const OutputKind kind = output_kind(o);
+    const OutputKind kind = io::output_kind_of(o.output, o.format);
     check_options(o, kind);
     std::unique_ptr<RasterSource> source;
     try {

@@ -238,6 +238,16 @@ std::optional<EnviDataType> envi_type_from_code(long code) {
     return std::nullopt;
 }
 
+std::optional<EnviDataType> envi_type_from_string(std::string_view text) {
+    const std::string name = normalize_key(text);
+    for (const TypeInfo& info : kTypes) {
+        if (name == info.name || name == std::to_string(static_cast<long>(info.type))) {
+            return info.type;
+        }
+    }
+    return std::nullopt;
+}
+
 const char* envi_type_name(EnviDataType type) {
     const TypeInfo* info = find_type(type);
     return info ? info->name : "invalid";

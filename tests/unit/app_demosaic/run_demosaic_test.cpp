@@ -75,7 +75,7 @@ TEST(RunDemosaic, EnviOutputHoldsTheDemosaicedValuesAndProvenance) {
     o.command_line = "glint-demosaic in.img out.img";
     Context ctx;
     const DemosaicToolResult result = run_demosaic(o, ctx);
-    EXPECT_EQ(result.kind, app_envi::OutputKind::envi);
+    EXPECT_EQ(result.kind, io::OutputKind::envi);
     EXPECT_EQ(result.stored_type, "uint16");
     EXPECT_EQ(result.used.method, dm::DemosaicMethod::mhc);
 

@@ -70,6 +70,18 @@ TEST(EnviTypes, SizesNamesAndCodes) {
     EXPECT_STREQ(interleave_name(Interleave::bil), "bil");
 }
 
+TEST(EnviTypes, FromStringTakesNamesInAnyCaseAndCodes) {
+    for (long code : {1, 2, 3, 4, 5, 6, 9, 12, 13, 14, 15}) {
+        const EnviDataType type = *envi_type_from_code(code);
+        EXPECT_EQ(envi_type_from_string(envi_type_name(type)), type) << code;
+        EXPECT_EQ(envi_type_from_string(std::to_string(code)), type) << code;
+    }
+    EXPECT_EQ(envi_type_from_string("Float32"), EnviDataType::float32);
+    EXPECT_EQ(envi_type_from_string("float"), std::nullopt);
+    EXPECT_EQ(envi_type_from_string("7"), std::nullopt);
+    EXPECT_EQ(envi_type_from_string(""), std::nullopt);
+}
+
 TEST(EnviHeaderParse, MinimalHeaderGetsEnviDefaults) {
     const EnviHeader h = parse_envi_header(kMinimal, "x.hdr");
     EXPECT_EQ(h.samples, 4u);

@@ -282,7 +282,7 @@ TEST(EnviWriterHeader, ExtraKeysSetWhileWritingReachTheHeader) {
     EnviWriter writer(path, header_for(EnviDataType::float64, 1, 1, 1));
     writer.write_line(std::vector<double>{2.0});
     writer.set_extra("glint capture times", "{0.5, 1.5}");
-    writer.set_extra("glint capture times", "{0.5}");  // replaces
+    writer.set_extra("glint capture times", "{0.5}");       // replaces
     EXPECT_THROW(writer.set_extra("samples", "3"), Error);  // a standard key
     writer.commit();
     const std::string text = read_text(dir.path() / "late.img.hdr");

@@ -19,10 +19,10 @@
 // `glint cfa phase`, the keys glint-detect writes), else bayer and rggb. Given values that
 // differ from the header's are used, with a warning.
 //
-// Image outputs go through the stretch of glint-envi convert (app_envi/stretch.h), one
+// Image outputs go through the stretch of glint-envi convert (glint/io/stretch.h), one
 // stretch for the three channels so that colours keep their balance:
 //   fixed    min and max: s = clamp((v - min) / (max - min), 0, 1)
-//   percent  percent P in [0, 50): the percentile limits of stretch.h
+//   percent  percent P in [0, 50): the percentile limits of io/stretch.h
 //   min/max  the default for 8/16-bit outputs (and for float outputs given a gamma)
 //   none     raw, and the default for float (EXR, 32-bit TIFF) outputs: values unchanged
 // then s^(1/gamma), times 255 or 65535 and rounded for 8/16-bit outputs. PNG, JPEG and PPM
@@ -35,11 +35,11 @@
 #include <string>
 #include <vector>
 
-#include "glint/app_envi/convert.h"
-#include "glint/app_envi/stretch.h"
 #include "glint/core/context.h"
 #include "glint/demosaic/demosaic.h"
 #include "glint/io/envi.h"
+#include "glint/io/output_kind.h"
+#include "glint/io/stretch.h"
 
 namespace glint::app_demosaic {
 
@@ -69,8 +69,8 @@ struct DemosaicToolResult {
     std::size_t width = 0;
     std::size_t height = 0;
     demosaic::DemosaicOptions used;  ///< pattern, phase and method applied
-    app_envi::OutputKind kind = app_envi::OutputKind::envi;
-    std::optional<app_envi::StretchLimits> limits;  ///< image outputs with a stretch
+    io::OutputKind kind = io::OutputKind::envi;
+    std::optional<io::StretchLimits> limits;  ///< image outputs with a stretch
     std::string stored_type;  ///< "uint8", "uint16", "float" (images) or the ENVI type name
 };
 

@@ -8,9 +8,9 @@
 // the bands nearest 0.64, 0.55 and 0.46 µm (R,G,B), else 0,1,2. ENVI outputs keep every
 // band unless told otherwise.
 //
-// What reaches an image (see stretch.h for the limits):
+// What reaches an image (see glint/io/stretch.h for the limits):
 //   fixed    --min A --max B: s = clamp((v - A) / (B - A), 0, 1)
-//   percent  --percent P, 0 <= P < 50: s with the percentile limits of stretch.h
+//   percent  --percent P, 0 <= P < 50: s with the percentile limits of io/stretch.h
 //   min/max  the default for 8/16-bit outputs, and for float outputs given --gamma or
 //            --per-band: s with the minimum and maximum as limits
 //   none     --raw, and the default for float (32-bit, half) outputs: v unchanged
@@ -34,15 +34,13 @@
 #include <string>
 #include <vector>
 
-#include "glint/app_envi/stretch.h"
 #include "glint/core/context.h"
 #include "glint/io/envi.h"
 #include "glint/io/image.h"
+#include "glint/io/output_kind.h"
+#include "glint/io/stretch.h"
 
 namespace glint::app_envi {
-
-/// Output kind of convert.
-enum class OutputKind { png, tiff, jpeg, exr, ppm, envi };
 
 /// Options of `convert`.
 struct ConvertOptions {
@@ -66,17 +64,11 @@ struct ConvertOptions {
 
 /// What convert did.
 struct ConvertResult {
-    OutputKind kind = OutputKind::png;
-    std::vector<std::size_t> bands;     ///< source bands written, in order
-    std::vector<StretchLimits> limits;  ///< per output channel; empty without a stretch
-    std::string stored_type;            ///< "uint8", "float", "float32" (ENVI), ...
+    io::OutputKind kind = io::OutputKind::png;
+    std::vector<std::size_t> bands;         ///< source bands written, in order
+    std::vector<io::StretchLimits> limits;  ///< per output channel; empty without a stretch
+    std::string stored_type;                ///< "uint8", "float", "float32" (ENVI), ...
 };
-
-/// Output kind for a --format name ("envi" included); nullopt for an unknown name.
-std::optional<OutputKind> output_kind_from_name(const std::string& name);
-
-/// Parses an ENVI data type given as a name ("float32", "uint8", ...) or a code ("4").
-std::optional<io::EnviDataType> envi_type_from_string(const std::string& text);
 
 /// Converts. Throws glint::Error: usage for contradictory options, an out-of-range band or
 /// an output that would overwrite the input; input/io naming the file otherwise. Nothing is

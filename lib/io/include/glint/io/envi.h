@@ -45,6 +45,9 @@ std::size_t envi_type_size(EnviDataType type);
 std::optional<EnviDataType> envi_type_from_code(long code);
 /// Lowercase name ("uint8", "float64", ...).
 const char* envi_type_name(EnviDataType type);
+/// The type for a name as envi_type_name gives it (any case) or a code ("4"); nullopt
+/// otherwise.
+std::optional<EnviDataType> envi_type_from_string(std::string_view text);
 
 enum class Interleave { bsq, bil, bip };
 const char* interleave_name(Interleave interleave);  ///< "bsq", "bil", "bip"

@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
 // PercentileHistogram and stretch_value (the definitions are at the top of stretch.h).
-#include "glint/app_envi/stretch.h"
+#include "glint/io/stretch.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "glint/core/error.h"
+#include "glint/core/text.h"
 
-namespace glint::app_envi {
+namespace glint::io {
 
 void PercentileHistogram::begin_counting() {
     m_counts.assign(kBins, 0);
@@ -75,4 +76,19 @@ double stretch_value(double value, const StretchLimits& limits, double gamma) {
     return std::pow(s, 1.0 / gamma);
 }
 
-}  // namespace glint::app_envi
+void check_stretch_request(const StretchRequest& r) {
+    if (r.gamma && !(*r.gamma > 0 && std::isfinite(*r.gamma))) {
+        throw usage_error("--gamma must be a positive number, got " + format_shortest(*r.gamma));
+    }
+    if (r.percent && !(*r.percent >= 0 && *r.percent < 50)) {
+        throw usage_error("--percent must be in [0, 50), got " + format_shortest(*r.percent));
+    }
+    if (r.min.has_value() != r.max.has_value()) throw usage_error("--min and --max go together");
+    if (r.min && !(std::isfinite(*r.min) && std::isfinite(*r.max) && *r.min < *r.max)) {
+        throw usage_error("--min must be less than --max (got " + format_shortest(*r.min) +
+                          " and " + format_shortest(*r.max) + ")");
+    }
+    if (r.min && r.percent) throw usage_error("give --percent or --min/--max, not both");
+}
+
+}  // namespace glint::io

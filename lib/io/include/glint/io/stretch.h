@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// Contrast stretch of `glint-envi convert`: the limits [low, high] of a linear stretch, found
-// from the data (min/max or percentiles) in streaming passes, and the mapping of a value to
-// the display range [0, 1] with a gamma.
+// Contrast stretch of image outputs (glint-envi convert, glint-demosaic): the limits
+// [low, high] of a linear stretch, found from the data (min/max or percentiles) in streaming
+// passes, and the mapping of a value to the display range [0, 1] with a gamma.
 //
 // Percentile limits. Of the n finite values of the stretched set (one band, or all selected
 // bands together), sorted ascending as x_0 <= ... <= x_{n-1}, with q = P/100:
@@ -20,9 +20,10 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <vector>
 
-namespace glint::app_envi {
+namespace glint::io {
 
 /// Limits of a linear stretch.
 struct StretchLimits {
@@ -76,4 +77,17 @@ private:
 /// A flat range (high <= low) maps every value to 0. NaN stays NaN.
 double stretch_value(double value, const StretchLimits& limits, double gamma);
 
-}  // namespace glint::app_envi
+/// The stretch a tool's options ask for (--gamma, --percent, --min/--max).
+struct StretchRequest {
+    std::optional<double> gamma;
+    std::optional<double> percent;
+    std::optional<double> min;
+    std::optional<double> max;
+};
+
+/// Checks the values: gamma finite and > 0, percent in [0, 50), min and max given together
+/// with min < max (both finite), not both percent and min/max. Throws a usage error naming
+/// the option.
+void check_stretch_request(const StretchRequest& request);
+
+}  // namespace glint::io

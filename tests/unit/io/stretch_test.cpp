@@ -1,15 +1,18 @@
 // SPDX-License-Identifier: Apache-2.0
 // Tests of the percentile limits (exact order statistics for integer data, within a bin
 // width otherwise) and of the value mapping with gamma.
-#include "glint/app_envi/stretch.h"
+#include "glint/io/stretch.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <string>
 
-namespace glint::app_envi {
+#include "glint/core/error.h"
+
+namespace glint::io {
 namespace {
 
 PercentileHistogram histogram_of(const std::vector<double>& values) {
@@ -96,5 +99,38 @@ TEST(StretchValue, LinearClampGammaFlatNan) {
     EXPECT_TRUE(std::isnan(stretch_value(std::nan(""), limits, 1.0)));
 }
 
+/// The message of the usage error `request` raises; "" when it passes.
+std::string request_error(const StretchRequest& request) {
+    try {
+        check_stretch_request(request);
+    } catch (const Error& e) {
+        EXPECT_EQ(e.category(), ErrorCategory::usage);
+        return e.message();
+    }
+    return "";
+}
+
+TEST(StretchRequest, ChecksEveryValueWithTheOptionName) {
+    EXPECT_EQ(request_error({}), "");
+    EXPECT_EQ(request_error({2.2, 1.0, std::nullopt, std::nullopt}), "");
+    EXPECT_EQ(request_error({std::nullopt, std::nullopt, -1.0, 4.0}), "");
+    EXPECT_EQ(request_error({0.0, std::nullopt, std::nullopt, std::nullopt}),
+              "--gamma must be a positive number, got 0");
+    EXPECT_EQ(request_error({INFINITY, std::nullopt, std::nullopt, std::nullopt}),
+              "--gamma must be a positive number, got inf");
+    EXPECT_EQ(request_error({std::nullopt, 50.0, std::nullopt, std::nullopt}),
+              "--percent must be in [0, 50), got 50");
+    EXPECT_EQ(request_error({std::nullopt, -0.5, std::nullopt, std::nullopt}),
+              "--percent must be in [0, 50), got -0.5");
+    EXPECT_EQ(request_error({std::nullopt, std::nullopt, 1.0, std::nullopt}),
+              "--min and --max go together");
+    EXPECT_EQ(request_error({std::nullopt, std::nullopt, std::nullopt, 1.0}),
+              "--min and --max go together");
+    EXPECT_EQ(request_error({std::nullopt, std::nullopt, 3.0, 3.0}),
+              "--min must be less than --max (got 3 and 3)");
+    EXPECT_EQ(request_error({std::nullopt, 2.0, 0.0, 1.0}),
+              "give --percent or --min/--max, not both");
+}
+
 }  // namespace
-}  // namespace glint::app_envi
+}  // namespace glint::io
