@@ -29,6 +29,7 @@ Json focal_plane_json(const schedule::Source& source) {
     j["x_count"] = source.x_count;
     j["y_count"] = source.y_count;
     j["tdi"] = fp.capture_method.temporal_integration.tdi;
+    if (source.tdi_stages > 1) j["tdi_stages"] = source.tdi_stages;
     j["integration_time_s"] = source.integration_time_s;
     j["bandpass_um"] = Json{{"minimum", band.min_um},
                             {"maximum", band.max_um},
@@ -101,9 +102,10 @@ public:
             schedule.plugins().empty()
                 ? Json(nullptr)
                 : Json(datetime_utc(schedule.plugins()[0].tasks.reference, 0));
-        head["scene_origin"] = Json{{"latitude_deg", m_info.schedule->frame().origin().latitude_deg},
-                                    {"longitude_deg", m_info.schedule->frame().origin().longitude_deg},
-                                    {"altitude_m", m_info.schedule->frame().origin().altitude_m}};
+        head["scene_origin"] =
+            Json{{"latitude_deg", m_info.schedule->frame().origin().latitude_deg},
+                 {"longitude_deg", m_info.schedule->frame().origin().longitude_deg},
+                 {"altitude_m", m_info.schedule->frame().origin().altitude_m}};
         head["options"] = Json{
             {"output_folder", options.schedule.output_folder ? Json(*options.schedule.output_folder)
                                                              : Json(nullptr)},
@@ -117,7 +119,8 @@ public:
     }
 
     void capture(const CaptureRecord& record) override {
-        m_out << (m_first ? "\n    " : ",\n    ") << capture_json(record, m_info.schedule->frame()).dump();
+        m_out << (m_first ? "\n    " : ",\n    ")
+              << capture_json(record, m_info.schedule->frame()).dump();
         m_first = false;
     }
 

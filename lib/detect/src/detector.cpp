@@ -152,7 +152,10 @@ DetectorModelSettings resolve_model(const model::FocalPlane& fp,
     }
     const model::DetectorArray& array = fp.detector_array;
     const double x_m = scaled_size(array.x_size_m, array.x_count, o.scale_resolution);
-    const double y_m = scaled_size(array.y_size_m, array.y_count, o.scale_resolution);
+    // TDI stages are not resolution: --scale_resolution leaves their size alone.
+    const double y_m = method.temporal_integration.tdi
+                           ? array.y_size_m
+                           : scaled_size(array.y_size_m, array.y_count, o.scale_resolution);
     if (!(x_m > 0.0 && y_m > 0.0 && std::isfinite(x_m * y_m))) {
         throw input_error(
             "the detector array's element size must be > 0 (the pixel area sets "

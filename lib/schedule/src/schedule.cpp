@@ -172,7 +172,7 @@ Schedule::Generator Schedule::captures() const {
         for (std::size_t t = 0; t < per_task.size(); ++t) {
             if (per_task[t].empty()) continue;
             state->heap.push_back(Cursor{per_task[t].time_s(0), s, t, 0, per_task[t].size(),
-                                         m_impl->sources[s].integration_time_s, &per_task[t]});
+                                         m_impl->sources[s].window_s(), &per_task[t]});
         }
     }
     std::sort(state->heap.begin(), state->heap.end(), before);  // sorted = a valid min-heap

@@ -57,7 +57,10 @@ double scaled_count(std::size_t count, double factor) {
 bool set_pixel_counts(Source& source, double factor, Diagnostics& diagnostics) {
     const model::DetectorArray& array = source.focal_plane->detector_array;
     const double x = scaled_count(array.x_count, factor);
-    const double y = scaled_count(array.y_count, factor);
+    const bool tdi = source.focal_plane->capture_method.temporal_integration.tdi;
+    // TDI stages are not resolution: --scale_resolution leaves their count alone.
+    const double y = tdi ? static_cast<double>(std::max<std::size_t>(array.y_count, 1))
+                         : scaled_count(array.y_count, factor);
     if (x > kMaxAxisCount || y > kMaxAxisCount || x * y > kMaxElementCount) {
         diagnostics.error(array.where,
                           "--scale_resolution " + format_shortest(factor) + " makes the " +
@@ -69,7 +72,7 @@ bool set_pixel_counts(Source& source, double factor, Diagnostics& diagnostics) {
     }
     source.x_count = static_cast<std::size_t>(x);
     source.y_count = static_cast<std::size_t>(y);
-    const bool tdi = source.focal_plane->capture_method.temporal_integration.tdi;
+    source.tdi_stages = tdi ? source.y_count : 1;
     source.problems_per_capture = static_cast<std::uint64_t>(source.x_count) *
                                   (tdi ? 1 : static_cast<std::uint64_t>(source.y_count));
     return true;
@@ -99,9 +102,9 @@ void Loader::load_plugin(std::size_t plugin_index) {
     Diagnostics local;
     std::shared_ptr<const motion::PoseService> poses;
     try {
-        poses = std::make_shared<const motion::PoseService>(motion::make_pose_service(
-            simulation, plugin_index, read_options, options.seed, log, local, impl.frame,
-            impl.targets.get()));
+        poses = std::make_shared<const motion::PoseService>(
+            motion::make_pose_service(simulation, plugin_index, read_options, options.seed, log,
+                                      local, impl.frame, impl.targets.get()));
     } catch (const Error& error) {
         if (!local.has_errors()) local.add(error);  // else it repeats local's first error
     }

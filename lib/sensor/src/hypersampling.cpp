@@ -63,9 +63,18 @@ std::vector<std::uint8_t> hypersampled_pixels(const model::Scene& scene,
         for (const motion::Rigid& pose : ends) {
             if (!mark_box(box, pose, camera, mask)) {
                 std::fill(mask.begin(), mask.end(), 1);
-                return mask;
+                break;
             }
         }
+    }
+    if (timing.tdi_stages > 1 && !mask.empty()) {
+        // One problem per column: a column is important when any of its stages is.
+        for (std::size_t row = 1; row < camera.rows(); ++row) {
+            for (std::size_t column = 0; column < camera.columns(); ++column) {
+                mask[column] |= mask[row * camera.columns() + column];
+            }
+        }
+        mask.resize(camera.columns());
     }
     return mask;
 }

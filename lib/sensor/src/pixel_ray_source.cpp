@@ -3,6 +3,7 @@
 // of the pixel's active element and a time in the pixel's integration window (uniformly, as
 // the BasicPlatform manual's "Spatial and Temporal Sampling" describes), then asks the pose
 // service where the instrument is and how it is turned at that time.
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -27,23 +28,34 @@ PixelRaySource::PixelRaySource(const CameraModel& camera, const motion::PoseServ
     if (!std::isfinite(timing.rolling_line_time_s) || timing.rolling_line_time_s < 0.0) {
         throw internal_error("pixel ray source: rolling line time must be finite and >= 0");
     }
+    if (timing.tdi_stages == 0 || (timing.tdi_stages > 1 && (timing.tdi_stages != camera.rows() ||
+                                                             timing.rolling_line_time_s != 0.0))) {
+        throw internal_error("pixel ray source: " + std::to_string(timing.tdi_stages) +
+                             " TDI stages for a camera of " + std::to_string(camera.rows()) +
+                             " rows (stages must be 1, or the rows without rolling readout)");
+    }
 }
 
 radiometry::SampleRay PixelRaySource::generate(std::uint64_t problem, std::uint64_t /*sample*/,
                                                RandomStream& rng) const {
     const std::uint64_t columns = m_camera.columns();
-    const std::uint64_t rows = m_camera.rows();
+    const bool tdi = m_timing.tdi_stages > 1;
+    const std::uint64_t rows = tdi ? 1 : m_camera.rows();
     if (problem / columns >= rows) {
         throw internal_error("pixel ray source: problem " + std::to_string(problem) +
                              " out of range (" + std::to_string(columns) + " x " +
                              std::to_string(rows) + " pixels)");
     }
     const std::uint64_t column = problem % columns;
-    const std::uint64_t row = problem / columns;
     // The documented draw order: u, v, then τ.
     const double u = rng.uniform();
     const double v = rng.uniform();
     const double tau = rng.uniform();
+    const auto stages = static_cast<double>(m_timing.tdi_stages);
+    const std::uint64_t row =
+        tdi ? std::min<std::uint64_t>(static_cast<std::uint64_t>(tau * stages),
+                                      m_timing.tdi_stages - 1)
+            : problem / columns;
     const double t_s = m_timing.t0_s + static_cast<double>(row) * m_timing.rolling_line_time_s +
                        tau * (m_timing.t1_s - m_timing.t0_s);
 

@@ -85,7 +85,10 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
         capture_environment(in, state, capture, source, path_cache);
     const radiometry::PathTracer tracer(geometry, state.materials, environment, options.tracer);
     CaptureTiming timing{capture.t0_s, capture.t1_s,
-                         source.focal_plane->detector_array.rolling_line_time_s.value_or(0.0)};
+                         source.tdi_stages > 1
+                             ? 0.0
+                             : source.focal_plane->detector_array.rolling_line_time_s.value_or(0.0),
+                         source.tdi_stages};
     const PixelRaySource rays(state.camera, *plugin.poses, source.instrument_index, timing);
     radiometry::ProblemBatch batch;
     // The capture's global schedule index: unique per focal plane and capture, so focal
@@ -126,8 +129,9 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
     if (state.detection) {
         // Detection line by line, keyed like glint-detect: (capture index, line in capture).
         const detect::DetectionChain& chain = *state.detection;
-        std::vector<double> detected(chain.output_values_per_line() * source.y_count);
-        for (std::size_t line = 0; line < source.y_count; ++line) {
+        const std::size_t lines = source.lines_per_capture();
+        std::vector<double> detected(chain.output_values_per_line() * lines);
+        for (std::size_t line = 0; line < lines; ++line) {
             chain.process_line(
                 {capture.index, line},
                 std::span<const double>(image).subspan(line * chain.input_values_per_line(),
@@ -137,7 +141,10 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
         }
         image.swap(detected);
     }
-    CaptureStamp stamp{capture.task_index, capture.capture_index, capture.t0_s, capture.t1_s,
+    CaptureStamp stamp{capture.task_index,
+                       capture.capture_index,
+                       capture.t0_s,
+                       capture.t1_s,
                        format_iso8601_utc(add_seconds(plugin.tasks.reference, capture.t0_s)),
                        capture.index};
     prepared.outputs.write_capture(p.file, image, stamp);

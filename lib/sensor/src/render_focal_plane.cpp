@@ -6,9 +6,9 @@
 
 #include "glint/core/error.h"
 #include "glint/core/text.h"
+#include "glint/detect/header_keys.h"
 #include "glint/model/derived.h"
 #include "glint/model/names.h"
-#include "glint/detect/header_keys.h"
 #include "render_parts.h"
 
 namespace glint::sensor::detail {
@@ -68,8 +68,8 @@ io::EnviHeader header_of(const schedule::Source& source, const OutputUnits& unit
     h.bands = units.channels();
     // With a detector model the file holds the photon product detection starts from:
     // float64 always, <datatype> is for the counts.
-    h.data_type = method.detector_model ? io::EnviDataType::float64
-                                        : output_data_type(method.image_file);
+    h.data_type =
+        method.detector_model ? io::EnviDataType::float64 : output_data_type(method.image_file);
     h.wavelength_units = "Micrometers";
     h.wavelength = units.centers_um();
     h.fwhm = units.fwhm_um();
@@ -91,6 +91,7 @@ io::EnviHeader header_of(const schedule::Source& source, const OutputUnits& unit
                                          std::to_string(convergence.max_samples) + " " +
                                          format_shortest(convergence.threshold_w_per_cm2_sr_um));
     h.set_extra("glint scale resolution", format_shortest(options.schedule.scale_resolution));
+    if (source.tdi_stages > 1) h.set_extra("glint tdi stages", std::to_string(source.tdi_stages));
     h.set_extra("glint split channels", options.split_channels ? "true" : "false");
     h.set_extra("glint atmosphere", model::to_string(inputs.atmosphere.kind));
     const auto& per_channel = units.description().per_channel_units;
@@ -106,9 +107,13 @@ io::EnviHeader header_of(const schedule::Source& source, const OutputUnits& unit
 
 /// The capture method whose units the output takes: with a detector model the <imagefile>'s
 /// fluxunits and areaunits are ignored (as the manual says) for the photon product at the
-/// focal plane, per cm², channels integrated and not normalized, that detection needs.
-model::CaptureMethod units_method(const model::FocalPlane& fp, const Context& context) {
+/// focal plane, per cm², channels integrated and not normalized, that detection needs. A TDI
+/// pixel's integration time is that of all its stages.
+model::CaptureMethod units_method(const schedule::Source& source, const Context& context) {
+    const model::FocalPlane& fp = *source.focal_plane;
     model::CaptureMethod method = fp.capture_method;
+    // A TDI pixel integrates over all its stages: stages × the stage time.
+    method.temporal_integration.time_s *= static_cast<double>(source.tdi_stages);
     if (!method.detector_model) return method;
     method.image_file.flux_units = model::FluxUnits::photons_per_second;
     method.image_file.area_units = model::AreaUnits::cm2;
@@ -145,10 +150,10 @@ FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t s
                                        const RenderOptions& options, const Context& context) {
     const schedule::Source& source = inputs.schedule->sources()[source_index];
     const model::FocalPlane& fp = *source.focal_plane;
-    if (fp.capture_method.temporal_integration.tdi) {
-        throw input_error("focal plane \"" + fp.name +
-                              "\" is a TDI array; rendering TDI stages is not supported yet",
-                          fp.capture_method.temporal_integration.where);
+    if (source.tdi_stages > 1 && fp.detector_array.rolling_line_time_s) {
+        context.log.warning("focal plane \"" + fp.name +
+                            "\": the rolling readout is ignored on a TDI array (its stages "
+                            "are read once per capture)");
     }
     if (fp.capture_method.temporal_integration.samples > 1) {
         context.log.info("focal plane \"" + fp.name + "\": <temporalintegration><samples> " +
@@ -162,15 +167,15 @@ FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t s
     radiometry::MaterialTable materials(inputs.scene.materials, grid, context.log);
     CameraModel camera(source.instrument->properties, fp.detector_array, source.x_count,
                        source.y_count);
-    OutputUnits units(units_method(fp, context), source.instrument->properties, grid);
+    OutputUnits units(units_method(source, context), source.instrument->properties, grid);
 
     const radiometry::Convergence convergence = convergence_of(fp, options);
     io::EnviHeader header = header_of(source, units, convergence, options, inputs);
-    FocalPlaneState state{std::move(grid), reference,         std::move(materials),
-                          std::move(camera), std::move(units), convergence,
-                          std::move(header),  std::nullopt};
+    FocalPlaneState state{std::move(grid),  reference,   std::move(materials), std::move(camera),
+                          std::move(units), convergence, std::move(header),    std::nullopt};
     const bool detects = fp.capture_method.detector_model.has_value() ||
-                         fp.capture_method.spectral_response.pattern.has_value();
+                         fp.capture_method.spectral_response.pattern.has_value() ||
+                         source.tdi_stages > 1;
     if (detects && !options.radiance_only) {
         detect::DetectorOverrides overrides;
         overrides.scale_resolution = options.schedule.scale_resolution;
@@ -179,6 +184,7 @@ FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t s
         add_detection_header(state.header, settings);
         state.detection.emplace(std::move(settings), source.x_count);
     }
-    return state;}
+    return state;
+}
 
 }  // namespace glint::sensor::detail

@@ -74,7 +74,8 @@ bool renders(const schedule::Source& source, std::string& why);
 /// Hypersampling: one entry per pixel (problem), 1 where the capture's field of view may
 /// contain an instance marked ::IMPORTANT:: (its bounds over the window projected from the
 /// instrument's poses at the window's start and end, one pixel of margin; every pixel when
-/// the box reaches behind the camera); empty when no instance is important.
+/// the box reaches behind the camera); empty when no instance is important. For TDI
+/// (timing.tdi_stages > 1) one entry per column: 1 when any stage of it is marked.
 std::vector<std::uint8_t> hypersampled_pixels(const model::Scene& scene,
                                               const scene::GeometryScene& geometry,
                                               const CameraModel& camera,

@@ -79,7 +79,7 @@ void plan_outputs(const RenderInputs& in, const std::vector<PlannedCapture>& cap
             states.emplace(source, detail::make_focal_plane_state(in, source, options, context));
         }
         const schedule::Source& s = in.schedule->sources()[source];
-        outputs.plan(path, states.at(source).header, s.y_count, entry.second);
+        outputs.plan(path, states.at(source).header, s.lines_per_capture(), entry.second);
     }
 }
 

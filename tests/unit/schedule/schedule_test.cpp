@@ -82,7 +82,7 @@ void expect_well_ordered(const Schedule& schedule, const std::vector<Capture>& c
         ASSERT_EQ(c.capture_index, expected) << i;
         ++expected;
         EXPECT_EQ(c.t0_s, schedule.ticks(c.source, c.task_index).time_s(c.capture_index));
-        EXPECT_EQ(c.t1_s, c.t0_s + schedule.sources()[c.source].integration_time_s);
+        EXPECT_EQ(c.t1_s, c.t0_s + schedule.sources()[c.source].window_s());
     }
     std::uint64_t total = 0;
     for (std::size_t s = 0; s < schedule.sources().size(); ++s) {
@@ -117,7 +117,14 @@ TEST(Schedule, SourcesAreTheEnabledFocalPlanesInInstrumentOrder) {
     EXPECT_EQ(fast.y_count, 6u);
     EXPECT_EQ(fast.problems_per_capture, 48u);
     EXPECT_EQ(fast.integration_time_s, 0.08);
-    EXPECT_EQ(schedule.sources()[2].problems_per_capture, 16u);  // TDI: one line per capture
+    EXPECT_EQ(fast.tdi_stages, 1u);
+    EXPECT_EQ(fast.lines_per_capture(), 6u);
+    EXPECT_EQ(fast.window_s(), 0.08);
+    const Source& line = schedule.sources()[2];
+    EXPECT_EQ(line.problems_per_capture, 16u);  // TDI: one line per capture
+    EXPECT_EQ(line.tdi_stages, 4u);
+    EXPECT_EQ(line.lines_per_capture(), 1u);
+    EXPECT_EQ(line.window_s(), 4 * 0.001);  // stage k integrates during [t0 + k t, t0 + (k+1) t]
     // The data recorder has no focal plane, hence no clock: skipped with a warning.
     bool warned = false;
     for (const Diagnostic& d : diagnostics.items()) {
@@ -336,6 +343,9 @@ TEST(Schedule, ScaleResolutionScalesPixelCounts) {
     EXPECT_EQ(half.sources()[0].y_count, 3u);
     EXPECT_EQ(half.sources()[1].x_count, 2u);
     EXPECT_EQ(half.sources()[1].y_count, 1u);
+    EXPECT_EQ(half.sources()[2].x_count, 8u);
+    EXPECT_EQ(half.sources()[2].y_count, 4u);  // TDI stages are not resolution
+    EXPECT_EQ(half.sources()[2].tdi_stages, 4u);
     EXPECT_EQ(half.total_problems(), 21u * 12 + 11u * 2 + 23u * 8);
     options.scale_resolution = 0.1;  // rounds to 0: at least one pixel
     const Schedule tiny = load("frames.jsim", options);

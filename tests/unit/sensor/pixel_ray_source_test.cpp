@@ -345,6 +345,68 @@ TEST(PixelRaySource, SamplesAreUniformOverElementAndWindow) {
     EXPECT_LT(chi2, 103.4);
 }
 
+// TDI: N stages (the camera's rows) on a platform flying +Y at one ground sample per stage
+// time. Replaying the draws, a sample's stage is ⌊τ N⌋, its row that stage, its time in the
+// stage's part of the window; and every stage of a column looks at the same ground line:
+// the along-track ground position of a sample is y0 + (N/2 + f − v)·GSD (f the fraction of
+// its stage time, v its place in the element), within one GSD of the line's centre whatever
+// the stage. Unsynchronised stages would spread it over N GSD.
+TEST(PixelRaySource, TdiStagesFollowTheGroundLine) {
+    constexpr std::size_t kStages = 6;
+    const double gsd_m = kPitch_m * kHeight_m / kFocal_m;  // 0.1 m
+    const double speed_m_s = 100.0;
+    const double stage_s = gsd_m / speed_m_s;  // 1 ms
+    const Vec3 p0{0, -20, kHeight_m};
+    const motion::PoseService service = poses(p0, {0, speed_m_s, 0});
+    model::DetectorArray a = array();
+    a.y_count = kStages;
+    const CameraModel cam(
+        [] {
+            model::InstrumentProperties p;
+            p.focal_length_m = kFocal_m;
+            return p;
+        }(),
+        a, kColumns, kStages);
+    const double t0 = 0.3;
+    const CaptureTiming timing{t0, t0 + kStages * stage_s, 0.0, kStages};
+    const PixelRaySource source(cam, service, 0, timing);
+    std::array<int, kStages> per_stage{};
+    for (const std::uint64_t column : {0ull, 17ull, 63ull}) {
+        for (std::uint64_t n = 0; n < 600; ++n) {
+            RandomStream rng = stream(5, column, n);
+            const radiometry::SampleRay ray = source.generate(column, n, rng);
+            RandomStream replay = stream(5, column, n);
+            const double u = replay.uniform();
+            const double v = replay.uniform();
+            const double tau = replay.uniform();
+            EXPECT_EQ(rng.position(), replay.position());
+            const auto stage = static_cast<std::size_t>(tau * kStages);
+            ++per_stage[stage];
+            EXPECT_DOUBLE_EQ(ray.time_s, t0 + tau * kStages * stage_s);
+            EXPECT_GE(ray.time_s, t0 + static_cast<double>(stage) * stage_s - 1e-12);
+            EXPECT_LE(ray.time_s, t0 + static_cast<double>(stage + 1) * stage_s + 1e-12);
+            const Vec3 hit = ground_hit(ray);
+            const double x_expected =
+                ((column + 0.5 - kColumns / 2.0) + (u - 0.5)) * gsd_m;  // element = pitch
+            EXPECT_NEAR(hit.x, x_expected, 1e-8);                       // m, round-off
+            // The ground line of the capture: where the array's centre looks at t0, plus the
+            // half array ahead of it that the last stage reaches.
+            const double line_centre_m = p0.y + speed_m_s * t0 + kStages / 2.0 * gsd_m;
+            const double f = tau * kStages - static_cast<double>(stage);
+            EXPECT_NEAR(hit.y, line_centre_m + (f - v) * gsd_m, 1e-8) << stage;
+            EXPECT_LT(std::fabs(hit.y - line_centre_m), gsd_m);
+        }
+    }
+    for (std::size_t k = 0; k < kStages; ++k) EXPECT_GT(per_stage[k], 200) << k;  // of 1800
+    RandomStream rng(1, {0});
+    EXPECT_THROW(source.generate(kColumns, 0, rng), Error);  // one line: problems = columns
+    EXPECT_NO_THROW(source.generate(kColumns - 1, 0, rng));
+    // Stages other than the rows, or with a rolling readout, are refused.
+    EXPECT_THROW(PixelRaySource(cam, service, 0, {t0, t0 + 1, 0.0, kStages + 1}), Error);
+    EXPECT_THROW(PixelRaySource(cam, service, 0, {t0, t0 + 1, 1e-4, kStages}), Error);
+    EXPECT_THROW(PixelRaySource(cam, service, 0, {t0, t0 + 1, 0.0, 0}), Error);
+}
+
 TEST(PixelRaySource, BadArgumentsAreInternalErrors) {
     const motion::PoseService service = poses({0, 0, kHeight_m});
     const CameraModel cam = camera(array());

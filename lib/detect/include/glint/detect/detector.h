@@ -63,7 +63,8 @@ struct DetectorOverrides {
     bool no_noise = false;                                 ///< --no-noise: the mean, no draws
     bool electrons = false;                                ///< --electrons: stop before the ADC
     /// The render's --scale_resolution: the array's extent is divided into the scaled
-    /// element counts, so each element's size is divided by count / scaled count.
+    /// element counts, so each element's size is divided by count / scaled count (not the
+    /// stages of a TDI array, which are never scaled).
     double scale_resolution = 1.0;
 };
 

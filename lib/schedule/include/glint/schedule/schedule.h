@@ -63,11 +63,18 @@ struct Source {
     const model::Instrument* instrument = nullptr;
     const model::FocalPlane* focal_plane = nullptr;  ///< never null in this version
     std::size_t x_count = 0;                         ///< pixel counts after scale_resolution
-    std::size_t y_count = 0;
+    std::size_t y_count = 0;                         ///< rows; for TDI the stages (never scaled)
     /// Problems (pixels rendered) per capture: x_count · y_count, or x_count for TDI (the
     /// stages of one output pixel are one problem).
     std::uint64_t problems_per_capture = 0;
-    double integration_time_s = 0.0;
+    double integration_time_s = 0.0;  ///< of one row, or of one TDI stage
+    /// TDI stages (y_count) for a `tdi="true"` focal plane, else 1. Stage k integrates
+    /// during [t0 + k·time, t0 + (k + 1)·time]: the capture's window is stages × time.
+    std::size_t tdi_stages = 1;
+    /// Lines of one capture's image: 1 for TDI, else y_count.
+    std::size_t lines_per_capture() const { return tdi_stages > 1 ? 1 : y_count; }
+    /// Length of a capture's integration window: integration_time_s × tdi_stages.
+    double window_s() const { return integration_time_s * static_cast<double>(tdi_stages); }
     /// Trigger times (s after the reference) of an external clock, one period of them.
     std::vector<double> trigger_times_s;
     /// The focal plane's clock (same as focal_plane->detector_array.clock).
