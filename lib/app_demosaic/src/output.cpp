@@ -90,16 +90,7 @@ void write_picture(const DemosaicToolOptions& o, io::OutputKind kind,
                    const demosaic::RgbImage& image, const Provenance& provenance,
                    DemosaicToolResult& result, Context& ctx) {
     const io::ImageFormat format = io::image_format_of(kind);
-    io::PixelType type = io::default_pixel_type(format);
-    if (o.bit_depth) {
-        const auto chosen = io::pixel_type_for_bit_depth(format, *o.bit_depth);
-        if (!chosen) {
-            throw usage_error(std::string(io::image_format_name(format)) +
-                              " cannot store a bit depth of " + std::to_string(*o.bit_depth) +
-                              " (" + o.output.string() + ")");
-        }
-        type = *chosen;
-    }
+    const io::PixelType type = io::output_pixel_type(format, o.bit_depth, o.output);
     const bool integer = io::pixel_type_is_integer(type);
     const double gamma = o.gamma.value_or(1.0);
     if (o.min) {

@@ -59,16 +59,6 @@ void check_range(const Source& s, double low, double high, const std::string& ex
     if (!(std::isfinite(s.value) && s.value >= low && s.value <= high)) bad(s, expected);
 }
 
-io::EnviDataType stored_type(const model::ImageFile& image) {
-    const std::optional<io::EnviDataType> type = io::envi_type_from_code(image.datatype);
-    if (!type || *type == io::EnviDataType::complex64 || *type == io::EnviDataType::complex128) {
-        throw input_error("<datatype> " + std::to_string(image.datatype) +
-                              " is not a real ENVI data type (1, 2, 3, 4, 5, 12, 13, 14, 15)",
-                          image.where);
-    }
-    return *type;
-}
-
 /// An element size divided as the camera divides it under --scale_resolution.
 double scaled_size(double size_m, std::size_t count, double factor) {
     const double scaled = std::max(1.0, std::round(static_cast<double>(count) * factor));
@@ -254,6 +244,16 @@ std::optional<CfaSettings> resolve_cfa(const model::FocalPlane& fp,
 
 }  // namespace
 
+io::EnviDataType image_data_type(const model::ImageFile& image) {
+    const std::optional<io::EnviDataType> type = io::envi_type_from_code(image.datatype);
+    if (!type || *type == io::EnviDataType::complex64 || *type == io::EnviDataType::complex128) {
+        throw input_error("<datatype> " + std::to_string(image.datatype) +
+                              " is not a real ENVI data type (1, 2, 3, 4, 5, 12, 13, 14, 15)",
+                          image.where);
+    }
+    return *type;
+}
+
 const char* tdi_mode_name(TdiMode mode) { return mode == TdiMode::charge ? "charge" : "digital"; }
 
 double DetectorModelSettings::dark_electrons(std::size_t stages) const {
@@ -320,7 +320,7 @@ DetectionSettings resolve_detection(const model::FocalPlane& fp,
     } else if (s.detector && s.output == DetectOutput::electrons) {
         s.data_type = io::EnviDataType::float64;
     } else {
-        s.data_type = stored_type(method.image_file);
+        s.data_type = image_data_type(method.image_file);
     }
     if (s.data_type == io::EnviDataType::complex64 || s.data_type == io::EnviDataType::complex128) {
         throw input_error("complex data types cannot hold detector output");

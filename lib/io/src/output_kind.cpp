@@ -79,4 +79,15 @@ ImageFormat image_format_of(OutputKind kind) {
     throw internal_error("image_format_of: ENVI is not an image format");
 }
 
+PixelType output_pixel_type(ImageFormat format, std::optional<int> bit_depth,
+                            const std::filesystem::path& output) {
+    if (!bit_depth) return default_pixel_type(format);
+    const std::optional<PixelType> chosen = pixel_type_for_bit_depth(format, *bit_depth);
+    if (!chosen) {
+        throw usage_error(std::string(image_format_name(format)) + " cannot store a bit depth of " +
+                          std::to_string(*bit_depth) + " (" + output.string() + ")");
+    }
+    return *chosen;
+}
+
 }  // namespace glint::io

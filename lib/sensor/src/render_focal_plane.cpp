@@ -32,16 +32,6 @@ bool renders(const schedule::Source& source, std::string& why) {
     return true;
 }
 
-io::EnviDataType output_data_type(const model::ImageFile& image) {
-    const std::optional<io::EnviDataType> type = io::envi_type_from_code(image.datatype);
-    if (!type || *type == io::EnviDataType::complex64 || *type == io::EnviDataType::complex128) {
-        throw input_error("<datatype> " + std::to_string(image.datatype) +
-                              " is not a real ENVI data type (1, 2, 3, 4, 5, 12, 13, 14, 15)",
-                          image.where);
-    }
-    return *type;
-}
-
 namespace {
 
 radiometry::Convergence convergence_of(const model::FocalPlane& fp, const RenderOptions& options) {
@@ -68,8 +58,8 @@ io::EnviHeader header_of(const schedule::Source& source, const OutputUnits& unit
     h.bands = units.channels();
     // With a detector model the file holds the photon product detection starts from:
     // float64 always, <datatype> is for the counts.
-    h.data_type =
-        method.detector_model ? io::EnviDataType::float64 : output_data_type(method.image_file);
+    h.data_type = method.detector_model ? io::EnviDataType::float64
+                                        : detect::image_data_type(method.image_file);
     h.wavelength_units = "Micrometers";
     h.wavelength = units.centers_um();
     h.fwhm = units.fwhm_um();

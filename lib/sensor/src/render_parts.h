@@ -82,10 +82,6 @@ std::vector<std::uint8_t> hypersampled_pixels(const model::Scene& scene,
                                               const motion::PoseService& poses,
                                               std::size_t instrument, const CaptureTiming& timing);
 
-/// The ENVI data type of an <imagefile> <datatype> code (throws glint::Error (input) at the
-/// image file for an unknown or complex code).
-io::EnviDataType output_data_type(const model::ImageFile& image);
-
 /// A capture of the selection with what the loop needs about it.
 struct PlannedCapture {
     schedule::Capture capture;

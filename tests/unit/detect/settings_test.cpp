@@ -172,5 +172,26 @@ TEST(Settings, NothingToDetect) {
     EXPECT_THAT(error_of(rgb, {}, electrons), HasSubstr("--electrons needs a detector model"));
 }
 
+TEST(Settings, ImageDataTypeTakesRealEnviCodesOnly) {
+    model::ImageFile image;
+    image.where = {"x.platform", 12, "imagefile"};
+    for (const int code : {1, 2, 3, 4, 5, 12, 13, 14, 15}) {
+        image.datatype = code;
+        EXPECT_EQ(static_cast<int>(image_data_type(image)), code);
+    }
+    for (const int code : {0, 6, 7, 9, 99}) {
+        image.datatype = code;
+        try {
+            image_data_type(image);
+            ADD_FAILURE() << code;
+        } catch (const Error& e) {
+            EXPECT_EQ(e.category(), ErrorCategory::input);
+            EXPECT_EQ(std::string(e.what()),
+                      "x.platform:12: imagefile: <datatype> " + std::to_string(code) +
+                          " is not a real ENVI data type (1, 2, 3, 4, 5, 12, 13, 14, 15)");
+        }
+    }
+}
+
 }  // namespace
 }  // namespace glint::detect

@@ -64,5 +64,20 @@ TEST(OutputKind, ImageFormatOfEachImageKind) {
     EXPECT_THROW(image_format_of(OutputKind::envi), Error);
 }
 
+TEST(OutputKind, PixelTypeByDefaultOrBitDepth) {
+    EXPECT_EQ(output_pixel_type(ImageFormat::png, std::nullopt, "a.png"), PixelType::uint8);
+    EXPECT_EQ(output_pixel_type(ImageFormat::exr, std::nullopt, "a.exr"), PixelType::float32);
+    EXPECT_EQ(output_pixel_type(ImageFormat::png, 16, "a.png"), PixelType::uint16);
+    EXPECT_EQ(output_pixel_type(ImageFormat::exr, 16, "a.exr"), PixelType::half);
+    EXPECT_EQ(output_pixel_type(ImageFormat::tiff, 32, "a.tif"), PixelType::float32);
+    try {
+        output_pixel_type(ImageFormat::jpeg, 16, "out/a.jpg");
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.category(), ErrorCategory::usage);
+        EXPECT_EQ(e.message(), "jpeg cannot store a bit depth of 16 (out/a.jpg)");
+    }
+}
+
 }  // namespace
 }  // namespace glint::io

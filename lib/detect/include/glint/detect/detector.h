@@ -115,6 +115,10 @@ struct DetectionSettings {
     bool active() const { return detector.has_value() || cfa.has_value() || tdi_stages > 1; }
 };
 
+/// The stored type of an `<imagefile>`'s `<datatype>` code. Throws glint::Error (input, at
+/// the element) for a code that is not a real ENVI data type (complex types included).
+io::EnviDataType image_data_type(const model::ImageFile& image);
+
 /// Resolves and checks the settings of `focal_plane` of an instrument with `properties`.
 /// Throws glint::Error (input) at the element's file:line for a requirement the manual
 /// lists (simple capture, aperture, non-zero integration time with a detector model), a

@@ -25,4 +25,10 @@ OutputKind output_kind_of(const std::filesystem::path& output, std::string_view 
 /// The image format of an image kind; OutputKind::envi is a caller bug (internal error).
 ImageFormat image_format_of(OutputKind kind);
 
+/// The pixel type of an image output: the format's default, or the one for a requested bit
+/// depth (pixel_type_for_bit_depth). Throws a usage error naming `output` when the format
+/// cannot store that depth.
+PixelType output_pixel_type(ImageFormat format, std::optional<int> bit_depth,
+                            const std::filesystem::path& output);
+
 }  // namespace glint::io
