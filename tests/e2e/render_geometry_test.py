@@ -47,6 +47,8 @@ import shutil
 import subprocess
 import sys
 
+import dirsig_inputs
+
 SKIP = 77
 
 try:
@@ -268,32 +270,11 @@ def ppd(run):
     entries = []
     for t in (0, 10):
         p = run["position"] + (np.array([0.0, 10.0 * t, 0.0]) if run["name"] == "level" else 0.0)
-        a = run["attitude_deg"]
-        entries.append(f"""\
-    <entry>
-      <datetime type="relative">{t}</datetime>
-      <position><location type="scene"><point><x>{p[0]!r}</x><y>{p[1]!r}</y><z>{p[2]!r}</z></point></location></position>
-      <orientation><eulerangles><cartesiantriple><x>{a[0]}</x><y>{a[1]}</y><z>{a[2]}</z></cartesiantriple></eulerangles></orientation>
-    </entry>
-""")
-    return f"""<platformmotion type="generic">
-  <method type="raw"/>
-  <data rotationframe="sceneenu" rotationorder="{VEHICLE_ORDER}" angletype="absolute"
-        angularunits="degrees" spatialunits="meters">
-{''.join(entries)}  </data>
-</platformmotion>
-"""
+        entries.append((t, p, run["attitude_deg"]))
+    return dirsig_inputs.ppd(entries, VEHICLE_ORDER)
 
 
-TASKS = f"""<tasklist>
-  <reference><datetime type="absolute">{UTC}Z</datetime></reference>
-  <task>
-    <metadata><entry><name>Name</name><value><![CDATA[Snapshot]]></value></entry></metadata>
-    <start><datetime type="relative">0</datetime></start>
-    <stop><datetime type="relative">0</datetime></stop>
-  </task>
-</tasklist>
-"""
+TASKS = dirsig_inputs.snapshot_tasks(UTC)
 
 
 def sim(run_name):

@@ -30,6 +30,8 @@ import subprocess
 import sys
 import warnings
 
+import dirsig_inputs
+
 SKIP = 77
 
 try:
@@ -102,32 +104,9 @@ objects:
 
 ATMOSPHERE_YAML = "# Exo-atmospheric sun, black sky, no path effects.\nmodel: none\n"
 
-PPD_ENTRY = """\
-    <entry>
-      <datetime type="relative">{t}</datetime>
-      <position><location type="scene"><point><x>0</x><y>0</y><z>{z}</z></point></location></position>
-      <orientation><eulerangles><cartesiantriple><x>0</x><y>0</y><z>0</z></cartesiantriple></eulerangles></orientation>
-    </entry>
-"""
+PPD = dirsig_inputs.ppd([(t, (0, 0, SENSOR_HEIGHT_M), (0, 0, 0)) for t in (0, 10)])
 
-PPD = ("""<platformmotion type="generic">
-  <method type="raw"/>
-  <data rotationframe="sceneenu" rotationorder="xyz" angletype="absolute"
-        angularunits="degrees" spatialunits="meters">
-""" + PPD_ENTRY.format(t=0, z=SENSOR_HEIGHT_M) + PPD_ENTRY.format(t=10, z=SENSOR_HEIGHT_M) +
-       """  </data>
-</platformmotion>
-""")
-
-TASKS = f"""<tasklist>
-  <reference><datetime type="absolute">{UTC}Z</datetime></reference>
-  <task>
-    <metadata><entry><name>Name</name><value><![CDATA[Snapshot]]></value></entry></metadata>
-    <start><datetime type="relative">0</datetime></start>
-    <stop><datetime type="relative">0</datetime></stop>
-  </task>
-</tasklist>
-"""
+TASKS = dirsig_inputs.snapshot_tasks(UTC)
 
 SIM = """<simulation>
   <scene                 externalfile="./plate.yaml"/>
