@@ -7,7 +7,8 @@
 # dumped as normalized JSON and its capture schedule written; glint-render renders every
 # capture into ENVI files; glint-envi reports on them and converts the RGB frames and a
 # false-colour composite of the pushbroom image to PNG; the frames are encoded into a video
-# through ffmpeg. Takes about half a minute on two cores once the tools are built.
+# through ffmpeg; the Bayer camera's digital counts (detected in the render) are demosaiced
+# to colour. Takes about half a minute on two cores once the tools are built.
 # Usage: examples/demo/run.sh BIN_DIR OUT_DIR
 set -euo pipefail
 
@@ -38,7 +39,7 @@ mapfile -t optics < <(grep -e '"f_number"' -e '"g_number_per_sr"' "$out/demo.pla
 printf 'Camera: F# %s, G# %s 1/sr; Pushbroom: F# %s, G# %s 1/sr (from demo.platform.json)\n' \
     "${optics[@]}" >&2
 
-step "2. the capture schedule: 25 RGB frames (6 Hz) and 241 pushbroom lines (60 Hz) in 4 s"
+step "2. the capture schedule: 25 RGB frames (6 Hz), 2 Bayer frames and 241 pushbroom lines (60 Hz) in 4 s"
 run "$bin/glint-schedule" --summary "$out/demo.jsim" >&2
 run "$bin/glint-schedule" "$out/demo.jsim" -o "$out/demo.schedule.json"
 run "$bin/glint-schedule" --format text --captures 0:4 "$out/demo.jsim" >&2
@@ -86,16 +87,27 @@ run "$envi" convert --bands 4,2,1 --per-band --percent 1 --gamma 2.2 \
 step "6. the RGB frames encoded into a video (ffmpeg through glint-envi encode)"
 run "$envi" encode --framerate "$fps" --output "$out/demo.mp4" "$out/render/rgb-t0000-c%04d.png"
 
+step "7. the Bayer camera: digital counts from in-render detection, demosaiced to colour"
+# glint-render applied the focal plane's detector model (QE, shot/dark/read noise, 12-bit
+# ADC) and its RGGB mosaic; glint-demosaic restores three colours per pixel (raw sensor
+# colour, not white-balanced).
+run "$envi" stats "$out/render/bayer-t0000-c0000.img" >&2
+for img in "$out"/render/bayer-t0000-c*.img; do
+    run "$bin/glint-demosaic" --method mhc --percent 0.5 --gamma 2.2 "$img" "${img%.img}.png"
+done
+
 cat >&2 <<MSG
 
 glint demo finished. Outputs in $out/:
   demo.jsim                          examples/demo/sim/demo.sim as a DIRSIG5 .jsim
   demo.platform.json                 the platform as glint understood it (SI units, F#, G#)
-  demo.schedule.json                 266 captures: time windows, poses, sun angles, file names
+  demo.schedule.json                 268 captures: time windows, poses, sun angles, file names
   render/rgb-t0000-cNNNN.img (.hdr)  25 RGB frames, 160 x 120 x 3, Joules/(cm2 um)
   render/rgb-t0000-cNNNN.png         the same frames as PNG
   render/msi.img (.hdr)              the pushbroom image, 256 x 241 x 5 (blue to NIR)
   render/msi-false-colour.png        NIR, red, green composite (first line, south, on top)
+  render/bayer-t0000-cNNNN.img (.hdr) 2 Bayer mosaics, 160 x 120, 12-bit counts (uint16, DN)
+  render/bayer-t0000-cNNNN.png       the same, demosaiced (Malvar-He-Cutler) to colour
   render/render.log, files.txt       glint-render's log (-v) and the files it wrote
   render/*.stats.*, msi.info.txt     glint-envi stats and info reports
   demo.mp4                           the RGB frames as a ${fps} fps video

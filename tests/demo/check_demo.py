@@ -20,6 +20,11 @@
    Lambertian panel (path radiance plus reflected sun and sky).
 4. Vegetation shows its red edge: in the pushbroom image, grass pixels west of the pad have
    NIR > 2 × red.
+5. The Bayer camera's digital counts (in-render detection): two uint16 mosaics whose values
+   are whole counts in [0, 4095] (`data units = DN`), and in each colour filter's pixels the
+   panels' mean counts increase with reflectance and are linear in it (r² ≥ 0.999: counts are
+   linear in electrons below full well; shot and read noise average out over a panel); the
+   demosaiced PNGs are 160 x 120 RGB and vary.
 
 Usage: check_demo.py --out OUT --scene examples/demo/sim/demo_scene.yaml
 Exit status: 0 pass, 1 fail, 77 skipped (numpy, GDAL or Spectral Python missing).
@@ -44,6 +49,7 @@ except ImportError as error:  # the oracle is not installed: skip, do not fail
     sys.exit(SKIP)
 
 FRAMES = 25                 # 4 s at 6 Hz, both ends included
+BAYER_FRAMES = 2            # 0.5 Hz from 1 s
 PANEL_MARGIN_M = 0.5        # panel shrunk by this on every side
 MIN_PANEL_PIXELS = 16
 MIN_R2 = 0.999
@@ -83,9 +89,9 @@ def rotation(wxyz):
         [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
 
 
-def ground_points(instrument, pose, z_m):
+def ground_points(instrument, pose, z_m, focal_plane=0):
     """Scene x, y where each pixel centre's ray meets the plane z = z_m: (lines, samples, 2)."""
-    fp = instrument["focal_planes"][0]
+    fp = instrument["focal_planes"][focal_plane]
     array = fp["detector_array"]
     props = instrument["properties"]
     assert not array["x_flip"] and not array["y_flip"], "flipped arrays are not handled here"
@@ -163,6 +169,9 @@ def main():
                 "render/msi.img", "render/msi.img.hdr", "render/msi-false-colour.png"]
     expected += [os.path.relpath(f + ext, out) for f in frames
                  for ext in (".img", ".img.hdr", ".png")]
+    bayers = [os.path.join(render, f"bayer-t0000-c{c:04d}") for c in range(BAYER_FRAMES)]
+    expected += [os.path.relpath(f + ext, out) for f in bayers
+                 for ext in (".img", ".img.hdr", ".png")]
     missing = [e for e in expected
                if not os.path.isfile(os.path.join(out, e)) or
                os.path.getsize(os.path.join(out, e)) == 0]
@@ -202,7 +211,8 @@ def main():
     check_image("rgb frame 0", frame0, 120, 160, 3)
     pushbroom = read_envi(os.path.join(render, "msi.img"))
     check_image("msi", pushbroom, len(msi), 256, 5)
-    pngs = [f + ".png" for f in frames] + [os.path.join(render, "msi-false-colour.png")]
+    pngs = ([f + ".png" for f in frames + bayers] +
+            [os.path.join(render, "msi-false-colour.png")])
     flat = [os.path.relpath(png, out) for png in pngs
             if (pixels := gdal.Open(png).ReadAsArray()) is None or not pixels.std() > 0]
     check(not flat, f"{len(pngs)} PNGs read with GDAL vary" + (f" (flat: {flat})" if flat else ""))
@@ -231,8 +241,52 @@ def main():
           f"msi grass ({int(grass.sum())} pixels): NIR/red = {nir.mean() / red.mean():.2f} "
           f"(> {MIN_NIR_OVER_RED})")
 
+    # 5. the Bayer camera's digital counts
+    check_bayer(out, render, instruments, captures, panels, top_m)
+
     print(f"{len(failures)} failure(s)")
     return 1 if failures else 0
+
+
+def check_bayer(out, render, instruments, captures, panels, top_m):
+    camera = instruments["Camera"]
+    index = [fp["name"] for fp in camera["focal_planes"]].index("Bayer")
+    first = next(c for c in captures if c["files"]["image"] == "bayer-t0000-c0000.img")
+    path = os.path.join(render, "bayer-t0000-c0000.img")
+    with open(path + ".hdr", encoding="utf-8") as f:
+        header = f.read()
+    check("data units = DN" in header and "data type = 12" in header and "bands = 1" in header,
+          "bayer frame 0: one band of uint16 digital counts (data units = DN)")
+    counts = read_envi(path)[..., 0]
+    check(counts.shape == (120, 160) and bool(np.all(counts == np.round(counts))) and
+          counts.min() >= 0 and counts.max() <= 4095,
+          f"bayer frame 0: 160 x 120 whole counts in [0, 4095] "
+          f"(min {counts.min():.0f}, max {counts.max():.0f})")
+    points = ground_points(camera, first["pose"]["instrument"], top_m, index)
+    rows, cols = np.indices(counts.shape)
+    # RGGB (docs/detector.md): red at even line and sample, blue at odd ones, green elsewhere.
+    filters = {"red": (rows % 2 == 0) & (cols % 2 == 0), "blue": (rows % 2 == 1) & (cols % 2 == 1)}
+    filters["green"] = ~(filters["red"] | filters["blue"])
+    for name, where in filters.items():
+        means = []
+        for reflectance, lower, upper in panels:
+            mask = where & inside(points, lower[0] + PANEL_MARGIN_M, lower[1] + PANEL_MARGIN_M,
+                                  upper[0] - PANEL_MARGIN_M, upper[1] - PANEL_MARGIN_M)
+            means.append(counts[mask].mean() if mask.sum() >= 4 else np.nan)
+        means = np.array(means)
+        rho = np.array([p[0] for p in panels])
+        ok = bool(np.all(np.isfinite(means)) and np.all(np.diff(means) > 0))
+        r2 = 0.0
+        if ok:
+            slope, intercept = np.polyfit(rho, means, 1)
+            r2 = 1 - (means - (intercept + slope * rho)).var() / means.var()
+        check(ok and r2 >= MIN_R2,
+              f"bayer frame 0, {name} pixels: panel counts increase and are linear in "
+              f"reflectance ({', '.join(f'{v:.0f}' for v in means)} DN, r2 = {r2:.6f})")
+    for c in range(BAYER_FRAMES):
+        png = gdal.Open(os.path.join(render, f"bayer-t0000-c{c:04d}.png")).ReadAsArray()
+        check(png is not None and png.shape == (3, 120, 160) and png.std() > 0,
+              f"bayer frame {c} demosaiced: PNG {None if png is None else png.shape}")
 
 
 def ground_points_plane(instruments, msi):
