@@ -15,6 +15,7 @@
 #include "glint/core/error.h"
 #include "glint/motion/euler.h"
 #include "glint/motion/frames.h"
+#include "glint/test/errors.h"
 #include "motion_expect.h"
 
 namespace glint::motion {
@@ -40,17 +41,6 @@ model::MountEntry entry(double t, std::array<double, 3> rot, std::array<double, 
     e.rotation_rad = rot;
     e.translation_m = trans;
     return e;
-}
-
-/// Runs `f` and returns the message of the glint::Error it throws ("" if none).
-template <typename F>
-std::string error_of(F&& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "";
 }
 
 TEST(Mount, StaticIdentityLooksDown) {
@@ -126,26 +116,28 @@ TEST(Mount, AffineMatrixNotRigidIsAnError) {
     model::AffineTransform scaled;
     scaled.where = {"cam.platform", 12, "platform/attachment/affinetransform"};
     scaled.matrix = std::array<double, 16>{2, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-    const std::string msg = error_of([&] { affine_transform(scaled); });
+    const std::string msg = test::error_text([&] { affine_transform(scaled); });
     EXPECT_THAT(msg, testing::HasSubstr("cam.platform:12:"));
     EXPECT_THAT(msg, testing::HasSubstr("matrix is not rigid"));
 
     model::AffineTransform sheared = scaled;
     sheared.matrix = std::array<double, 16>{1, 0.1, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-    EXPECT_THAT(error_of([&] { affine_transform(sheared); }), testing::HasSubstr("not a rotation"));
+    EXPECT_THAT(test::error_text([&] { affine_transform(sheared); }),
+                testing::HasSubstr("not a rotation"));
 
     model::AffineTransform mirror = scaled;
     mirror.matrix = std::array<double, 16>{-1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-    EXPECT_THAT(error_of([&] { affine_transform(mirror); }), testing::HasSubstr("reflection"));
+    EXPECT_THAT(test::error_text([&] { affine_transform(mirror); }),
+                testing::HasSubstr("reflection"));
 
     model::AffineTransform projective = scaled;
     projective.matrix = std::array<double, 16>{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0.5, 0, 1};
-    EXPECT_THAT(error_of([&] { affine_transform(projective); }),
+    EXPECT_THAT(test::error_text([&] { affine_transform(projective); }),
                 testing::HasSubstr("last row is not 0 0 0 1"));
 
     model::AffineTransform bad_order;
     bad_order.rotation_order = "xxz";
-    EXPECT_THAT(error_of([&] { affine_transform(bad_order); }),
+    EXPECT_THAT(test::error_text([&] { affine_transform(bad_order); }),
                 testing::HasSubstr("unknown rotation order \"xxz\""));
 }
 
@@ -338,19 +330,19 @@ TEST(Mount, TrackingErrors) {
     m.tracking->name = "truck_01";
     MountContext context;
     context.parent_to_scene = Rigid::identity();
-    EXPECT_THAT(error_of([&] { mount_transform(m, 0.0, context); }),
+    EXPECT_THAT(test::error_text([&] { mount_transform(m, 0.0, context); }),
                 testing::HasSubstr("mounts.platform:160: platform/attachment/mount[Tracker]: "
                                    "mount \"Tracker\": tracking a named target (\"truck_01\") "
                                    "needs the scene (its instances are the targets)"));
     const MovingTarget targets;
     context.targets = &targets;
     m.tracking->name = "car_02";
-    EXPECT_THAT(error_of([&] { mount_transform(m, 0.0, context); }),
+    EXPECT_THAT(test::error_text([&] { mount_transform(m, 0.0, context); }),
                 testing::HasSubstr("the scene has no target named \"car_02\""));
-    EXPECT_THAT(error_of([&] { mount_transform(m, 0.0, {}); }),
+    EXPECT_THAT(test::error_text([&] { mount_transform(m, 0.0, {}); }),
                 testing::HasSubstr("needs the parent-to-scene transform"));
     m.tracking = model::TrackingTarget{};
-    EXPECT_THAT(error_of([&] { validate_mount(m); }), testing::HasSubstr("has no target"));
+    EXPECT_THAT(test::error_text([&] { validate_mount(m); }), testing::HasSubstr("has no target"));
 }
 
 TEST(Mount, ValidateRejectsBadTables) {
@@ -358,19 +350,22 @@ TEST(Mount, ValidateRejectsBadTables) {
     m.name = "Pointer";
     m.type = model::MountType::commanded;
     m.type_text = "commanded";
-    EXPECT_THAT(error_of([&] { validate_mount(m); }), testing::HasSubstr("has no entries"));
-    EXPECT_THAT(error_of([&] { mount_transform(m, 0.0); }), testing::HasSubstr("has no entries"));
+    EXPECT_THAT(test::error_text([&] { validate_mount(m); }), testing::HasSubstr("has no entries"));
+    EXPECT_THAT(test::error_text([&] { mount_transform(m, 0.0); }),
+                testing::HasSubstr("has no entries"));
     m.entries = {entry(1.0, {}), entry(1.0, {})};
-    EXPECT_THAT(error_of([&] { validate_mount(m); }),
+    EXPECT_THAT(test::error_text([&] { validate_mount(m); }),
                 testing::HasSubstr("not strictly increasing"));
     m.entries = {entry(1.0, {})};
     m.rotation_order = "abc";
-    EXPECT_THAT(error_of([&] { validate_mount(m); }), testing::HasSubstr("unknown rotation order"));
+    EXPECT_THAT(test::error_text([&] { validate_mount(m); }),
+                testing::HasSubstr("unknown rotation order"));
     model::Mount w;
     w.type = model::MountType::whisk;
-    EXPECT_THAT(error_of([&] { validate_mount(w); }), testing::HasSubstr("has no scan"));
+    EXPECT_THAT(test::error_text([&] { validate_mount(w); }), testing::HasSubstr("has no scan"));
     w.whisk = model::WhiskScan{};
-    EXPECT_THAT(error_of([&] { validate_mount(w); }), testing::HasSubstr("rate must be > 0"));
+    EXPECT_THAT(test::error_text([&] { validate_mount(w); }),
+                testing::HasSubstr("rate must be > 0"));
 }
 
 }  // namespace

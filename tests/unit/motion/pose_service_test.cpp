@@ -17,6 +17,8 @@
 #include "glint/core/error.h"
 #include "glint/legacy/readers.h"
 #include "glint/motion/euler.h"
+#include "glint/test/errors.h"
+#include "glint/test/platforms.h"
 #include "motion_expect.h"
 
 namespace glint::motion {
@@ -49,23 +51,6 @@ std::unique_ptr<Trajectory> hover(Vec3 position, Vec3 attitude = {}) {
     return std::make_unique<LineTrajectory>(position, Vec3{}, attitude, Vec3{});
 }
 
-/// A platform: attachment > static mount (rotation) > attachment > instrument "Cam".
-std::shared_ptr<model::Platform> one_mount_platform(std::array<double, 3> rotation_rad = {}) {
-    auto platform = std::make_shared<model::Platform>();
-    model::Instrument cam;
-    cam.name = "Cam";
-    model::Attachment inner;
-    inner.instruments.push_back(cam);
-    model::Mount mount;
-    mount.name = "Mount";
-    mount.rotation_rad = rotation_rad;
-    mount.attachments.push_back(inner);
-    model::Attachment outer;
-    outer.mounts.push_back(mount);
-    platform->attachments.push_back(outer);
-    return platform;
-}
-
 std::vector<model::Simulation> read_poses_jsim() {
     Diagnostics diagnostics;
     auto sims = legacy::read_jsim(kData + "/poses/poses.jsim", {}, diagnostics);
@@ -79,26 +64,16 @@ PoseService service_for(std::size_t plugin, std::uint64_t seed = 1) {
     return make_pose_service(sims.at(0), plugin, {}, seed, {}, diagnostics);
 }
 
-template <typename F>
-std::string error_of(F&& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "";
-}
-
 TEST(PoseService, IdentityMountsLookAlongVehicleMinusZ) {
     // Level vehicle: straight down.
-    PoseService level(one_mount_platform(), hover({5, 6, 700}), {}, {});
+    PoseService level(test::one_mount_platform(), hover({5, 6, 700}), {}, {});
     ASSERT_EQ(level.instrument_count(), 1u);
     const Rigid r = level.instrument_to_scene(0, 0.0);
     expect_near(boresight(r), {0, 0, -1}, 1e-15);
     expect_near(r.translation_m, {5, 6, 700}, 1e-12);
     // Any attitude: along the vehicle's −Z axis.
     const Vec3 attitude{0.2, -0.3, 1.0};
-    PoseService tilted(one_mount_platform(), hover({0, 0, 700}, attitude), {}, {});
+    PoseService tilted(test::one_mount_platform(), hover({0, 0, 700}, attitude), {}, {});
     const Vec3 vehicle_minus_z =
         -to_matrix(euler_to_quaternion(attitude, EulerOrder::xyz)).column(2);
     expect_near(boresight(tilted.instrument_to_scene(0, 0.0)), vehicle_minus_z, 1e-15);
@@ -106,7 +81,7 @@ TEST(PoseService, IdentityMountsLookAlongVehicleMinusZ) {
 
 TEST(PoseService, StaticThirtyDegreeXMountLooksForwardOfNadir) {
     // Vehicle nose north: +30° about X tilts the boresight 30° towards north (forward).
-    PoseService service(one_mount_platform({30 * kDeg, 0, 0}), hover({0, 0, 1000}), {}, {});
+    PoseService service(test::one_mount_platform({30 * kDeg, 0, 0}), hover({0, 0, 1000}), {}, {});
     const Vec3 b = boresight(service.instrument_to_scene(0, 0.0));
     expect_near(b, {0, 0.5, -std::sqrt(3.0) / 2}, 1e-15);
     // The ground point it sees: 1000·tan 30° north of the nadir.
@@ -242,23 +217,24 @@ TEST(PoseService, NamedTrackingTargetNeedsAScene) {
     const model::Platform platform =
         legacy::read_platform(kData + "/platform/mounts.platform", {}, diagnostics);
     ASSERT_FALSE(diagnostics.has_errors());
-    const std::string msg = error_of([&] {
+    const std::string msg = test::error_text([&] {
         PoseService(std::make_shared<model::Platform>(platform), hover({0, 0, 1000}), {}, {});
     });
     EXPECT_THAT(msg, testing::HasSubstr("mounts.platform:"));
-    EXPECT_THAT(msg, testing::HasSubstr("mount \"Tracker\": tracking a named target "
-                                        "(\"truck_01\") needs the scene (its instances are the targets)"));
+    EXPECT_THAT(
+        msg, testing::HasSubstr("mount \"Tracker\": tracking a named target "
+                                "(\"truck_01\") needs the scene (its instances are the targets)"));
 }
 
 TEST(PoseService, BadPluginIndexAndInstrumentIndex) {
     const auto sims = read_poses_jsim();
     Diagnostics diagnostics;
-    EXPECT_THAT(error_of([&] { make_pose_service(sims.at(0), 1, {}, 1, {}, diagnostics); }),
+    EXPECT_THAT(test::error_text([&] { make_pose_service(sims.at(0), 1, {}, 1, {}, diagnostics); }),
                 testing::HasSubstr("plugin_list[1] of"));
-    EXPECT_THAT(error_of([&] { make_pose_service(sims.at(0), 9, {}, 1, {}, diagnostics); }),
+    EXPECT_THAT(test::error_text([&] { make_pose_service(sims.at(0), 9, {}, 1, {}, diagnostics); }),
                 testing::HasSubstr("plugin index 9 out of range"));
     const PoseService service = service_for(0);
-    EXPECT_THAT(error_of([&] { service.instrument_to_scene(2, 0.0); }),
+    EXPECT_THAT(test::error_text([&] { service.instrument_to_scene(2, 0.0); }),
                 testing::HasSubstr("instrument index 2 out of range"));
 }
 

@@ -20,6 +20,7 @@
 #include "glint/motion/euler.h"
 #include "glint/motion/rigid.h"
 #include "glint/sensor/camera.h"
+#include "glint/test/platforms.h"
 
 namespace glint::sensor {
 namespace {
@@ -47,26 +48,9 @@ private:
     Vec3 m_p0, m_v, m_attitude;
 };
 
-/// A platform: attachment > static mount (rotation, xyz) > attachment > instrument "Cam".
-std::shared_ptr<model::Platform> platform(std::array<double, 3> mount_rotation_rad = {}) {
-    auto p = std::make_shared<model::Platform>();
-    model::Instrument cam;
-    cam.name = "Cam";
-    model::Attachment inner;
-    inner.instruments.push_back(cam);
-    model::Mount mount;
-    mount.name = "Mount";
-    mount.rotation_rad = mount_rotation_rad;
-    mount.attachments.push_back(inner);
-    model::Attachment outer;
-    outer.mounts.push_back(mount);
-    p->attachments.push_back(outer);
-    return p;
-}
-
 motion::PoseService poses(Vec3 p0, Vec3 v = {}, Vec3 attitude = {},
                           std::array<double, 3> mount_rad = {}) {
-    return motion::PoseService(platform(mount_rad),
+    return motion::PoseService(test::one_mount_platform(mount_rad),
                                std::make_unique<LineTrajectory>(p0, v, attitude), {}, {});
 }
 
