@@ -64,8 +64,8 @@ Json capture_json(const CaptureRecord& record, const motion::SceneFrame& frame) 
     j["time_window_s"] = Json::array({c.t0_s, c.t1_s});
     j["datetime_utc"] = datetime_utc(reference_of(record), c.t0_s);
     j["problem_count"] = record.problems;
-    if (source.focal_plane != nullptr && source.focal_plane->detector_array.rolling_line_time_s) {
-        const double line_time_s = *source.focal_plane->detector_array.rolling_line_time_s;
+    if (const std::optional<double> rolling = source.rolling_line_time_s()) {
+        const double line_time_s = *rolling;
         const double last_s = line_time_s * static_cast<double>(source.y_count - 1);
         j["rolling_readout"] =
             Json{{"line_time_s", line_time_s},

@@ -84,10 +84,7 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
     const radiometry::Environment environment =
         capture_environment(in, state, capture, source, path_cache);
     const radiometry::PathTracer tracer(geometry, state.materials, environment, options.tracer);
-    CaptureTiming timing{capture.t0_s, capture.t1_s,
-                         source.tdi_stages > 1
-                             ? 0.0
-                             : source.focal_plane->detector_array.rolling_line_time_s.value_or(0.0),
+    CaptureTiming timing{capture.t0_s, capture.t1_s, source.rolling_line_time_s().value_or(0.0),
                          source.tdi_stages};
     const PixelRaySource rays(state.camera, *plugin.poses, source.instrument_index, timing);
     radiometry::ProblemBatch batch;

@@ -335,6 +335,18 @@ TEST(Schedule, SynchronousAndTriggeredClocks) {
     EXPECT_NEAR(external[16], 1.975, 1e-12);
 }
 
+TEST(Schedule, RollingLineTimeIsNoneForGlobalShuttersAndTdi) {
+    model::FocalPlane plane;
+    Source source;
+    EXPECT_EQ(source.rolling_line_time_s(), std::nullopt);  // no focal plane
+    source.focal_plane = &plane;
+    EXPECT_EQ(source.rolling_line_time_s(), std::nullopt);  // global shutter
+    plane.detector_array.rolling_line_time_s = 2e-5;
+    EXPECT_EQ(source.rolling_line_time_s(), 2e-5);
+    source.tdi_stages = 4;
+    EXPECT_EQ(source.rolling_line_time_s(), std::nullopt);  // stages read once per capture
+}
+
 TEST(Schedule, ScaleResolutionScalesPixelCounts) {
     ScheduleOptions options;
     options.scale_resolution = 0.5;

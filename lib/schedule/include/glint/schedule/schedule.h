@@ -75,6 +75,12 @@ struct Source {
     std::size_t lines_per_capture() const { return tdi_stages > 1 ? 1 : y_count; }
     /// Length of a capture's integration window: integration_time_s × tdi_stages.
     double window_s() const { return integration_time_s * static_cast<double>(tdi_stages); }
+    /// The rolling readout's line time (row j starts j × it after the tick); nullopt for a
+    /// global shutter and for TDI arrays, whose stages are read once per capture.
+    std::optional<double> rolling_line_time_s() const {
+        if (tdi_stages > 1 || focal_plane == nullptr) return std::nullopt;
+        return focal_plane->detector_array.rolling_line_time_s;
+    }
     /// Trigger times (s after the reference) of an external clock, one period of them.
     std::vector<double> trigger_times_s;
     /// The focal plane's clock (same as focal_plane->detector_array.clock).
