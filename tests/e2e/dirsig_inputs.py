@@ -1,6 +1,7 @@
 # SPDX-License-Identifier: Apache-2.0
-"""DIRSIG input files the end-to-end tests write: raw platform motion (.ppd) and a one-task
-snapshot tasks file. Shared by render_units_test.py and render_geometry_test.py."""
+"""DIRSIG input files the end-to-end tests write: raw platform motion (.ppd), a one-task
+snapshot tasks file and the .sim naming the inputs. Shared by render_units_test.py and
+render_geometry_test.py."""
 
 
 def ppd(entries, rotation_order="xyz"):
@@ -21,6 +22,18 @@ def ppd(entries, rotation_order="xyz"):
         angularunits="degrees" spatialunits="meters">
 {''.join(rows)}  </data>
 </platformmotion>
+"""
+
+
+def sim(scene, platform, motion, tasks="snapshot.tasks", atmosphere="none.atm.yaml"):
+    """A DIRSIG4 .sim naming its inputs relative to itself."""
+    return f"""<simulation>
+  <scene                 externalfile="./{scene}"/>
+  <atmosphericconditions externalfile="./{atmosphere}"/>
+  <platform              externalfile="./{platform}"/>
+  <platformmotion        externalfile="./{motion}"/>
+  <tasklist              externalfile="./{tasks}"/>
+</simulation>
 """
 
 

@@ -278,14 +278,7 @@ TASKS = dirsig_inputs.snapshot_tasks(UTC)
 
 
 def sim(run_name):
-    return f"""<simulation>
-  <scene                 externalfile="./targets.yaml"/>
-  <atmosphericconditions externalfile="./none.atm.yaml"/>
-  <platform              externalfile="./{run_name}.platform"/>
-  <platformmotion        externalfile="./{run_name}.ppd"/>
-  <tasklist              externalfile="./snapshot.tasks"/>
-</simulation>
-"""
+    return dirsig_inputs.sim("targets.yaml", f"{run_name}.platform", f"{run_name}.ppd")
 
 
 def focal_plane_xml(case):

@@ -108,14 +108,7 @@ PPD = dirsig_inputs.ppd([(t, (0, 0, SENSOR_HEIGHT_M), (0, 0, 0)) for t in (0, 10
 
 TASKS = dirsig_inputs.snapshot_tasks(UTC)
 
-SIM = """<simulation>
-  <scene                 externalfile="./plate.yaml"/>
-  <atmosphericconditions externalfile="./none.atm.yaml"/>
-  <platform              externalfile="./units.platform"/>
-  <platformmotion        externalfile="./static.ppd"/>
-  <tasklist              externalfile="./snapshot.tasks"/>
-</simulation>
-"""
+SIM = dirsig_inputs.sim("plate.yaml", "units.platform", "static.ppd")
 
 
 def focal_plane_xml(row):
