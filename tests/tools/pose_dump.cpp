@@ -16,7 +16,8 @@
 
 #include "glint/core/error.h"
 #include "glint/core/runner.h"
-#include "glint/legacy/readers.h"
+#include "glint/dirsig/readers.h"
+#include "glint/inputs/load.h"
 #include "glint/motion/frames.h"
 #include "glint/motion/pose_service.h"
 
@@ -59,7 +60,7 @@ int dump(const Options& o, glint::Context& ctx, std::ostream& stream) {
 
     glint::Diagnostics diagnostics;
     const std::vector<glint::model::Simulation> simulations =
-        glint::legacy::read_simulation(o.simulation, {}, diagnostics);
+        glint::dirsig::read_simulation(o.simulation, {}, diagnostics);
     diagnostics.log_to(ctx.log);
     diagnostics.throw_if_errors();
     if (simulations.empty()) throw glint::input_error("no simulation", {o.simulation, 0, ""});
@@ -75,9 +76,10 @@ int dump(const Options& o, glint::Context& ctx, std::ostream& stream) {
         plugin = platforms.front();
     }
     glint::Diagnostics read_diagnostics;
-    const PoseService service = glint::motion::make_pose_service(simulation, plugin, {}, ctx.seed,
-                                                                 ctx.log, read_diagnostics);
+    const auto entry = glint::inputs::read_platform_entry(simulation, plugin, {}, read_diagnostics);
     read_diagnostics.log_to(ctx.log);
+    read_diagnostics.throw_if_errors();
+    const PoseService service = glint::motion::make_pose_service(*entry, ctx.seed, ctx.log);
     if (o.instrument && *o.instrument >= service.instrument_count()) {
         throw glint::usage_error("--instrument " + std::to_string(*o.instrument) +
                                  " out of range (the platform has " +

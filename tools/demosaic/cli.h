@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// The command line of glint-demosaic: options (with the spellings of the DIRSIG manual's
-// processing-task example, --input_filename= and --output_filename=), parsed by CLI11 into
-// app_demosaic::DemosaicToolOptions.
+// The command line of glint-demosaic: options (with the spellings of the processing-task
+// example of the DIRSIG5 BasicPlatform manual, --input_filename= and --output_filename=),
+// parsed by CLI11 into app_demosaic::DemosaicToolOptions.
 #pragma once
 
 #include <CLI/CLI.hpp>

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// glint-render's command line: the simulation and the options of the manual's "Usage" and
-// "Options" sections (DIRSIG's underscore spellings and dashed ones), plus glint's.
+// glint-render's command line: the simulation and the options of the "Usage" and "Options"
+// sections of the DIRSIG5 BasicPlatform manual (docs/references.md) (DIRSIG's underscore
+// spellings and dashed ones), plus glint's.
 #pragma once
 
 #include <CLI/CLI.hpp>

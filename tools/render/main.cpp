@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// glint-render: renders the captures of a .jsim or DIRSIG4 .sim into ENVI images in the
-// units the manual promises. A thin main over lib/app_render; the options are in cli.cpp.
+// glint-render: renders the captures of a .jsim or DIRSIG4 .sim into ENVI images in the units
+// the DIRSIG5 BasicPlatform manual promises. A thin main over lib/app_render; the options are
+// in cli.cpp.
 #include <unistd.h>
 
 #include <iostream>

@@ -7,7 +7,8 @@
 
 #include "glint/core/diagnostics.h"
 #include "glint/core/error.h"
-#include "glint/legacy/readers.h"
+#include "glint/core/text.h"
+#include "glint/dirsig/readers.h"
 
 namespace glint::app_detect::internal {
 namespace {
@@ -98,7 +99,7 @@ void choose_focal_plane(const Options& options, const io::EnviHeader& header,
         throw io_error("cannot read the platform: no such file", choice.platform_path.string());
     }
     Diagnostics diagnostics;
-    choice.platform = legacy::read_platform(choice.platform_path, {}, diagnostics);
+    choice.platform = dirsig::read_platform(choice.platform_path, {}, diagnostics);
     // Warnings, and every error after the first (which the thrown error carries).
     bool first_error = true;
     for (const Diagnostic& d : diagnostics.items()) {

@@ -8,10 +8,9 @@
 #include <cctype>
 
 #include "glint/core/text.h"
-#include "glint/legacy/atmosphere_reader.h"
-#include "glint/legacy/dirsig_scene_reader.h"
-#include "glint/legacy/readers.h"
-#include "glint/legacy/simulation_inputs.h"
+#include "glint/dirsig/readers.h"
+#include "glint/dirsig/scene_reader.h"
+#include "glint/inputs/simulation_inputs.h"
 
 namespace glint::app_platform2jsim {
 namespace {
@@ -46,7 +45,7 @@ bool check_exists(const model::FileRef& ref, const std::string& role, LoadedInpu
     std::string problem;
     if (!fs::exists(status)) {
         problem = role + " file does not exist: " + ref.resolved.string();
-        if (legacy::is_windows_absolute(ref.text)) problem += " (a Windows path)";
+        if (dirsig::is_windows_absolute(ref.text)) problem += " (a Windows path)";
     } else if (fs::is_directory(status)) {
         problem = role + " path is a folder, expected a file: " + ref.resolved.string();
     } else {
@@ -141,14 +140,14 @@ std::string contents_line(const std::string& role, const fs::path& file, std::si
 
 /// Reads a scene file (once); nullptr when it does not exist.
 const model::Scene* load_scene_ref(const model::FileRef& ref, LoadedInputs& inputs,
-                                   const legacy::ReadOptions& options) {
+                                   const dirsig::ReadOptions& options) {
     if (!check_exists(ref, "scene", inputs)) return nullptr;
     const fs::path key = key_of(ref.resolved);
     if (const auto it = inputs.scenes.find(key); it != inputs.scenes.end()) return &it->second;
     const std::size_t errors = inputs.diagnostics.error_count();
     model::Scene scene;
     try {
-        scene = legacy::read_scene(ref.resolved, options, inputs.diagnostics);
+        scene = inputs::read_scene(ref.resolved, options, inputs.diagnostics);
     } catch (const Error& error) {
         inputs.diagnostics.add(error);
     }
@@ -160,29 +159,29 @@ const model::Scene* load_scene_ref(const model::FileRef& ref, LoadedInputs& inpu
 /// Reads every scene of a simulation and, when there are several, merges them as a run
 /// would (materials by id, origin), reporting what the merge finds.
 void load_scenes(const model::Simulation& simulation, LoadedInputs& inputs,
-                 const legacy::ReadOptions& options) {
+                 const dirsig::ReadOptions& options) {
     std::vector<const model::Scene*> parts;
     for (const model::SceneEntry& entry : simulation.scenes) {
-        legacy::check_scene_offset(entry, inputs.diagnostics);
+        inputs::check_scene_offset(entry, inputs.diagnostics);
         if (const model::Scene* scene = load_scene_ref(entry.file, inputs, options)) {
             parts.push_back(scene);
         }
     }
     if (parts.size() < 2) return;
     model::Scene merged;
-    for (const model::Scene* part : parts) legacy::merge_scene(merged, *part, inputs.diagnostics);
+    for (const model::Scene* part : parts) inputs::merge_scene(merged, *part, inputs.diagnostics);
 }
 
 /// Reads an atmosphere file (once).
 void load_atmosphere_ref(const model::FileRef& ref, LoadedInputs& inputs,
-                         const legacy::ReadOptions& options) {
+                         const dirsig::ReadOptions& options) {
     if (!check_exists(ref, "atmosphere", inputs)) return;
     const fs::path key = key_of(ref.resolved);
     if (inputs.atmospheres.count(key) > 0) return;
     const std::size_t errors = inputs.diagnostics.error_count();
     model::Atmosphere atmosphere;
     try {
-        atmosphere = legacy::read_atmosphere(ref.resolved, options, inputs.diagnostics,
+        atmosphere = inputs::read_atmosphere(ref.resolved, options, inputs.diagnostics,
                                              ref.resolved.string());
     } catch (const Error& error) {
         inputs.diagnostics.add(error);
@@ -194,21 +193,21 @@ void load_atmosphere_ref(const model::FileRef& ref, LoadedInputs& inputs,
 }
 
 const model::Platform* load_platform_ref(const model::FileRef& ref, LoadedInputs& inputs,
-                                         const legacy::ReadOptions& options, LoadDepth depth) {
+                                         const dirsig::ReadOptions& options, LoadDepth depth) {
     if (!check_exists(ref, "platform", inputs)) return nullptr;
     return load_platform_file(ref.resolved, inputs, options, depth != LoadDepth::platforms);
 }
 
 void load_tasks_ref(const model::FileRef& ref, LoadedInputs& inputs,
-                    const legacy::ReadOptions& options) {
+                    const dirsig::ReadOptions& options) {
     if (!check_exists(ref, "tasks", inputs)) return;
     const fs::path key = key_of(ref.resolved);
     if (inputs.task_lists.count(key) > 0) return;
-    inputs.task_lists.emplace(key, legacy::read_tasks(ref.resolved, options, inputs.diagnostics));
+    inputs.task_lists.emplace(key, dirsig::read_tasks(ref.resolved, options, inputs.diagnostics));
 }
 
 void load_one_simulation(std::size_t index, LoadedInputs& inputs,
-                         const legacy::ReadOptions& options, LoadDepth depth) {
+                         const dirsig::ReadOptions& options, LoadDepth depth) {
     // Copy what is needed: loading may not touch inputs.simulations, but keep it simple.
     const model::Simulation simulation = inputs.simulations[index];
     const bool contents = depth == LoadDepth::contents;
@@ -220,10 +219,10 @@ void load_one_simulation(std::size_t index, LoadedInputs& inputs,
         }
     }
     const model::Plugin* used_atmosphere =
-        contents ? legacy::used_atmosphere_plugin(simulation, inputs.diagnostics) : nullptr;
+        contents ? inputs::used_atmosphere_plugin(simulation, inputs.diagnostics) : nullptr;
     if (contents && used_atmosphere == nullptr) {
         inputs.contents.push_back("atmosphere (default: " + simulation.file +
-                                  " names none): " + describe(legacy::default_atmosphere()));
+                                  " names none): " + describe(inputs::default_atmosphere()));
     }
     for (const model::Plugin& plugin : simulation.plugins) {
         if (plugin.basic_platform) {
@@ -254,42 +253,42 @@ const model::Platform* LoadedInputs::platform_of(const model::BasicPlatformInput
 }
 
 void load_simulation_file(const fs::path& file, LoadedInputs& inputs,
-                          const legacy::ReadOptions& options) {
+                          const dirsig::ReadOptions& options) {
     inputs.files.insert(key_of(file));
     std::vector<model::Simulation> read =
-        legacy::read_simulation(file, options, inputs.diagnostics);
+        dirsig::read_simulation(file, options, inputs.diagnostics);
     for (model::Simulation& simulation : read) inputs.simulations.push_back(std::move(simulation));
 }
 
 void load_basic_platform(const model::BasicPlatformInputs& entry, LoadedInputs& inputs,
-                         const legacy::ReadOptions& options, LoadDepth depth) {
+                         const dirsig::ReadOptions& options, LoadDepth depth) {
     load_platform_ref(entry.platform_file, inputs, options, depth);
     if (depth == LoadDepth::platforms) return;
     check_exists(entry.motion_file, "motion", inputs);
     load_tasks_ref(entry.tasks_file, inputs, options);
 }
 
-void load_references(LoadedInputs& inputs, const legacy::ReadOptions& options, LoadDepth depth) {
+void load_references(LoadedInputs& inputs, const dirsig::ReadOptions& options, LoadDepth depth) {
     for (std::size_t i = 0; i < inputs.simulations.size(); ++i) {
         load_one_simulation(i, inputs, options, depth);
     }
 }
 
 const model::Platform* load_platform_file(const fs::path& file, LoadedInputs& inputs,
-                                          const legacy::ReadOptions& options,
+                                          const dirsig::ReadOptions& options,
                                           bool check_references) {
     const fs::path key = key_of(file);
     inputs.files.insert(key);
     if (const auto it = inputs.platforms.find(key); it != inputs.platforms.end()) {
         return &it->second;
     }
-    model::Platform platform = legacy::read_platform(file, options, inputs.diagnostics);
+    model::Platform platform = dirsig::read_platform(file, options, inputs.diagnostics);
     const auto [it, inserted] = inputs.platforms.emplace(key, std::move(platform));
     if (check_references) check_platform_references(it->second, inputs);
     return &it->second;
 }
 
-void check_file(const fs::path& file, LoadedInputs& inputs, const legacy::ReadOptions& options) {
+void check_file(const fs::path& file, LoadedInputs& inputs, const dirsig::ReadOptions& options) {
     const std::string extension = lowercase(file.extension().string());
     if (extension == ".platform") {
         load_platform_file(file, inputs, options);
@@ -299,7 +298,7 @@ void check_file(const fs::path& file, LoadedInputs& inputs, const legacy::ReadOp
         const fs::path key = key_of(file);
         inputs.files.insert(key);
         if (inputs.task_lists.count(key) == 0) {
-            inputs.task_lists.emplace(key, legacy::read_tasks(file, options, inputs.diagnostics));
+            inputs.task_lists.emplace(key, dirsig::read_tasks(file, options, inputs.diagnostics));
         }
         return;
     }

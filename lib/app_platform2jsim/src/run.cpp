@@ -8,10 +8,10 @@
 
 #include "glint/app_platform2jsim/inputs.h"
 #include "glint/app_platform2jsim/platform2jsim.h"
+#include "glint/app_platform2jsim/platform_json.h"
 #include "glint/core/atomic_file.h"
 #include "glint/core/error.h"
-#include "glint/legacy/platform_json.h"
-#include "glint/legacy/readers.h"
+#include "glint/dirsig/readers.h"
 
 namespace glint::app_platform2jsim {
 namespace {
@@ -126,7 +126,7 @@ int run_convert(const Options& options, Context& ctx, std::ostream& out) {
     if (report(inputs, ctx, true)) return 1;
     refuse_overwrite(options.output, inputs);
     write_output(options.output,
-                 legacy::format_jsim(inputs.simulations, output_folder_of(options.output)), out);
+                 dirsig::format_jsim(inputs.simulations, output_folder_of(options.output)), out);
     return 0;
 }
 
@@ -154,7 +154,7 @@ int run_parts(const Options& options, Context& ctx, std::ostream& out) {
     if (report(inputs, ctx, true)) return 1;
     refuse_overwrite(options.output, inputs);
     write_output(options.output,
-                 legacy::format_jsim(inputs.simulations, output_folder_of(options.output)), out);
+                 dirsig::format_jsim(inputs.simulations, output_folder_of(options.output)), out);
     return 0;
 }
 
@@ -176,7 +176,7 @@ int run_append(const Options& options, Context& ctx, std::ostream& /*out*/) {
     }
     LoadedInputs inputs;
     inputs.files.insert(absolute_normal(jsim));
-    inputs.simulations = legacy::read_jsim(jsim, options.read_options, inputs.diagnostics);
+    inputs.simulations = dirsig::read_jsim(jsim, options.read_options, inputs.diagnostics);
     if (!inputs.diagnostics.has_errors() && inputs.simulations.size() != 1) {
         inputs.diagnostics.error(ErrorContext{jsim.string(), 0, {}},
                                  "--append needs a .jsim holding one simulation, found " +
@@ -209,7 +209,7 @@ int run_append(const Options& options, Context& ctx, std::ostream& /*out*/) {
     }
     ensure_not_an_input(jsim, std::span<const fs::path>(others));
     simulation.plugins.push_back(std::move(plugin));
-    write_file_atomically(jsim, legacy::format_jsim(inputs.simulations, output_folder_of(jsim)));
+    write_file_atomically(jsim, dirsig::format_jsim(inputs.simulations, output_folder_of(jsim)));
     return 0;
 }
 
@@ -240,7 +240,7 @@ int run_dump(const Options& options, Context& ctx, std::ostream& out) {
         const model::Platform* platform =
             load_platform_file(options.input, inputs, options.read_options, false);
         if (report(inputs, ctx, true)) return 1;
-        text = legacy::platform_to_json(*platform) + "\n";
+        text = app_platform2jsim::platform_to_json(*platform) + "\n";
     } else {
         load_simulation_file(options.input, inputs, options.read_options);
         load_references(inputs, options.read_options, LoadDepth::platforms);
@@ -251,7 +251,8 @@ int run_dump(const Options& options, Context& ctx, std::ostream& out) {
                 const model::Platform* platform =
                     inputs.platform_of(*simulation.plugins[index].basic_platform);
                 if (platform == nullptr) continue;
-                all.push_back(nlohmann::ordered_json::parse(legacy::platform_to_json(*platform)));
+                all.push_back(
+                    nlohmann::ordered_json::parse(app_platform2jsim::platform_to_json(*platform)));
             }
         }
         text = all.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";

@@ -4,11 +4,13 @@
 #include <cstdlib>
 #include <ostream>
 #include <string>
+#include <utility>
 
 #include "glint/app_render/render_tool.h"
 #include "glint/core/error.h"
 #include "glint/core/runner.h"
 #include "glint/core/text.h"
+#include "glint/inputs/load.h"
 
 namespace glint::app_render {
 namespace {
@@ -112,15 +114,18 @@ int run(Options options, Context& ctx, std::ostream& out) {
     if (!options.schedule.empty()) {
         render.only_captures = sensor::read_schedule_selection(options.schedule);
     }
+    inputs::LoadOptions load_options;
+    load_options.read = options.read;
+    model::SimulationInputs loaded = inputs::load_logged(options.input, load_options, ctx.log);
     if (options.dry_run) {
-        const sensor::RenderReport plan = sensor::plan(options.input, render, ctx);
+        const sensor::RenderReport plan = sensor::plan(std::move(loaded), render, ctx);
         out << "captures: " << plan.captures.size() << "\n";
         out << "pixels: " << plan.pixels << "\n";
         out << "memory estimate: " << mebibytes(plan.memory_estimate_bytes) << "\n";
         for (const auto& file : plan.files) out << "output: " << file.string() << "\n";
         return kExitSuccess;
     }
-    const sensor::RenderReport report = sensor::render(options.input, render, ctx);
+    const sensor::RenderReport report = sensor::render(std::move(loaded), render, ctx);
     for (const auto& file : report.files) out << file.string() << "\n";
     return kExitSuccess;
 }

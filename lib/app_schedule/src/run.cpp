@@ -6,6 +6,7 @@
 
 #include "glint/app_schedule/schedule_tool.h"
 #include "glint/core/error.h"
+#include "glint/inputs/load.h"
 #include "output.h"
 #include "writers.h"
 
@@ -23,8 +24,13 @@ std::optional<schedule::Schedule> load(const Options& options, Context& ctx) {
     schedule::ScheduleOptions schedule_options = options.schedule;
     schedule_options.seed = ctx.seed;
     try {
-        schedule::Schedule loaded = schedule::Schedule::load(
-            options.input, schedule_options, options.read_options, ctx.log, diagnostics);
+        inputs::LoadOptions load_options;
+        load_options.read = options.read_options;
+        load_options.atmosphere = false;  // the schedule needs no radiometry
+        const model::SimulationInputs loaded_inputs =
+            inputs::load(options.input, load_options, ctx.log, diagnostics);
+        schedule::Schedule loaded =
+            schedule::Schedule::build(loaded_inputs, schedule_options, ctx.log, diagnostics);
         diagnostics.log_to(ctx.log);
         return loaded;
     } catch (const Error& e) {

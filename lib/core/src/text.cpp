@@ -1,15 +1,102 @@
 // SPDX-License-Identifier: Apache-2.0
-// Number formatting shared by messages and file writers.
+// Small text helpers shared by every component (glint/core/text.h).
 #include "glint/core/text.h"
 
 #include <charconv>
+#include <cmath>
+#include <system_error>
 
 namespace glint {
+namespace {
+
+constexpr char ascii_lower(char c) noexcept {
+    return c >= 'A' && c <= 'Z' ? static_cast<char>(c - 'A' + 'a') : c;
+}
+
+bool is_blank(char c) noexcept {
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v';
+}
+
+/// Trims blanks and drops one leading '+'; nullopt for an empty result or a second sign.
+std::optional<std::string_view> strip_sign(std::string_view text) {
+    text = trim(text);
+    if (!text.empty() && text.front() == '+') {
+        text.remove_prefix(1);
+        if (!text.empty() && (text.front() == '+' || text.front() == '-')) return std::nullopt;
+    }
+    if (text.empty()) return std::nullopt;
+    return text;
+}
+
+}  // namespace
+
+std::string_view trim(std::string_view text) noexcept {
+    while (!text.empty() && is_blank(text.front())) text.remove_prefix(1);
+    while (!text.empty() && is_blank(text.back())) text.remove_suffix(1);
+    return text;
+}
 
 std::string format_shortest(double value) {
     char buffer[64];  // the longest shortest-form double is 24 characters
     const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
     return std::string(buffer, result.ptr);
+}
+
+std::string to_lower(std::string_view text) {
+    std::string out(text);
+    for (char& c : out) c = ascii_lower(c);
+    return out;
+}
+
+bool iequals(std::string_view a, std::string_view b) noexcept {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        if (ascii_lower(a[i]) != ascii_lower(b[i])) return false;
+    }
+    return true;
+}
+
+std::optional<double> parse_double(std::string_view text) {
+    const std::optional<std::string_view> body = strip_sign(text);
+    if (!body) return std::nullopt;
+    double value = 0.0;
+    const char* end = body->data() + body->size();
+    const auto [ptr, ec] = std::from_chars(body->data(), end, value, std::chars_format::general);
+    if (ec != std::errc() || ptr != end || !std::isfinite(value)) return std::nullopt;
+    return value;
+}
+
+std::optional<std::int64_t> parse_int(std::string_view text) {
+    const std::optional<std::string_view> body = strip_sign(text);
+    if (!body) return std::nullopt;
+    std::int64_t value = 0;
+    const char* end = body->data() + body->size();
+    const auto [ptr, ec] = std::from_chars(body->data(), end, value, 10);
+    if (ec != std::errc() || ptr != end) return std::nullopt;
+    return value;
+}
+
+std::optional<bool> parse_bool(std::string_view text) {
+    const std::string_view value = trim(text);
+    for (std::string_view yes : {"true", "1", "yes"}) {
+        if (iequals(value, yes)) return true;
+    }
+    for (std::string_view no : {"false", "0", "no"}) {
+        if (iequals(value, no)) return false;
+    }
+    return std::nullopt;
+}
+
+std::vector<std::string> split_list(std::string_view text, char separator) {
+    std::vector<std::string> items;
+    while (true) {
+        const std::size_t at = text.find(separator);
+        const std::string_view item = trim(text.substr(0, at));
+        if (!item.empty()) items.emplace_back(item);
+        if (at == std::string_view::npos) break;
+        text.remove_prefix(at + 1);
+    }
+    return items;
 }
 
 }  // namespace glint

@@ -14,11 +14,10 @@
 #include <iterator>
 #include <utility>
 
+#include "glint/io/input_files.h"
+
 namespace glint::io {
 namespace {
-
-/// DIRSIG inputs are a few MB at most; anything far larger is not one of them.
-constexpr std::uintmax_t kMaxInputBytes = 256u << 20;
 
 /// "mismatched element (element <b>)" from tinyxml2's error name and detail text.
 std::string describe_tinyxml_error(const tinyxml2::XMLDocument& doc) {
@@ -82,29 +81,6 @@ std::string path_step(const tinyxml2::XMLElement* element) {
 }
 
 }  // namespace
-
-std::string read_input_file(const std::filesystem::path& path, const std::string& display_name) {
-    const std::string& name = display_name.empty() ? path.string() : display_name;
-    std::error_code ec;
-    const auto status = std::filesystem::status(path, ec);
-    if (!ec && std::filesystem::is_directory(status)) {
-        throw io_error("is a folder, expected a file", name);
-    }
-    const std::uintmax_t size = std::filesystem::file_size(path, ec);
-    if (!ec && size > kMaxInputBytes) {
-        throw input_error("file is " + std::to_string(size) + " bytes, more than the " +
-                              std::to_string(kMaxInputBytes >> 20) + " MiB accepted for an input",
-                          ErrorContext{name, 0, {}});
-    }
-    std::ifstream stream(path, std::ios::binary);
-    if (!stream) {
-        const int code = errno;
-        throw io_error("cannot open file: " + errno_text(code), name);
-    }
-    std::string text((std::istreambuf_iterator<char>(stream)), std::istreambuf_iterator<char>());
-    if (stream.bad()) throw io_error("cannot read file", name);
-    return text;
-}
 
 XmlDocument::XmlDocument() : m_doc(std::make_unique<tinyxml2::XMLDocument>()) {}
 XmlDocument::XmlDocument(XmlDocument&&) noexcept = default;

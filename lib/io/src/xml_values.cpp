@@ -15,34 +15,6 @@
 namespace glint::io {
 namespace {
 
-bool is_blank(char c) {
-    return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v';
-}
-
-std::string_view trim(std::string_view text) {
-    while (!text.empty() && is_blank(text.front())) text.remove_prefix(1);
-    while (!text.empty() && is_blank(text.back())) text.remove_suffix(1);
-    return text;
-}
-
-/// Trims blanks and drops one leading '+'; nullopt for an empty result or a second sign.
-std::optional<std::string_view> strip_sign(std::string_view text) {
-    text = trim(text);
-    if (!text.empty() && text.front() == '+') {
-        text.remove_prefix(1);
-        if (!text.empty() && (text.front() == '+' || text.front() == '-')) return std::nullopt;
-    }
-    if (text.empty()) return std::nullopt;
-    return text;
-}
-
-bool iequals(std::string_view a, std::string_view b) {
-    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-               return std::tolower(static_cast<unsigned char>(x)) ==
-                      std::tolower(static_cast<unsigned char>(y));
-           });
-}
-
 /// A number for messages: integers without a fraction, others in shortest round-trip form.
 std::string format_number(double value) {
     if (std::abs(value) < 1e15 && value == std::trunc(value)) {
@@ -128,51 +100,6 @@ std::optional<std::string> check_enum(std::string_view text,
 }
 
 }  // namespace
-
-// ---- free parsers ----
-
-std::optional<double> parse_double(std::string_view text) {
-    const std::optional<std::string_view> body = strip_sign(text);
-    if (!body) return std::nullopt;
-    double value = 0.0;
-    const char* end = body->data() + body->size();
-    const auto [ptr, ec] = std::from_chars(body->data(), end, value, std::chars_format::general);
-    if (ec != std::errc() || ptr != end || !std::isfinite(value)) return std::nullopt;
-    return value;
-}
-
-std::optional<std::int64_t> parse_int(std::string_view text) {
-    const std::optional<std::string_view> body = strip_sign(text);
-    if (!body) return std::nullopt;
-    std::int64_t value = 0;
-    const char* end = body->data() + body->size();
-    const auto [ptr, ec] = std::from_chars(body->data(), end, value, 10);
-    if (ec != std::errc() || ptr != end) return std::nullopt;
-    return value;
-}
-
-std::optional<bool> parse_bool(std::string_view text) {
-    const std::string_view value = trim(text);
-    for (std::string_view yes : {"true", "1", "yes"}) {
-        if (iequals(value, yes)) return true;
-    }
-    for (std::string_view no : {"false", "0", "no"}) {
-        if (iequals(value, no)) return false;
-    }
-    return std::nullopt;
-}
-
-std::vector<std::string> split_list(std::string_view text, char separator) {
-    std::vector<std::string> items;
-    while (true) {
-        const std::size_t at = text.find(separator);
-        const std::string_view item = trim(text.substr(0, at));
-        if (!item.empty()) items.emplace_back(item);
-        if (at == std::string_view::npos) break;
-        text.remove_prefix(at + 1);
-    }
-    return items;
-}
 
 // ---- NumberRule ----
 

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// Quantities derived from the model: F-number and G-number of an instrument (the manual's
-// aperture term, docs/physics.md), the IFOV of a pixel pitch, the bandpass grid, and the
-// channels' relative spectral responses sampled on it with their trapezoid integrals.
+// Quantities derived from the model: F-number and G-number of an instrument (the aperture
+// term of the DIRSIG5 BasicPlatform manual, docs/references.md; docs/physics.md), the IFOV of
+// a pixel pitch, the bandpass grid, and the channels' relative spectral responses sampled on
+// it with their trapezoid integrals.
 #include "glint/model/derived.h"
 
 #include <algorithm>

@@ -16,7 +16,6 @@
 #include "glint/core/diagnostics.h"
 #include "glint/core/error.h"
 #include "glint/core/text.h"
-#include "glint/legacy/psd_reader.h"
 #include "glint/motion/fft.h"
 
 namespace glint::motion {
@@ -176,7 +175,7 @@ JitterSeries::JitterSeries(const JitterModel& model, std::uint64_t seed,
     if (model.psd == nullptr) throw input_error("psd jitter has no PSD table", model.where);
     const model::PsdTable& table = *model.psd;
     Diagnostics diagnostics;
-    legacy::validate_psd_table(table, diagnostics);
+    model::validate_psd_table(table, diagnostics);
     diagnostics.throw_if_errors();
     if (!std::isfinite(t0_s) || !std::isfinite(t1_s) || t1_s < t0_s) {
         throw input_error("jitter time span [" + num(t0_s) + ", " + num(t1_s) +
@@ -259,19 +258,21 @@ double JitterSeries::period_s() const noexcept {
 
 namespace {
 
-/// Reads a PSD file into `storage`, throwing the first error.
-void read_table(const model::FileRef& file, const ErrorContext& where, model::PsdTable& storage) {
+/// The PSD table of a psd jitter axis: its `psd`, which the input loader fills from the file
+/// the axis names. Throws glint::Error (input) when there is none.
+const model::PsdTable& psd_table(const std::optional<model::PsdTable>& psd,
+                                 const model::FileRef& file, const ErrorContext& where) {
+    if (psd) return *psd;
     if (file.empty()) throw input_error("psd jitter names no PSD file", where);
-    const std::filesystem::path path =
-        file.resolved.empty() ? std::filesystem::path(file.text) : file.resolved;
-    Diagnostics diagnostics;
-    storage = legacy::read_psd_file(path, diagnostics, file.text);
-    diagnostics.throw_if_errors();
+    throw input_error("psd jitter: the PSD file " + file.text +
+                          " was not read (inputs::load reads the PSD files a platform or motion "
+                          "names)",
+                      where);
 }
 
 }  // namespace
 
-JitterModel jitter_model(const model::JitterSpec& spec, model::PsdTable& storage) {
+JitterModel jitter_model(const model::JitterSpec& spec) {
     JitterModel m;
     m.mean = spec.mean;
     m.stddev = spec.stddev;
@@ -285,21 +286,14 @@ JitterModel jitter_model(const model::JitterSpec& spec, model::PsdTable& storage
             break;
         case model::JitterSpec::Kind::psd:
             m.kind = JitterModel::Kind::psd;
-            if (spec.psd) {
-                m.psd = &*spec.psd;
-            } else {
-                read_table(spec.psd_file,
-                           spec.psd_file.where.file.empty() ? spec.where : spec.psd_file.where,
-                           storage);
-                m.psd = &storage;
-            }
+            m.psd = &psd_table(spec.psd, spec.psd_file,
+                               spec.psd_file.where.file.empty() ? spec.where : spec.psd_file.where);
             break;
     }
     return m;
 }
 
-JitterModel jitter_model(const model::JitterAxis& axis, const ErrorContext& where,
-                         model::PsdTable& storage) {
+JitterModel jitter_model(const model::JitterAxis& axis, const ErrorContext& where) {
     JitterModel m;
     m.mean = axis.mean_rad;
     m.stddev = axis.stddev_rad;
@@ -313,9 +307,8 @@ JitterModel jitter_model(const model::JitterAxis& axis, const ErrorContext& wher
             break;
         case model::JitterAxis::Kind::psd:
             m.kind = JitterModel::Kind::psd;
-            read_table(axis.psd_file,
-                       axis.psd_file.where.file.empty() ? where : axis.psd_file.where, storage);
-            m.psd = &storage;
+            m.psd = &psd_table(axis.psd, axis.psd_file,
+                               axis.psd_file.where.file.empty() ? where : axis.psd_file.where);
             break;
     }
     return m;
@@ -338,11 +331,10 @@ PlatformJitterSampler::PlatformJitterSampler(const model::PlatformJitter& jitter
                                              double t0_s, double t1_s,
                                              const JitterSynthesisOptions& options) {
     for (std::size_t i = 0; i < 3; ++i) {
-        model::PsdTable storage;
-        m_location[i] = JitterSeries(jitter_model(jitter.location_m[i], storage), seed,
+        m_location[i] = JitterSeries(jitter_model(jitter.location_m[i]), seed,
                                      with_ids(stream_ids, kJitterDomainPlatformLocation, i), t0_s,
                                      t1_s, options);
-        m_orientation[i] = JitterSeries(jitter_model(jitter.orientation_rad[i], storage), seed,
+        m_orientation[i] = JitterSeries(jitter_model(jitter.orientation_rad[i]), seed,
                                         with_ids(stream_ids, kJitterDomainPlatformOrientation, i),
                                         t0_s, t1_s, options);
     }
@@ -369,8 +361,7 @@ MountJitterSampler::MountJitterSampler(const model::RotationDeviates& deviates, 
                                        const std::vector<std::uint64_t>& stream_ids, double t0_s,
                                        double t1_s, const JitterSynthesisOptions& options) {
     for (std::size_t i = 0; i < 3; ++i) {
-        model::PsdTable storage;
-        m_axes[i] = JitterSeries(jitter_model(deviates.axes[i], deviates.where, storage), seed,
+        m_axes[i] = JitterSeries(jitter_model(deviates.axes[i], deviates.where), seed,
                                  with_ids(stream_ids, kJitterDomainMount, i), t0_s, t1_s, options);
     }
 }

@@ -9,8 +9,6 @@
 #include <utility>
 
 #include "glint/core/error.h"
-#include "glint/legacy/motion_reader.h"
-#include "glint/legacy/readers.h"
 #include "glint/motion/euler.h"
 
 namespace glint::motion {
@@ -33,15 +31,6 @@ Quaternion jitter_rotation(const Vec3& angles_rad, EulerOrder order) noexcept {
         return Quaternion::identity();
     }
     return euler_to_quaternion(angles_rad, order);
-}
-
-/// The file a BasicPlatform input names, or a usage error naming the key.
-const std::filesystem::path& required_file(const model::FileRef& ref, const char* key,
-                                           const model::Plugin& plugin) {
-    if (ref.resolved.empty()) {
-        throw input_error(std::string("BasicPlatform has no ") + key, plugin.where);
-    }
-    return ref.resolved;
 }
 
 }  // namespace
@@ -198,31 +187,12 @@ TimeSpan jitter_span_of(const model::TaskList& tasks) noexcept {
     return {begin - 1.0, end + 1.0};
 }
 
-PoseService make_pose_service(const model::Simulation& simulation, std::size_t plugin_index,
-                              const legacy::ReadOptions& read_options, std::uint64_t seed,
-                              const Log& log, Diagnostics& diagnostics, const SceneFrame& scene,
+PoseService make_pose_service(const model::PlatformInputs& inputs, std::uint64_t seed,
+                              const Log& log, const SceneFrame& scene,
                               const TargetResolver* targets) {
-    if (plugin_index >= simulation.plugins.size()) {
-        throw usage_error("plugin index " + std::to_string(plugin_index) + " out of range (" +
-                          simulation.file + " has " + std::to_string(simulation.plugins.size()) +
-                          " plugins)");
-    }
-    const model::Plugin& plugin = simulation.plugins[plugin_index];
-    if (!plugin.basic_platform) {
-        throw usage_error("plugin_list[" + std::to_string(plugin_index) + "] of " +
-                          simulation.file + " is " + plugin.name + ", expected a BasicPlatform");
-    }
-    const model::BasicPlatformInputs& inputs = *plugin.basic_platform;
-
-    auto platform = std::make_shared<model::Platform>(
-        legacy::read_platform(required_file(inputs.platform_file, "platform_filename", plugin),
-                              read_options, diagnostics));
-    const model::PlatformMotion motion = legacy::read_motion(
-        required_file(inputs.motion_file, "motion_filename", plugin), read_options, diagnostics);
-    const model::TaskList tasks = legacy::read_tasks(
-        required_file(inputs.tasks_file, "tasks_filename", plugin), read_options, diagnostics);
-    diagnostics.throw_if_errors();
-
+    if (!inputs.platform) throw internal_error("make_pose_service: no platform");
+    const model::PlatformMotion& motion = inputs.motion;
+    const model::TaskList& tasks = inputs.tasks;
     std::unique_ptr<Trajectory> trajectory = make_trajectory(motion, scene, tasks.reference, log);
     PoseServiceOptions options;
     model::PlatformJitter jitter;
@@ -241,10 +211,10 @@ PoseService make_pose_service(const model::Simulation& simulation, std::size_t p
     }
 
     options.seed = seed;
-    options.plugin_index = plugin_index;
+    options.plugin_index = inputs.plugin_index;
     options.targets = targets;
     options.jitter_span = jitter_span_of(tasks);
-    return PoseService(std::move(platform), std::move(trajectory), jitter, options);
+    return PoseService(inputs.platform, std::move(trajectory), jitter, options);
 }
 
 }  // namespace glint::motion

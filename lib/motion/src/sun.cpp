@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
-// NREL Solar Position Algorithm (Reda & Andreas 2004, with the 2007/2008 corrections): the
-// Earth's heliocentric position from the truncated VSOP87 series of the paper's Table A4.2,
-// then the geocentric apparent sun and its topocentric zenith and azimuth (astro.cpp).
+// NREL Solar Position Algorithm (I. Reda and A. Andreas, "Solar position algorithm for solar
+// radiation applications", Solar Energy 76(5), 577-589, 2004, with the 2007/2008 corrections;
+// NREL/TP-560-34302; docs/references.md): the Earth's heliocentric position from the
+// truncated VSOP87 series of SPA's Table A4.2 (Appendix A4 of Reda & Andreas), then the
+// geocentric apparent sun and its topocentric zenith and azimuth (astro.cpp).
 #include "glint/motion/sun.h"
 
 #include <cmath>

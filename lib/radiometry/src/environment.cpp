@@ -58,10 +58,9 @@ std::pair<std::size_t, double> locate(double value, double step, std::size_t cou
 }
 
 /// T_v over the view-zenith nodes and L_p over the (zenith, relative azimuth) nodes.
-std::shared_ptr<const SensorPathTables> sensor_path_tables(const SpectralGrid& grid,
-                                                           const scene::AtmosphereModel& atmosphere,
-                                                           scene::AtmosphereGeometry geometry,
-                                                           const std::vector<double>& toa) {
+std::shared_ptr<const SensorPathTables> sensor_path_tables(
+    const SpectralGrid& grid, const glint::atmosphere::AtmosphereModel& atmosphere,
+    glint::atmosphere::AtmosphereGeometry geometry, const std::vector<double>& toa) {
     auto t = std::make_shared<SensorPathTables>();
     const std::size_t bands = grid.size();
     t->zenith_nodes = static_cast<std::size_t>(std::lround(Environment::kViewZenithMaxDeg /
@@ -126,9 +125,10 @@ Environment Environment::uniform(const SpectralGrid& grid, const Vec3& sun_direc
     return env;
 }
 
-Environment Environment::make(const SpectralGrid& grid, const scene::AtmosphereModel& atmosphere,
-                              const scene::SolarSpectrum& sun, const EnvironmentInputs& in,
-                              SensorPathCache* cache) {
+Environment Environment::make(const SpectralGrid& grid,
+                              const glint::atmosphere::AtmosphereModel& atmosphere,
+                              const glint::atmosphere::SolarSpectrum& sun,
+                              const EnvironmentInputs& in, SensorPathCache* cache) {
     if (!std::isfinite(in.window_begin_s) || !std::isfinite(in.window_end_s) ||
         in.window_end_s < in.window_begin_s) {
         throw input_error("the capture window must be finite with end >= begin");
@@ -143,7 +143,7 @@ Environment Environment::make(const SpectralGrid& grid, const scene::AtmosphereM
     env.m_window_end_s = in.window_end_s;
 
     const Vec3 sun_mid = env.sun_direction(0.5 * (in.window_begin_s + in.window_end_s));
-    scene::AtmosphereGeometry geometry;
+    glint::atmosphere::AtmosphereGeometry geometry;
     geometry.sun_zenith_deg = zenith_deg(sun_mid);
     geometry.sun_azimuth_deg = azimuth_deg(sun_mid);
     geometry.surface_altitude_m = in.surface_altitude_m;
@@ -164,7 +164,7 @@ Environment Environment::make(const SpectralGrid& grid, const scene::AtmosphereM
         std::llround(geometry.sensor_altitude_m / SensorPathCache::kAltitudeStepM)};
     if (cache != nullptr) env.m_paths = cache->find(key);
     if (!env.m_paths) {
-        scene::AtmosphereGeometry rounded = geometry;
+        glint::atmosphere::AtmosphereGeometry rounded = geometry;
         rounded.sun_zenith_deg = static_cast<double>(key[0]) * SensorPathCache::kAngleStepDeg;
         rounded.sun_azimuth_deg = static_cast<double>(key[1]) * SensorPathCache::kAngleStepDeg;
         rounded.surface_altitude_m = static_cast<double>(key[2]) * SensorPathCache::kAltitudeStepM;

@@ -12,7 +12,6 @@
 
 #include "glint/core/error.h"
 #include "glint/core/text.h"
-#include "glint/schedule/trigger_file.h"
 
 namespace glint::schedule {
 
@@ -202,6 +201,12 @@ std::vector<double> ClockTicks::times_s() const {
     times.reserve(m_count);
     for (std::uint64_t i = 0; i < m_count; ++i) times.push_back(time_s(i));
     return times;
+}
+
+std::optional<double> trigger_period_s(std::span<const double> times_s) {
+    if (times_s.size() < 2) return std::nullopt;
+    const double n = static_cast<double>(times_s.size());
+    return (times_s.back() - times_s.front()) * n / (n - 1.0);
 }
 
 }  // namespace glint::schedule

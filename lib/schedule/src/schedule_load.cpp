@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// Schedule::load: reads the simulation, builds one pose service per BasicPlatform entry (it
-// reads the platform, motion and tasks), lists the sources (enabled focal planes, pixel
-// counts scaled by --scale_resolution, trigger files read once each), checks that no two
-// outputs share a file name, and computes the tick range of every (source, task).
+// Schedule::build: one pose service per BasicPlatform entry of the loaded simulation, the
+// sources (enabled focal planes, pixel counts scaled by --scale_resolution, trigger times as
+// the loader read them), a check that no two outputs share a file name, and the tick range of
+// every (source, task).
 #include <cmath>
 #include <map>
 #include <memory>
@@ -11,11 +11,8 @@
 
 #include "glint/core/error.h"
 #include "glint/core/text.h"
-#include "glint/legacy/readers.h"
-#include "glint/legacy/simulation_inputs.h"
 #include "glint/model/platform.h"
 #include "glint/schedule/schedule.h"
-#include "glint/schedule/trigger_file.h"
 #include "schedule_impl.h"
 
 namespace glint::schedule {
@@ -82,44 +79,35 @@ bool set_pixel_counts(Source& source, double factor, Diagnostics& diagnostics) {
 struct Loader {
     const model::Simulation& simulation;
     const ScheduleOptions& options;
-    const legacy::ReadOptions& read_options;
     const Log& log;
     Diagnostics& diagnostics;
     detail::ScheduleData& impl;
-    /// Trigger files read so far (each file is read and reported once).
-    std::map<std::filesystem::path, std::vector<double>> trigger_files;
 
-    void load_plugin(std::size_t plugin_index);
+    void load_plugin(const model::PlatformInputs& inputs);
     void add_sources(std::size_t plugin_slot);
     void check_output_names();
     void compute_ticks();
 };
 
-void Loader::load_plugin(std::size_t plugin_index) {
-    const model::Plugin& plugin = simulation.plugins[plugin_index];
-    // Each entry reads into its own diagnostics: make_pose_service throws when its
-    // diagnostics hold any error, which must not be another entry's.
-    Diagnostics local;
+void Loader::load_plugin(const model::PlatformInputs& inputs) {
+    const std::size_t plugin_index = inputs.plugin_index;
+    const model::Plugin& plugin = simulation.plugins.at(plugin_index);
     std::shared_ptr<const motion::PoseService> poses;
     try {
         poses = std::make_shared<const motion::PoseService>(
-            motion::make_pose_service(simulation, plugin_index, read_options, options.seed, log,
-                                      local, impl.frame, impl.targets.get()));
+            motion::make_pose_service(inputs, options.seed, log, impl.frame, impl.targets.get()));
     } catch (const Error& error) {
-        if (!local.has_errors()) local.add(error);  // else it repeats local's first error
+        diagnostics.add(error);
+        return;
     }
-    merge(local, diagnostics);
-    if (!poses) return;
 
-    const model::BasicPlatformInputs& inputs = *plugin.basic_platform;
+    const model::BasicPlatformInputs& files = *plugin.basic_platform;
     PluginSchedule entry;
     entry.plugin_index = plugin_index;
-    entry.output_folder = inputs.output_folder.value_or(options.output_folder.value_or(""));
-    entry.output_prefix = inputs.output_prefix.value_or(options.output_prefix.value_or(""));
-    // The platform the pose service read (and keeps alive): one copy, one instrument order.
-    entry.platform = std::shared_ptr<const model::Platform>(poses, &poses->platform());
-    Diagnostics reread;  // make_pose_service read this file already and reported its problems
-    entry.tasks = legacy::read_tasks(inputs.tasks_file.resolved, read_options, reread);
+    entry.output_folder = files.output_folder.value_or(options.output_folder.value_or(""));
+    entry.output_prefix = files.output_prefix.value_or(options.output_prefix.value_or(""));
+    entry.platform = inputs.platform;
+    entry.tasks = inputs.tasks;
     entry.poses = poses;
     for (const model::Task& task : entry.tasks.tasks) {
         if (!std::isfinite(task.start_s) || !std::isfinite(task.stop_s) ||
@@ -158,14 +146,8 @@ void Loader::add_sources(std::size_t plugin_slot) {
             source.integration_time_s = plane.capture_method.temporal_integration.time_s;
             if (!set_pixel_counts(source, options.scale_resolution, diagnostics)) continue;
             const model::Clock& clock = plane.detector_array.clock;
-            if (clock.type == model::ClockType::external_trigger &&
-                !clock.trigger_file.resolved.empty()) {
-                const std::filesystem::path& file = clock.trigger_file.resolved;
-                auto found = trigger_files.find(file);
-                if (found == trigger_files.end()) {
-                    found = trigger_files.emplace(file, read_trigger_file(file, diagnostics)).first;
-                }
-                source.trigger_times_s = found->second;
+            if (clock.type == model::ClockType::external_trigger) {
+                source.trigger_times_s = clock.trigger_times_s;  // read by the input loader
             }
             impl.sources.push_back(std::move(source));
         }
@@ -266,68 +248,36 @@ std::uint64_t checked_multiply(std::uint64_t a, std::uint64_t b) {
     return product;
 }
 
-/// The tasks reference of the first BasicPlatform (dynamic scene instances move in its
-/// time); the epoch when it cannot be read (the loader reports why).
-DateTime first_reference(const model::Simulation& simulation,
-                         const legacy::ReadOptions& read_options) {
-    for (const std::size_t index : simulation.basic_platform_indices()) {
-        const model::BasicPlatformInputs& inputs = *simulation.plugins[index].basic_platform;
-        Diagnostics ignored;  // read again, and reported, by the loader
-        try {
-            return legacy::read_tasks(inputs.tasks_file.resolved, read_options, ignored).reference;
-        } catch (const Error&) {
-            return DateTime{};
-        }
-    }
-    return DateTime{};
-}
-
 }  // namespace
 
-Schedule Schedule::load(const std::filesystem::path& simulation_file,
-                        const ScheduleOptions& options, const legacy::ReadOptions& read_options,
-                        const Log& log, Diagnostics& diagnostics) {
+Schedule Schedule::build(const model::SimulationInputs& inputs, const ScheduleOptions& options,
+                         const Log& log, Diagnostics& diagnostics) {
     if (!std::isfinite(options.scale_resolution) || options.scale_resolution <= 0.0) {
         throw usage_error("--scale_resolution " + format_shortest(options.scale_resolution) +
                           " is not a positive number, expected a factor > 0");
     }
-    const std::vector<model::Simulation> simulations =
-        legacy::read_simulation(simulation_file, read_options, diagnostics);
-    diagnostics.throw_if_errors();
-    if (simulations.size() != 1) {
-        throw input_error("the file holds " + std::to_string(simulations.size()) +
-                              " simulations, expected one (split the array into one .jsim "
-                              "per simulation)",
-                          ErrorContext{simulation_file.string(), 0, ""});
-    }
-    const model::Simulation& simulation = simulations.front();
-
+    const model::Simulation& simulation = inputs.simulation;
     Schedule schedule;
     Impl& impl = *schedule.m_impl;
-    impl.simulation_file = simulation_file;
+    impl.simulation_file = simulation.file;
     // The poses live in the scene's frame, and tracking mounts may point at its instances.
-    std::optional<model::Scene> read_scene;
-    const model::Scene* scene = options.scene;
-    if (scene == nullptr) {
-        read_scene = legacy::read_simulation_scene(simulation, read_options, diagnostics);
-        diagnostics.throw_if_errors();
-        scene = &*read_scene;
-    }
+    const model::Scene& scene = inputs.scene;
     if (options.scene_origin) {
         impl.frame = motion::SceneFrame(*options.scene_origin);
-    } else if (scene->origin) {
-        impl.frame = motion::SceneFrame(scene->origin->latitude_deg, scene->origin->longitude_deg,
-                                        scene->origin->altitude_m);
+    } else if (scene.origin) {
+        impl.frame = motion::SceneFrame(scene.origin->latitude_deg, scene.origin->longitude_deg,
+                                        scene.origin->altitude_m);
     }
-    impl.targets = std::make_shared<const motion::SceneTargets>(
-        *scene, impl.frame, first_reference(simulation, read_options), log);
-    Loader loader{simulation, options, read_options, log, diagnostics, impl, {}};
-    const std::vector<std::size_t> entries = simulation.basic_platform_indices();
-    if (entries.empty()) {
-        diagnostics.warning(ErrorContext{simulation_file.string(), 0, ""},
+    // Dynamic scene instances move in the time of the first BasicPlatform's tasks.
+    const DateTime reference =
+        inputs.platforms.empty() ? DateTime{} : inputs.platforms.front().tasks.reference;
+    impl.targets = std::make_shared<const motion::SceneTargets>(scene, impl.frame, reference, log);
+    Loader loader{simulation, options, log, diagnostics, impl};
+    if (simulation.basic_platform_indices().empty()) {
+        diagnostics.warning(ErrorContext{simulation.file, 0, ""},
                             "no BasicPlatform entry in plugin_list: the schedule is empty");
     }
-    for (const std::size_t plugin_index : entries) loader.load_plugin(plugin_index);
+    for (const model::PlatformInputs& platform : inputs.platforms) loader.load_plugin(platform);
     loader.check_output_names();
     loader.compute_ticks();
     diagnostics.throw_if_errors();

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// Hypersampling (the manual's "Hypersampling" with ::IMPORTANT:: labels): the pixels of a
-// capture whose field of view may contain an important instance.
+// Hypersampling ("Hypersampling" in the DIRSIG5 BasicPlatform manual, docs/references.md,
+// with ::IMPORTANT:: labels): the pixels of a capture whose field of view may contain an
+// important instance.
 #include <algorithm>
 #include <array>
 #include <cmath>

@@ -7,15 +7,16 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <utility>
 
 #include "render_parts.h"
 
 namespace glint::sensor {
 
-RenderReport plan(const std::filesystem::path& simulation_file, const RenderOptions& options,
+RenderReport plan(model::SimulationInputs inputs, const RenderOptions& options,
                   const Context& context) {
     const std::unique_ptr<detail::Prepared> prepared =
-        detail::prepare(simulation_file, options, context);
+        detail::prepare(std::move(inputs), options, context);
     RenderReport report = prepared->report;
     for (const detail::PlannedCapture& p : prepared->captures) {
         CaptureReport c;
@@ -27,10 +28,10 @@ RenderReport plan(const std::filesystem::path& simulation_file, const RenderOpti
     return report;
 }
 
-RenderReport render(const std::filesystem::path& simulation_file, const RenderOptions& options,
+RenderReport render(model::SimulationInputs inputs, const RenderOptions& options,
                     const Context& context) {
     const std::unique_ptr<detail::Prepared> prepared =
-        detail::prepare(simulation_file, options, context);
+        detail::prepare(std::move(inputs), options, context);
     const detail::RenderInputs& in = prepared->inputs;
     RenderReport report = prepared->report;
     std::optional<scene::GeometryScene> static_scene;

@@ -96,9 +96,9 @@ io::EnviHeader header_of(const schedule::Source& source, const OutputUnits& unit
 }
 
 /// The capture method whose units the output takes: with a detector model the <imagefile>'s
-/// fluxunits and areaunits are ignored (as the manual says) for the photon product at the
-/// focal plane, per cm², channels integrated and not normalized, that detection needs. A TDI
-/// pixel's integration time is that of all its stages.
+/// fluxunits and areaunits are ignored (as the DIRSIG5 BasicPlatform manual says) for the
+/// photon product at the focal plane, per cm², channels integrated and not normalized, that
+/// detection needs. A TDI pixel's integration time is that of all its stages.
 model::CaptureMethod units_method(const schedule::Source& source, const Context& context) {
     const model::FocalPlane& fp = *source.focal_plane;
     model::CaptureMethod method = fp.capture_method;

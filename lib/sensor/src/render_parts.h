@@ -10,19 +10,20 @@
 #include <optional>
 #include <vector>
 
+#include "glint/atmosphere/atmosphere.h"
+#include "glint/atmosphere/solar.h"
 #include "glint/core/spectral.h"
 #include "glint/detect/chain.h"
 #include "glint/io/envi.h"
 #include "glint/model/atmosphere.h"
+#include "glint/model/inputs.h"
 #include "glint/model/scene.h"
 #include "glint/model/simulation.h"
 #include "glint/motion/frames.h"
 #include "glint/motion/trajectory.h"
 #include "glint/radiometry/environment.h"
 #include "glint/radiometry/materials.h"
-#include "glint/scene/atmosphere.h"
 #include "glint/scene/geometry_scene.h"
-#include "glint/scene/solar.h"
 #include "glint/sensor/camera.h"
 #include "glint/sensor/image_outputs.h"
 #include "glint/sensor/output_units.h"
@@ -35,18 +36,20 @@ struct RenderInputs {
     model::Simulation simulation;
     model::Scene scene;
     model::Atmosphere atmosphere;
-    std::unique_ptr<scene::AtmosphereModel> atmosphere_model;
-    std::optional<scene::SolarSpectrum> sun;
+    std::unique_ptr<glint::atmosphere::AtmosphereModel> atmosphere_model;
+    std::optional<glint::atmosphere::SolarSpectrum> sun;
     motion::SceneFrame frame;
     std::optional<schedule::Schedule> schedule;
     std::vector<std::unique_ptr<motion::Trajectory>> trajectories;
     bool dynamic_scene = false;  ///< some instance moves: the Embree scene is per capture
 };
 
-/// Reads the simulation, its scenes and atmosphere, the solar spectrum and the schedule
-/// (placed at the scene's origin). Throws glint::Error (input) listing every problem.
-RenderInputs load_inputs(const std::filesystem::path& simulation_file, const RenderOptions& options,
-                         const Context& context);
+/// Takes over a loaded simulation (glint/inputs/load.h) and builds what the captures share:
+/// the schedule (placed at the scene's origin), the atmosphere model, the solar spectrum (read
+/// from options.data_dir) and the scene instances' trajectories. Logs every problem of the
+/// schedule; throws glint::Error (input) when there are errors.
+RenderInputs make_render_inputs(model::SimulationInputs loaded, const RenderOptions& options,
+                                const Context& context);
 
 /// What one focal plane needs for every capture.
 struct FocalPlaneState {
@@ -62,8 +65,11 @@ struct FocalPlaneState {
     std::optional<detect::DetectionChain> detection;
 };
 
-/// Builds the state of schedule source `source`. Throws glint::Error (input, at the focal
-/// plane) for what glint cannot render (TDI focal planes, no focal length).
+/// Builds the state of schedule source `source` (frame, pushbroom and TDI focal planes alike).
+/// Throws glint::Error (input, at the element) for what glint cannot render: an instrument
+/// without a focal length (CameraModel), a bad `<convergence>`, and, when the focal plane
+/// detects (detector model, TDI or colour filter array, unless --radiance-only), what
+/// detect::resolve_detection refuses.
 FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t source,
                                        const RenderOptions& options, const Context& context);
 
@@ -99,10 +105,11 @@ struct Prepared {
     RenderReport report;  ///< files planned, pixels, memory estimate
 };
 
-/// Loads the inputs, selects the captures (--schedule), builds every focal plane's state and
-/// plans every output file. Throws what load_inputs and make_focal_plane_state throw.
-std::unique_ptr<Prepared> prepare(const std::filesystem::path& simulation_file,
-                                  const RenderOptions& options, const Context& context);
+/// Takes over the loaded inputs, selects the captures (--schedule), builds every focal plane's
+/// state and plans every output file. Throws what make_render_inputs and
+/// make_focal_plane_state throw.
+std::unique_ptr<Prepared> prepare(model::SimulationInputs loaded, const RenderOptions& options,
+                                  const Context& context);
 
 /// Writes the capture list of the run (--log_info_filename), atomically; nothing when the
 /// option is empty.

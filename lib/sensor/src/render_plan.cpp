@@ -85,10 +85,10 @@ void plan_outputs(const RenderInputs& in, const std::vector<PlannedCapture>& cap
 
 }  // namespace
 
-std::unique_ptr<Prepared> prepare(const std::filesystem::path& simulation_file,
-                                  const RenderOptions& options, const Context& context) {
+std::unique_ptr<Prepared> prepare(model::SimulationInputs loaded, const RenderOptions& options,
+                                  const Context& context) {
     auto p = std::make_unique<Prepared>();
-    p->inputs = load_inputs(simulation_file, options, context);
+    p->inputs = make_render_inputs(std::move(loaded), options, context);
     p->captures = select_captures(p->inputs, options, context);
     plan_outputs(p->inputs, p->captures, p->states, options, context, p->outputs);
     RenderReport& report = p->report;

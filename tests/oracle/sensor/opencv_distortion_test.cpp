@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
-// OpenCV as an oracle for the camera's lens distortion (VALIDATION.md): the manual's
-// five-parameter model is OpenCV's (distCoeffs = k1, k2, p1, p2, k3 on coordinates
-// normalised by the focal length). For a grid of pixel positions across arrays with barrel,
-// pincushion and tangential distortion (and an array offset), glint's direction() (the
-// iterative inverse) must give the normalised undistorted point cv2.undistortPointsIter finds
-// (iterated to 1e-15), and project() (the forward model) must give the distorted point
-// cv2.projectPoints computes from that direction. Both within 1e-12 in normalised units
-// (1e-13 m on the focal plane for f = 0.1 m): both sides iterate to about 1e-15, so what is
-// left is double round-off (about 1e-15 measured), while the distortion moves the points by
-// 4e-5 to 1.5e-4.
+// OpenCV as an oracle for the camera's lens distortion (docs/validation.md): the
+// five-parameter model of the DIRSIG5 BasicPlatform manual (docs/references.md) is OpenCV's
+// (distCoeffs = k1, k2, p1, p2, k3 on coordinates normalised by the focal length). For a
+// grid of pixel positions across arrays with barrel, pincushion and tangential distortion
+// (and an array offset), glint's direction() (the iterative inverse) must give the
+// normalised undistorted point cv2.undistortPointsIter finds (iterated to 1e-15), and
+// project() (the forward model) must give the distorted point cv2.projectPoints computes
+// from that direction. Both within 1e-12 in normalised units (1e-13 m on the focal plane
+// for f = 0.1 m): both sides iterate to about 1e-15, so what is left is double round-off
+// (about 1e-15 measured), while the distortion moves the points by 4e-5 to 1.5e-4.
 // Skips when cv2 cannot be imported.
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 // field by field: counts, SI conversions (mm, µm, nm, degrees), resolved defaults, the
 // derived F#, G# = (1 + 4F#²)/(τπ), pixel IFOV, and channel integrals against analytic or
 // independently computed values.
-#include "glint/legacy/platform_json.h"
+#include "glint/app_platform2jsim/platform_json.h"
 
 #include <gtest/gtest.h>
 
@@ -14,9 +14,9 @@
 #include <set>
 #include <string>
 
-#include "glint/legacy/readers.h"
+#include "glint/dirsig/readers.h"
 
-namespace glint::legacy {
+namespace glint::app_platform2jsim {
 namespace {
 
 using Json = nlohmann::json;
@@ -30,7 +30,8 @@ std::filesystem::path platform_path(const std::string& name) {
 /// Reads a test platform (which must have no error) and returns its parsed dump.
 Json dump(const std::string& name) {
     Diagnostics diagnostics;
-    const model::Platform platform = read_platform(platform_path(name), ReadOptions{}, diagnostics);
+    const model::Platform platform =
+        dirsig::read_platform(platform_path(name), dirsig::ReadOptions{}, diagnostics);
     for (const Diagnostic& d : diagnostics.items()) {
         if (d.severity == Diagnostic::Severity::error) ADD_FAILURE() << d.text();
     }
@@ -132,7 +133,7 @@ TEST_P(PlatformJsonAll, HasEveryKeyAndTheFormatHeader) {
 TEST_P(PlatformJsonAll, IsDeterministic) {
     Diagnostics diagnostics;
     const model::Platform platform =
-        read_platform(platform_path(GetParam()), ReadOptions{}, diagnostics);
+        dirsig::read_platform(platform_path(GetParam()), dirsig::ReadOptions{}, diagnostics);
     EXPECT_EQ(platform_to_json(platform), platform_to_json(platform));
     EXPECT_EQ(platform_to_json(platform, -1).find('\n'), std::string::npos);
 }
@@ -617,4 +618,4 @@ TEST(PlatformJson, SuperDoveTabulatedChannelsIntegrateAsTheirTables) {
 }
 
 }  // namespace
-}  // namespace glint::legacy
+}  // namespace glint::app_platform2jsim

@@ -18,7 +18,8 @@
 
 #include "glint/app_schedule/schedule_tool.h"
 #include "glint/core/error.h"
-#include "glint/legacy/readers.h"
+#include "glint/dirsig/readers.h"
+#include "glint/inputs/load.h"
 #include "glint/motion/pose_service.h"
 #include "glint/motion/sun.h"
 #include "glint/test/temp_dir.h"
@@ -173,12 +174,13 @@ TEST_F(ScheduleToolTest, PosesEqualThePoseServiceAtMidWindow) {
     const Json j = run_json();
     Diagnostics diagnostics;
     const std::vector<model::Simulation> simulations =
-        legacy::read_simulation(kData / "small.jsim", {}, diagnostics);
+        dirsig::read_simulation(kData / "small.jsim", {}, diagnostics);
     ASSERT_EQ(simulations.size(), 1u);
     std::map<int, motion::PoseService> services;
     for (int plugin : {0, 2}) {
-        services.emplace(
-            plugin, motion::make_pose_service(simulations[0], plugin, {}, 7, Log{}, diagnostics));
+        const auto entry = inputs::read_platform_entry(simulations[0], plugin, {}, diagnostics);
+        ASSERT_TRUE(entry);
+        services.emplace(plugin, motion::make_pose_service(*entry, 7, Log{}));
     }
     const motion::SceneFrame frame;
     for (const Json& c : j["captures"]) {

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "glint/core/error.h"
+#include "glint/test/schedules.h"
 
 namespace glint::app_schedule {
 namespace {
@@ -163,8 +164,7 @@ TEST(ShardSplitter, HugeTotalsDoNotOverflow) {
 
 class SelectionTest : public ::testing::Test {
 protected:
-    SelectionTest()
-        : m_schedule(schedule::Schedule::load(kData / "small.jsim", {}, {}, Log{}, m_diag)) {}
+    SelectionTest() : m_schedule(test::load_schedule(kData / "small.jsim", {}, m_diag)) {}
 
     Diagnostics m_diag;
     schedule::Schedule m_schedule;

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // Bayer demosaicing: flat colour fields exact for every phase and size (borders included),
 // samples kept at their own pixels, bilinear equal to averaging the neighbours that exist,
-// MHC equal to the paper's 5×5 kernels over a reflect-101 mirrored image, linear ramps exact
-// away from the edges, MHC better than bilinear on a colour edge chart, bad inputs refused.
+// MHC equal to the 5×5 kernels of H. S. Malvar, L.-W. He and R. Cutler, "High-quality linear
+// interpolation for demosaicing of Bayer-patterned color images", ICASSP 2004 (Figure 2;
+// docs/references.md) over a reflect-101 mirrored image, linear ramps exact away from the
+// edges, MHC better than bilinear on a colour edge chart, bad inputs refused.
 #include <gtest/gtest.h>
 
 #include <array>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The ADC (clipping at both ends, rounding, 12-bit full scale 4095) and the storage of counts
-// in narrower types (uint8 keeps the low 8 bits, as the manual says).
+// in narrower types (uint8 keeps the low 8 bits, as the DIRSIG5 BasicPlatform manual says).
 #include "glint/detect/adc.h"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// resolve_detection: values from the model and the overrides, the manual's requirements
-// (simple capture, aperture, non-zero integration time), ranges, CFA mappings and the
-// output data type; each bad input names what is wrong.
+// resolve_detection: values from the model and the overrides, the requirements of the DIRSIG5
+// BasicPlatform manual (simple capture, aperture, non-zero integration time), ranges, CFA
+// mappings and the output data type; each bad input names what is wrong.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 

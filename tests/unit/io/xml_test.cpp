@@ -14,6 +14,7 @@
 
 #include "glint/core/diagnostics.h"
 #include "glint/core/error.h"
+#include "glint/core/text.h"
 #include "glint/test/temp_dir.h"
 
 namespace glint::io {

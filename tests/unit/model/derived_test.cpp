@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// Tests of the derived quantities: F# and G# against the manual's formula (its example
-// instrument: 1140 mm focal length, 0.09 m aperture), pixel IFOV, the bandpass grid, and
-// the channel shapes against their analytic integrals.
+// Tests of the derived quantities: F# and G# against the formula of the DIRSIG5 BasicPlatform
+// manual (its example instrument: 1140 mm focal length, 0.09 m aperture), pixel IFOV, the
+// bandpass grid, and the channel shapes against their analytic integrals.
 #include "glint/model/derived.h"
 
 #include <gtest/gtest.h>

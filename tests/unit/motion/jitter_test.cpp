@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "glint/core/error.h"
+#include "glint/dirsig/psd_reader.h"
 #include "glint/motion/fft.h"
 #include "glint/test/temp_dir.h"
 
@@ -428,7 +429,7 @@ TEST(JitterSamplers, PlatformAxesUseTheirOwnStreams) {
     EXPECT_EQ(sampler.orientation(2).kind(), JitterSeries::Kind::psd);
 }
 
-TEST(JitterSamplers, MountReadsItsPsdFile) {
+TEST(JitterSamplers, MountUsesItsPsdTable) {
     test::TempDir dir;
     const auto path = dir / "across.psd";
     {
@@ -441,6 +442,10 @@ TEST(JitterSamplers, MountReadsItsPsdFile) {
     d.axes[1].kind = model::JitterAxis::Kind::psd;
     d.axes[1].psd_file.text = "across.psd";
     d.axes[1].psd_file.resolved = path;
+    // The input loader reads the file the axis names; the sampler takes the table.
+    Diagnostics diagnostics;
+    d.axes[1].psd = dirsig::read_psd_file(path, {}, diagnostics, "across.psd");
+    ASSERT_FALSE(diagnostics.has_errors());
     const MountJitterSampler sampler(d, 3, {9}, 0.0, 2.0);
     EXPECT_TRUE(sampler.any());
     EXPECT_DOUBLE_EQ(sampler.axis(1).sample_rate_hz(), 500.0);
@@ -449,16 +454,18 @@ TEST(JitterSamplers, MountReadsItsPsdFile) {
     EXPECT_EQ(v.y, sampler.axis(1).value_at(0.7));
     EXPECT_EQ(v.z, 0.0);
 
-    // A bad file is reported with the name as written and its line.
-    {
-        std::ofstream out(path);
-        out << "0.5 1e-8\n0.1 1e-10\n";
-    }
+    // A table that breaks the rules is refused with its location.
+    d.axes[1].psd->frequency_hz = {0.5, 0.1};
     EXPECT_EQ(error_text([&] { MountJitterSampler(d, 3, {9}, 0.0, 2.0); }),
-              "across.psd:2: frequency 0.1 Hz is not greater than the previous 0.5 Hz; "
+              "across.psd:2: PSD row 2: frequency 0.1 Hz is not greater than the previous 0.5 Hz; "
               "frequencies must be strictly increasing");
-    d.axes[1].psd_file = {};
+    // A file named but never read (the loader was bypassed), and no file at all.
+    d.axes[1].psd.reset();
     d.where = ErrorContext{"a.platform", 40, "mount[M]/rotationdeviates"};
+    EXPECT_EQ(error_text([&] { MountJitterSampler(d, 3, {9}, 0.0, 2.0); }),
+              "a.platform:40: mount[M]/rotationdeviates: psd jitter: the PSD file across.psd was "
+              "not read (inputs::load reads the PSD files a platform or motion names)");
+    d.axes[1].psd_file = {};
     EXPECT_EQ(error_text([&] { MountJitterSampler(d, 3, {9}, 0.0, 2.0); }),
               "a.platform:40: mount[M]/rotationdeviates: psd jitter names no PSD file");
 }

@@ -15,7 +15,8 @@
 #include <vector>
 
 #include "glint/core/error.h"
-#include "glint/legacy/readers.h"
+#include "glint/dirsig/readers.h"
+#include "glint/inputs/load.h"
 #include "glint/motion/euler.h"
 #include "glint/test/errors.h"
 #include "glint/test/platforms.h"
@@ -53,15 +54,22 @@ std::unique_ptr<Trajectory> hover(Vec3 position, Vec3 attitude = {}) {
 
 std::vector<model::Simulation> read_poses_jsim() {
     Diagnostics diagnostics;
-    auto sims = legacy::read_jsim(kData + "/poses/poses.jsim", {}, diagnostics);
+    auto sims = dirsig::read_jsim(kData + "/poses/poses.jsim", {}, diagnostics);
     EXPECT_FALSE(diagnostics.has_errors()) << diagnostics.items().front().text();
     return sims;
 }
 
+/// Reads BasicPlatform entry `plugin` of `simulation` (throws what read_platform_entry throws).
+model::PlatformInputs entry_of(const model::Simulation& simulation, std::size_t plugin) {
+    Diagnostics diagnostics;
+    auto entry = inputs::read_platform_entry(simulation, plugin, {}, diagnostics);
+    diagnostics.throw_if_errors();
+    return std::move(*entry);
+}
+
 PoseService service_for(std::size_t plugin, std::uint64_t seed = 1) {
     const auto sims = read_poses_jsim();
-    Diagnostics diagnostics;
-    return make_pose_service(sims.at(0), plugin, {}, seed, {}, diagnostics);
+    return make_pose_service(entry_of(sims.at(0), plugin), seed, {});
 }
 
 TEST(PoseService, IdentityMountsLookAlongVehicleMinusZ) {
@@ -214,8 +222,9 @@ TEST(PoseService, TwoThreadsGiveTheSamePoses) {
 
 TEST(PoseService, NamedTrackingTargetNeedsAScene) {
     Diagnostics diagnostics;
-    const model::Platform platform =
-        legacy::read_platform(kData + "/platform/mounts.platform", {}, diagnostics);
+    model::Platform platform =
+        dirsig::read_platform(kData + "/platform/mounts.platform", {}, diagnostics);
+    inputs::read_psd_tables(platform, {}, diagnostics);
     ASSERT_FALSE(diagnostics.has_errors());
     const std::string msg = test::error_text([&] {
         PoseService(std::make_shared<model::Platform>(platform), hover({0, 0, 1000}), {}, {});
@@ -228,10 +237,9 @@ TEST(PoseService, NamedTrackingTargetNeedsAScene) {
 
 TEST(PoseService, BadPluginIndexAndInstrumentIndex) {
     const auto sims = read_poses_jsim();
-    Diagnostics diagnostics;
-    EXPECT_THAT(test::error_text([&] { make_pose_service(sims.at(0), 1, {}, 1, {}, diagnostics); }),
+    EXPECT_THAT(test::error_text([&] { entry_of(sims.at(0), 1); }),
                 testing::HasSubstr("plugin_list[1] of"));
-    EXPECT_THAT(test::error_text([&] { make_pose_service(sims.at(0), 9, {}, 1, {}, diagnostics); }),
+    EXPECT_THAT(test::error_text([&] { entry_of(sims.at(0), 9); }),
                 testing::HasSubstr("plugin index 9 out of range"));
     const PoseService service = service_for(0);
     EXPECT_THAT(test::error_text([&] { service.instrument_to_scene(2, 0.0); }),

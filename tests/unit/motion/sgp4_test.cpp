@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
-// SGP4/SDP4 and TEME: GMST against Vallado's worked example, TEME ↔ ECEF properties, states
-// hand-copied from the 2006 verification output tcppver.out (near-Earth, deep-space, 12 h and
-// 24 h resonant), the error codes of decaying orbits, and the guarantees of the API (no NaN,
+// SGP4/SDP4 and TEME: GMST against Example 3-5 of D. A. Vallado, "Fundamentals of
+// Astrodynamics and Applications" (docs/references.md), TEME ↔ ECEF properties, states
+// hand-copied from the verification output tcppver.out of Vallado, Crawford, Hujsak & Kelso,
+// "Revisiting Spacetrack Report #3" (AIAA 2006-6753) (near-Earth, deep-space, 12 h and 24 h
+// resonant), the error codes of decaying orbits, and the guarantees of the API (no NaN,
 // invalid elements refused, DateTime and minutes agree). The full verification set runs in
 // tests/oracle/motion.
 #include "glint/motion/sgp4.h"

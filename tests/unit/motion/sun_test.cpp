@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
-// Sun and moon positions against published worked examples: the NREL SPA paper's example
-// (Reda & Andreas 2004, with its refraction and ΔT), Meeus' examples 47.a (moon position) and
-// 48.a (illuminated fraction); plus the time-scale table, the ENU direction, refraction
-// behaviour and input checks. The independent-program comparison (astropy) is in
-// tests/oracle/motion/sun_oracle_test.cpp.
+// Sun and moon positions against published worked examples: the example of the NREL SPA paper
+// (I. Reda and A. Andreas, "Solar position algorithm for solar radiation applications",
+// Solar Energy 76(5), 2004, §A5 of NREL/TP-560-34302; docs/references.md), with its
+// refraction and ΔT; examples 47.a (moon position) and 48.a (illuminated fraction) of
+// J. Meeus, "Astronomical Algorithms", 2nd ed., Willmann-Bell, 1998; plus the time-scale
+// table, the ENU direction, refraction behaviour and input checks. The independent-program
+// comparison (astropy) is in tests/oracle/motion/sun_oracle_test.cpp.
 #include "glint/motion/sun.h"
 
 #include <gtest/gtest.h>

@@ -18,7 +18,7 @@
 #include <thread>
 #include <vector>
 
-#include "glint/legacy/motion_reader.h"
+#include "glint/dirsig/motion_reader.h"
 #include "glint/motion/euler.h"
 #include "glint/motion/sgp4.h"
 #include "glint/motion/teme.h"
@@ -52,7 +52,7 @@ struct Warnings {
 
 model::PlatformMotion read(const std::filesystem::path& file) {
     Diagnostics diagnostics;
-    model::PlatformMotion motion = legacy::read_motion(file, legacy::ReadOptions{}, diagnostics);
+    model::PlatformMotion motion = dirsig::read_motion(file, dirsig::ReadOptions{}, diagnostics);
     EXPECT_FALSE(diagnostics.has_errors()) << diagnostics.items().at(0).text();
     return motion;
 }

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Analytic tests of the path tracer (VALIDATION.md): a Lambertian plate under an exo-
+// Analytic tests of the path tracer (docs/validation.md): a Lambertian plate under an exo-
 // atmospheric sun (L = ρ E cos θ / π), a blackbody plate (L = ε B), furnaces (a plate under a
 // uniform sky: L = ρ L_sky; a closed isothermal enclosure: L = B(T) whatever its reflectance),
 // a shadowed plate, the GGX lobe's albedo, a moving box's motion blur, and the atmosphere's
@@ -10,9 +10,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "glint/atmosphere/atmosphere.h"
 #include "glint/core/spectral.h"
 #include "glint/radiometry/brdf.h"
-#include "glint/scene/atmosphere.h"
 #include "tracer_fixture.h"
 
 namespace glint::radiometry {
@@ -240,8 +240,8 @@ TEST(PathTracer, AtmosphereSensorPathAndSkyOnAPlate) {
     const SpectralGrid grid({0.45, 0.55, 0.65, 0.85});
     const double rho = 0.3;
     model::ParametricAtmosphere parameters;
-    const scene::ParametricAtmosphereModel atmosphere(parameters);
-    const scene::SolarSpectrum sun(SpectralCurve({0.3, 1.0, 4.0}, {0.2, 0.1, 0.001}));
+    const glint::atmosphere::ParametricAtmosphereModel atmosphere(parameters);
+    const glint::atmosphere::SolarSpectrum sun(SpectralCurve({0.3, 1.0, 4.0}, {0.2, 0.1, 0.001}));
     EnvironmentInputs inputs;
     inputs.sun_direction_begin = inputs.sun_direction_end = direction_from(40.0, 160.0);
     inputs.sensor_altitude_m = 3000.0;

@@ -8,9 +8,9 @@
 #include <cmath>
 #include <cstring>
 
+#include "glint/atmosphere/atmosphere.h"
 #include "glint/core/error.h"
 #include "glint/core/spectral.h"
-#include "glint/scene/atmosphere.h"
 #include "tracer_fixture.h"
 
 namespace glint::radiometry {
@@ -288,8 +288,8 @@ TEST(MaterialTable, RefusesMoreThanABlackbody) {
 // ---- Environment ---------------------------------------------------------------------------
 
 TEST(Environment, NoAtmosphereIsTheExoAtmosphericSunAndABlackSky) {
-    const scene::NoAtmosphere none;
-    const scene::SolarSpectrum sun(SpectralCurve({0.3, 1.0, 4.0}, {0.2, 0.1, 0.001}));
+    const glint::atmosphere::NoAtmosphere none;
+    const glint::atmosphere::SolarSpectrum sun(SpectralCurve({0.3, 1.0, 4.0}, {0.2, 0.1, 0.001}));
     EnvironmentInputs inputs;
     inputs.sun_direction_begin = inputs.sun_direction_end = direction_from(50.0, 90.0);
     inputs.sun_distance_au = 1.01;
@@ -305,14 +305,14 @@ TEST(Environment, NoAtmosphereIsTheExoAtmosphericSunAndABlackSky) {
 
 TEST(Environment, SensorPathInterpolatesTheAtmosphereAtItsNodes) {
     const model::ParametricAtmosphere parameters;
-    const scene::ParametricAtmosphereModel atmosphere(parameters);
-    const scene::SolarSpectrum sun(SpectralCurve({0.3, 1.0, 4.0}, {0.2, 0.1, 0.001}));
+    const glint::atmosphere::ParametricAtmosphereModel atmosphere(parameters);
+    const glint::atmosphere::SolarSpectrum sun(SpectralCurve({0.3, 1.0, 4.0}, {0.2, 0.1, 0.001}));
     EnvironmentInputs inputs;
     inputs.sun_direction_begin = inputs.sun_direction_end = direction_from(30.0, 90.0);
     inputs.sensor_altitude_m = 2000.0;
     const Environment env = Environment::make(kGrid, atmosphere, sun, inputs);
     // At a node (view zenith 20°, 45° from the sun's azimuth) the table is the model.
-    scene::AtmosphereGeometry g;
+    glint::atmosphere::AtmosphereGeometry g;
     g.sun_zenith_deg = 30.0;
     g.sun_azimuth_deg = 90.0;
     g.sensor_altitude_m = 2000.0;
@@ -342,8 +342,8 @@ TEST(Environment, ParametricTendsToNoneAsTheOpticalDepthVanishes) {
     clear.aerosol_optical_depth_550 = 0.0;
     clear.sea_level_pressure_hpa = 0.0;
     clear.air_temperature_k = 0.0;
-    const scene::ParametricAtmosphereModel atmosphere(clear);
-    const scene::SolarSpectrum sun(SpectralCurve({0.3, 1.0, 4.0}, {0.2, 0.1, 0.001}));
+    const glint::atmosphere::ParametricAtmosphereModel atmosphere(clear);
+    const glint::atmosphere::SolarSpectrum sun(SpectralCurve({0.3, 1.0, 4.0}, {0.2, 0.1, 0.001}));
     EnvironmentInputs inputs;
     inputs.sun_direction_begin = inputs.sun_direction_end = direction_from(30.0, 90.0);
     inputs.sensor_altitude_m = 2000.0;
@@ -363,8 +363,8 @@ TEST(Environment, ParametricTendsToNoneAsTheOpticalDepthVanishes) {
 
 TEST(Environment, SensorPathTablesAreSharedByRoundedGeometry) {
     const model::ParametricAtmosphere parameters;
-    const scene::ParametricAtmosphereModel atmosphere(parameters);
-    const scene::SolarSpectrum sun(SpectralCurve({0.3, 1.0, 4.0}, {0.2, 0.1, 0.001}));
+    const glint::atmosphere::ParametricAtmosphereModel atmosphere(parameters);
+    const glint::atmosphere::SolarSpectrum sun(SpectralCurve({0.3, 1.0, 4.0}, {0.2, 0.1, 0.001}));
     EnvironmentInputs a;
     a.sun_direction_begin = a.sun_direction_end = direction_from(30.0, 90.0);
     a.sensor_altitude_m = 2000.0;
@@ -391,8 +391,8 @@ TEST(Environment, RefusesBadInputs) {
     EXPECT_THROW(Environment::uniform(kGrid, {0.0, 0.0, 0.0}, kSun, kSky), Error);
     EXPECT_THROW(Environment::uniform(kGrid, {0.0, 0.0, 1.0}, {1.0, 2.0}, kSky), Error);
     EXPECT_THROW(Environment::uniform(kGrid, {0.0, 0.0, 1.0}, kSun, {0.0, -1.0, 0.0}), Error);
-    const scene::NoAtmosphere none;
-    const scene::SolarSpectrum sun(SpectralCurve({0.3, 1.0, 4.0}, {0.2, 0.1, 0.001}));
+    const glint::atmosphere::NoAtmosphere none;
+    const glint::atmosphere::SolarSpectrum sun(SpectralCurve({0.3, 1.0, 4.0}, {0.2, 0.1, 0.001}));
     EnvironmentInputs inputs;
     inputs.window_begin_s = 2.0;
     inputs.window_end_s = 1.0;
@@ -405,9 +405,9 @@ TEST(Environment, SunDirectionFollowsTheWindow) {
     inputs.sun_direction_end = {0.0, 1.0, 1.0};
     inputs.window_begin_s = 10.0;
     inputs.window_end_s = 20.0;
-    const Environment env =
-        Environment::make(kGrid, scene::NoAtmosphere(),
-                          scene::SolarSpectrum(SpectralCurve({0.3, 4.0}, {0.1, 0.001})), inputs);
+    const Environment env = Environment::make(
+        kGrid, glint::atmosphere::NoAtmosphere(),
+        glint::atmosphere::SolarSpectrum(SpectralCurve({0.3, 4.0}, {0.1, 0.001})), inputs);
     const Vec3 mid = env.sun_direction(15.0);
     EXPECT_NEAR(mid.x, mid.y, 1e-15);
     EXPECT_NEAR(norm(mid), 1.0, 1e-15);

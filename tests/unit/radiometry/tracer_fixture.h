@@ -13,7 +13,7 @@
 
 #include "glint/core/diagnostics.h"
 #include "glint/core/spectral.h"
-#include "glint/legacy/scene_reader.h"
+#include "glint/mesh/mesh.h"
 #include "glint/model/scene.h"
 #include "glint/radiometry/environment.h"
 #include "glint/radiometry/materials.h"
@@ -56,7 +56,7 @@ inline std::size_t add_primitive(model::Scene& scene, const model::Primitive& pr
     model::GeometryObject object;
     object.name = "object" + std::to_string(scene.objects.size());
     object.primitive = primitive;
-    object.mesh = legacy::tessellate_primitive(primitive, material, {}, diagnostics);
+    object.mesh = mesh::tessellate_primitive(primitive, material, {}, diagnostics);
     EXPECT_FALSE(diagnostics.has_errors());
     scene.objects.push_back(std::move(object));
     model::Instance instance;

@@ -17,7 +17,7 @@
 #include "glint/core/diagnostics.h"
 #include "glint/core/error.h"
 #include "glint/core/log.h"
-#include "glint/legacy/scene_reader.h"
+#include "glint/mesh/mesh.h"
 #include "glint/scene/geometry_scene.h"
 
 namespace glint::scene::test {
@@ -82,7 +82,7 @@ inline model::Scene scene_with_materials(std::size_t count) {
 /// The tessellated mesh of a primitive (glint's own tessellation, docs/scene.md).
 inline model::Mesh primitive_mesh(const model::Primitive& primitive, std::uint32_t material) {
     Diagnostics diagnostics;
-    model::Mesh mesh = legacy::tessellate_primitive(primitive, material, {}, diagnostics);
+    model::Mesh mesh = mesh::tessellate_primitive(primitive, material, {}, diagnostics);
     EXPECT_FALSE(diagnostics.has_errors());
     return mesh;
 }

@@ -217,5 +217,16 @@ TEST(ClockTicks, BadClocksAreErrors) {
     EXPECT_THAT(error_of(independent(1e12), 0.0, 1e6), HasSubstr("more than 2^53 times"));
 }
 
+TEST(TriggerPeriod, IsSpanPlusMeanSpacing) {
+    const std::vector<double> three{0.0, 0.1, 0.2};
+    EXPECT_NEAR(*trigger_period_s(three), 0.3, 1e-15);
+    const std::vector<double> five{0.0, 0.1, 0.2, 0.35, 0.5};
+    EXPECT_NEAR(*trigger_period_s(five), 0.625, 1e-15);
+    const std::vector<double> offset{10.0, 12.0};
+    EXPECT_DOUBLE_EQ(*trigger_period_s(offset), 4.0);
+    EXPECT_FALSE(trigger_period_s(std::vector<double>{1.0}).has_value());
+    EXPECT_FALSE(trigger_period_s(std::vector<double>{}).has_value());
+}
+
 }  // namespace
 }  // namespace glint::schedule

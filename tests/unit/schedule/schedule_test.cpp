@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Schedule::load and the capture generator on the tests/data/schedule inputs: sources and
+// Schedule::build and the capture generator on the tests/data/schedule inputs: sources and
 // counts, the sorted interleaving of several focal planes (ties by plugin, instrument, focal
 // plane, task), gapless capture indices, zero-length, straddling and overlapping tasks,
 // synchronous and triggered clocks, two entries sharing a platform, output names,
@@ -19,6 +19,8 @@
 #include <vector>
 
 #include "glint/core/error.h"
+#include "glint/inputs/load.h"
+#include "glint/test/schedules.h"
 #include "glint/test/temp_dir.h"
 
 namespace glint::schedule {
@@ -31,7 +33,7 @@ using ::testing::HasSubstr;
 const std::string kData = GLINT_TEST_DATA_DIR "/schedule";
 
 Schedule load(const std::string& name, const ScheduleOptions& options, Diagnostics& diagnostics) {
-    return Schedule::load(kData + "/" + name, options, legacy::ReadOptions{}, Log{}, diagnostics);
+    return test::load_schedule(kData + "/" + name, options, diagnostics);
 }
 
 Schedule load(const std::string& name, const ScheduleOptions& options = {}) {
@@ -300,7 +302,7 @@ TEST(Schedule, FocalPlanesOfOneEntryWritingTheSameFileAreAnError) {
         << R"(/hover.ppd", "tasks_filename": ")" << kData << R"(/one.tasks"}}]}])";
     Diagnostics diagnostics;
     try {
-        Schedule::load(dir / "same.jsim", {}, legacy::ReadOptions{}, Log{}, diagnostics);
+        test::load_schedule(dir / "same.jsim", {}, diagnostics);
         ADD_FAILURE() << "no error";
     } catch (const Error& error) {
         EXPECT_EQ(error.what(),
@@ -488,12 +490,14 @@ TEST(ScheduleScene, PosesUseTheSceneOriginAndTrackNamedInstances) {
 }
 
 TEST(ScheduleScene, AnUnknownTargetNameIsAnInputErrorAtTheMount) {
-    model::Scene scene;  // no instances at all
-    ScheduleOptions options;
-    options.scene = &scene;
     Diagnostics diagnostics;
+    inputs::LoadOptions load;
+    load.atmosphere = false;
+    model::SimulationInputs loaded =
+        inputs::load(kData + "/tracking/tracking.jsim", load, Log{}, diagnostics);
+    loaded.scene.instances.clear();  // no instances at all
     try {
-        load("tracking/tracking.jsim", options, diagnostics);
+        Schedule::build(loaded, {}, Log{}, diagnostics);
         FAIL() << "expected an error";
     } catch (const Error& e) {
         EXPECT_THAT(std::string(e.what()),

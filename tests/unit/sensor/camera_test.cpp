@@ -214,7 +214,8 @@ TEST(CameraModel, ProjectInvertsDirection) {
         {"pincushion", model::Distortion{0.3, 0.1, -0.05, 0, 0}},
         {"tangential", model::Distortion{0, 0, 0, 0.02, -0.015}},
         {"all", model::Distortion{-0.15, 0.04, 0.01, -0.01, 0.02}},
-        // The manual's LensDistortion example (f = 35 mm), over a ±0.1 field.
+        // The LensDistortion example of the DIRSIG5 BasicPlatform manual (f = 35 mm), over a
+        // ±0.1 field.
         {"manual", model::Distortion{5, 2.5, -100, 0.1, 0.05}},
     };
     double worst_px = 0;

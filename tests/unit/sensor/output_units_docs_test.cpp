@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // The output units as users see them: the docs/units.md table of every flux × area × aperture ×
 // temporal × normalization combination (80 rows) must be exactly what OutputUnits produces,
-// and the capture_full.platform fixture, read through the legacy reader, gives the manual's
-// units and values for its photons-per-m² Bayer focal plane.
+// and the capture_full.platform fixture, read through the legacy reader, gives the units and
+// values of the DIRSIG5 BasicPlatform manual for its photons-per-m² Bayer focal plane.
 //
 // To regenerate the docs table after a deliberate change: run
 //   build/release/tests/test_sensor --gtest_filter='OutputUnitsDocs.*'
@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "glint/core/diagnostics.h"
-#include "glint/legacy/readers.h"
+#include "glint/dirsig/readers.h"
 #include "glint/model/derived.h"
 #include "glint/model/names.h"
 #include "glint/model/platform.h"
@@ -111,12 +111,12 @@ TEST(OutputUnitsDocs, UnitsMdHoldsTheGeneratedTable) {
 // ---- capture_full.platform through the legacy reader -----------------------------------------
 
 TEST(OutputUnitsFixture, BayerFocalPlaneOfCaptureFull) {
-    legacy::ReadOptions options;
+    dirsig::ReadOptions options;
     options.paths.environment = [](const std::string&) -> std::optional<std::string> {
         return std::nullopt;
     };
     Diagnostics diagnostics;
-    const model::Platform platform = legacy::read_platform(
+    const model::Platform platform = dirsig::read_platform(
         std::filesystem::path(GLINT_TEST_DATA_DIR) / "platform" / "capture_full.platform", options,
         diagnostics);
     ASSERT_FALSE(diagnostics.has_errors());

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
-// Tests of the output units (the manual's "Output Units" section and Table 1): every row of
-// Table 1 against a value worked out by hand for a flat radiance through a Gaussian or tophat
-// channel, the m2 / milli / micro / electron variants, gain and bias, mixed normalization,
-// weights vs apply(), the trapezoid weights on an irregular grid, the ENVI centres and FWHMs,
-// the errors, the docs/units.md table (all 80 combinations) and the capture_full.platform
-// fixture read through the legacy reader.
+// Tests of the output units (the "Output Units" section and Table 1 of the DIRSIG5
+// BasicPlatform manual, docs/references.md): every row of Table 1 against a value worked out
+// by hand for a flat radiance through a Gaussian or tophat channel, the m2 / milli / micro /
+// electron variants, gain and bias, mixed normalization, weights vs apply(), the trapezoid
+// weights on an irregular grid, the ENVI centres and FWHMs, the errors, the docs/units.md
+// table (all 80 combinations) and the capture_full.platform fixture read through the legacy
+// reader.
 #include "glint/sensor/output_units.h"
 
 #include <gtest/gtest.h>

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "glint/core/diagnostics.h"
-#include "glint/legacy/read_options.h"
+#include "glint/dirsig/read_options.h"
 #include "glint/model/atmosphere.h"
 #include "glint/model/platform.h"
 #include "glint/model/scene.h"
@@ -53,27 +53,27 @@ enum class LoadDepth {
 
 /// Reads a `.sim` or `.jsim` into inputs.simulations (appended).
 void load_simulation_file(const std::filesystem::path& file, LoadedInputs& inputs,
-                          const legacy::ReadOptions& options);
+                          const dirsig::ReadOptions& options);
 
 /// Reads or checks the files referenced by one BasicPlatform entry.
 void load_basic_platform(const model::BasicPlatformInputs& entry, LoadedInputs& inputs,
-                         const legacy::ReadOptions& options, LoadDepth depth);
+                         const dirsig::ReadOptions& options, LoadDepth depth);
 
 /// Reads or checks the files referenced by every simulation in inputs (scenes, BasicPlatform
 /// and BasicAtmosphere entries; other plugins are not looked into), and reports
 /// BasicPlatform entries whose output names clash.
-void load_references(LoadedInputs& inputs, const legacy::ReadOptions& options, LoadDepth depth);
+void load_references(LoadedInputs& inputs, const dirsig::ReadOptions& options, LoadDepth depth);
 
 /// Reads a `.platform` (once) and, with `check_references`, checks that the files it names
 /// exist. Returns the platform as read (partial when it has errors: see inputs.diagnostics).
 const model::Platform* load_platform_file(const std::filesystem::path& file, LoadedInputs& inputs,
-                                          const legacy::ReadOptions& options,
+                                          const dirsig::ReadOptions& options,
                                           bool check_references = true);
 
 /// What --check does with one file: by extension, `.platform` or `.tasks` alone, anything
 /// else as a simulation with load_references(contents).
 void check_file(const std::filesystem::path& file, LoadedInputs& inputs,
-                const legacy::ReadOptions& options);
+                const dirsig::ReadOptions& options);
 
 /// Warnings for BasicPlatform entries of `simulation` that share output folder and prefix
 /// (their outputs may overwrite each other).

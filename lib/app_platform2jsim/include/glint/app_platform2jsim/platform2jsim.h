@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "glint/core/context.h"
-#include "glint/legacy/read_options.h"
+#include "glint/dirsig/read_options.h"
 
 namespace glint::app_platform2jsim {
 
@@ -49,7 +49,7 @@ struct Options {
     /// existing `.jsim`, rewritten); dump_platform: empty also means `out`; check: unused.
     std::string output;
     /// How referenced paths are resolved ($VARIABLES from the environment by default).
-    legacy::ReadOptions read_options;
+    dirsig::ReadOptions read_options;
 };
 
 /// Runs the mode. Data goes to `out` (`-o -`, the dump without -o, the check summary);

@@ -12,16 +12,18 @@
 #include <vector>
 
 #include "glint/core/context.h"
+#include "glint/dirsig/read_options.h"
 #include "glint/sensor/render.h"
 
 namespace glint::app_render {
 
 struct Options {
-    std::filesystem::path input;       ///< the .jsim or .sim
-    std::filesystem::path schedule;    ///< --schedule FILE (empty: the whole schedule)
-    bool dry_run = false;              ///< print the plan, trace nothing
-    bool radiance_only = false;        ///< stop at radiance (the detector stage is [G]'s)
-    sensor::RenderOptions render;      ///< everything else
+    std::filesystem::path input;         ///< the .jsim or .sim
+    std::filesystem::path schedule;      ///< --schedule FILE (empty: the whole schedule)
+    bool dry_run = false;                ///< print the plan, trace nothing
+    bool radiance_only = false;          ///< stop at radiance (the detector stage is [G]'s)
+    sensor::RenderOptions render;        ///< everything else
+    dirsig::ReadOptions read;            ///< how the input files are resolved
     std::vector<std::string> arguments;  ///< the command line, program first
 };
 

@@ -16,7 +16,7 @@
 
 #include "glint/app_schedule/selection.h"
 #include "glint/core/context.h"
-#include "glint/legacy/read_options.h"
+#include "glint/dirsig/read_options.h"
 #include "glint/schedule/schedule.h"
 
 namespace glint::app_schedule {
@@ -46,7 +46,7 @@ struct Options {
     /// --output_folder, --output_prefix, --scale_resolution (the seed is taken from the
     /// context, not from here).
     schedule::ScheduleOptions schedule;
-    legacy::ReadOptions read_options;
+    dirsig::ReadOptions read_options;
     /// The command line as given (provenance), program name first.
     std::vector<std::string> arguments;
 };

@@ -1,12 +1,37 @@
 // SPDX-License-Identifier: Apache-2.0
-// Number formatting shared by messages and file writers.
+// Small text helpers shared by every component: number formatting for messages and file
+// writers, whole-string number parsing (std::from_chars: no locale, no trailing junk, no
+// NaN/infinity, no hex), ASCII case folding for case-insensitive names, list splitting.
 #pragma once
 
+#include <cstdint>
+#include <optional>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace glint {
 
 /// The shortest text that reads back as exactly `value` ("0.55", "1e-300", "inf").
 std::string format_shortest(double value);
+
+/// `text` with ASCII letters lowered (other bytes unchanged, whatever the locale).
+std::string to_lower(std::string_view text);
+
+/// True when `a` and `b` are equal ignoring ASCII case.
+bool iequals(std::string_view a, std::string_view b) noexcept;
+
+/// `text` without leading and trailing blanks (space, tab, CR, LF, FF, VT).
+std::string_view trim(std::string_view text) noexcept;
+
+/// Parses a whole string as a finite double (leading '+' allowed, surrounding blanks
+/// trimmed); nullopt otherwise.
+std::optional<double> parse_double(std::string_view text);
+/// Parses a whole string as a base-10 integer; nullopt otherwise (or on overflow).
+std::optional<std::int64_t> parse_int(std::string_view text);
+/// true/false/1/0/yes/no in any case; nullopt otherwise.
+std::optional<bool> parse_bool(std::string_view text);
+/// Splits "a, b,c" on commas (or `separator`), trimming each item; empty items dropped.
+std::vector<std::string> split_list(std::string_view text, char separator = ',');
 
 }  // namespace glint

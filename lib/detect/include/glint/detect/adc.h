@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
-// The analog-to-digital converter and how its counts are stored: electrons clipped to
-// [min, max], scaled linearly onto [0, 2^bits − 1] and rounded; then written in the
-// `<datatype>` of the output, where an integer type narrower than the ADC keeps only the
-// count's low bits (the manual: "an 8-bit output would cause the upper 4-bits to be clipped
-// from the 12-bit values"), e.g. 4095 → 255 and 256 → 0 in uint8.
+// The analog-to-digital converter and how its counts are stored: electrons clipped to [min,
+// max], scaled linearly onto [0, 2^bits − 1] and rounded; then written in the `<datatype>` of
+// the output, where an integer type narrower than the ADC keeps only the count's low bits
+// (the DIRSIG5 BasicPlatform manual: "an 8-bit output would cause the upper 4-bits to be
+// clipped from the 12-bit values"), e.g. 4095 → 255 and 256 → 0 in uint8.
 #pragma once
 
 #include <cmath>

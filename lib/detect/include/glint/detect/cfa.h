@@ -45,8 +45,8 @@ std::optional<CfaPattern> cfa_pattern_from_name(std::string_view name);
 /// The phase for a name ("rggb", ...; case-insensitive), if any.
 std::optional<BayerPhase> bayer_phase_from_name(std::string_view name);
 
-/// The filters a pattern needs mapped to channels, in the manual's order: bayer red, green,
-/// blue; truesense pan, red, green, blue.
+/// The filters a pattern needs mapped to channels, in the order of the DIRSIG5 BasicPlatform
+/// manual: bayer red, green, blue; truesense pan, red, green, blue.
 std::span<const CfaFilter> cfa_filters(CfaPattern pattern);
 
 /// The side of the pattern's repeating block: 2 (bayer) or 4 (truesense).

@@ -120,11 +120,11 @@ struct DetectionSettings {
 io::EnviDataType image_data_type(const model::ImageFile& image);
 
 /// Resolves and checks the settings of `focal_plane` of an instrument with `properties`.
-/// Throws glint::Error (input) at the element's file:line for a requirement the manual
-/// lists (simple capture, aperture, non-zero integration time with a detector model), a
-/// value out of range (from the model or an override, which the message names), a CFA
-/// filter mapped to no channel, or a focal plane with nothing to detect (no detector model,
-/// TDI or pattern, and no overrides that make a detector model).
+/// Throws glint::Error (input) at the element's file:line for a requirement the DIRSIG5
+/// BasicPlatform manual lists (simple capture, aperture, non-zero integration time with a
+/// detector model), a value out of range (from the model or an override, which the message
+/// names), a CFA filter mapped to no channel, or a focal plane with nothing to detect (no
+/// detector model, TDI or pattern, and no overrides that make a detector model).
 DetectionSettings resolve_detection(const model::FocalPlane& focal_plane,
                                     const model::InstrumentProperties& properties,
                                     const DetectorOverrides& overrides, std::uint64_t seed);

@@ -153,20 +153,4 @@ private:
     std::string m_name;
 };
 
-/// Reads a whole input file (XML or JSON) as text. Throws glint::Error (io when it cannot be
-/// opened or read or is a folder, input when it is larger than any DIRSIG input, 256 MiB),
-/// naming `display_name` (default: the path).
-std::string read_input_file(const std::filesystem::path& path,
-                            const std::string& display_name = {});
-
-/// Parses a whole string as a finite double (leading '+' allowed, surrounding blanks
-/// trimmed); nullopt otherwise.
-std::optional<double> parse_double(std::string_view text);
-/// Parses a whole string as a base-10 integer; nullopt otherwise (or on overflow).
-std::optional<std::int64_t> parse_int(std::string_view text);
-/// true/false/1/0/yes/no in any case; nullopt otherwise.
-std::optional<bool> parse_bool(std::string_view text);
-/// Splits "a, b,c" on commas (or `separator`), trimming each item; empty items dropped.
-std::vector<std::string> split_list(std::string_view text, char separator = ',');
-
 }  // namespace glint::io

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // The atmosphere description read from a .jsim BasicAtmosphere's atmosphere_filename: a glint
 // YAML atmosphere (model none, parametric or tabulated) or the simpleradiativetransfer subset
-// of a DIRSIG .atm file. Plain data; the physics lives in glint/scene/atmosphere.h and the
+// of a DIRSIG .atm file. Plain data; the physics lives in glint/atmosphere/atmosphere.h and the
 // formulas in docs/physics.md ("Atmosphere and sun").
 //
-// YAML keys (glint/legacy/atmosphere_reader.h reads them; unknown keys are warnings):
+// YAML keys (glint/yaml/atmosphere_reader.h reads them; unknown keys are warnings):
 //
 // | key | type | unit | default | model |
 // |---|---|---|---|---|

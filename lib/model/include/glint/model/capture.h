@@ -77,7 +77,7 @@ struct TemporalIntegration {
     ErrorContext where;
 };
 
-/// The internal detector model (the manual's nine steps).
+/// The internal detector model (the nine steps of the DIRSIG5 BasicPlatform manual).
 struct DetectorModel {
     double quantum_efficiency = 1.0;
     double read_noise_e = 0.0;

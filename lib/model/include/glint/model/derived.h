@@ -15,7 +15,8 @@ namespace glint::model {
 
 /// F# = focal length / aperture diameter; none without both.
 std::optional<double> f_number(const InstrumentProperties& properties);
-/// G# = (1 + 4 F#²) / (τ π) in 1/sr (the manual's aperture term); none without an aperture.
+/// G# = (1 + 4 F#²) / (τ π) in 1/sr (the aperture term of the DIRSIG5 BasicPlatform manual,
+/// docs/references.md); none without an aperture.
 std::optional<double> g_number(const InstrumentProperties& properties);
 /// Instantaneous field of view of one pixel pitch, x and y, in rad (pitch / focal length).
 std::optional<std::array<double, 2>> pixel_ifov_rad(const InstrumentProperties& properties,

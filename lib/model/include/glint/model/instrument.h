@@ -12,14 +12,14 @@
 // | properties/distortion/k1 k2 k3 p1 p2 | numbers | focal lengths | 0 |
 // | focalplane@enabled, @name | bool, text | - | true, "" |
 // | detectorarray@spatialunits | microns, millimeters, meters (also um, mm, m) | - | microns |
-// | detectorarray/xelementcount, yelementcount | integer 1–1,000,000; product ≤ 2^31 | pixels | required |
-// | detectorarray/xelementsize, yelementsize | number > 0 | spatialunits | = spacing |
-// | detectorarray/xelementspacing, yelementspacing | number > 0, >= size | spatialunits | required |
-// | detectorarray/xarrayoffset, yarrayoffset | number | spatialunits | 0 |
-// | detectorarray/xflipaxis, yflipaxis | bool (0/1) | - | false |
-// | detectorarray/clock@type | independent, synchronous, external (see docs/formats.md) | - | required |
-// | clock@temporalunits, rate, offset | hertz; number > 0; number | Hz, s | hertz, required, 0 |
-// | truthcollection/enabled, name, imagefile, collectorlist/collector/name, materials, tags | | | |
+// | detectorarray/xelementcount, yelementcount | integer 1–1,000,000; product ≤ 2^31 | pixels |
+// required | | detectorarray/xelementsize, yelementsize | number > 0 | spatialunits | = spacing |
+// | detectorarray/xelementspacing, yelementspacing | number > 0, >= size | spatialunits | required
+// | | detectorarray/xarrayoffset, yarrayoffset | number | spatialunits | 0 | |
+// detectorarray/xflipaxis, yflipaxis | bool (0/1) | - | false | | detectorarray/clock@type |
+// independent, synchronous, external (see docs/formats.md) | - | required | | clock@temporalunits,
+// rate, offset | hertz; number > 0; number | Hz, s | hertz, required, 0 | |
+// truthcollection/enabled, name, imagefile, collectorlist/collector/name, materials, tags | | | |
 #pragma once
 
 #include <cstddef>
@@ -38,12 +38,15 @@ enum class ClockType { independent, synchronous, external_trigger };
 struct Clock {
     ClockType type = ClockType::independent;
     std::string temporal_units = "hertz";
-    double rate_hz = 0.0;       ///< independent
-    double offset_s = 0.0;      ///< independent: time of the first tick
-    std::string master;         ///< synchronous: name of a clock in the platform's clocktable
-    std::int64_t divider = 1;   ///< synchronous: one tick every `divider` master ticks
+    double rate_hz = 0.0;           ///< independent
+    double offset_s = 0.0;          ///< independent: time of the first tick
+    std::string master;             ///< synchronous: name of a clock in the platform's clocktable
+    std::int64_t divider = 1;       ///< synchronous: one tick every `divider` master ticks
     std::int64_t offset_count = 0;  ///< synchronous: master ticks before the first tick
-    FileRef trigger_file;       ///< external: text file of trigger times (s after reference)
+    FileRef trigger_file;           ///< external: text file of trigger times (s after reference)
+    /// external: the trigger file's times (s after reference), as the input loader
+    /// (glint/inputs) read them; empty until then.
+    std::vector<double> trigger_times_s;
     ErrorContext where;
 };
 
@@ -58,13 +61,13 @@ struct MasterClock {
 /// `<detectorarray>`. Sizes in m.
 struct DetectorArray {
     std::string spatial_units = "microns";  ///< as written
-    std::size_t x_count = 0;  ///< columns (ENVI samples)
-    std::size_t y_count = 0;  ///< rows (ENVI lines), or TDI stages
-    double x_size_m = 0.0;    ///< active element size
+    std::size_t x_count = 0;                ///< columns (ENVI samples)
+    std::size_t y_count = 0;                ///< rows (ENVI lines), or TDI stages
+    double x_size_m = 0.0;                  ///< active element size
     double y_size_m = 0.0;
     double x_spacing_m = 0.0;  ///< pitch
     double y_spacing_m = 0.0;
-    double x_offset_m = 0.0;   ///< array centre relative to the optical axis
+    double x_offset_m = 0.0;  ///< array centre relative to the optical axis
     double y_offset_m = 0.0;
     bool x_flip = false;
     bool y_flip = false;

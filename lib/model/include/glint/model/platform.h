@@ -8,12 +8,13 @@
 // |---|---|---|---|
 // | metadata/entry/name, value | text | - | - |
 // | clocktable/clock@name (+ clock fields) | master clocks | - | - |
-// | attachment/affinetransform | empty = identity; xtranslate… zrotate or matrix (see docs/formats.md) | m, rad | identity |
-// | mount@type | static, commanded, tabulated, whisk, tracking (lemniscate, line, scripted: warned) | - | static |
-// | mount/data@angularunits, @rotationorder | degrees/radians; xyz… | - | degrees, xyz |
-// | mount/data/xrotation, yrotation, zrotation | number | angularunits | 0 |
-// | mount/data/entry (commanded, tabulated) | datetime, x/y/zrotation, x/y/ztranslation | s, angularunits, m | - |
-// | mount/rotationdeviates | per-axis jitter (see docs/formats.md); empty = none | angularunits | none |
+// | attachment/affinetransform | empty = identity; xtranslate… zrotate or matrix (see
+// docs/formats.md) | m, rad | identity | | mount@type | static, commanded, tabulated, whisk,
+// tracking (lemniscate, line, scripted: warned) | - | static | | mount/data@angularunits,
+// @rotationorder | degrees/radians; xyz… | - | degrees, xyz | | mount/data/xrotation, yrotation,
+// zrotation | number | angularunits | 0 | | mount/data/entry (commanded, tabulated) | datetime,
+// x/y/zrotation, x/y/ztranslation | s, angularunits, m | - | | mount/rotationdeviates | per-axis
+// jitter (see docs/formats.md); empty = none | angularunits | none |
 #pragma once
 
 #include <array>
@@ -23,6 +24,7 @@
 
 #include "glint/model/common.h"
 #include "glint/model/instrument.h"
+#include "glint/model/jitter.h"
 
 namespace glint::model {
 
@@ -71,8 +73,9 @@ struct JitterAxis {
     enum class Kind { none, normal, psd };
     Kind kind = Kind::none;
     double mean_rad = 0.0;
-    double stddev_rad = 0.0;  ///< normal: uncorrelated samples
-    FileRef psd_file;         ///< psd: frequency (Hz), PSD (rad²/Hz) table
+    double stddev_rad = 0.0;      ///< normal: uncorrelated samples
+    FileRef psd_file;             ///< psd: frequency (Hz), PSD (rad²/Hz) table
+    std::optional<PsdTable> psd;  ///< psd_file's table, as the input loader (glint/inputs) read it
 };
 
 /// `<rotationdeviates>`: jitter about x, y, z (empty element = none).

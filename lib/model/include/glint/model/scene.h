@@ -3,8 +3,8 @@
 // optional specular lobe, emissivity, temperature), geometry objects (an OBJ file or a
 // tessellated primitive, each held as a validated triangle mesh) and their static or
 // dynamic instances. Plain data in SI units (m, rad, K; wavelengths µm). The glint YAML
-// scene reader (glint/legacy/scene_reader.h) fills it, as do the DIRSIG scene readers
-// (glint/legacy/dirsig_scene_reader.h); docs/scene.md is the full reference.
+// scene reader (glint/yaml/scene_reader.h) fills it, as do the DIRSIG scene readers
+// (glint/dirsig/scene_reader.h); docs/scene.md is the full reference.
 // The YAML keys read:
 //
 // clang-format off

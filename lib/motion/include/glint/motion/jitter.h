@@ -60,7 +60,7 @@ struct JitterSynthesisOptions {
 
 /// The one-sided PSD of `table` at `frequency_hz`: log-log interpolation between neighbouring
 /// rows where both PSD values and both frequencies are positive, linear otherwise; 0 outside
-/// [first, last] frequency. The table must be valid (legacy::validate_psd_table).
+/// [first, last] frequency. The table must be valid (model::validate_psd_table).
 double psd_at(const model::PsdTable& table, double frequency_hz) noexcept;
 
 /// The phase of `table` at `frequency_hz` (rad): linear interpolation of the phase column,
@@ -132,14 +132,13 @@ private:
     double m_psd_variance = 0.0;
 };
 
-/// Converts a model::JitterSpec into a JitterModel, reading a PSD file into `storage` when the
-/// spec names one (inline tables are pointed at). Throws glint::Error (input) for a psd spec
-/// with neither, or a PSD file with errors (the first, with its file:line).
-JitterModel jitter_model(const model::JitterSpec& spec, model::PsdTable& storage);
-/// The same for a mount axis (model::JitterAxis), whose PSD is always a file; `where` is the
-/// axis' `<rotationdeviates>` element (used when the file reference has no location).
-JitterModel jitter_model(const model::JitterAxis& axis, const ErrorContext& where,
-                         model::PsdTable& storage);
+/// Converts a model::JitterSpec into a JitterModel, pointing at its PSD table (given inline, or
+/// read from its file by the input loader). Throws glint::Error (input) for a psd spec
+/// without a table.
+JitterModel jitter_model(const model::JitterSpec& spec);
+/// The same for a mount axis (model::JitterAxis); `where` is the axis' `<rotationdeviates>`
+/// element (used when the file reference has no location).
+JitterModel jitter_model(const model::JitterAxis& axis, const ErrorContext& where);
 
 /// Samples six-degree-of-freedom platform jitter.
 class PlatformJitterSampler {

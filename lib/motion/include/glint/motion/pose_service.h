@@ -26,7 +26,7 @@
 
 #include "glint/core/diagnostics.h"
 #include "glint/core/log.h"
-#include "glint/legacy/read_options.h"
+#include "glint/model/inputs.h"
 #include "glint/model/jitter.h"
 #include "glint/model/platform.h"
 #include "glint/model/simulation.h"
@@ -127,21 +127,16 @@ private:
 /// stop + 1 s]; [−1, 1] s without tasks.
 TimeSpan jitter_span_of(const model::TaskList& tasks) noexcept;
 
-/// Builds the pose service of the BasicPlatform at `plugin_index` of `simulation.plugins`:
-/// reads its platform, motion and tasks files (legacy readers, problems to `diagnostics`),
+/// Builds the pose service of one BasicPlatform entry, already read (glint/inputs/load.h):
 /// places the scene frame at `scene` (the scene's origin; kDefaultSceneOrigin by default),
 /// resolves named tracking targets with `targets` (must outlive the service; null: a named
-/// target is an input error),
-/// builds the trajectory (tasks reference date-time; `log` gets its clamp warning) and the
-/// jitter (seed; streams as described above; span jitter_span_of(tasks); platform jitter
-/// angles in the `.ppd` rotation order, or a FlexMotion euler engine's, else xyz). Throws
-/// glint::Error: usage for a plugin index out of range or not a BasicPlatform; input when
-/// diagnostics has errors after reading (the first error, with its file:line) or the
-/// platform or motion cannot be used.
-PoseService make_pose_service(const model::Simulation& simulation, std::size_t plugin_index,
-                              const legacy::ReadOptions& read_options, std::uint64_t seed,
-                              const Log& log, Diagnostics& diagnostics,
-                              const SceneFrame& scene = SceneFrame(),
+/// target is an input error), builds the trajectory (tasks reference date-time; `log` gets its
+/// clamp warning) and the jitter (seed; streams as described above, plugin index
+/// inputs.plugin_index; span jitter_span_of(tasks); platform jitter angles in the `.ppd`
+/// rotation order, or a FlexMotion euler engine's, else xyz; PSD tables as the loader read
+/// them). Throws glint::Error (input) when the platform or motion cannot be used.
+PoseService make_pose_service(const model::PlatformInputs& inputs, std::uint64_t seed,
+                              const Log& log, const SceneFrame& scene = SceneFrame(),
                               const TargetResolver* targets = nullptr);
 
 }  // namespace glint::motion

@@ -1,15 +1,17 @@
 // SPDX-License-Identifier: Apache-2.0
 // SGP4/SDP4 orbit propagation of two-line element sets: glint's own implementation of the
-// published model (Hoots & Roehrich 1980, Spacetrack Report #3) with the corrections of
-// Vallado, Crawford, Hujsak & Kelso 2006, "Revisiting Spacetrack Report #3" (AIAA
-// 2006-6753): near-Earth SGP4 with drag, and deep-space SDP4 (periods ≥ 225 min) with
-// lunar-solar secular and periodic terms and the 12 h and 24 h geopotential resonances.
-// Operation mode is the paper's "improved" mode 'i' (GMST by the IAU-82 formula, modern
-// Lyddane handling); the old AFSPC mode 'a' is not offered.
+// published model (F. R. Hoots and R. L. Roehrich, "Models for Propagation of NORAD Element
+// Sets", Spacetrack Report No. 3, 1980) with the corrections of D. A. Vallado, P. Crawford,
+// R. Hujsak and T. S. Kelso, "Revisiting Spacetrack Report #3", AIAA/AAS Astrodynamics
+// Specialist Conference 2006, AIAA 2006-6753: near-Earth SGP4 with drag, and deep-space SDP4
+// (periods ≥ 225 min) with lunar-solar secular and periodic terms and the 12 h and 24 h
+// geopotential resonances. Operation mode is Vallado et al.'s "improved" mode 'i' (GMST by
+// the IAU-82 formula, modern Lyddane handling); the old AFSPC mode 'a' is not offered.
 //
 // Results are in TEME, the "true equator, mean equinox" frame of the element set's epoch;
-// teme.h turns them into ECEF. Verified against the 2006 paper's verification vectors
-// (SGP4-VER.TLE / tcppver.out) by tests/oracle/motion/sgp4_oracle_test.cpp.
+// teme.h turns them into ECEF. Verified against the verification vectors of Vallado et al.
+// 2006 (SGP4-VER.TLE / tcppver.out) by tests/oracle/motion/sgp4_oracle_test.cpp. Full
+// citations: docs/references.md.
 #pragma once
 
 #include <memory>

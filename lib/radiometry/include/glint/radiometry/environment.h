@@ -21,10 +21,10 @@
 #include <span>
 #include <vector>
 
+#include "glint/atmosphere/atmosphere.h"
+#include "glint/atmosphere/solar.h"
 #include "glint/core/spectral.h"
 #include "glint/motion/geometry.h"
-#include "glint/scene/atmosphere.h"
-#include "glint/scene/solar.h"
 
 namespace glint::radiometry {
 
@@ -90,9 +90,10 @@ public:
     /// (whether or not a cache is given, so results never depend on what was cached) and
     /// taken from / stored in `cache` when one is given. Throws glint::Error (input) for
     /// non-finite inputs, a zero sun direction or a window with end < begin.
-    static Environment make(const SpectralGrid& grid, const scene::AtmosphereModel& atmosphere,
-                            const scene::SolarSpectrum& sun, const EnvironmentInputs& inputs,
-                            SensorPathCache* cache = nullptr);
+    static Environment make(const SpectralGrid& grid,
+                            const glint::atmosphere::AtmosphereModel& atmosphere,
+                            const glint::atmosphere::SolarSpectrum& sun,
+                            const EnvironmentInputs& inputs, SensorPathCache* cache = nullptr);
 
     /// Number of bands.
     std::size_t bands() const noexcept { return m_bands; }

@@ -5,10 +5,11 @@
 // weighted mean spectral radiance, the sample count and the standard error at the reference
 // wavelength.
 //
-// Convergence (DESIGN.md): after at least min_samples, stop when the weighted mean radiance
-// at the reference band changed by less than threshold (absolute, W/(cm² sr µm)) between
-// N − 1 and N samples; always stop at max_samples. The weighted mean is Σ wᵢ Lᵢ / Σ wᵢ; its
-// standard error uses the weighted variance and Kish's effective sample size (Σw)²/Σw².
+// Convergence (docs/physics.md, "Pixel problems and convergence"): after at least
+// min_samples, stop when the weighted mean radiance at the reference band changed by less
+// than threshold (absolute, W/(cm² sr µm)) between N − 1 and N samples; always stop at
+// max_samples. The weighted mean is Σ wᵢ Lᵢ / Σ wᵢ; its standard error uses the weighted
+// variance and Kish's effective sample size (Σw)²/Σw².
 //
 // Determinism: sample n of problem p draws every random number (the RaySource's first, then
 // the tracer's) from RandomStream(seed, {plugin, task, capture, p, n}). A problem is solved
@@ -79,9 +80,10 @@ struct ProblemBatch {
     std::size_t reference_band = 0;  ///< the band the convergence rule watches
     std::uint64_t first_problem = 0;
     std::uint64_t count = 0;
-    /// Hypersampling (the manual's ::IMPORTANT:: targets): problems whose entry is non-zero
-    /// (indexed by problem − first_problem; empty: none) take min and max samples ×
-    /// hypersampling_multiplier (rounded up), the threshold unchanged.
+    /// Hypersampling (the ::IMPORTANT:: targets of the DIRSIG5 BasicPlatform manual,
+    /// docs/references.md): problems whose entry is non-zero (indexed by problem −
+    /// first_problem; empty: none) take min and max samples × hypersampling_multiplier
+    /// (rounded up), the threshold unchanged.
     std::span<const std::uint8_t> hypersampled;
     double hypersampling_multiplier = 1.0;
 };

@@ -21,6 +21,12 @@ inline constexpr double kTickTolerance_s = 1e-9;
 /// exact in a double).
 inline constexpr std::uint64_t kMaxTicksPerWindow = std::uint64_t{1} << 53;
 
+/// The period with which a list of n >= 2 increasing trigger times repeats:
+/// P = (last − first) · n / (n − 1), i.e. the list's span plus its mean spacing, so that
+/// 0.0 0.1 0.2 repeats at 0.3 0.4 0.5, 0.6 … (trigger i of repetition r fires at
+/// times[i] + r · P). None for a single trigger (it fires once) or an empty list.
+std::optional<double> trigger_period_s(std::span<const double> times_s);
+
 /// The ticks of a clock inside the task window [start_s, stop_s] (both ends included within
 /// kTickTolerance_s), in increasing time order.
 ///   - independent: tick j at offset + j / rate, j >= 0 (the offset is the first tick);

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
-// The capture schedule (the paper's Figure 1): every enabled focal plane of every instrument
-// of every BasicPlatform entry has a clock; its ticks inside each task window are captures;
-// all captures are sorted by start time (ties: plugin, instrument, focal plane) and numbered.
-// Schedules can be huge (a 10-hour task at a 10 kHz line rate is 3.6e8 captures), so
-// captures are generated in order by a streaming generator and counted analytically; nothing
-// holds them all in memory.
+// The capture schedule, after Figure 1 of S. D. Brown and A. A. Goodenough, "Plugin-driven
+// sensor modeling of remote sensing imaging systems", IGARSS 2017 (docs/references.md): every
+// enabled focal plane of every instrument of every BasicPlatform entry has a clock; its ticks
+// inside each task window are captures; all captures are sorted by start time (ties: plugin,
+// instrument, focal plane) and numbered. Schedules can be huge (a 10-hour task at a 10 kHz
+// line rate is 3.6e8 captures), so captures are generated in order by a streaming generator
+// and counted analytically; nothing holds them all in memory.
 #pragma once
 
 #include <cstddef>
@@ -17,7 +18,7 @@
 
 #include "glint/core/diagnostics.h"
 #include "glint/core/log.h"
-#include "glint/legacy/read_options.h"
+#include "glint/model/inputs.h"
 #include "glint/model/platform.h"
 #include "glint/model/scene.h"
 #include "glint/model/simulation.h"
@@ -27,8 +28,9 @@
 
 namespace glint::schedule {
 
-/// Run options that shape the schedule (the seed's Options section: `.jsim` values of
-/// output_folder/output_prefix take precedence over these).
+/// Run options that shape the schedule (the "Options" of the DIRSIG5 BasicPlatform manual's
+/// "Usage" section, docs/references.md: `.jsim` values of output_folder/output_prefix take
+/// precedence over these).
 struct ScheduleOptions {
     std::optional<std::string> output_folder;  ///< --output_folder
     std::optional<std::string> output_prefix;  ///< --output_prefix
@@ -37,10 +39,6 @@ struct ScheduleOptions {
     /// The scene origin the poses are placed about; when not set, the scene's origin
     /// (kDefaultSceneOrigin when it gives none).
     std::optional<motion::Geodetic> scene_origin;
-    /// The simulation's scene, already read (glint-render), for its origin and the named
-    /// targets of tracking mounts; null: load() reads the simulation's scenes itself. Only
-    /// used during load().
-    const model::Scene* scene = nullptr;
 };
 
 /// One BasicPlatform entry of the simulation, loaded.
@@ -100,12 +98,14 @@ struct Capture {
 /// The loaded simulation: plugins, sources, and how to enumerate and name captures.
 class Schedule {
 public:
-    /// Loads a `.jsim` or `.sim` and everything each BasicPlatform references (platform,
-    /// motion, tasks, trigger files). Problems go to `diagnostics`; throws glint::Error
-    /// (input) summarising them when there are errors.
-    static Schedule load(const std::filesystem::path& simulation_file,
-                         const ScheduleOptions& options, const legacy::ReadOptions& read_options,
-                         const Log& log, Diagnostics& diagnostics);
+    /// The schedule of a loaded simulation (glint/inputs/load.h): a pose service per
+    /// BasicPlatform entry (placed in the scene's frame, tracking the scene's instances), its
+    /// sources, output names and clock ranges. The schedule shares the platforms and copies
+    /// what else it needs: `inputs` may go away afterwards. Problems go to `diagnostics`;
+    /// throws glint::Error (input) summarising them when there are errors, (usage) for a bad
+    /// scale_resolution.
+    static Schedule build(const model::SimulationInputs& inputs, const ScheduleOptions& options,
+                          const Log& log, Diagnostics& diagnostics);
 
     const std::filesystem::path& simulation_file() const;
     /// The scene frame the poses are placed in (ScheduleOptions::scene_origin, else the

@@ -24,7 +24,8 @@
 // (x_u, y_u, −1) in the instrument frame (boresight −Z); project() applies the explicit
 // forward model x_d = x_u (1 + k1 r² + k2 r⁴ + k3 r⁶) + 2 p1 x_u y_u + p2 (r² + 2 x_u²),
 // y_d = y_u (1 + …) + p1 (r² + 2 y_u²) + 2 p2 x_u y_u, r² = x_u² + y_u². k1 > 0 is pincushion,
-// k1 < 0 barrel (the manual's "Lens Distortion"; docs/drafts/camera.md).
+// k1 < 0 barrel (the DIRSIG5 BasicPlatform manual's "Lens Distortion", docs/references.md;
+// docs/camera.md §3).
 // scale_resolution keeps the field of view: N' = the schedule's scaled count, pitch and
 // element size × N/N' (per axis); offsets and focal length are unchanged.
 #pragma once

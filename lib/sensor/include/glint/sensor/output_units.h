@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
-// Output units of the simple and raw capture methods (the manual's "Output Units" and its
-// Table 1): from the at-aperture spectral radiance L(λ) in W/(cm² sr µm) on the focal plane's
-// bandpass grid to one value per channel in the units the <imagefile> and the instrument
-// ask for, with the ENVI `data units` string that says exactly what the numbers are.
+// Output units of the simple and raw capture methods ("Output Units" and its Table 1 in the
+// DIRSIG5 BasicPlatform manual, docs/references.md): from the at-aperture spectral radiance
+// L(λ) in W/(cm² sr µm) on the focal plane's bandpass grid to one value per channel in the
+// units the <imagefile> and the instrument ask for, with the ENVI `data units` string that
+// says exactly what the numbers are.
 //
 // Per channel c with response R_c(λ), gain g_c and bias b_c, on the bandpass grid (trapezoid
 // weights Δ_b: Σ_b Δ_b f_b = integrate_trapezoid(grid, f), exact for piecewise-linear f):

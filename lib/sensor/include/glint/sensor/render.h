@@ -1,13 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
-// The capture loop of glint-render (the paper's Figure 2): load the simulation (scenes,
-// atmosphere, every BasicPlatform's platform, motion and tasks), walk its capture schedule
-// in order, and for each capture: build what the capture needs (the Embree scene over the
-// capture window when something in the scene moves, the environment — sun, sky, sensor path
-// — at its time), hand one problem per pixel to the radiometry core, turn each converged
-// spectral radiance into the output units of the focal plane, and append the capture's lines
-// to its ENVI file, which is published when its last capture is in. Everything between
-// tools and library goes through Context: log lines (the DIRSIG-style "Starting capture"
-// block at info level), progress ("captures"), cancellation, threads and the seed.
+// The capture loop of glint-render, after Figure 2 (the API callbacks of one capture) of
+// S. D. Brown and A. A. Goodenough, "Plugin-driven sensor modeling of remote sensing imaging
+// systems", IGARSS 2017 (docs/references.md): load the simulation (scenes, atmosphere, every
+// BasicPlatform's platform, motion and tasks), walk its capture schedule in order, and for
+// each capture: build what the capture needs (the Embree scene over the capture window when
+// something in the scene moves, the environment — sun, sky, sensor path — at its time), hand
+// one problem per pixel to the radiometry core, turn each converged spectral radiance into
+// the output units of the focal plane, and append the capture's lines to its ENVI file, which
+// is published when its last capture is in. Everything between tools and library goes through
+// Context: log lines (the DIRSIG-style "Starting capture" block at info level), progress
+// ("captures"), cancellation, threads and the seed.
 #pragma once
 
 #include <cstdint>
@@ -18,7 +20,7 @@
 #include <vector>
 
 #include "glint/core/context.h"
-#include "glint/legacy/read_options.h"
+#include "glint/model/inputs.h"
 #include "glint/radiometry/path_tracer.h"
 #include "glint/radiometry/problem.h"
 #include "glint/scene/geometry_scene.h"
@@ -32,7 +34,6 @@ inline constexpr radiometry::Convergence kDefaultConvergence{10, 100, 1e-6};
 /// What glint-render was asked to do.
 struct RenderOptions {
     schedule::ScheduleOptions schedule;  ///< folder, prefix, scale_resolution, seed
-    legacy::ReadOptions read;
     /// --convergence; a focal plane's <convergence> overrides it.
     std::optional<radiometry::Convergence> convergence;
     bool split_channels = false;  ///< accepted and recorded; no dispersion is modelled
@@ -76,12 +77,17 @@ struct RenderReport {
     scene::DeviceInfo device;
 };
 
-/// Renders `simulation_file` (.jsim or .sim). Throws glint::Error: input for bad inputs (all
-/// problems of the inputs are in the message's diagnostics, each with file:line), usage for
-/// bad options, io when an output cannot be written, cancelled on an interrupt (every file
-/// not yet complete is discarded).
-RenderReport render(const std::filesystem::path& simulation_file, const RenderOptions& options,
+/// Renders a loaded simulation (glint/inputs/load.h reads the `.jsim` or `.sim` and every file
+/// it names). Throws glint::Error: input for inputs glint cannot render (every problem is
+/// logged, each with file:line), usage for bad options, io when an output cannot be written,
+/// cancelled on an interrupt (every file not yet complete is discarded).
+RenderReport render(model::SimulationInputs inputs, const RenderOptions& options,
                     const Context& context);
+
+/// Prepares everything like render() and returns the captures, pixel counts, output files and
+/// memory estimate without tracing a ray (--dry-run).
+RenderReport plan(model::SimulationInputs inputs, const RenderOptions& options,
+                  const Context& context);
 
 /// Loads everything like render() and returns the captures, pixel counts, output files and
 /// memory estimate without tracing a ray (--dry-run).

@@ -1,0 +1,172 @@
+// SPDX-License-Identifier: Apache-2.0
+// Atmosphere models: per-wavelength-grid queries of the direct sun transmittance, the
+// surface-to-sensor transmittance and path radiance, the diffuse sky irradiance and the
+// isotropic sky radiance (scattered + thermal emission). Implementations: none (exo-atmospheric
+// sun, black sky, no path effects), parametric (Rayleigh + aerosol, single scattering),
+// tabulated (a user table for one geometry) and simple (DIRSIG .atm: sky at a temperature).
+// Formulas, parameters and limits: docs/physics.md ("Atmosphere and sun"). Units: radiance W/(cm²
+// sr µm), irradiance W/(cm² µm), altitudes m, angles degrees.
+#pragma once
+
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "glint/core/spectral.h"
+#include "glint/model/atmosphere.h"
+
+namespace glint::atmosphere {
+
+/// The geometry of one atmosphere query.
+struct AtmosphereGeometry {
+    double sun_zenith_deg = 0.0;      ///< at the surface point; ≥ 90: sun below the horizon
+    double sun_azimuth_deg = 0.0;     ///< clockwise from north
+    double surface_altitude_m = 0.0;  ///< of the surface point, above sea level
+    double sensor_altitude_m = 0.0;   ///< of the sensor, above sea level (≥ surface)
+    double view_zenith_deg = 0.0;     ///< direction surface → sensor, from the zenith, < 90
+    double view_azimuth_deg = 0.0;    ///< direction surface → sensor, clockwise from north
+};
+
+/// An atmosphere model. Every query returns one value per wavelength of `grid`; the ones that
+/// scale sunlight take the top-of-atmosphere solar irradiance on the same grid
+/// (SolarSpectrum::resample). Queries throw glint::Error (input) for a size mismatch or a
+/// non-finite geometry.
+class AtmosphereModel {
+public:
+    virtual ~AtmosphereModel() = default;
+
+    /// Direct-beam transmittance from the top of the atmosphere to the surface point along
+    /// the sun's direction, [0, 1] (0 when the sun is below the horizon).
+    virtual std::vector<double> sun_transmittance(const SpectralGrid& grid,
+                                                  const AtmosphereGeometry& geometry) const = 0;
+
+    /// Direct transmittance from the surface point to the sensor, [0, 1].
+    virtual std::vector<double> sensor_transmittance(const SpectralGrid& grid,
+                                                     const AtmosphereGeometry& geometry) const = 0;
+
+    /// Radiance added along the surface → sensor path (scattered sunlight, plus emission where
+    /// the model has it), W/(cm² sr µm) at the sensor.
+    virtual std::vector<double> path_radiance_w_per_cm2_sr_um(
+        const SpectralGrid& grid, const AtmosphereGeometry& geometry,
+        std::span<const double> toa_irradiance_w_per_cm2_um) const = 0;
+
+    /// Diffuse (scattered sunlight) irradiance on a horizontal surface at the surface point,
+    /// W/(cm² µm).
+    virtual std::vector<double> diffuse_sky_irradiance_w_per_cm2_um(
+        const SpectralGrid& grid, const AtmosphereGeometry& geometry,
+        std::span<const double> toa_irradiance_w_per_cm2_um) const = 0;
+
+    /// Thermal emission of the sky, isotropic, W/(cm² sr µm).
+    virtual std::vector<double> thermal_sky_radiance_w_per_cm2_sr_um(
+        const SpectralGrid& grid, const AtmosphereGeometry& geometry) const = 0;
+
+    /// The isotropic sky radiance: diffuse_sky_irradiance / π + thermal_sky_radiance.
+    std::vector<double> sky_radiance_w_per_cm2_sr_um(
+        const SpectralGrid& grid, const AtmosphereGeometry& geometry,
+        std::span<const double> toa_irradiance_w_per_cm2_um) const;
+};
+
+/// The none model: transmittances 1 (sun transmittance 0 below the horizon), no path
+/// radiance, black sky.
+class NoAtmosphere final : public AtmosphereModel {
+public:
+    std::vector<double> sun_transmittance(const SpectralGrid& grid,
+                                          const AtmosphereGeometry& geometry) const override;
+    std::vector<double> sensor_transmittance(const SpectralGrid& grid,
+                                             const AtmosphereGeometry& geometry) const override;
+    std::vector<double> path_radiance_w_per_cm2_sr_um(
+        const SpectralGrid& grid, const AtmosphereGeometry& geometry,
+        std::span<const double> toa_irradiance_w_per_cm2_um) const override;
+    std::vector<double> diffuse_sky_irradiance_w_per_cm2_um(
+        const SpectralGrid& grid, const AtmosphereGeometry& geometry,
+        std::span<const double> toa_irradiance_w_per_cm2_um) const override;
+    std::vector<double> thermal_sky_radiance_w_per_cm2_sr_um(
+        const SpectralGrid& grid, const AtmosphereGeometry& geometry) const override;
+};
+
+/// The DIRSIG .atm simpleradiativetransfer subset: as none, but the sky radiates as a
+/// blackbody at the apparent sky temperature.
+class SimpleAtmosphereModel final : public AtmosphereModel {
+public:
+    explicit SimpleAtmosphereModel(model::SimpleAtmosphere parameters);
+    std::vector<double> sun_transmittance(const SpectralGrid& grid,
+                                          const AtmosphereGeometry& geometry) const override;
+    std::vector<double> sensor_transmittance(const SpectralGrid& grid,
+                                             const AtmosphereGeometry& geometry) const override;
+    std::vector<double> path_radiance_w_per_cm2_sr_um(
+        const SpectralGrid& grid, const AtmosphereGeometry& geometry,
+        std::span<const double> toa_irradiance_w_per_cm2_um) const override;
+    std::vector<double> diffuse_sky_irradiance_w_per_cm2_um(
+        const SpectralGrid& grid, const AtmosphereGeometry& geometry,
+        std::span<const double> toa_irradiance_w_per_cm2_um) const override;
+    std::vector<double> thermal_sky_radiance_w_per_cm2_sr_um(
+        const SpectralGrid& grid, const AtmosphereGeometry& geometry) const override;
+
+private:
+    model::SimpleAtmosphere m_parameters;
+};
+
+/// Rayleigh + aerosol extinction with exponential scale heights, Kasten–Young air mass,
+/// single-scatter path radiance (Rayleigh and Henyey–Greenstein phase functions), a
+/// Bird–Hulstrom-type diffuse sky and a grey Brutsaert clear-sky emission.
+class ParametricAtmosphereModel final : public AtmosphereModel {
+public:
+    /// Throws glint::Error (input) for parameters out of the ranges of model/atmosphere.h.
+    explicit ParametricAtmosphereModel(model::ParametricAtmosphere parameters);
+
+    /// Vertical Rayleigh optical depth above `altitude_m` at `wavelength_um`.
+    double rayleigh_optical_depth(double wavelength_um, double altitude_m) const noexcept;
+    /// Vertical aerosol optical depth above `altitude_m` at `wavelength_um`.
+    double aerosol_optical_depth(double wavelength_um, double altitude_m) const noexcept;
+    /// Effective clear-sky emissivity (Brutsaert 1975), grey.
+    double sky_emissivity() const noexcept;
+
+    std::vector<double> sun_transmittance(const SpectralGrid& grid,
+                                          const AtmosphereGeometry& geometry) const override;
+    std::vector<double> sensor_transmittance(const SpectralGrid& grid,
+                                             const AtmosphereGeometry& geometry) const override;
+    std::vector<double> path_radiance_w_per_cm2_sr_um(
+        const SpectralGrid& grid, const AtmosphereGeometry& geometry,
+        std::span<const double> toa_irradiance_w_per_cm2_um) const override;
+    std::vector<double> diffuse_sky_irradiance_w_per_cm2_um(
+        const SpectralGrid& grid, const AtmosphereGeometry& geometry,
+        std::span<const double> toa_irradiance_w_per_cm2_um) const override;
+    std::vector<double> thermal_sky_radiance_w_per_cm2_sr_um(
+        const SpectralGrid& grid, const AtmosphereGeometry& geometry) const override;
+
+private:
+    model::ParametricAtmosphere m_parameters;
+};
+
+/// A user table for one geometry: the geometry is ignored, values are linearly interpolated
+/// in wavelength. Queries throw glint::Error (input) when the grid reaches outside the table.
+class TabulatedAtmosphereModel final : public AtmosphereModel {
+public:
+    /// Throws glint::Error (input) for columns of unequal length or fewer than 2 rows.
+    explicit TabulatedAtmosphereModel(model::TabulatedAtmosphere table);
+    std::vector<double> sun_transmittance(const SpectralGrid& grid,
+                                          const AtmosphereGeometry& geometry) const override;
+    std::vector<double> sensor_transmittance(const SpectralGrid& grid,
+                                             const AtmosphereGeometry& geometry) const override;
+    std::vector<double> path_radiance_w_per_cm2_sr_um(
+        const SpectralGrid& grid, const AtmosphereGeometry& geometry,
+        std::span<const double> toa_irradiance_w_per_cm2_um) const override;
+    std::vector<double> diffuse_sky_irradiance_w_per_cm2_um(
+        const SpectralGrid& grid, const AtmosphereGeometry& geometry,
+        std::span<const double> toa_irradiance_w_per_cm2_um) const override;
+    std::vector<double> thermal_sky_radiance_w_per_cm2_sr_um(
+        const SpectralGrid& grid, const AtmosphereGeometry& geometry) const override;
+
+private:
+    std::vector<double> sample(const SpectralGrid& grid, const std::vector<double>& column) const;
+    model::TabulatedAtmosphere m_table;
+};
+
+/// Kasten & Young (1989) relative air mass at zenith angle `zenith_deg` (1 overhead, ≈ 38 at
+/// the horizon, capped there for larger angles).
+double relative_air_mass(double zenith_deg) noexcept;
+
+/// The model an atmosphere description selects.
+std::unique_ptr<AtmosphereModel> make_atmosphere_model(const model::Atmosphere& atmosphere);
+
+}  // namespace glint::atmosphere

@@ -1,0 +1,443 @@
+// SPDX-License-Identifier: Apache-2.0
+// The atmosphere models of glint/atmosphere/atmosphere.h: none, simple (.atm), parametric
+// (Rayleigh + aerosol, Beer–Lambert with the Kasten–Young air mass, single scattering
+// integrated over altitude layers) and tabulated. Formulas: docs/physics.md ("Atmosphere and sun").
+#include "glint/atmosphere/atmosphere.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <numbers>
+#include <string>
+#include <utility>
+
+#include "glint/core/error.h"
+#include "glint/core/text.h"
+
+namespace glint::atmosphere {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kDegToRad = kPi / 180.0;
+/// Top of the parametric atmosphere: above it the optical depth is < 1e-5 of the total.
+constexpr double kTopOfAtmosphereM = 100'000.0;
+/// Altitude layers of the single-scatter integration (spacing ∝ k², finer near the ground).
+constexpr int kPathLayers = 256;
+/// Standard sea-level pressure, hPa (the Hansen–Travis Rayleigh depth is for it).
+constexpr double kStandardPressureHpa = 1013.25;
+
+void check_geometry(const AtmosphereGeometry& g) {
+    const std::array<double, 6> values{g.sun_zenith_deg,    g.sun_azimuth_deg, g.surface_altitude_m,
+                                       g.sensor_altitude_m, g.view_zenith_deg, g.view_azimuth_deg};
+    for (double v : values) {
+        if (!std::isfinite(v)) throw input_error("atmosphere query with a non-finite geometry");
+    }
+}
+
+void check_size(const SpectralGrid& grid, std::span<const double> values) {
+    if (values.size() != grid.size()) {
+        throw input_error("solar irradiance has " + std::to_string(values.size()) +
+                          " values for a grid of " + std::to_string(grid.size()));
+    }
+}
+
+bool sun_up(const AtmosphereGeometry& g) { return g.sun_zenith_deg < 90.0; }
+
+/// Unit vector in ENU for (zenith, azimuth clockwise from north), degrees.
+std::array<double, 3> direction(double zenith_deg, double azimuth_deg) {
+    const double t = zenith_deg * kDegToRad;
+    const double p = azimuth_deg * kDegToRad;
+    return {std::sin(t) * std::sin(p), std::sin(t) * std::cos(p), std::cos(t)};
+}
+
+double rayleigh_phase(double cos_theta) { return 0.75 * (1.0 + cos_theta * cos_theta); }
+
+double henyey_greenstein(double g, double cos_theta) {
+    const double denom = 1.0 + g * g - 2.0 * g * cos_theta;
+    return (1.0 - g * g) / (denom * std::sqrt(denom));
+}
+
+/// Fraction of Henyey–Greenstein scattering into the forward hemisphere.
+double hg_forward_fraction(double g) {
+    if (std::abs(g) < 1e-6) return 0.5;
+    return (1.0 + g) / (2.0 * g) - (1.0 - g * g) / (2.0 * g * std::sqrt(1.0 + g * g));
+}
+
+std::vector<double> filled(const SpectralGrid& grid, double value) {
+    return std::vector<double>(grid.size(), value);
+}
+
+}  // namespace
+
+double relative_air_mass(double zenith_deg) noexcept {
+    const double z = std::clamp(zenith_deg, 0.0, 90.0);
+    return 1.0 / (std::cos(z * kDegToRad) + 0.50572 * std::pow(96.07995 - z, -1.6364));
+}
+
+std::vector<double> AtmosphereModel::sky_radiance_w_per_cm2_sr_um(
+    const SpectralGrid& grid, const AtmosphereGeometry& geometry,
+    std::span<const double> toa_irradiance_w_per_cm2_um) const {
+    std::vector<double> sky =
+        diffuse_sky_irradiance_w_per_cm2_um(grid, geometry, toa_irradiance_w_per_cm2_um);
+    const std::vector<double> thermal = thermal_sky_radiance_w_per_cm2_sr_um(grid, geometry);
+    for (std::size_t i = 0; i < sky.size(); ++i) sky[i] = sky[i] / kPi + thermal[i];
+    return sky;
+}
+
+// ---- none ----
+
+std::vector<double> NoAtmosphere::sun_transmittance(const SpectralGrid& grid,
+                                                    const AtmosphereGeometry& geometry) const {
+    check_geometry(geometry);
+    return filled(grid, sun_up(geometry) ? 1.0 : 0.0);
+}
+
+std::vector<double> NoAtmosphere::sensor_transmittance(const SpectralGrid& grid,
+                                                       const AtmosphereGeometry& geometry) const {
+    check_geometry(geometry);
+    return filled(grid, 1.0);
+}
+
+std::vector<double> NoAtmosphere::path_radiance_w_per_cm2_sr_um(const SpectralGrid& grid,
+                                                                const AtmosphereGeometry& geometry,
+                                                                std::span<const double> toa) const {
+    check_geometry(geometry);
+    check_size(grid, toa);
+    return filled(grid, 0.0);
+}
+
+std::vector<double> NoAtmosphere::diffuse_sky_irradiance_w_per_cm2_um(
+    const SpectralGrid& grid, const AtmosphereGeometry& geometry,
+    std::span<const double> toa) const {
+    check_geometry(geometry);
+    check_size(grid, toa);
+    return filled(grid, 0.0);
+}
+
+std::vector<double> NoAtmosphere::thermal_sky_radiance_w_per_cm2_sr_um(
+    const SpectralGrid& grid, const AtmosphereGeometry& geometry) const {
+    check_geometry(geometry);
+    return filled(grid, 0.0);
+}
+
+// ---- simple (.atm) ----
+
+SimpleAtmosphereModel::SimpleAtmosphereModel(model::SimpleAtmosphere parameters)
+    : m_parameters(parameters) {
+    if (!std::isfinite(m_parameters.apparent_sky_temperature_k) ||
+        m_parameters.apparent_sky_temperature_k < 0.0) {
+        throw input_error("apparent sky temperature must be >= 0 K");
+    }
+}
+
+std::vector<double> SimpleAtmosphereModel::sun_transmittance(
+    const SpectralGrid& grid, const AtmosphereGeometry& geometry) const {
+    return NoAtmosphere{}.sun_transmittance(grid, geometry);
+}
+
+std::vector<double> SimpleAtmosphereModel::sensor_transmittance(
+    const SpectralGrid& grid, const AtmosphereGeometry& geometry) const {
+    return NoAtmosphere{}.sensor_transmittance(grid, geometry);
+}
+
+std::vector<double> SimpleAtmosphereModel::path_radiance_w_per_cm2_sr_um(
+    const SpectralGrid& grid, const AtmosphereGeometry& geometry,
+    std::span<const double> toa) const {
+    return NoAtmosphere{}.path_radiance_w_per_cm2_sr_um(grid, geometry, toa);
+}
+
+std::vector<double> SimpleAtmosphereModel::diffuse_sky_irradiance_w_per_cm2_um(
+    const SpectralGrid& grid, const AtmosphereGeometry& geometry,
+    std::span<const double> toa) const {
+    return NoAtmosphere{}.diffuse_sky_irradiance_w_per_cm2_um(grid, geometry, toa);
+}
+
+std::vector<double> SimpleAtmosphereModel::thermal_sky_radiance_w_per_cm2_sr_um(
+    const SpectralGrid& grid, const AtmosphereGeometry& geometry) const {
+    check_geometry(geometry);
+    std::vector<double> out;
+    out.reserve(grid.size());
+    for (double wl : grid.wavelengths_um()) {
+        out.push_back(planck_radiance_w_per_cm2_sr_um(wl, m_parameters.apparent_sky_temperature_k));
+    }
+    return out;
+}
+
+// ---- parametric ----
+
+ParametricAtmosphereModel::ParametricAtmosphereModel(model::ParametricAtmosphere parameters)
+    : m_parameters(parameters) {
+    const auto& p = m_parameters;
+    const auto bad = [](double v) { return !std::isfinite(v); };
+    if (bad(p.aerosol_optical_depth_550) || p.aerosol_optical_depth_550 < 0.0) {
+        throw input_error("aerosol_optical_depth_550 must be >= 0");
+    }
+    if (bad(p.angstrom_exponent)) throw input_error("angstrom_exponent must be finite");
+    if (bad(p.aerosol_scale_height_m) || p.aerosol_scale_height_m <= 0.0 ||
+        bad(p.rayleigh_scale_height_m) || p.rayleigh_scale_height_m <= 0.0) {
+        throw input_error("scale heights must be > 0 m");
+    }
+    if (bad(p.aerosol_asymmetry) || std::abs(p.aerosol_asymmetry) >= 1.0) {
+        throw input_error("aerosol_asymmetry must lie in (-1, 1)");
+    }
+    if (bad(p.aerosol_single_scatter_albedo) || p.aerosol_single_scatter_albedo < 0.0 ||
+        p.aerosol_single_scatter_albedo > 1.0) {
+        throw input_error("aerosol_single_scatter_albedo must lie in [0, 1]");
+    }
+    if (bad(p.sea_level_pressure_hpa) || p.sea_level_pressure_hpa < 0.0 ||
+        bad(p.air_temperature_k) || p.air_temperature_k < 0.0 || bad(p.water_vapor_pressure_hpa) ||
+        p.water_vapor_pressure_hpa < 0.0) {
+        throw input_error("pressures and temperatures must be >= 0");
+    }
+}
+
+double ParametricAtmosphereModel::rayleigh_optical_depth(double wavelength_um,
+                                                         double altitude_m) const noexcept {
+    const double l2 = 1.0 / (wavelength_um * wavelength_um);
+    const double l4 = l2 * l2;
+    const double sea_level = 0.008569 * l4 * (1.0 + 0.0113 * l2 + 0.00013 * l4);
+    return sea_level * (m_parameters.sea_level_pressure_hpa / kStandardPressureHpa) *
+           std::exp(-altitude_m / m_parameters.rayleigh_scale_height_m);
+}
+
+double ParametricAtmosphereModel::aerosol_optical_depth(double wavelength_um,
+                                                        double altitude_m) const noexcept {
+    return m_parameters.aerosol_optical_depth_550 *
+           std::pow(wavelength_um / 0.55, -m_parameters.angstrom_exponent) *
+           std::exp(-altitude_m / m_parameters.aerosol_scale_height_m);
+}
+
+double ParametricAtmosphereModel::sky_emissivity() const noexcept {
+    const double t = m_parameters.air_temperature_k;
+    if (t <= 0.0) return 0.0;
+    return std::clamp(1.24 * std::pow(m_parameters.water_vapor_pressure_hpa / t, 1.0 / 7.0), 0.0,
+                      1.0);
+}
+
+std::vector<double> ParametricAtmosphereModel::sun_transmittance(
+    const SpectralGrid& grid, const AtmosphereGeometry& geometry) const {
+    check_geometry(geometry);
+    if (!sun_up(geometry)) return filled(grid, 0.0);
+    const double m = relative_air_mass(geometry.sun_zenith_deg);
+    const double z = geometry.surface_altitude_m;
+    std::vector<double> out;
+    out.reserve(grid.size());
+    for (double wl : grid.wavelengths_um()) {
+        out.push_back(
+            std::exp(-(rayleigh_optical_depth(wl, z) + aerosol_optical_depth(wl, z)) * m));
+    }
+    return out;
+}
+
+std::vector<double> ParametricAtmosphereModel::sensor_transmittance(
+    const SpectralGrid& grid, const AtmosphereGeometry& geometry) const {
+    check_geometry(geometry);
+    const double m = relative_air_mass(geometry.view_zenith_deg);
+    const double z0 = geometry.surface_altitude_m;
+    const double z1 = std::max(z0, geometry.sensor_altitude_m);
+    std::vector<double> out;
+    out.reserve(grid.size());
+    for (double wl : grid.wavelengths_um()) {
+        const double tau = rayleigh_optical_depth(wl, z0) - rayleigh_optical_depth(wl, z1) +
+                           aerosol_optical_depth(wl, z0) - aerosol_optical_depth(wl, z1);
+        out.push_back(std::exp(-tau * m));
+    }
+    return out;
+}
+
+std::vector<double> ParametricAtmosphereModel::path_radiance_w_per_cm2_sr_um(
+    const SpectralGrid& grid, const AtmosphereGeometry& geometry,
+    std::span<const double> toa) const {
+    check_geometry(geometry);
+    check_size(grid, toa);
+    const double z0 = geometry.surface_altitude_m;
+    const double z1 =
+        std::min(std::max(z0, geometry.sensor_altitude_m), std::max(z0, kTopOfAtmosphereM));
+    std::vector<double> out(grid.size(), 0.0);
+    if (z1 <= z0) return out;
+    const bool sunlit = sun_up(geometry);
+    const double m_sun = relative_air_mass(geometry.sun_zenith_deg);
+    const double m_view = relative_air_mass(geometry.view_zenith_deg);
+    const auto s = direction(geometry.sun_zenith_deg, geometry.sun_azimuth_deg);
+    const auto v =
+        direction(std::clamp(geometry.view_zenith_deg, 0.0, 90.0), geometry.view_azimuth_deg);
+    // Light travels along −s from the sun and leaves along v towards the sensor.
+    const double cos_scatter = -(s[0] * v[0] + s[1] * v[1] + s[2] * v[2]);
+    const double p_rayleigh = rayleigh_phase(cos_scatter);
+    const double g = m_parameters.aerosol_asymmetry;
+    const double p_aerosol = henyey_greenstein(g, cos_scatter);
+    const double omega = m_parameters.aerosol_single_scatter_albedo;
+    const double temperature_k = m_parameters.air_temperature_k;
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+        const double wl = grid.wavelength_um(i);
+        const double tau_sensor = rayleigh_optical_depth(wl, z1) + aerosol_optical_depth(wl, z1);
+        const double emission = planck_radiance_w_per_cm2_sr_um(wl, temperature_k);
+        double sum = 0.0;
+        double za = z0;
+        double tau_r_a = rayleigh_optical_depth(wl, za);
+        double tau_a_a = aerosol_optical_depth(wl, za);
+        for (int k = 1; k <= kPathLayers; ++k) {
+            const double f = static_cast<double>(k) / kPathLayers;
+            const double zb = z0 + (z1 - z0) * f * f;
+            const double tau_r_b = rayleigh_optical_depth(wl, zb);
+            const double tau_a_b = aerosol_optical_depth(wl, zb);
+            const double d_r = tau_r_a - tau_r_b;
+            const double d_a = tau_a_a - tau_a_b;
+            const double zm = 0.5 * (za + zb);
+            const double tau_m = rayleigh_optical_depth(wl, zm) + aerosol_optical_depth(wl, zm);
+            const double to_sensor = std::exp(-(tau_m - tau_sensor) * m_view);
+            double source = (1.0 - omega) * d_a * emission;
+            if (sunlit) {
+                source += toa[i] / (4.0 * kPi) * std::exp(-tau_m * m_sun) *
+                          (d_r * p_rayleigh + omega * d_a * p_aerosol);
+            }
+            sum += source * m_view * to_sensor;
+            za = zb;
+            tau_r_a = tau_r_b;
+            tau_a_a = tau_a_b;
+        }
+        out[i] = sum;
+    }
+    return out;
+}
+
+std::vector<double> ParametricAtmosphereModel::diffuse_sky_irradiance_w_per_cm2_um(
+    const SpectralGrid& grid, const AtmosphereGeometry& geometry,
+    std::span<const double> toa) const {
+    check_geometry(geometry);
+    check_size(grid, toa);
+    std::vector<double> out(grid.size(), 0.0);
+    if (!sun_up(geometry)) return out;
+    const double m = relative_air_mass(geometry.sun_zenith_deg);
+    const double mu = std::cos(geometry.sun_zenith_deg * kDegToRad);
+    const double z = geometry.surface_altitude_m;
+    const double omega = m_parameters.aerosol_single_scatter_albedo;
+    const double forward = hg_forward_fraction(m_parameters.aerosol_asymmetry);
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+        const double wl = grid.wavelength_um(i);
+        const double tau_r = rayleigh_optical_depth(wl, z);
+        const double tau_a = aerosol_optical_depth(wl, z);
+        const double t_r = std::exp(-tau_r * m);
+        const double t_as = std::exp(-omega * tau_a * m);
+        const double t_aa = std::exp(-(1.0 - omega) * tau_a * m);
+        out[i] = toa[i] * mu * t_aa * (0.5 * (1.0 - t_r) + forward * (1.0 - t_as));
+    }
+    return out;
+}
+
+std::vector<double> ParametricAtmosphereModel::thermal_sky_radiance_w_per_cm2_sr_um(
+    const SpectralGrid& grid, const AtmosphereGeometry& geometry) const {
+    check_geometry(geometry);
+    const double emissivity = sky_emissivity();
+    std::vector<double> out;
+    out.reserve(grid.size());
+    for (double wl : grid.wavelengths_um()) {
+        out.push_back(emissivity *
+                      planck_radiance_w_per_cm2_sr_um(wl, m_parameters.air_temperature_k));
+    }
+    return out;
+}
+
+// ---- tabulated ----
+
+TabulatedAtmosphereModel::TabulatedAtmosphereModel(model::TabulatedAtmosphere table)
+    : m_table(std::move(table)) {
+    const std::size_t n = m_table.wavelengths_um.size();
+    const bool thermal_ok = m_table.thermal_sky_radiance_w_per_cm2_sr_um.empty() ||
+                            m_table.thermal_sky_radiance_w_per_cm2_sr_um.size() == n;
+    if (n < 2 || m_table.sun_transmittance.size() != n ||
+        m_table.sensor_transmittance.size() != n ||
+        m_table.path_radiance_w_per_cm2_sr_um.size() != n ||
+        m_table.sky_irradiance_w_per_cm2_um.size() != n || !thermal_ok) {
+        throw input_error("atmosphere table needs at least 2 rows and columns of equal length",
+                          ErrorContext{m_table.table_file, 0, {}});
+    }
+    // Validates increasing, finite wavelengths.
+    (void)SpectralCurve(m_table.wavelengths_um, m_table.sun_transmittance,
+                        ErrorContext{m_table.table_file, 0, {}});
+}
+
+std::vector<double> TabulatedAtmosphereModel::sample(const SpectralGrid& grid,
+                                                     const std::vector<double>& column) const {
+    const double lo = m_table.wavelengths_um.front();
+    const double hi = m_table.wavelengths_um.back();
+    const double tolerance = 1e-9 * hi;
+    if (grid.min_um() < lo - tolerance || grid.max_um() > hi + tolerance) {
+        throw input_error("spectral grid " + format_shortest(grid.min_um()) + "-" +
+                              format_shortest(grid.max_um()) +
+                              " um reaches outside the atmosphere table's " + format_shortest(lo) +
+                              "-" + format_shortest(hi) + " um",
+                          ErrorContext{m_table.table_file, 0, {}});
+    }
+    const SpectralCurve curve(m_table.wavelengths_um, column);
+    std::vector<double> out;
+    out.reserve(grid.size());
+    for (double wl : grid.wavelengths_um()) {
+        out.push_back(curve.value_at(std::clamp(wl, lo, hi)));
+    }
+    return out;
+}
+
+std::vector<double> TabulatedAtmosphereModel::sun_transmittance(
+    const SpectralGrid& grid, const AtmosphereGeometry& geometry) const {
+    check_geometry(geometry);
+    if (!sun_up(geometry)) return filled(grid, 0.0);
+    return sample(grid, m_table.sun_transmittance);
+}
+
+std::vector<double> TabulatedAtmosphereModel::sensor_transmittance(
+    const SpectralGrid& grid, const AtmosphereGeometry& geometry) const {
+    check_geometry(geometry);
+    return sample(grid, m_table.sensor_transmittance);
+}
+
+std::vector<double> TabulatedAtmosphereModel::path_radiance_w_per_cm2_sr_um(
+    const SpectralGrid& grid, const AtmosphereGeometry& geometry,
+    std::span<const double> toa) const {
+    check_geometry(geometry);
+    check_size(grid, toa);
+    return sample(grid, m_table.path_radiance_w_per_cm2_sr_um);
+}
+
+std::vector<double> TabulatedAtmosphereModel::diffuse_sky_irradiance_w_per_cm2_um(
+    const SpectralGrid& grid, const AtmosphereGeometry& geometry,
+    std::span<const double> toa) const {
+    check_geometry(geometry);
+    check_size(grid, toa);
+    return sample(grid, m_table.sky_irradiance_w_per_cm2_um);
+}
+
+std::vector<double> TabulatedAtmosphereModel::thermal_sky_radiance_w_per_cm2_sr_um(
+    const SpectralGrid& grid, const AtmosphereGeometry& geometry) const {
+    check_geometry(geometry);
+    if (!m_table.thermal_sky_radiance_w_per_cm2_sr_um.empty()) {
+        return sample(grid, m_table.thermal_sky_radiance_w_per_cm2_sr_um);
+    }
+    std::vector<double> out;
+    out.reserve(grid.size());
+    for (double wl : grid.wavelengths_um()) {
+        out.push_back(planck_radiance_w_per_cm2_sr_um(wl, m_table.sky_temperature_k));
+    }
+    return out;
+}
+
+std::unique_ptr<AtmosphereModel> make_atmosphere_model(const model::Atmosphere& atmosphere) {
+    try {
+        switch (atmosphere.kind) {
+            case model::AtmosphereKind::none:
+                return std::make_unique<NoAtmosphere>();
+            case model::AtmosphereKind::parametric:
+                return std::make_unique<ParametricAtmosphereModel>(atmosphere.parametric);
+            case model::AtmosphereKind::tabulated:
+                return std::make_unique<TabulatedAtmosphereModel>(atmosphere.tabulated);
+            case model::AtmosphereKind::simple:
+                return std::make_unique<SimpleAtmosphereModel>(atmosphere.simple);
+        }
+    } catch (const Error& e) {
+        throw e.with_file(atmosphere.where.file, atmosphere.where.line);
+    }
+    throw internal_error("unknown atmosphere kind");
+}
+
+}  // namespace glint::atmosphere

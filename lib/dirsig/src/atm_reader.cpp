@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: Apache-2.0
+// The simpleradiativetransfer subset of a DIRSIG `.atm` file (glint/dirsig/atm_reader.h),
+// read with glint::io::XmlNode.
+#include "glint/dirsig/atm_reader.h"
+
+#include "glint/io/xml.h"
+
+namespace glint::dirsig {
+
+model::Atmosphere parse_atm(std::string_view text, const std::string& file,
+                            Diagnostics& diagnostics) {
+    model::Atmosphere atmosphere;
+    const io::XmlDocument doc = io::XmlDocument::parse(text, file);
+    const io::XmlNode root = doc.root("atmosphericconditions");
+    atmosphere.where = root.where();
+    bool found = false;
+    for (const io::XmlNode& child : root.children()) {
+        const std::string& name = child.name();
+        if (name == "metadata") continue;
+        if (name == "simpleradiativetransfer") {
+            if (found) {
+                diagnostics.error(child.where(), "more than one radiative-transfer block");
+                continue;
+            }
+            found = true;
+            atmosphere.kind = model::AtmosphereKind::simple;
+            atmosphere.where = child.where();
+            if (auto t = child.optional_double("apparentskytemperature", diagnostics,
+                                               io::NumberRule::non_negative())) {
+                atmosphere.simple.apparent_sky_temperature_k = *t;
+            }
+            child.warn_unknown_children({"apparentskytemperature"}, diagnostics);
+        } else if (name == "uniformradiativetransfer" || name == "classicradiativetransfer") {
+            found = true;
+            diagnostics.error(child.where(),
+                              "<" + name +
+                                  "> is not supported; use <simpleradiativetransfer> or a glint "
+                                  "YAML atmosphere (model parametric or tabulated)");
+        } else if (name == "uniformweather" || name == "weather" || name == "classicweather") {
+            diagnostics.warning(child.where(), "<" + name + "> ignored (weather is not modelled)");
+        } else {
+            diagnostics.warning(child.where(), "unknown element <" + name + "> ignored");
+        }
+    }
+    if (!found) {
+        diagnostics.error(root.where(),
+                          "missing a radiative-transfer block (<simpleradiativetransfer>)");
+    }
+    return atmosphere;
+}
+
+}  // namespace glint::dirsig

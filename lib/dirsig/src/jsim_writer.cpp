@@ -1,0 +1,122 @@
+// SPDX-License-Identifier: Apache-2.0
+// The `.jsim` writer: simulations as DIRSIG5 JSON, with file paths rewritten relative to the
+// folder the .jsim will be written to (so that reading it back resolves them to the same
+// files), Windows paths and unresolved paths kept as written, other plugins verbatim.
+#include <nlohmann/json.hpp>
+
+#include "glint/dirsig/readers.h"
+#include "jsim_keys.h"
+
+namespace glint::dirsig {
+namespace {
+
+using OrderedJson = nlohmann::ordered_json;
+
+/// `path` relative to `folder` when they share more than the root (e.g. "../data/x.ppd"),
+/// else absolute. Both are absolute and lexically normal.
+std::string relative_or_absolute(const std::filesystem::path& path,
+                                 const std::filesystem::path& folder) {
+    std::size_t common = 0;
+    auto a = path.begin();
+    auto b = folder.begin();
+    for (; a != path.end() && b != folder.end() && *a == *b; ++a, ++b) ++common;
+    if (common <= 1 || path.root_path() != folder.root_path()) return path.generic_string();
+    const std::filesystem::path relative = path.lexically_relative(folder);
+    if (relative.empty()) return path.generic_string();
+    return relative.generic_string();
+}
+
+std::string write_path(const model::FileRef& ref, const std::filesystem::path& folder) {
+    if (ref.resolved.empty()) return ref.text;  // unresolved (e.g. undefined variable)
+    if (is_windows_absolute(ref.resolved.generic_string()) || ref.resolved.is_relative()) {
+        return ref.text;
+    }
+    return relative_or_absolute(ref.resolved.lexically_normal(), folder);
+}
+
+OrderedJson parse_kept(const std::string& json, const char* what) {
+    if (json.empty()) return OrderedJson::object();
+    try {
+        return OrderedJson::parse(json);
+    } catch (const nlohmann::json::exception& error) {
+        throw internal_error(std::string("kept ") + what + " is not valid JSON: " + error.what());
+    }
+}
+
+OrderedJson platform_inputs(const model::Plugin& plugin, const std::filesystem::path& folder) {
+    const model::BasicPlatformInputs& in = *plugin.basic_platform;
+    OrderedJson out = OrderedJson::object();
+    out[kPlatformFilename] = write_path(in.platform_file, folder);
+    out[kMotionFilename] = write_path(in.motion_file, folder);
+    out[kTasksFilename] = write_path(in.tasks_file, folder);
+    if (in.output_folder) out[kOutputFolder] = *in.output_folder;
+    if (in.output_prefix) out[kOutputPrefix] = *in.output_prefix;
+    out[kSplitChannels] = in.split_channels;
+    // Keys glint does not know (warned about when read) are carried over unchanged.
+    const OrderedJson kept = parse_kept(plugin.inputs_json, "plugin inputs");
+    if (kept.is_object()) {
+        for (const auto& [key, value] : kept.items()) {
+            if (!out.contains(key)) out[key] = value;
+        }
+    }
+    return out;
+}
+
+OrderedJson atmosphere_inputs(const model::Plugin& plugin, const std::filesystem::path& folder) {
+    OrderedJson out = OrderedJson::object();
+    out[kAtmosphereFilename] = write_path(plugin.basic_atmosphere->atmosphere_file, folder);
+    const OrderedJson kept = parse_kept(plugin.inputs_json, "plugin inputs");
+    if (kept.is_object()) {
+        for (const auto& [key, value] : kept.items()) {
+            if (!out.contains(key)) out[key] = value;
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string format_jsim(const std::vector<model::Simulation>& simulations,
+                        const std::filesystem::path& output_folder) {
+    std::filesystem::path folder =
+        output_folder.empty() ? std::filesystem::path(".") : output_folder;
+    std::error_code ec;
+    if (const std::filesystem::path absolute = std::filesystem::absolute(folder, ec); !ec) {
+        folder = absolute;
+    }
+    folder = folder.lexically_normal();
+    if (folder.has_relative_path() && folder.filename().empty()) folder = folder.parent_path();
+
+    OrderedJson document = OrderedJson::array();
+    for (const model::Simulation& simulation : simulations) {
+        OrderedJson scenes = OrderedJson::array();
+        for (const model::SceneEntry& scene : simulation.scenes) {
+            OrderedJson entry = {{"inputs", write_path(scene.file, folder)}};
+            if (!scene.offset.empty()) entry["offset"] = scene.offset;
+            scenes.push_back(std::move(entry));
+        }
+        OrderedJson plugins = OrderedJson::array();
+        for (const model::Plugin& plugin : simulation.plugins) {
+            OrderedJson entry = OrderedJson::object();
+            entry["name"] = plugin.name;
+            if (plugin.basic_platform) {
+                entry["inputs"] = platform_inputs(plugin, folder);
+            } else if (plugin.basic_atmosphere) {
+                entry["inputs"] = atmosphere_inputs(plugin, folder);
+            } else {
+                entry["inputs"] = parse_kept(plugin.inputs_json, "plugin inputs");
+            }
+            plugins.push_back(std::move(entry));
+        }
+        OrderedJson object = OrderedJson::object();
+        object["scene_list"] = std::move(scenes);
+        object["plugin_list"] = std::move(plugins);
+        object["medium_list"] = simulation.medium_list_json.empty()
+                                    ? OrderedJson::array()
+                                    : parse_kept(simulation.medium_list_json, "medium_list");
+        document.push_back(std::move(object));
+    }
+    return document.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
+}  // namespace glint::dirsig

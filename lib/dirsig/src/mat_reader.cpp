@@ -1,0 +1,366 @@
+// SPDX-License-Identifier: Apache-2.0
+// Reader of the documented subset of DIRSIG's `.mat` material database: `MATERIAL_ENTRY { }`
+// blocks of `KEY = value` lines giving the id, the name, reflectance and emissivity curves
+// from two-column text files and a constant temperature. Unsupported solvers and property
+// blocks are warnings naming the entry; `.mat.hdf` bundles are errors. docs/scene.md gives
+// the exact layout.
+#include <algorithm>
+#include <cctype>
+#include <set>
+#include <sstream>
+
+#include "glint/core/text.h"
+#include "glint/dirsig/scene_reader.h"
+#include "glint/io/xml.h"
+
+namespace glint::dirsig {
+namespace {
+
+/// One `KEY = value` line.
+struct MatEntry {
+    std::string key;
+    std::string value;
+    int line = 0;
+};
+
+/// One `NAME { ... }` block.
+struct MatBlock {
+    std::string name;
+    int line = 0;
+    std::vector<MatEntry> entries;
+    std::vector<MatBlock> blocks;
+
+    const MatEntry* find(std::string_view key) const {
+        for (const MatEntry& e : entries) {
+            if (e.key == key) return &e;
+        }
+        return nullptr;
+    }
+    const MatBlock* find_block(std::string_view key) const {
+        for (const MatBlock& b : blocks) {
+            if (b.name == key) return &b;
+        }
+        return nullptr;
+    }
+};
+
+std::string trim(std::string_view text) {
+    std::size_t begin = 0;
+    std::size_t end = text.size();
+    while (begin < end && std::isspace(static_cast<unsigned char>(text[begin]))) ++begin;
+    while (end > begin && std::isspace(static_cast<unsigned char>(text[end - 1]))) --end;
+    return std::string(text.substr(begin, end - begin));
+}
+
+std::string to_upper(std::string text) {
+    for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return text;
+}
+
+/// Parses the block structure of a `.mat` text; syntax problems go to `diagnostics`.
+MatBlock parse_blocks(const std::string& text, const std::string& file, Diagnostics& diagnostics) {
+    MatBlock root;
+    std::vector<MatBlock*> stack{&root};
+    std::optional<MatEntry> pending;  // a bare name waiting for its "{"
+    std::istringstream lines(text);
+    std::string raw;
+    int number = 0;
+    const auto flush_pending = [&] {
+        if (pending) {
+            diagnostics.error({file, pending->line, pending->key},
+                              "expected \"KEY = value\" or \"NAME {\"");
+            pending.reset();
+        }
+    };
+    while (std::getline(lines, raw)) {
+        ++number;
+        const std::size_t hash = raw.find('#');
+        const std::string content = hash == std::string::npos ? raw : raw.substr(0, hash);
+        // One-line blocks ("NAME { KEY = value }") are split into "NAME {", "KEY = value", "}".
+        std::vector<std::string> pieces;
+        std::string piece;
+        for (const char c : content) {
+            if (c == '}') {
+                pieces.push_back(trim(piece));
+                pieces.emplace_back("}");
+                piece.clear();
+            } else {
+                piece += c;
+                if (c == '{') {
+                    pieces.push_back(trim(piece));
+                    piece.clear();
+                }
+            }
+        }
+        pieces.push_back(trim(piece));
+        for (const std::string& line : pieces) {
+            if (line.empty()) continue;
+            if (line == "}") {
+                flush_pending();
+                if (stack.size() == 1) {
+                    diagnostics.error({file, number, {}}, "unmatched \"}\"");
+                } else {
+                    stack.pop_back();
+                }
+                continue;
+            }
+            if (line.back() == '{') {
+                std::string name = to_upper(trim(line.substr(0, line.size() - 1)));
+                int at = number;
+                if (name.empty() && pending) {
+                    name = pending->key;
+                    at = pending->line;
+                } else {
+                    flush_pending();
+                }
+                pending.reset();
+                if (name.empty()) {
+                    diagnostics.error({file, number, {}}, "block \"{\" without a name");
+                    name = "?";
+                }
+                stack.back()->blocks.push_back(MatBlock{name, at, {}, {}});
+                stack.push_back(&stack.back()->blocks.back());
+                continue;
+            }
+            flush_pending();
+            const std::size_t eq = line.find('=');
+            if (eq == std::string::npos) {
+                pending = MatEntry{to_upper(line), {}, number};
+                continue;
+            }
+            stack.back()->entries.push_back(
+                MatEntry{to_upper(trim(line.substr(0, eq))), trim(line.substr(eq + 1)), number});
+        }
+    }
+    flush_pending();
+    if (stack.size() > 1) {
+        diagnostics.error({file, stack.back()->line, stack.back()->name},
+                          "block is not closed by \"}\"");
+    }
+    return root;
+}
+
+/// Everything the material readers share.
+struct MatReader {
+    std::string file;  ///< display name of the .mat
+    std::filesystem::path base_dir;
+    const ReadOptions& options;
+    Diagnostics& diagnostics;
+
+    ErrorContext at(int line, const std::string& path) const { return {file, line, path}; }
+
+    void warn_unknown(const MatBlock& block, const std::string& path,
+                      std::initializer_list<std::string_view> known_entries,
+                      std::initializer_list<std::string_view> known_blocks) {
+        const auto known = [](std::initializer_list<std::string_view> list, const std::string& k) {
+            return std::find(list.begin(), list.end(), k) != list.end();
+        };
+        for (const MatEntry& e : block.entries) {
+            if (!known(known_entries, e.key)) {
+                diagnostics.warning(at(e.line, path + "/" + e.key),
+                                    "unknown key " + e.key + " ignored");
+            }
+        }
+        for (const MatBlock& b : block.blocks) {
+            if (!known(known_blocks, b.name)) {
+                diagnostics.warning(at(b.line, path + "/" + b.name),
+                                    "unsupported block " + b.name + " ignored");
+            }
+        }
+    }
+
+    /// Reads a two-column curve file (wavelength µm, value in [0, 1]).
+    model::SpectralTable read_curve(const MatEntry& entry, const std::string& path,
+                                    const std::string& quantity) {
+        model::SpectralTable table;
+        table.where = at(entry.line, path);
+        table.file = options.paths.resolve(entry.value, base_dir, table.where, diagnostics);
+        if (table.file.resolved.empty()) return table;
+        const std::string name = table.file.resolved.string();
+        std::string text;
+        try {
+            text = options.read_text(table.file.resolved, name);
+        } catch (const Error& error) {
+            diagnostics.add(error.with_file(file, entry.line));
+            return table;
+        }
+        std::istringstream lines(text);
+        std::string line;
+        int number = 0;
+        const std::size_t errors = diagnostics.error_count();
+        while (std::getline(lines, line)) {
+            ++number;
+            const std::size_t hash = line.find('#');
+            if (hash != std::string::npos) line.resize(hash);
+            for (char& c : line) {
+                if (c == ',' || c == '\t' || c == ';' || c == '\r') c = ' ';
+            }
+            std::istringstream fields(line);
+            std::vector<std::string> columns;
+            for (std::string word; fields >> word;) columns.push_back(word);
+            if (columns.empty()) continue;
+            if (columns.size() != 2) {
+                diagnostics.error({name, number, path},
+                                  "expected 2 columns (wavelength_um value), got " +
+                                      std::to_string(columns.size()));
+                continue;
+            }
+            const auto w = parse_double(columns[0]);
+            const auto v = parse_double(columns[1]);
+            if (!w || !v) {
+                diagnostics.error(
+                    {name, number, path},
+                    "expected two numbers, got \"" + columns[0] + "\" and \"" + columns[1] + "\"");
+                continue;
+            }
+            if (!(*w > 0.0) || (!table.empty() && !(*w > table.wavelengths_um.back()))) {
+                diagnostics.error({name, number, path},
+                                  "wavelength " + format_shortest(*w) +
+                                      " um is not positive and strictly increasing");
+                continue;
+            }
+            if (!(*v >= 0.0 && *v <= 1.0)) {
+                diagnostics.error({name, number, path},
+                                  quantity + " " + format_shortest(*v) + " is outside [0, 1]");
+                continue;
+            }
+            table.wavelengths_um.push_back(*w);
+            table.values.push_back(*v);
+        }
+        if (table.empty() && diagnostics.error_count() == errors) {
+            diagnostics.error({name, 0, path}, quantity + " curve file has no samples");
+        }
+        return table;
+    }
+
+    /// Reads `<PREFIX>_PROP { TXT_FILENAME | FILENAME }` of SURFACE_PROPERTIES.
+    std::optional<model::SpectralTable> read_prop(const MatBlock& surface, const std::string& path,
+                                                  const std::string& prefix,
+                                                  const std::string& quantity) {
+        const MatBlock* prop = surface.find_block(prefix + "_PROP");
+        if (!prop) return std::nullopt;
+        const std::string pp = path + "/" + prefix + "_PROP";
+        warn_unknown(*prop, pp, {"TXT_FILENAME", "FILENAME", "SPECULAR_FRACTION"}, {});
+        const MatEntry* entry = prop->find("TXT_FILENAME");
+        if (!entry) entry = prop->find("FILENAME");
+        if (!entry || entry->value.empty()) {
+            diagnostics.error(at(prop->line, pp), "missing TXT_FILENAME (a two-column curve file)");
+            return std::nullopt;
+        }
+        return read_curve(*entry, pp + "/" + entry->key, quantity);
+    }
+
+    model::Material read_entry(const MatBlock& block, std::size_t index) {
+        model::Material m;
+        const MatEntry* id = block.find("ID");
+        m.id = id ? id->value : "";
+        const std::string path =
+            "MATERIAL_ENTRY[" + (m.id.empty() ? std::to_string(index + 1) : m.id) + "]";
+        m.where = at(block.line, path);
+        if (m.id.empty()) diagnostics.error(m.where, "missing ID");
+        const MatEntry* name = block.find("NAME");
+        m.name = name && !name->value.empty() ? name->value : m.id;
+        warn_unknown(block, path,
+                     {"ID", "NAME", "EDITOR_COLOR", "DOUBLE_SIDED", "RAD_SOLVER_NAME",
+                      "TEMP_SOLVER_NAME", "TEMPERATURE", "BUNDLE_FILENAME"},
+                     {"SURFACE_PROPERTIES", "RAD_SOLVER", "TEMP_SOLVER"});
+        if (const MatEntry* bundle = block.find("BUNDLE_FILENAME")) {
+            diagnostics.error(at(bundle->line, path + "/BUNDLE_FILENAME"),
+                              "material bundles (" + bundle->value +
+                                  ") are not supported; give SURFACE_PROPERTIES curve files");
+            return m;
+        }
+        if (const MatEntry* solver = block.find("RAD_SOLVER_NAME")) {
+            const std::string s = to_upper(solver->value);
+            if (s != "GENERIC" && s != "LAMBERTIAN") {
+                diagnostics.warning(at(solver->line, path + "/RAD_SOLVER_NAME"),
+                                    "radiometry solver \"" + solver->value + "\" of material \"" +
+                                        m.name + "\" is not supported; treated as Lambertian");
+            }
+        }
+        // Temperature: TEMPERATURE in the entry or in its TEMP_SOLVER block.
+        const MatEntry* temperature = block.find("TEMPERATURE");
+        if (const MatBlock* ts = block.find_block("TEMP_SOLVER"); ts && !temperature) {
+            temperature = ts->find("TEMPERATURE");
+        }
+        if (const MatEntry* solver = block.find("TEMP_SOLVER_NAME")) {
+            const std::string s = to_upper(solver->value);
+            if (s != "DATADRIVEN" && s != "CONSTANT") {
+                diagnostics.warning(
+                    at(solver->line, path + "/TEMP_SOLVER_NAME"),
+                    "temperature solver \"" + solver->value + "\" of material \"" + m.name +
+                        "\" is not supported; the constant TEMPERATURE (default " +
+                        format_shortest(model::kDefaultTemperature_k) + " K) is used");
+            }
+        }
+        if (temperature) {
+            const auto t = parse_double(temperature->value);
+            if (t && *t > 0.0) {
+                m.temperature_k = *t;
+            } else {
+                diagnostics.error(
+                    at(temperature->line, path + "/TEMPERATURE"),
+                    "temperature \"" + temperature->value + "\" K is not a number > 0");
+            }
+        }
+        const MatBlock* surface = block.find_block("SURFACE_PROPERTIES");
+        if (!surface) {
+            diagnostics.error(m.where, "missing SURFACE_PROPERTIES (reflectance curve)");
+            return m;
+        }
+        const std::string sp = path + "/SURFACE_PROPERTIES";
+        warn_unknown(*surface, sp, {"REFLECTANCE_PROP_NAME", "EMISSIVITY_PROP_NAME"},
+                     {"REFLECTANCE_PROP", "EMISSIVITY_PROP"});
+        if (auto r = read_prop(*surface, sp, "REFLECTANCE", "reflectance")) {
+            m.reflectance = std::move(*r);
+        } else if (!surface->find_block("REFLECTANCE_PROP")) {
+            diagnostics.error(at(surface->line, sp), "missing REFLECTANCE_PROP");
+        }
+        if (auto e = read_prop(*surface, sp, "EMISSIVITY", "emissivity")) {
+            m.emissivity = std::move(*e);
+            m.emissivity_is_default = false;
+        } else {
+            m.emissivity.wavelengths_um = m.reflectance.wavelengths_um;
+            for (const double rho : m.reflectance.values) m.emissivity.values.push_back(1.0 - rho);
+            m.emissivity.where = m.reflectance.where;
+        }
+        return m;
+    }
+};
+
+}  // namespace
+
+std::vector<model::Material> read_dirsig_materials(const std::filesystem::path& file,
+                                                   const ReadOptions& options,
+                                                   Diagnostics& diagnostics) {
+    std::vector<model::Material> materials;
+    const std::string name = file.string();
+    std::string text;
+    try {
+        text = options.read_text(file, name);
+    } catch (const Error& error) {
+        diagnostics.add(error);
+        return materials;
+    }
+    const MatBlock root = parse_blocks(text, name, diagnostics);
+    MatReader reader{name, std::filesystem::absolute(file).parent_path(), options, diagnostics};
+    for (const MatEntry& e : root.entries) {
+        diagnostics.warning({name, e.line, e.key}, "key outside MATERIAL_ENTRY ignored");
+    }
+    std::set<std::string> ids;
+    for (const MatBlock& block : root.blocks) {
+        if (block.name != "MATERIAL_ENTRY") {
+            diagnostics.warning({name, block.line, block.name}, "unknown block ignored");
+            continue;
+        }
+        model::Material m = reader.read_entry(block, materials.size());
+        if (!m.id.empty() && !ids.insert(m.id).second) {
+            diagnostics.error(m.where, "duplicate material ID \"" + m.id + "\"");
+        }
+        materials.push_back(std::move(m));
+    }
+    if (root.blocks.empty()) diagnostics.error({name, 0, {}}, "no MATERIAL_ENTRY blocks");
+    return materials;
+}
+
+}  // namespace glint::dirsig

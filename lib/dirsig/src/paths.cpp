@@ -1,0 +1,148 @@
+// SPDX-License-Identifier: Apache-2.0
+// PathResolver: expands $NAME / ${NAME} variables ($SCENE_DIR from the scene being read, the
+// others from the environment), keeps Windows absolute paths as written (with '/'), and makes
+// every other path absolute against the folder of the file that names it.
+#include <cstdlib>
+
+#include "glint/dirsig/read_options.h"
+
+namespace glint::dirsig {
+namespace {
+
+bool is_name_start(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; }
+
+bool is_name_char(char c) { return is_name_start(c) || (c >= '0' && c <= '9'); }
+
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
+
+std::string trim(const std::string& text) {
+    std::size_t first = 0;
+    std::size_t last = text.size();
+    while (first < last && is_blank(text[first])) ++first;
+    while (last > first && is_blank(text[last - 1])) --last;
+    return text.substr(first, last - first);
+}
+
+std::string quoted(const std::string& text) { return "\"" + text + "\""; }
+
+}  // namespace
+
+bool is_windows_absolute(const std::string& path) {
+    if (path.size() >= 3 && is_name_start(path[0]) && path[0] != '_' && path[1] == ':' &&
+        (path[2] == '\\' || path[2] == '/')) {
+        return true;
+    }
+    return path.size() >= 3 && path[0] == '\\' && path[1] == '\\' && path[2] != '\\';
+}
+
+model::FileRef PathResolver::resolve(const std::string& text, const std::filesystem::path& base_dir,
+                                     const ErrorContext& where, Diagnostics& diagnostics) const {
+    model::FileRef ref;
+    ref.text = text;
+    ref.where = where;
+    const std::string written = trim(text);
+    if (written.empty()) {
+        diagnostics.error(where, "expected a file path, got an empty one");
+        return ref;
+    }
+
+    // Expand variables; "$$" is not one (it appears in processing arguments) and stays.
+    std::string expanded;
+    bool ok = true;
+    for (std::size_t i = 0; i < written.size();) {
+        const char c = written[i];
+        if (c != '$' || i + 1 >= written.size()) {
+            expanded += c;
+            ++i;
+            continue;
+        }
+        if (written[i + 1] == '$') {
+            expanded += "$$";
+            i += 2;
+            continue;
+        }
+        std::string name;
+        std::size_t next = i + 1;
+        if (written[next] == '{') {
+            const std::size_t close = written.find('}', next + 1);
+            name = close == std::string::npos ? std::string()
+                                              : written.substr(next + 1, close - next - 1);
+            bool valid = !name.empty() && is_name_start(name[0]);
+            for (char n : name) valid = valid && is_name_char(n);
+            if (!valid) {
+                diagnostics.error(where, "malformed variable reference in path " + quoted(written) +
+                                             ": expected ${NAME} with NAME made of letters, "
+                                             "digits and '_'");
+                return ref;
+            }
+            next = close + 1;
+        } else if (is_name_start(written[next])) {
+            while (next < written.size() && is_name_char(written[next])) {
+                name += written[next];
+                ++next;
+            }
+        } else {
+            expanded += c;  // a lone '$' is an ordinary character
+            ++i;
+            continue;
+        }
+
+        std::optional<std::string> value;
+        if (name == "SCENE_DIR") {
+            if (!scene_dir) {
+                diagnostics.error(
+                    where, "$SCENE_DIR used outside a scene file in path " + quoted(written));
+                ok = false;
+            } else {
+                value = scene_dir->string();
+            }
+        } else if (environment) {
+            value = environment(name);
+        } else if (const char* env = std::getenv(name.c_str())) {
+            value = std::string(env);
+        }
+        if (!value) {
+            if (name != "SCENE_DIR") {
+                diagnostics.error(where,
+                                  "undefined variable $" + name + " in path " + quoted(written));
+            }
+            ok = false;
+        } else {
+            expanded += *value;
+        }
+        i = next;
+    }
+    if (!ok) return ref;
+    if (expanded.empty()) {
+        diagnostics.error(where, "path " + quoted(written) + " expands to an empty path");
+        return ref;
+    }
+
+    // Paths written on Windows use '\'; glint writes '/' everywhere.
+    const bool windows = is_windows_absolute(expanded);
+    for (char& c : expanded) {
+        if (c == '\\') c = '/';
+    }
+    if (windows) {
+        ref.resolved = std::filesystem::path(expanded);
+        return ref;
+    }
+
+    std::filesystem::path path(expanded);
+    if (path.is_relative()) path = base_dir / path;
+    if (path.is_relative()) {
+        std::error_code ec;
+        std::filesystem::path absolute = std::filesystem::absolute(path, ec);
+        if (!ec) path = absolute;
+    }
+    ref.resolved = path.lexically_normal();
+    return ref;
+}
+
+std::string ReadOptions::read_text(const std::filesystem::path& file,
+                                   const std::string& display_name) const {
+    if (files) return files->text(file, display_name);
+    return io::read_input_file(file, display_name);
+}
+
+}  // namespace glint::dirsig

@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: Apache-2.0
+// The one reading of a simulation's inputs. load() parses the `.jsim` or `.sim` and every file
+// it names — scenes (with their glists, OBJ meshes, materials and motion files), the
+// atmosphere, and for each BasicPlatform entry its platform, motion and tasks files, the PSD
+// tables of their jitter and the trigger files of external clocks — each file opened once
+// (ReadOptions::files records the opens; `-vv` logs them), and returns plain model data. The
+// layers below (pose services, the schedule, the renderer) take that data and read nothing.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <optional>
+
+#include "glint/core/diagnostics.h"
+#include "glint/core/log.h"
+#include "glint/dirsig/read_options.h"
+#include "glint/model/inputs.h"
+
+namespace glint::inputs {
+
+/// What load() reads, and how.
+struct LoadOptions {
+    /// Path resolution; `read.files` records the files opened (load() makes one, logging to
+    /// its `log`, when it is null).
+    dirsig::ReadOptions read;
+    /// False: the atmosphere file is not read and the default atmosphere is returned (tools
+    /// that need no radiometry, such as glint-schedule).
+    bool atmosphere = true;
+};
+
+/// Reads `simulation_file` (a `.jsim` holding one simulation, or a `.sim`) and everything it
+/// references, in this order: the simulation; its scene_list (merged, inputs::
+/// read_simulation_scene); its atmosphere (read_simulation_atmosphere); then each BasicPlatform
+/// entry's platform, motion and tasks files; then the PSD files named by jitter (filling
+/// JitterSpec::psd and JitterAxis::psd) and the trigger files of external clocks (filling
+/// Clock::trigger_times_s). Every problem goes to `diagnostics` (file:line); a BasicPlatform
+/// entry without one of its three files is an error at the entry. Throws glint::Error (input)
+/// when diagnostics has errors after the simulation file, and again after everything.
+model::SimulationInputs load(const std::filesystem::path& simulation_file,
+                             const LoadOptions& options, const Log& log, Diagnostics& diagnostics);
+
+/// Reads BasicPlatform entry `plugin_index` of `simulation` (its platform, motion and tasks
+/// files, their PSD tables and trigger files). Problems go to `diagnostics`; nullopt when the
+/// entry does not name one of its three files (an error at the entry). Throws glint::Error
+/// (usage) for an index out of range or a plugin that is not a BasicPlatform.
+std::optional<model::PlatformInputs> read_platform_entry(const model::Simulation& simulation,
+                                                         std::size_t plugin_index,
+                                                         const dirsig::ReadOptions& options,
+                                                         Diagnostics& diagnostics);
+
+/// load() with its own diagnostics, every one of which is logged to `log` (errors and
+/// warnings, in the order found); throws the first error (input) when there are errors.
+model::SimulationInputs load_logged(const std::filesystem::path& simulation_file,
+                                    const LoadOptions& options, const Log& log);
+
+/// Reads the PSD files that `platform`'s mount jitter names (JitterAxis::psd_file) into
+/// JitterAxis::psd, each through `options`.
+void read_psd_tables(model::Platform& platform, const dirsig::ReadOptions& options,
+                     Diagnostics& diagnostics);
+/// Reads the PSD files that `motion`'s platform jitter names (JitterSpec::psd_file) into
+/// JitterSpec::psd (inline tables are kept).
+void read_psd_tables(model::PlatformMotion& motion, const dirsig::ReadOptions& options,
+                     Diagnostics& diagnostics);
+/// Reads the trigger file of every enabled external-trigger clock of `platform` into its
+/// Clock::trigger_times_s.
+void read_trigger_files(model::Platform& platform, const dirsig::ReadOptions& options,
+                        Diagnostics& diagnostics);
+
+}  // namespace glint::inputs

@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: Apache-2.0
+// What a simulation (.jsim or .sim, glint/model/simulation.h) renders with: its atmosphere
+// (the file of its BasicAtmosphere plugin, or the embedded default when it names none) and
+// its scene (every scene_list entry read with read_scene and merged into one). Like every
+// reader these report each problem to `diagnostics` and carry on; the caller fails
+// when diagnostics has errors.
+//
+// Merging scenes (merge_scene), in scene_list order:
+//
+// clang-format off
+// | part | rule |
+// |---|---|
+// | origin | the first scene with an origin sets it; a later, different origin is a warning (the first is kept) |
+// | materials | appended; an id already merged is an error at the later definition, naming the earlier one's file:line ("material id \"1\" is already defined at a.mat:2") (the same definition — one `.mat` shared by two scenes — is merged once, silently) |
+// | objects | appended; their triangles' material indices follow the merged material list |
+// | instances | appended; object indices follow the merged object list |
+// | scene_list offset | not applied: a warning unless empty or all zeros |
+// clang-format on
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "glint/core/diagnostics.h"
+#include "glint/core/log.h"
+#include "glint/dirsig/read_options.h"
+#include "glint/model/atmosphere.h"
+#include "glint/model/scene.h"
+#include "glint/model/simulation.h"
+
+namespace glint::inputs {
+
+using dirsig::ReadOptions;
+
+/// Reads a scene of either kind: a DIRSIG `.scene` (extension `.scene`, or text whose first
+/// non-blank character is `<`) or a glint YAML scene (anything else).
+model::Scene read_scene(const std::filesystem::path& file, const ReadOptions& options,
+                        Diagnostics& diagnostics);
+
+/// Reads an atmosphere file of either kind: a DIRSIG `.atm` (text starting with `<` after
+/// blanks and a BOM) or a glint YAML atmosphere. Problems go to `diagnostics` with file:line;
+/// a file that cannot be read throws glint::Error (io). `display_name` names the file in
+/// messages (default: the path).
+model::Atmosphere read_atmosphere(const std::filesystem::path& path, const ReadOptions& options,
+                                  Diagnostics& diagnostics, const std::string& display_name = {});
+
+/// The embedded default atmosphere: model parametric with its default parameters
+/// (glint/model/atmosphere.h), used when a simulation names no atmosphere.
+model::Atmosphere default_atmosphere();
+
+/// The BasicAtmosphere plugin whose file `simulation` uses: the first one; each further one
+/// is a warning at its plugin entry (it is ignored). nullptr when there is none.
+const model::Plugin* used_atmosphere_plugin(const model::Simulation& simulation,
+                                            Diagnostics& diagnostics);
+
+/// Reads the atmosphere of `simulation`: the file named by the `atmosphere_filename` of its
+/// first BasicAtmosphere plugin (read_atmosphere: YAML or DIRSIG `.atm`). When it has no
+/// BasicAtmosphere plugin, default_atmosphere() (a debug message on `log`, no diagnostic).
+/// A file that does not exist, is a folder or cannot be read is an error at the plugin's
+/// `atmosphere_filename`; further BasicAtmosphere plugins are a warning (not read). On
+/// error the default is returned alongside the diagnostics.
+model::Atmosphere read_simulation_atmosphere(const model::Simulation& simulation,
+                                             const ReadOptions& options, Diagnostics& diagnostics,
+                                             const Log& log = {});
+
+/// Appends `part` to `scene` by the rules in the table above. `scene.file` becomes
+/// `part.file` when it is empty.
+void merge_scene(model::Scene& scene, model::Scene part, Diagnostics& diagnostics);
+
+/// A warning at the entry when its `offset` is neither empty nor all zeros (offsets are not
+/// applied).
+void check_scene_offset(const model::SceneEntry& entry, Diagnostics& diagnostics);
+
+/// Reads every scene_list entry of `simulation` with read_scene and merges them in order
+/// (merge_scene). A file that does not exist or is a folder is an error at its entry. An
+/// empty scene_list gives an empty scene (no origin, no objects).
+model::Scene read_simulation_scene(const model::Simulation& simulation, const ReadOptions& options,
+                                   Diagnostics& diagnostics);
+
+}  // namespace glint::inputs

@@ -1,0 +1,185 @@
+// SPDX-License-Identifier: Apache-2.0
+// inputs::load (glint/inputs/load.h): the simulation, its scene and atmosphere, and each
+// BasicPlatform's platform, motion and tasks files with the PSD and trigger files they name.
+#include "glint/inputs/load.h"
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "glint/core/error.h"
+#include "glint/dirsig/motion_reader.h"
+#include "glint/dirsig/psd_reader.h"
+#include "glint/dirsig/readers.h"
+#include "glint/dirsig/trigger_file.h"
+#include "glint/inputs/simulation_inputs.h"
+
+namespace glint::inputs {
+namespace {
+
+/// The file a BasicPlatform input names, or an error at the entry naming the key.
+const model::FileRef* required_file(const model::FileRef& ref, const char* key,
+                                    const model::Plugin& plugin, Diagnostics& diagnostics) {
+    if (ref.resolved.empty()) {
+        diagnostics.error(plugin.where, std::string("BasicPlatform has no ") + key);
+        return nullptr;
+    }
+    return &ref;
+}
+
+/// The table of a PSD file reference (nullopt when it names none or cannot be used).
+std::optional<model::PsdTable> read_psd(const model::FileRef& file, const ReadOptions& options,
+                                        Diagnostics& diagnostics) {
+    if (file.empty()) return std::nullopt;
+    const std::filesystem::path path =
+        file.resolved.empty() ? std::filesystem::path(file.text) : file.resolved;
+    return dirsig::read_psd_file(path, options, diagnostics, file.text);
+}
+
+void read_mount_psd(std::vector<model::Attachment>& attachments, const ReadOptions& options,
+                    Diagnostics& diagnostics) {
+    for (model::Attachment& attachment : attachments) {
+        for (model::Mount& mount : attachment.mounts) {
+            for (model::JitterAxis& axis : mount.deviates.axes) {
+                if (axis.kind == model::JitterAxis::Kind::psd && !axis.psd) {
+                    axis.psd = read_psd(axis.psd_file, options, diagnostics);
+                }
+            }
+            read_mount_psd(mount.attachments, options, diagnostics);
+        }
+    }
+}
+
+void read_jitter_psd(model::PlatformJitter& jitter, const ReadOptions& options,
+                     Diagnostics& diagnostics) {
+    for (auto* axes : {&jitter.location_m, &jitter.orientation_rad}) {
+        for (model::JitterSpec& spec : *axes) {
+            if (spec.kind == model::JitterSpec::Kind::psd && !spec.psd) {
+                spec.psd = read_psd(spec.psd_file, options, diagnostics);
+            }
+        }
+    }
+}
+
+void read_clock_triggers(std::vector<model::Attachment>& attachments, const ReadOptions& options,
+                         Diagnostics& diagnostics) {
+    for (model::Attachment& attachment : attachments) {
+        for (model::Instrument& instrument : attachment.instruments) {
+            for (model::FocalPlane& plane : instrument.focal_planes) {
+                model::Clock& clock = plane.detector_array.clock;
+                if (!plane.enabled || clock.type != model::ClockType::external_trigger ||
+                    clock.trigger_file.resolved.empty()) {
+                    continue;
+                }
+                clock.trigger_times_s =
+                    dirsig::read_trigger_file(clock.trigger_file.resolved, options, diagnostics);
+            }
+        }
+        for (model::Mount& mount : attachment.mounts) {
+            read_clock_triggers(mount.attachments, options, diagnostics);
+        }
+    }
+}
+
+}  // namespace
+
+void read_psd_tables(model::Platform& platform, const ReadOptions& options,
+                     Diagnostics& diagnostics) {
+    read_mount_psd(platform.attachments, options, diagnostics);
+}
+
+void read_psd_tables(model::PlatformMotion& motion, const ReadOptions& options,
+                     Diagnostics& diagnostics) {
+    if (motion.generic) read_jitter_psd(motion.generic->jitter, options, diagnostics);
+    if (motion.flexible) read_jitter_psd(motion.flexible->jitter, options, diagnostics);
+}
+
+void read_trigger_files(model::Platform& platform, const ReadOptions& options,
+                        Diagnostics& diagnostics) {
+    read_clock_triggers(platform.attachments, options, diagnostics);
+}
+
+std::optional<model::PlatformInputs> read_platform_entry(const model::Simulation& simulation,
+                                                         std::size_t plugin_index,
+                                                         const ReadOptions& options,
+                                                         Diagnostics& diagnostics) {
+    if (plugin_index >= simulation.plugins.size()) {
+        throw usage_error("plugin index " + std::to_string(plugin_index) + " out of range (" +
+                          simulation.file + " has " + std::to_string(simulation.plugins.size()) +
+                          " plugins)");
+    }
+    const model::Plugin& plugin = simulation.plugins[plugin_index];
+    if (!plugin.basic_platform) {
+        throw usage_error("plugin_list[" + std::to_string(plugin_index) + "] of " +
+                          simulation.file + " is " + plugin.name + ", expected a BasicPlatform");
+    }
+    const model::BasicPlatformInputs& files = *plugin.basic_platform;
+    const model::FileRef* platform_file =
+        required_file(files.platform_file, "platform_filename", plugin, diagnostics);
+    const model::FileRef* motion_file =
+        required_file(files.motion_file, "motion_filename", plugin, diagnostics);
+    const model::FileRef* tasks_file =
+        required_file(files.tasks_file, "tasks_filename", plugin, diagnostics);
+    if (!platform_file || !motion_file || !tasks_file) return std::nullopt;
+
+    model::PlatformInputs entry;
+    entry.plugin_index = plugin_index;
+    auto platform = std::make_shared<model::Platform>(
+        dirsig::read_platform(platform_file->resolved, options, diagnostics));
+    entry.motion = dirsig::read_motion(motion_file->resolved, options, diagnostics);
+    entry.tasks = dirsig::read_tasks(tasks_file->resolved, options, diagnostics);
+    read_psd_tables(*platform, options, diagnostics);
+    read_psd_tables(entry.motion, options, diagnostics);
+    read_trigger_files(*platform, options, diagnostics);
+    entry.platform = std::move(platform);
+    return entry;
+}
+
+model::SimulationInputs load(const std::filesystem::path& simulation_file,
+                             const LoadOptions& options, const Log& log, Diagnostics& diagnostics) {
+    ReadOptions read = options.read;
+    if (!read.files) read.files = std::make_shared<io::InputFiles>(log);
+
+    std::vector<model::Simulation> simulations =
+        dirsig::read_simulation(simulation_file, read, diagnostics);
+    diagnostics.throw_if_errors();
+    if (simulations.size() != 1) {
+        throw input_error("the file holds " + std::to_string(simulations.size()) +
+                              " simulations, expected one (split the array into one .jsim "
+                              "per simulation)",
+                          ErrorContext{simulation_file.string(), 0, {}});
+    }
+    model::SimulationInputs inputs;
+    inputs.simulation = std::move(simulations.front());
+    inputs.scene = read_simulation_scene(inputs.simulation, read, diagnostics);
+    if (options.atmosphere) {
+        inputs.atmosphere = read_simulation_atmosphere(inputs.simulation, read, diagnostics, log);
+    } else {
+        inputs.atmosphere = default_atmosphere();
+    }
+    diagnostics.throw_if_errors();  // the scene's problems before the platforms'
+    for (const std::size_t index : inputs.simulation.basic_platform_indices()) {
+        if (auto entry = read_platform_entry(inputs.simulation, index, read, diagnostics)) {
+            inputs.platforms.push_back(std::move(*entry));
+        }
+    }
+    diagnostics.throw_if_errors();
+    read.files->clear();  // the texts were parsed; the record of opens stays
+    return inputs;
+}
+
+model::SimulationInputs load_logged(const std::filesystem::path& simulation_file,
+                                    const LoadOptions& options, const Log& log) {
+    Diagnostics diagnostics;
+    try {
+        model::SimulationInputs inputs = load(simulation_file, options, log, diagnostics);
+        diagnostics.log_to(log);  // the warnings
+        return inputs;
+    } catch (const Error&) {
+        diagnostics.log_to(log);  // every problem, not only the first
+        throw;
+    }
+}
+
+}  // namespace glint::inputs

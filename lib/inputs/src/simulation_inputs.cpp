@@ -1,0 +1,196 @@
+// SPDX-License-Identifier: Apache-2.0
+// A simulation's atmosphere and merged scene (glint/inputs/simulation_inputs.h): the first
+// BasicAtmosphere plugin's file or the embedded parametric default, and every scene_list
+// entry read with read_scene and merged (origin, materials by id, objects, instances).
+#include "glint/inputs/simulation_inputs.h"
+
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "glint/core/text.h"
+#include "glint/dirsig/scene_reader.h"
+#include "glint/io/xml.h"
+#include "glint/yaml/atmosphere_reader.h"
+
+namespace glint::inputs {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Origins closer than this are the same (about 0.1 mm on the ground).
+constexpr double kOriginTolerance_deg = 1e-9;
+constexpr double kOriginTolerance_m = 1e-4;
+
+/// An error at `ref.where` unless `ref` names an existing file; `role` is e.g. "scene".
+bool existing_file(const model::FileRef& ref, const std::string& role, Diagnostics& diagnostics) {
+    if (ref.resolved.empty()) return false;  // the reader of the simulation reported it
+    std::error_code ec;
+    const fs::file_status status = fs::status(ref.resolved, ec);
+    if (!fs::exists(status)) {
+        diagnostics.error(ref.where, role + " file does not exist: " + ref.resolved.string());
+        return false;
+    }
+    if (fs::is_directory(status)) {
+        diagnostics.error(ref.where,
+                          role + " path is a folder, expected a file: " + ref.resolved.string());
+        return false;
+    }
+    return true;
+}
+
+std::string describe(const model::SceneOrigin& origin) {
+    return "latitude " + format_shortest(origin.latitude_deg) + " deg, longitude " +
+           format_shortest(origin.longitude_deg) + " deg, altitude " +
+           format_shortest(origin.altitude_m) + " m";
+}
+
+bool same_origin(const model::SceneOrigin& a, const model::SceneOrigin& b) {
+    return std::abs(a.latitude_deg - b.latitude_deg) <= kOriginTolerance_deg &&
+           std::abs(a.longitude_deg - b.longitude_deg) <= kOriginTolerance_deg &&
+           std::abs(a.altitude_m - b.altitude_m) <= kOriginTolerance_m;
+}
+
+std::string located(const ErrorContext& where) {
+    return where.line > 0 ? where.file + ":" + std::to_string(where.line) : where.file;
+}
+
+/// True when the scene_list offset is empty or every component is zero.
+bool zero_offset(const std::string& offset) {
+    std::string text = offset;
+    for (char& c : text) {
+        if (c == ' ' || c == '\t') c = ',';
+    }
+    for (const std::string& item : split_list(text)) {
+        const auto value = parse_double(item);
+        if (!value || *value != 0.0) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+model::Atmosphere default_atmosphere() {
+    model::Atmosphere atmosphere;
+    atmosphere.kind = model::AtmosphereKind::parametric;
+    atmosphere.parametric = model::ParametricAtmosphere{};
+    return atmosphere;
+}
+
+const model::Plugin* used_atmosphere_plugin(const model::Simulation& simulation,
+                                            Diagnostics& diagnostics) {
+    const model::Plugin* first = nullptr;
+    for (std::size_t i = 0; i < simulation.plugins.size(); ++i) {
+        const model::Plugin& plugin = simulation.plugins[i];
+        if (!plugin.basic_atmosphere) continue;
+        if (first == nullptr) {
+            first = &plugin;
+        } else {
+            diagnostics.warning(plugin.where, "plugin_list[" + std::to_string(i) +
+                                                  "] is another BasicAtmosphere: only the "
+                                                  "first one is used (ignored)");
+        }
+    }
+    return first;
+}
+
+model::Atmosphere read_simulation_atmosphere(const model::Simulation& simulation,
+                                             const ReadOptions& options, Diagnostics& diagnostics,
+                                             const Log& log) {
+    model::Atmosphere fallback = default_atmosphere();
+    fallback.where = ErrorContext{simulation.file, 0, {}};
+    const model::Plugin* first = used_atmosphere_plugin(simulation, diagnostics);
+    if (first == nullptr) {
+        log.debug(simulation.file + ": no BasicAtmosphere plugin: using the default atmosphere " +
+                  "(parametric, default parameters)");
+        return fallback;
+    }
+    const model::FileRef& ref = first->basic_atmosphere->atmosphere_file;
+    if (!existing_file(ref, "atmosphere", diagnostics)) return fallback;
+    try {
+        return read_atmosphere(ref.resolved, options, diagnostics, ref.resolved.string());
+    } catch (const Error& error) {
+        diagnostics.add(error);
+    }
+    return fallback;
+}
+
+void merge_scene(model::Scene& scene, model::Scene part, Diagnostics& diagnostics) {
+    if (scene.file.empty()) scene.file = part.file;
+    if (part.origin) {
+        if (!scene.origin) {
+            scene.origin = part.origin;
+        } else if (!same_origin(*scene.origin, *part.origin)) {
+            diagnostics.warning(part.origin->where, "scene origin (" + describe(*part.origin) +
+                                                        ") differs from the origin set by " +
+                                                        located(scene.origin->where) + " (" +
+                                                        describe(*scene.origin) +
+                                                        "), which is used");
+        }
+    }
+
+    // Where each of part's materials ends up in the merged list.
+    std::vector<std::uint32_t> index_of(part.materials.size(), 0);
+    for (std::size_t i = 0; i < part.materials.size(); ++i) {
+        model::Material& material = part.materials[i];
+        std::optional<std::size_t> existing;
+        for (std::size_t j = 0; j < scene.materials.size() && !existing && !material.id.empty();
+             ++j) {
+            if (scene.materials[j].id == material.id) existing = j;
+        }
+        if (!existing) {
+            index_of[i] = static_cast<std::uint32_t>(scene.materials.size());
+            scene.materials.push_back(std::move(material));
+            continue;
+        }
+        const model::Material& first = scene.materials[*existing];
+        index_of[i] = static_cast<std::uint32_t>(*existing);
+        const bool same_definition =
+            first.where.file == material.where.file && first.where.line == material.where.line;
+        if (!same_definition) {
+            diagnostics.error(material.where, "material id \"" + material.id +
+                                                  "\" is already defined at " +
+                                                  located(first.where));
+        }
+    }
+
+    const std::size_t object_offset = scene.objects.size();
+    for (model::GeometryObject& object : part.objects) {
+        for (std::uint32_t& m : object.mesh.triangle_materials) {
+            if (m < index_of.size()) m = index_of[m];
+        }
+        scene.objects.push_back(std::move(object));
+    }
+    for (model::Instance& instance : part.instances) {
+        instance.object_index += object_offset;
+        scene.instances.push_back(std::move(instance));
+    }
+}
+
+void check_scene_offset(const model::SceneEntry& entry, Diagnostics& diagnostics) {
+    if (entry.offset.empty() || zero_offset(entry.offset)) return;
+    diagnostics.warning(entry.file.where,
+                        "scene offset \"" + entry.offset + "\" is not supported (not applied)");
+}
+
+model::Scene read_simulation_scene(const model::Simulation& simulation, const ReadOptions& options,
+                                   Diagnostics& diagnostics) {
+    model::Scene scene;
+    for (const model::SceneEntry& entry : simulation.scenes) {
+        check_scene_offset(entry, diagnostics);
+        if (!existing_file(entry.file, "scene", diagnostics)) continue;
+        model::Scene part;
+        try {
+            part = read_scene(entry.file.resolved, options, diagnostics);
+        } catch (const Error& error) {
+            diagnostics.add(error);
+            continue;
+        }
+        merge_scene(scene, std::move(part), diagnostics);
+    }
+    return scene;
+}
+
+}  // namespace glint::inputs

@@ -1,0 +1,280 @@
+// SPDX-License-Identifier: Apache-2.0
+// The atmosphere readers (glint/yaml/atmosphere_reader.h): the YAML atmosphere read with
+// yaml-cpp (line numbers from its marks), the DIRSIG .atm simpleradiativetransfer subset read
+// with glint::io::XmlNode, and the tabulated model's table file.
+#include "glint/yaml/atmosphere_reader.h"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "glint/core/text.h"
+#include "glint/io/xml.h"
+
+namespace glint::yaml {
+namespace {
+
+std::string num(double value) { return format_shortest(value); }
+
+ErrorContext at(const std::string& file, const YAML::Node& node, std::string key) {
+    return ErrorContext{file, node.Mark().line >= 0 ? node.Mark().line + 1 : 0, std::move(key)};
+}
+
+/// A number rule for YAML values: lo/hi bounds, each inclusive or exclusive.
+struct Bounds {
+    std::optional<double> lo;
+    std::optional<double> hi;
+    bool lo_open = false;
+    bool hi_open = false;
+    std::string text;  ///< e.g. "a number >= 0"
+};
+
+void read_number(const YAML::Node& map, const char* key, const std::string& file,
+                 const Bounds& bounds, double& value, Diagnostics& diagnostics) {
+    const YAML::Node node = map[key];
+    if (!node) return;
+    const ErrorContext where = at(file, node, key);
+    std::optional<double> parsed;
+    if (node.IsScalar()) parsed = parse_double(node.Scalar());
+    if (!parsed) {
+        diagnostics.error(where, "expected " + bounds.text);
+        return;
+    }
+    const double v = *parsed;
+    const bool low_bad = bounds.lo && (bounds.lo_open ? v <= *bounds.lo : v < *bounds.lo);
+    const bool high_bad = bounds.hi && (bounds.hi_open ? v >= *bounds.hi : v > *bounds.hi);
+    if (low_bad || high_bad) {
+        diagnostics.error(where, "value " + num(v) + " out of range, expected " + bounds.text);
+        return;
+    }
+    value = v;
+}
+
+const Bounds kNonNegative{0.0, std::nullopt, false, false, "a number >= 0"};
+const Bounds kPositive{0.0, std::nullopt, true, false, "a number > 0"};
+const Bounds kAny{std::nullopt, std::nullopt, false, false, "a number"};
+const Bounds kFraction{0.0, 1.0, false, false, "a number in [0, 1]"};
+const Bounds kAsymmetry{-1.0, 1.0, true, true, "a number in (-1, 1)"};
+
+void read_parametric(const YAML::Node& root, const std::string& file,
+                     model::ParametricAtmosphere& p, Diagnostics& diagnostics) {
+    read_number(root, "aerosol_optical_depth_550", file, kNonNegative, p.aerosol_optical_depth_550,
+                diagnostics);
+    read_number(root, "angstrom_exponent", file, kAny, p.angstrom_exponent, diagnostics);
+    read_number(root, "aerosol_scale_height_m", file, kPositive, p.aerosol_scale_height_m,
+                diagnostics);
+    read_number(root, "aerosol_asymmetry", file, kAsymmetry, p.aerosol_asymmetry, diagnostics);
+    read_number(root, "aerosol_single_scatter_albedo", file, kFraction,
+                p.aerosol_single_scatter_albedo, diagnostics);
+    read_number(root, "rayleigh_scale_height_m", file, kPositive, p.rayleigh_scale_height_m,
+                diagnostics);
+    read_number(root, "sea_level_pressure_hpa", file, kNonNegative, p.sea_level_pressure_hpa,
+                diagnostics);
+    read_number(root, "air_temperature_k", file, kNonNegative, p.air_temperature_k, diagnostics);
+    read_number(root, "water_vapor_pressure_hpa", file, kNonNegative, p.water_vapor_pressure_hpa,
+                diagnostics);
+}
+
+model::Atmosphere read_yaml(const std::string& text, const std::filesystem::path& path,
+                            const std::string& file, const dirsig::ReadOptions& options,
+                            Diagnostics& diagnostics) {
+    model::Atmosphere atmosphere;
+    atmosphere.where = ErrorContext{file, 0, {}};
+    YAML::Node root;
+    try {
+        root = YAML::Load(text);
+    } catch (const YAML::Exception& e) {
+        diagnostics.error(ErrorContext{file, e.mark.line >= 0 ? e.mark.line + 1 : 0, {}},
+                          "YAML syntax error: " + e.msg);
+        return atmosphere;
+    }
+    if (!root.IsMap()) {
+        diagnostics.error(ErrorContext{file, root.Mark().line >= 0 ? root.Mark().line + 1 : 1, {}},
+                          "expected a YAML mapping with a 'model' key");
+        return atmosphere;
+    }
+    try {
+        const YAML::Node model_node = root["model"];
+        if (!model_node) {
+            diagnostics.error(ErrorContext{file, 1, "model"},
+                              "missing required key 'model' (none, parametric, tabulated)");
+            return atmosphere;
+        }
+        const ErrorContext model_where = at(file, model_node, "model");
+        atmosphere.where = model_where;
+        const std::string name = model_node.IsScalar() ? model_node.Scalar() : std::string{};
+        std::vector<std::string_view> known{"model"};
+        if (name == "none") {
+            atmosphere.kind = model::AtmosphereKind::none;
+        } else if (name == "parametric") {
+            atmosphere.kind = model::AtmosphereKind::parametric;
+            known.insert(
+                known.end(),
+                {"aerosol_optical_depth_550", "angstrom_exponent", "aerosol_scale_height_m",
+                 "aerosol_asymmetry", "aerosol_single_scatter_albedo", "rayleigh_scale_height_m",
+                 "sea_level_pressure_hpa", "air_temperature_k", "water_vapor_pressure_hpa"});
+            read_parametric(root, file, atmosphere.parametric, diagnostics);
+        } else if (name == "tabulated") {
+            atmosphere.kind = model::AtmosphereKind::tabulated;
+            known.insert(known.end(), {"table", "sky_temperature_k"});
+            double sky_temperature_k = 0.0;
+            read_number(root, "sky_temperature_k", file, kNonNegative, sky_temperature_k,
+                        diagnostics);
+            const YAML::Node table = root["table"];
+            if (!table || !table.IsScalar() || table.Scalar().empty()) {
+                diagnostics.error(table ? at(file, table, "table") : model_where,
+                                  "tabulated model needs 'table': the path of a table file");
+            } else {
+                const ErrorContext where = at(file, table, "table");
+                const model::FileRef ref =
+                    options.paths.resolve(table.Scalar(), path.parent_path(), where, diagnostics);
+                if (!ref.resolved.empty()) {
+                    try {
+                        atmosphere.tabulated = read_atmosphere_table(
+                            ref.resolved, options, diagnostics, ref.resolved.string());
+                    } catch (const Error& e) {
+                        diagnostics.error(where, e.what());
+                    }
+                }
+            }
+            atmosphere.tabulated.sky_temperature_k = sky_temperature_k;
+        } else {
+            diagnostics.error(model_where, "unknown atmosphere model '" + name +
+                                               "', expected none, parametric or tabulated");
+            return atmosphere;
+        }
+        for (const auto& entry : root) {
+            const std::string key = entry.first.IsScalar() ? entry.first.Scalar() : "?";
+            bool found = false;
+            for (std::string_view k : known) found = found || k == key;
+            if (!found) {
+                diagnostics.warning(at(file, entry.first, key),
+                                    "unknown key '" + key + "' ignored for model " + name);
+            }
+        }
+    } catch (const YAML::Exception& e) {
+        diagnostics.error(ErrorContext{file, e.mark.line >= 0 ? e.mark.line + 1 : 0, {}},
+                          std::string("malformed atmosphere: ") + e.msg);
+    }
+    return atmosphere;
+}
+
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+std::vector<std::string> split_row(std::string_view line) {
+    std::vector<std::string> fields;
+    std::string current;
+    for (char c : line) {
+        if (is_blank(c) || c == ',') {
+            if (!current.empty()) fields.push_back(std::move(current));
+            current.clear();
+        } else {
+            current.push_back(c);
+        }
+    }
+    if (!current.empty()) fields.push_back(std::move(current));
+    return fields;
+}
+
+}  // namespace
+
+model::TabulatedAtmosphere read_atmosphere_table(const std::filesystem::path& path,
+                                                 const dirsig::ReadOptions& options,
+                                                 Diagnostics& diagnostics,
+                                                 const std::string& display_name) {
+    const std::string file = display_name.empty() ? path.string() : display_name;
+    const std::string text = options.read_text(path, file);
+    model::TabulatedAtmosphere table;
+    table.table_file = file;
+    std::size_t columns = 0;
+    int first_line = 0;
+    int line_number = 0;
+    std::size_t start = 0;
+    if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) start = 3;
+    while (start <= text.size()) {
+        std::size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        std::string_view line(text.data() + start, end - start);
+        start = end + 1;
+        ++line_number;
+        if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) {
+            line = line.substr(0, hash);
+        }
+        const std::vector<std::string> fields = split_row(line);
+        if (fields.empty()) continue;
+        const ErrorContext where{file, line_number, {}};
+        if (fields.size() != 5 && fields.size() != 6) {
+            diagnostics.error(where,
+                              "expected 5 or 6 values (wavelength_um sun_T sensor_T "
+                              "path_radiance sky_irradiance [thermal_sky_radiance]), "
+                              "found " +
+                                  std::to_string(fields.size()));
+            continue;
+        }
+        if (columns == 0) {
+            columns = fields.size();
+            first_line = line_number;
+        } else if (fields.size() != columns) {
+            diagnostics.error(where, "row has " + std::to_string(fields.size()) +
+                                         " values, the first row has " + std::to_string(columns));
+            continue;
+        }
+        std::vector<double> v;
+        bool ok = true;
+        for (const std::string& f : fields) {
+            const auto parsed = parse_double(f);
+            if (!parsed) {
+                diagnostics.error(where, "'" + f + "' is not a finite number");
+                ok = false;
+                break;
+            }
+            v.push_back(*parsed);
+        }
+        if (!ok) continue;
+        if (v[0] <= 0.0) {
+            diagnostics.error(where, "wavelength " + num(v[0]) + " um must be > 0");
+            continue;
+        }
+        if (!table.wavelengths_um.empty() && v[0] <= table.wavelengths_um.back()) {
+            diagnostics.error(where, "wavelength " + num(v[0]) +
+                                         " um is not greater than the previous row's " +
+                                         num(table.wavelengths_um.back()));
+            continue;
+        }
+        if (v[1] < 0.0 || v[1] > 1.0 || v[2] < 0.0 || v[2] > 1.0) {
+            diagnostics.error(where, "transmittances must lie in [0, 1]");
+            continue;
+        }
+        if (v[3] < 0.0 || v[4] < 0.0 || (v.size() == 6 && v[5] < 0.0)) {
+            diagnostics.error(where, "radiances and irradiances must be >= 0");
+            continue;
+        }
+        table.wavelengths_um.push_back(v[0]);
+        table.sun_transmittance.push_back(v[1]);
+        table.sensor_transmittance.push_back(v[2]);
+        table.path_radiance_w_per_cm2_sr_um.push_back(v[3]);
+        table.sky_irradiance_w_per_cm2_um.push_back(v[4]);
+        if (v.size() == 6) table.thermal_sky_radiance_w_per_cm2_sr_um.push_back(v[5]);
+    }
+    if (table.wavelengths_um.size() < 2) {
+        diagnostics.error(ErrorContext{file, first_line, {}},
+                          "atmosphere table needs at least 2 rows, found " +
+                              std::to_string(table.wavelengths_um.size()));
+    }
+    return table;
+}
+
+model::Atmosphere parse_yaml_atmosphere(const std::string& text, const std::filesystem::path& path,
+                                        const std::string& display_name,
+                                        const dirsig::ReadOptions& options,
+                                        Diagnostics& diagnostics) {
+    const std::string file = display_name.empty() ? path.string() : display_name;
+    return read_yaml(text, path, file, options, diagnostics);
+}
+
+}  // namespace glint::yaml

@@ -1,0 +1,184 @@
+// SPDX-License-Identifier: Apache-2.0
+// Tests of the atmosphere readers: the YAML models, the .atm simple subset, the table file,
+// and bad input reported with file:line.
+#include "glint/yaml/atmosphere_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "glint/inputs/simulation_inputs.h"
+#include "glint/test/temp_dir.h"
+
+namespace glint::inputs {
+namespace {
+
+const std::filesystem::path kDir = std::filesystem::path(GLINT_TEST_DATA_DIR) / "atmosphere";
+
+std::filesystem::path write(const test::TempDir& dir, const std::string& name,
+                            const std::string& text) {
+    const auto path = dir / name;
+    std::ofstream(path) << text;
+    return path;
+}
+
+/// The first error's text, or "" when there is none.
+std::string first_error(const Diagnostics& diagnostics) {
+    for (const auto& d : diagnostics.items()) {
+        if (d.severity == Diagnostic::Severity::error) return d.text();
+    }
+    return {};
+}
+
+TEST(AtmosphereReader, ReadsParametricYaml) {
+    Diagnostics diagnostics;
+    const auto a = read_atmosphere(kDir / "parametric.yaml", {}, diagnostics, "parametric.yaml");
+    EXPECT_EQ(diagnostics.items().size(), 0u) << first_error(diagnostics);
+    EXPECT_EQ(a.kind, model::AtmosphereKind::parametric);
+    EXPECT_DOUBLE_EQ(a.parametric.aerosol_optical_depth_550, 0.2);
+    EXPECT_DOUBLE_EQ(a.parametric.angstrom_exponent, 1.1);
+    EXPECT_DOUBLE_EQ(a.parametric.aerosol_scale_height_m, 1500.0);
+    EXPECT_DOUBLE_EQ(a.parametric.aerosol_asymmetry, 0.65);
+    EXPECT_DOUBLE_EQ(a.parametric.aerosol_single_scatter_albedo, 0.9);
+    EXPECT_DOUBLE_EQ(a.parametric.sea_level_pressure_hpa, 1000.0);
+    EXPECT_DOUBLE_EQ(a.parametric.air_temperature_k, 300.0);
+    EXPECT_DOUBLE_EQ(a.parametric.water_vapor_pressure_hpa, 20.0);
+    EXPECT_EQ(a.where.file, "parametric.yaml");
+    EXPECT_EQ(a.where.line, 3);
+}
+
+TEST(AtmosphereReader, ReadsNoneYaml) {
+    Diagnostics diagnostics;
+    const auto a = read_atmosphere(kDir / "none.yaml", {}, diagnostics);
+    EXPECT_FALSE(diagnostics.has_errors());
+    EXPECT_EQ(a.kind, model::AtmosphereKind::none);
+}
+
+TEST(AtmosphereReader, ReadsTabulatedYamlAndTable) {
+    Diagnostics diagnostics;
+    const auto a = read_atmosphere(kDir / "tabulated.yaml", {}, diagnostics);
+    EXPECT_FALSE(diagnostics.has_errors()) << first_error(diagnostics);
+    ASSERT_EQ(a.kind, model::AtmosphereKind::tabulated);
+    ASSERT_EQ(a.tabulated.wavelengths_um.size(), 4u);
+    EXPECT_DOUBLE_EQ(a.tabulated.wavelengths_um[1], 0.55);
+    EXPECT_DOUBLE_EQ(a.tabulated.sun_transmittance[1], 0.75);
+    EXPECT_DOUBLE_EQ(a.tabulated.sensor_transmittance[2], 0.93);
+    EXPECT_DOUBLE_EQ(a.tabulated.path_radiance_w_per_cm2_sr_um[0], 0.003);
+    EXPECT_DOUBLE_EQ(a.tabulated.sky_irradiance_w_per_cm2_um[3], 0.001);
+    EXPECT_TRUE(a.tabulated.thermal_sky_radiance_w_per_cm2_sr_um.empty());
+    EXPECT_DOUBLE_EQ(a.tabulated.sky_temperature_k, 250.0);
+}
+
+TEST(AtmosphereReader, ReadsAtmSimpleSubset) {
+    Diagnostics diagnostics;
+    const auto a = read_atmosphere(kDir / "simple.atm", {}, diagnostics);
+    EXPECT_FALSE(diagnostics.has_errors()) << first_error(diagnostics);
+    EXPECT_EQ(a.kind, model::AtmosphereKind::simple);
+    EXPECT_DOUBLE_EQ(a.simple.apparent_sky_temperature_k, 260.0);
+    // The weather block is ignored with a warning naming it.
+    ASSERT_EQ(diagnostics.warning_count(), 1u);
+    EXPECT_NE(diagnostics.items()[0].text().find("<uniformweather>"), std::string::npos);
+}
+
+TEST(AtmosphereReader, UnsupportedAtmBlockIsAnErrorNamingIt) {
+    Diagnostics diagnostics;
+    (void)read_atmosphere(kDir / "classic.atm", {}, diagnostics, "classic.atm");
+    const std::string text = first_error(diagnostics);
+    EXPECT_NE(text.find("classic.atm:5:"), std::string::npos) << text;
+    EXPECT_NE(text.find("<classicradiativetransfer> is not supported"), std::string::npos) << text;
+}
+
+TEST(AtmosphereReader, YamlSyntaxErrorHasLine) {
+    test::TempDir dir;
+    const auto path = write(dir, "bad.yaml", "model: parametric\nangstrom_exponent: [1, 2\n");
+    Diagnostics diagnostics;
+    (void)read_atmosphere(path, {}, diagnostics, "bad.yaml");
+    const std::string text = first_error(diagnostics);
+    EXPECT_NE(text.find("bad.yaml:"), std::string::npos) << text;
+    EXPECT_NE(text.find("YAML syntax error"), std::string::npos) << text;
+    ASSERT_TRUE(diagnostics.has_errors());
+    EXPECT_GE(diagnostics.items()[0].where.line, 2);
+}
+
+TEST(AtmosphereReader, UnknownModelIsAnError) {
+    test::TempDir dir;
+    const auto path = write(dir, "bad.yaml", "# c\nmodel: modtran\n");
+    Diagnostics diagnostics;
+    (void)read_atmosphere(path, {}, diagnostics, "bad.yaml");
+    EXPECT_EQ(first_error(diagnostics),
+              "bad.yaml:2: model: unknown atmosphere model 'modtran', expected none, parametric "
+              "or tabulated");
+}
+
+TEST(AtmosphereReader, MissingModelIsAnError) {
+    test::TempDir dir;
+    const auto path = write(dir, "bad.yaml", "angstrom_exponent: 1\n");
+    Diagnostics diagnostics;
+    (void)read_atmosphere(path, {}, diagnostics, "bad.yaml");
+    EXPECT_NE(first_error(diagnostics).find("missing required key 'model'"), std::string::npos);
+}
+
+TEST(AtmosphereReader, NegativeOpticalDepthIsAnError) {
+    test::TempDir dir;
+    const auto path =
+        write(dir, "bad.yaml", "model: parametric\n\naerosol_optical_depth_550: -0.1\n");
+    Diagnostics diagnostics;
+    (void)read_atmosphere(path, {}, diagnostics, "bad.yaml");
+    EXPECT_EQ(first_error(diagnostics),
+              "bad.yaml:3: aerosol_optical_depth_550: value -0.1 out of range, expected a "
+              "number >= 0");
+}
+
+TEST(AtmosphereReader, NonNumberAndUnknownKey) {
+    test::TempDir dir;
+    const auto path =
+        write(dir, "bad.yaml", "model: parametric\nangstrom_exponent: big\nvisibility_km: 23\n");
+    Diagnostics diagnostics;
+    (void)read_atmosphere(path, {}, diagnostics, "bad.yaml");
+    EXPECT_EQ(first_error(diagnostics), "bad.yaml:2: angstrom_exponent: expected a number");
+    EXPECT_EQ(diagnostics.warning_count(), 1u);
+}
+
+TEST(AtmosphereReader, BadTableRowHasFileAndLine) {
+    test::TempDir dir;
+    write(dir, "t.txt",
+          "# header\n0.4 0.5 0.5 0 0\n0.5 1.5 0.5 0 0\n0.35 0.5 0.5 0 0\n0.6 x 1 0 0\n");
+    Diagnostics diagnostics;
+    const auto table = yaml::read_atmosphere_table(dir / "t.txt", {}, diagnostics, "t.txt");
+    ASSERT_EQ(diagnostics.error_count(), 4u);
+    EXPECT_EQ(diagnostics.items()[0].text(), "t.txt:3: transmittances must lie in [0, 1]");
+    EXPECT_NE(diagnostics.items()[1].text().find("t.txt:4: wavelength 0.35 um is not greater"),
+              std::string::npos);
+    EXPECT_EQ(diagnostics.items()[2].text(), "t.txt:5: 'x' is not a finite number");
+    EXPECT_EQ(diagnostics.items()[3].text(),
+              "t.txt:2: atmosphere table needs at least 2 rows, found 1");
+    EXPECT_EQ(table.wavelengths_um.size(), 1u);
+}
+
+TEST(AtmosphereReader, TableWithWrongColumnCount) {
+    test::TempDir dir;
+    write(dir, "t.txt", "0.4 0.5 0.5 0 0 0\n0.5 0.5 0.5 0 0\n");
+    Diagnostics diagnostics;
+    (void)yaml::read_atmosphere_table(dir / "t.txt", {}, diagnostics, "t.txt");
+    ASSERT_TRUE(diagnostics.has_errors());
+    EXPECT_EQ(diagnostics.items()[0].text(), "t.txt:2: row has 5 values, the first row has 6");
+}
+
+TEST(AtmosphereReader, MissingTableFileIsReportedAtTheKey) {
+    test::TempDir dir;
+    const auto path = write(dir, "a.yaml", "model: tabulated\ntable: nowhere.txt\n");
+    Diagnostics diagnostics;
+    (void)read_atmosphere(path, {}, diagnostics, "a.yaml");
+    const std::string text = first_error(diagnostics);
+    EXPECT_EQ(text.rfind("a.yaml:2: table: ", 0), 0u) << text;
+}
+
+TEST(AtmosphereReader, UnreadableFileThrows) {
+    Diagnostics diagnostics;
+    EXPECT_THROW((void)read_atmosphere(kDir / "does-not-exist.yaml", {}, diagnostics), Error);
+}
+
+}  // namespace
+}  // namespace glint::inputs
