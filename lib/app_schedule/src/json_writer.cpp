@@ -19,7 +19,7 @@ Json paths_json(const std::vector<std::filesystem::path>& paths) {
     return j;
 }
 
-Json focal_plane_json(const schedule::Source& source) {
+Json focal_plane_json(const schedule::ClockedFocalPlane& source) {
     if (source.focal_plane == nullptr) return nullptr;
     const model::FocalPlane& fp = *source.focal_plane;
     const model::Bandpass& band = fp.capture_method.spectral_response.bandpass;
@@ -44,7 +44,7 @@ const DateTime& reference_of(const CaptureRecord& record) { return record.plugin
 
 Json capture_json(const CaptureRecord& record, const motion::SceneFrame& frame) {
     const schedule::Capture& c = record.capture;
-    const schedule::Source& source = *record.source;
+    const schedule::ClockedFocalPlane& source = *record.source;
     const double t_mid_s = 0.5 * (c.t0_s + c.t1_s);
     Json j;
     j["index"] = c.index;
@@ -239,7 +239,7 @@ Json plugins_json(const RunInfo& info) {
         j["tasks"] = std::move(tasks);
         Json focal_planes = Json::array();
         for (std::size_t s = 0; s < schedule.sources().size(); ++s) {
-            const schedule::Source& source = schedule.sources()[s];
+            const schedule::ClockedFocalPlane& source = schedule.sources()[s];
             if (source.plugin != p) continue;
             std::uint64_t captures = 0;
             for (std::size_t t = 0; t < plugin.tasks.tasks.size(); ++t)

@@ -110,7 +110,7 @@ internal::WrittenTotals stream_captures(const schedule::Schedule& schedule,
             ctx.cancel.throw_if_cancelled();
             ctx.progress.update("captures", capture->index, total);
         }
-        const schedule::Source& source = sources[capture->source];
+        const schedule::ClockedFocalPlane& source = sources[capture->source];
         const std::uint64_t event = ++events[source.plugin][capture->task_index];
         if (selection.matches(*capture)) {
             const std::uint64_t problems = problems_per_capture(source);

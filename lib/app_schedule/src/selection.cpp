@@ -24,14 +24,14 @@ std::optional<std::uint64_t> parse_count(std::string_view text) {
 }
 
 /// "Instrument/FocalPlane" or "FocalPlane" of a source, for messages.
-std::string source_name(const schedule::Source& source) {
+std::string source_name(const schedule::ClockedFocalPlane& source) {
     const std::string instrument = source.instrument ? source.instrument->name : "";
     const std::string focal_plane = source.focal_plane ? source.focal_plane->name : "";
     return instrument + "/" + focal_plane;
 }
 
 /// True when `pattern` (NAME or INSTRUMENT/NAME) names `source`.
-bool names_source(const std::string& pattern, const schedule::Source& source) {
+bool names_source(const std::string& pattern, const schedule::ClockedFocalPlane& source) {
     const std::string focal_plane = source.focal_plane ? source.focal_plane->name : "";
     const std::size_t slash = pattern.find('/');
     if (slash == std::string::npos) return pattern == focal_plane;
@@ -85,7 +85,7 @@ ShardSpec parse_shard(std::string_view text) {
     return ShardSpec{*index, *count};
 }
 
-std::uint64_t problems_per_capture(const schedule::Source& source) {
+std::uint64_t problems_per_capture(const schedule::ClockedFocalPlane& source) {
     return source.focal_plane == nullptr ? 0 : source.problems_per_capture;
 }
 

@@ -36,7 +36,7 @@ struct SourceColumns {
     std::string array;     ///< "320 x 240"
 };
 
-SourceColumns columns_of(const schedule::Source& source) {
+SourceColumns columns_of(const schedule::ClockedFocalPlane& source) {
     SourceColumns c;
     const std::string instrument = source.instrument ? source.instrument->name : "";
     if (source.focal_plane == nullptr) {
@@ -57,7 +57,7 @@ class TextWriter final : public CaptureWriter {
 public:
     TextWriter(const RunInfo& info, std::ostream& out) : m_out(out) {
         const schedule::Schedule& schedule = *info.schedule;
-        for (const schedule::Source& source : schedule.sources()) {
+        for (const schedule::ClockedFocalPlane& source : schedule.sources()) {
             m_sources.push_back(columns_of(source));
         }
         m_name_width = kNameHeader.size();

@@ -28,7 +28,7 @@ struct RunInfo {
 /// One capture and everything derived from it that more than one writer uses.
 struct CaptureRecord {
     schedule::Capture capture;
-    const schedule::Source* source = nullptr;
+    const schedule::ClockedFocalPlane* source = nullptr;
     const schedule::PluginSchedule* plugin = nullptr;
     std::uint64_t event_number = 0;  ///< 1-based among its plugin's captures in its task
     std::uint64_t event_count = 0;   ///< captures of its plugin in its task

@@ -139,9 +139,9 @@ void PathTracer::trace(const SampleRay& ray, RandomStream& rng, PathScratch& scr
     }
 
     if (env.has_sensor_path()) {
-        env.sensor_path(-ray.direction, time, scratch.sun, scratch.path);
+        env.sensor_path(-ray.direction, time, scratch.sensor_transmittance, scratch.path_radiance);
         for (std::size_t b = 0; b < radiance.size(); ++b) {
-            radiance[b] = scratch.sun[b] * radiance[b] + scratch.path[b];
+            radiance[b] = scratch.sensor_transmittance[b] * radiance[b] + scratch.path_radiance[b];
         }
     }
 }

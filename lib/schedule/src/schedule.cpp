@@ -52,7 +52,7 @@ Schedule::~Schedule() = default;
 const std::filesystem::path& Schedule::simulation_file() const { return m_impl->simulation_file; }
 const motion::SceneFrame& Schedule::frame() const { return m_impl->frame; }
 const std::vector<PluginSchedule>& Schedule::plugins() const { return m_impl->plugins; }
-const std::vector<Source>& Schedule::sources() const { return m_impl->sources; }
+const std::vector<ClockedFocalPlane>& Schedule::sources() const { return m_impl->sources; }
 
 const ClockTicks& Schedule::ticks(std::size_t source, std::size_t task) const {
     if (source >= m_impl->ticks.size()) {
@@ -75,7 +75,7 @@ std::uint64_t Schedule::total_captures() const { return m_impl->total_captures; 
 std::uint64_t Schedule::total_problems() const { return m_impl->total_problems; }
 
 std::filesystem::path Schedule::image_file(const Capture& capture) const {
-    const Source& source = m_impl->sources.at(capture.source);
+    const ClockedFocalPlane& source = m_impl->sources.at(capture.source);
     const model::ImageFile& image = source.focal_plane->capture_method.image_file;
     if (image.basename.empty()) return {};
     const PluginSchedule& plugin = m_impl->plugins[source.plugin];
@@ -84,7 +84,7 @@ std::filesystem::path Schedule::image_file(const Capture& capture) const {
 }
 
 std::vector<std::filesystem::path> Schedule::truth_files(const Capture& capture) const {
-    const Source& source = m_impl->sources.at(capture.source);
+    const ClockedFocalPlane& source = m_impl->sources.at(capture.source);
     const PluginSchedule& plugin = m_impl->plugins[source.plugin];
     std::vector<std::filesystem::path> files;
     for (const model::TruthCollection& truth : source.focal_plane->truth_collections) {

@@ -24,7 +24,7 @@ struct ScheduleData {
     /// Named targets of tracking mounts (the scene's instances); the pose services point at it.
     std::shared_ptr<const motion::SceneTargets> targets;
     std::vector<PluginSchedule> plugins;
-    std::vector<Source> sources;
+    std::vector<ClockedFocalPlane> sources;
     /// ticks[source][task]: the source's clock in task `task` of its plugin. The trigger lists
     /// they point into live in `sources` (filled before these are built, never resized after).
     std::vector<std::vector<ClockTicks>> ticks;

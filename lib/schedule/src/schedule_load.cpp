@@ -29,7 +29,7 @@ std::string plugin_name(std::size_t plugin_index) {
     return "plugin_list[" + std::to_string(plugin_index) + "]";
 }
 
-std::string focal_plane_name(const Source& source) {
+std::string focal_plane_name(const ClockedFocalPlane& source) {
     return "instrument " + quoted(source.instrument->name) + " focal plane " +
            quoted(source.focal_plane->name);
 }
@@ -51,7 +51,7 @@ double scaled_count(std::size_t count, double factor) {
 
 /// Sets the source's pixel counts from its detector array and --scale_resolution; false (with
 /// an error) when they exceed the reader's limits.
-bool set_pixel_counts(Source& source, double factor, Diagnostics& diagnostics) {
+bool set_pixel_counts(ClockedFocalPlane& source, double factor, Diagnostics& diagnostics) {
     const model::DetectorArray& array = source.focal_plane->detector_array;
     const double x = scaled_count(array.x_count, factor);
     const bool tdi = source.focal_plane->capture_method.temporal_integration.tdi;
@@ -137,7 +137,7 @@ void Loader::add_sources(std::size_t plugin_slot) {
         for (std::size_t f = 0; f < instrument.focal_planes.size(); ++f) {
             const model::FocalPlane& plane = instrument.focal_planes[f];
             if (!plane.enabled) continue;
-            Source source;
+            ClockedFocalPlane source;
             source.plugin = plugin_slot;
             source.instrument_index = k;
             source.focal_plane_index = f;
@@ -160,7 +160,7 @@ void Loader::check_output_names() {
         std::string what;
     };
     std::map<std::string, Owner> owners;
-    const auto claim = [&](const Source& source, const model::ImageFile& image,
+    const auto claim = [&](const ClockedFocalPlane& source, const model::ImageFile& image,
                            const std::string& what) {
         if (image.basename.empty()) return;
         const PluginSchedule& entry = impl.plugins[source.plugin];
@@ -184,7 +184,7 @@ void Loader::check_output_names() {
                                                ", expected different basenames");
         }
     };
-    for (const Source& source : impl.sources) {
+    for (const ClockedFocalPlane& source : impl.sources) {
         const std::string plane = focal_plane_name(source);
         claim(source, source.focal_plane->capture_method.image_file, plane);
         for (const model::TruthCollection& truth : source.focal_plane->truth_collections) {
@@ -198,7 +198,7 @@ void Loader::check_output_names() {
 void Loader::compute_ticks() {
     impl.ticks.resize(impl.sources.size());
     for (std::size_t s = 0; s < impl.sources.size(); ++s) {
-        const Source& source = impl.sources[s];
+        const ClockedFocalPlane& source = impl.sources[s];
         const PluginSchedule& entry = impl.plugins[source.plugin];
         const model::Clock& clock = source.clock();
         std::vector<ClockTicks>& ticks = impl.ticks[s];

@@ -22,7 +22,7 @@ std::string bandpass_line(const SpectralGrid& grid) {
     return text;
 }
 
-void log_capture_start(const PlannedCapture& p, const schedule::Source& source,
+void log_capture_start(const PlannedCapture& p, const schedule::ClockedFocalPlane& source,
                        const FocalPlaneState& state, const DateTime& reference,
                        const Context& context) {
     if (!context.log.enabled(LogLevel::info)) return;
@@ -44,7 +44,7 @@ void log_capture_start(const PlannedCapture& p, const schedule::Source& source,
 /// origin, sensor altitude from the instrument's position at mid-window.
 radiometry::Environment capture_environment(const RenderInputs& in, const FocalPlaneState& state,
                                             const schedule::Capture& capture,
-                                            const schedule::Source& source,
+                                            const schedule::ClockedFocalPlane& source,
                                             radiometry::SensorPathCache& cache) {
     const schedule::PluginSchedule& plugin = in.schedule->plugins()[source.plugin];
     const DateTime& reference = plugin.tasks.reference;
@@ -76,7 +76,7 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
     quiet.progress = Progress{};
     const auto started = std::chrono::steady_clock::now();
     const schedule::Capture& capture = p.capture;
-    const schedule::Source& source = in.schedule->sources()[capture.source];
+    const schedule::ClockedFocalPlane& source = in.schedule->sources()[capture.source];
     const schedule::PluginSchedule& plugin = in.schedule->plugins()[source.plugin];
     const FocalPlaneState& state = prepared.states.at(capture.source);
     log_capture_start(p, source, state, plugin.tasks.reference, context);

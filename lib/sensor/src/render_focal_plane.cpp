@@ -13,7 +13,7 @@
 
 namespace glint::sensor::detail {
 
-bool renders(const schedule::Source& source, std::string& why) {
+bool renders(const schedule::ClockedFocalPlane& source, std::string& why) {
     const model::Instrument& instrument = *source.instrument;
     const model::FocalPlane& fp = *source.focal_plane;
     if (instrument.type != model::InstrumentType::generic) {
@@ -46,7 +46,7 @@ radiometry::Convergence convergence_of(const model::FocalPlane& fp, const Render
     return options.convergence.value_or(kDefaultConvergence);
 }
 
-io::EnviHeader header_of(const schedule::Source& source, const OutputUnits& units,
+io::EnviHeader header_of(const schedule::ClockedFocalPlane& source, const OutputUnits& units,
                          const radiometry::Convergence& convergence, const RenderOptions& options,
                          const RenderInputs& inputs) {
     const model::FocalPlane& fp = *source.focal_plane;
@@ -99,7 +99,7 @@ io::EnviHeader header_of(const schedule::Source& source, const OutputUnits& unit
 /// fluxunits and areaunits are ignored (as the DIRSIG5 BasicPlatform manual says) for the
 /// photon product at the focal plane, per cm², channels integrated and not normalized, that
 /// detection needs. A TDI pixel's integration time is that of all its stages.
-model::CaptureMethod units_method(const schedule::Source& source, const Context& context) {
+model::CaptureMethod units_method(const schedule::ClockedFocalPlane& source, const Context& context) {
     const model::FocalPlane& fp = *source.focal_plane;
     model::CaptureMethod method = fp.capture_method;
     // A TDI pixel integrates over all its stages: stages × the stage time.
@@ -138,7 +138,7 @@ void add_detection_header(io::EnviHeader& h, const detect::DetectionSettings& se
 
 FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t source_index,
                                        const RenderOptions& options, const Context& context) {
-    const schedule::Source& source = inputs.schedule->sources()[source_index];
+    const schedule::ClockedFocalPlane& source = inputs.schedule->sources()[source_index];
     const model::FocalPlane& fp = *source.focal_plane;
     if (source.tdi_stages > 1 && fp.detector_array.rolling_line_time_s) {
         context.log.warning("focal plane \"" + fp.name +

@@ -75,7 +75,7 @@ FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t s
 
 /// Whether a schedule source produces an image glint renders (a generic instrument's
 /// enabled focal plane with an image file); `why` gets the reason when not.
-bool renders(const schedule::Source& source, std::string& why);
+bool renders(const schedule::ClockedFocalPlane& source, std::string& why);
 
 /// Hypersampling: one entry per pixel (problem), 1 where the capture's field of view may
 /// contain an instance marked ::IMPORTANT:: (its bounds over the window projected from the

@@ -78,7 +78,7 @@ void plan_outputs(const RenderInputs& in, const std::vector<PlannedCapture>& cap
         if (!states.contains(source)) {
             states.emplace(source, detail::make_focal_plane_state(in, source, options, context));
         }
-        const schedule::Source& s = in.schedule->sources()[source];
+        const schedule::ClockedFocalPlane& s = in.schedule->sources()[source];
         outputs.plan(path, states.at(source).header, s.lines_per_capture(), entry.second);
     }
 }
@@ -100,7 +100,7 @@ std::unique_ptr<Prepared> prepare(model::SimulationInputs loaded, const RenderOp
     }
     std::uint64_t largest = 0;
     for (const PlannedCapture& planned : p->captures) {
-        const schedule::Source& s = in.schedule->sources()[planned.capture.source];
+        const schedule::ClockedFocalPlane& s = in.schedule->sources()[planned.capture.source];
         report.pixels += s.problems_per_capture;
         const FocalPlaneState& state = p->states.at(planned.capture.source);
         const std::uint64_t bands = state.grid.size() + state.units.channels();

@@ -107,14 +107,14 @@ TEST(Schedule, SourcesAreTheEnabledFocalPlanesInInstrumentOrder) {
     EXPECT_EQ(schedule.plugins()[0].tasks.tasks.size(), 3u);
     ASSERT_EQ(schedule.sources().size(), 3u);
     std::vector<std::tuple<std::size_t, std::size_t, std::string>> seen;
-    for (const Source& s : schedule.sources()) {
+    for (const ClockedFocalPlane& s : schedule.sources()) {
         seen.emplace_back(s.instrument_index, s.focal_plane_index, s.focal_plane->name);
         EXPECT_EQ(&schedule.plugins()[0].poses->instrument_path(s.instrument_index).instrument[0],
                   s.instrument);
     }
     EXPECT_THAT(seen, ElementsAre(std::make_tuple(0u, 0u, "Fast"), std::make_tuple(0u, 1u, "Slow"),
                                   std::make_tuple(1u, 0u, "Line")));
-    const Source& fast = schedule.sources()[0];
+    const ClockedFocalPlane& fast = schedule.sources()[0];
     EXPECT_EQ(fast.x_count, 8u);
     EXPECT_EQ(fast.y_count, 6u);
     EXPECT_EQ(fast.problems_per_capture, 48u);
@@ -122,7 +122,7 @@ TEST(Schedule, SourcesAreTheEnabledFocalPlanesInInstrumentOrder) {
     EXPECT_EQ(fast.tdi_stages, 1u);
     EXPECT_EQ(fast.lines_per_capture(), 6u);
     EXPECT_EQ(fast.window_s(), 0.08);
-    const Source& line = schedule.sources()[2];
+    const ClockedFocalPlane& line = schedule.sources()[2];
     EXPECT_EQ(line.problems_per_capture, 16u);  // TDI: one line per capture
     EXPECT_EQ(line.tdi_stages, 4u);
     EXPECT_EQ(line.lines_per_capture(), 1u);
@@ -339,7 +339,7 @@ TEST(Schedule, SynchronousAndTriggeredClocks) {
 
 TEST(Schedule, RollingLineTimeIsNoneForGlobalShuttersAndTdi) {
     model::FocalPlane plane;
-    Source source;
+    ClockedFocalPlane source;
     EXPECT_EQ(source.rolling_line_time_s(), std::nullopt);  // no focal plane
     source.focal_plane = &plane;
     EXPECT_EQ(source.rolling_line_time_s(), std::nullopt);  // global shutter

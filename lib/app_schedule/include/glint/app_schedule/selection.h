@@ -48,9 +48,9 @@ CaptureRange parse_capture_range(std::string_view text);
 ShardSpec parse_shard(std::string_view text);
 
 /// Problems (pixel problems handed to the radiometry) of one capture of `source`
-/// (Source::problems_per_capture: x × y elements after scale_resolution, x for a TDI focal
+/// (ClockedFocalPlane::problems_per_capture: x × y elements after scale_resolution, x for a TDI focal
 /// plane); 0 for a source without a focal plane.
-std::uint64_t problems_per_capture(const schedule::Source& source);
+std::uint64_t problems_per_capture(const schedule::ClockedFocalPlane& source);
 
 /// The filters, resolved against one schedule.
 struct Filters {

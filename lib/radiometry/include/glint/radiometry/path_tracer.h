@@ -43,10 +43,11 @@ struct TracerSettings {
 /// Per-thread scratch space for trace().
 class PathScratch {
 public:
-    explicit PathScratch(std::size_t bands) : throughput(bands), sun(bands), path(bands) {}
-    std::vector<double> throughput;
-    std::vector<double> sun;
-    std::vector<double> path;
+    explicit PathScratch(std::size_t bands)
+        : throughput(bands), sensor_transmittance(bands), path_radiance(bands) {}
+    std::vector<double> throughput;            ///< of the path so far, per band
+    std::vector<double> sensor_transmittance;  ///< T_v(λ): surface → sensor
+    std::vector<double> path_radiance;         ///< L_p(λ): the atmosphere's own, at the sensor
     std::uint64_t rays = 0;  ///< intersection and shadow queries traced so far (statistics)
 };
 

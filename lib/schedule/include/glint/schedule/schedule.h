@@ -54,7 +54,7 @@ struct PluginSchedule {
 /// One capturing focal plane (a clock): an enabled focal plane of any instrument (generic,
 /// lidar, or a data recorder's: its clock is the recorder's sample clock). A data recorder
 /// without a focal plane has no clock in the model and is skipped with a warning.
-struct Source {
+struct ClockedFocalPlane {
     std::size_t plugin = 0;             ///< index into Schedule::plugins()
     std::size_t instrument_index = 0;   ///< list_instruments order within the platform
     std::size_t focal_plane_index = 0;  ///< index within the instrument
@@ -112,7 +112,7 @@ public:
     /// scenes' origin, else kDefaultSceneOrigin).
     const motion::SceneFrame& frame() const;
     const std::vector<PluginSchedule>& plugins() const;
-    const std::vector<Source>& sources() const;
+    const std::vector<ClockedFocalPlane>& sources() const;
 
     /// Number of captures of `source` in task `task` of its plugin (analytic: O(1) here, the
     /// clock ranges are computed at load). Throws glint::Error (usage) for an index out of

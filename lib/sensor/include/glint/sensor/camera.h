@@ -47,7 +47,7 @@ using motion::Vec3;
 /// The camera of one focal plane.
 class CameraModel {
 public:
-    /// `columns`, `rows`: the pixel counts after scale_resolution (schedule::Source x_count,
+    /// `columns`, `rows`: the pixel counts after scale_resolution (schedule::ClockedFocalPlane x_count,
     /// y_count). Throws glint::Error (input, at the element: properties.where for the
     /// focal length and distortion, array.where for the rest) when the instrument has no
     /// focal length (or a non-positive one), the array or the scaled counts are zero, a pitch
