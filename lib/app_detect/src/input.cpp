@@ -158,18 +158,12 @@ std::uint64_t choose_seed(const Options& options, const io::EnviHeader& header,
 double scale_resolution(const io::EnviHeader& header, const std::string& header_file) {
     const auto text = header.find_extra("glint scale resolution");
     if (!text) return 1.0;
-    std::size_t used = 0;
-    double value = 0.0;
-    try {
-        value = std::stod(trim(*text), &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used == 0 || used != trim(*text).size() || !std::isfinite(value) || value <= 0.0) {
+    const std::optional<double> value = parse_double(*text);
+    if (!value || *value <= 0.0) {
         throw input_error("'" + trim(*text) + "' is not a scale factor (a number > 0)",
                           ErrorContext{header_file, 0, "glint scale resolution"});
     }
-    return value;
+    return *value;
 }
 
 CaptureMap capture_map(const io::EnviHeader& header, const std::string& header_file,

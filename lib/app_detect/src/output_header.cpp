@@ -5,6 +5,7 @@
 #include <string>
 
 #include "glint/core/runner.h"
+#include "glint/core/text.h"
 #include "glint/detect/header_keys.h"
 
 namespace glint::app_detect::internal {
@@ -17,11 +18,8 @@ constexpr const char* kRenamed[][2] = {
     {"glint tool", "glint input tool"},
 };
 
-std::string join(const std::vector<std::string>& items) {
-    std::string text = "{";
-    for (std::size_t i = 0; i < items.size(); ++i) text += (i ? ", " : "") + items[i];
-    return text + "}";
-}
+/// "{a, b}".
+std::string braced(const std::vector<std::string>& items) { return "{" + join(items, ", ") + "}"; }
 
 }  // namespace
 
@@ -65,7 +63,7 @@ io::EnviHeader output_header(const detect::DetectionSettings& s, const HeaderSou
         h.set_extra("glint lines per capture", std::to_string(src.captures->lines_per_capture));
         std::vector<std::string> indices;
         for (std::uint64_t i : src.captures->indices) indices.push_back(std::to_string(i));
-        h.set_extra("glint capture indices", join(indices));
+        h.set_extra("glint capture indices", braced(indices));
     }
     for (const auto& [key, value] : detect::detection_header_keys(s)) h.set_extra(key, value);
     return h;

@@ -11,6 +11,7 @@
 
 #include "glint/core/error.h"
 #include "glint/core/runner.h"
+#include "glint/core/text.h"
 #include "source.h"
 
 namespace glint::app_envi {
@@ -24,12 +25,6 @@ using io::PercentileHistogram;
 using io::StretchLimits;
 
 enum class StretchMode { none, minmax, percent, fixed };
-
-std::string lower(std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return text;
-}
 
 void check_options(const ConvertOptions& o, OutputKind kind) {
     if (o.input.empty()) throw usage_error("no input file named");
@@ -56,7 +51,7 @@ void check_options(const ConvertOptions& o, OutputKind kind) {
 /// Nearest-wavelength R, G, B bands, when the header has wavelengths in µm or nm.
 std::optional<std::vector<std::size_t>> rgb_by_wavelength(const io::EnviHeader& h) {
     if (h.wavelength.size() != h.bands) return std::nullopt;
-    const std::string units = lower(h.wavelength_units);
+    const std::string units = to_lower(h.wavelength_units);
     double to_um = 0;
     if (units == "microns" || units == "micrometers" || units == "um" || units == "micrometer") {
         to_um = 1;

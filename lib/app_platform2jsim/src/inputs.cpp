@@ -239,11 +239,6 @@ void load_one_simulation(std::size_t index, LoadedInputs& inputs,
     if (depth != LoadDepth::platforms) check_output_names(simulation, inputs.diagnostics);
 }
 
-std::string lowercase(std::string text) {
-    for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return text;
-}
-
 }  // namespace
 
 const model::Platform* LoadedInputs::platform_of(const model::BasicPlatformInputs& inputs) const {
@@ -289,7 +284,7 @@ const model::Platform* load_platform_file(const fs::path& file, LoadedInputs& in
 }
 
 void check_file(const fs::path& file, LoadedInputs& inputs, const dirsig::ReadOptions& options) {
-    const std::string extension = lowercase(file.extension().string());
+    const std::string extension = to_lower(file.extension().string());
     if (extension == ".platform") {
         load_platform_file(file, inputs, options);
         return;

@@ -16,23 +16,9 @@ namespace glint::app_render {
 namespace {
 
 double parse_number(const std::string& text, const std::string& what) {
-    std::size_t used = 0;
-    double value = 0.0;
-    try {
-        value = std::stod(text, &used);
-    } catch (const std::exception&) {
-        used = 0;
-    }
-    if (used == 0 || used != text.size() || !std::isfinite(value)) {
-        throw usage_error(what + ": expected a number, got \"" + text + "\"");
-    }
-    return value;
-}
-
-std::string join_arguments(const std::vector<std::string>& arguments) {
-    std::string out;
-    for (const std::string& a : arguments) out += (out.empty() ? "" : " ") + a;
-    return out;
+    const std::optional<double> value = parse_double(text);
+    if (!value) throw usage_error(what + ": expected a number, got \"" + text + "\"");
+    return *value;
 }
 
 std::string mebibytes(std::uint64_t bytes) {
@@ -107,7 +93,7 @@ int run(Options options, Context& ctx, std::ostream& out) {
     sensor::RenderOptions& render = options.render;
     render.schedule.seed = ctx.seed;
     render.version = version();
-    render.command_line = join_arguments(options.arguments);
+    render.command_line = join(options.arguments, " ");
     render.arguments = options.arguments;
     render.radiance_only = options.radiance_only;
     if (render.data_dir.empty()) render.data_dir = default_data_dir();

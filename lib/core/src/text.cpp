@@ -42,6 +42,34 @@ std::string format_shortest(double value) {
     return std::string(buffer, result.ptr);
 }
 
+namespace {
+
+template <typename Item>
+std::string join_items(std::span<const Item> items, std::string_view separator,
+                       std::string_view last_separator) {
+    std::string text;
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        if (i > 0) {
+            const bool last = i + 1 == items.size() && !last_separator.empty();
+            text += last ? last_separator : separator;
+        }
+        text += items[i];
+    }
+    return text;
+}
+
+}  // namespace
+
+std::string join(std::span<const std::string_view> items, std::string_view separator,
+                 std::string_view last_separator) {
+    return join_items(items, separator, last_separator);
+}
+
+std::string join(std::span<const std::string> items, std::string_view separator,
+                 std::string_view last_separator) {
+    return join_items(items, separator, last_separator);
+}
+
 std::string to_lower(std::string_view text) {
     std::string out(text);
     for (char& c : out) c = ascii_lower(c);

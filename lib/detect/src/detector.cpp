@@ -15,12 +15,6 @@
 namespace glint::detect {
 namespace {
 
-std::string lower(std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return text;
-}
-
 std::string quoted_list(const std::vector<std::string>& names) {
     std::string text;
     for (std::size_t i = 0; i < names.size(); ++i) {
@@ -167,11 +161,11 @@ DetectorModelSettings resolve_model(const model::FocalPlane& fp,
 std::optional<int> channel_named_after(const std::vector<std::string>& names, CfaFilter filter) {
     const std::string wanted = cfa_filter_name(filter);
     for (std::size_t i = 0; i < names.size(); ++i) {
-        if (lower(names[i]) == wanted) return static_cast<int>(i);
+        if (to_lower(names[i]) == wanted) return static_cast<int>(i);
     }
     std::optional<int> found;
     for (std::size_t i = 0; i < names.size(); ++i) {
-        if (lower(names[i]).find(wanted) != std::string::npos) {
+        if (to_lower(names[i]).find(wanted) != std::string::npos) {
             if (found) return std::nullopt;
             found = static_cast<int>(i);
         }

@@ -18,9 +18,6 @@
 namespace glint::dirsig {
 namespace {
 
-/// Shortest text that reads back as `value`.
-std::string num(double value) { return format_shortest(value); }
-
 bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
 
 /// The fields of one line (comment already removed): separated by blanks, or by one comma

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "glint/core/spectral.h"
+#include "glint/core/text.h"
 #include "glint/model/names.h"
 
 namespace glint::dirsig::detail::capture_io {
@@ -33,21 +34,6 @@ constexpr std::array<std::string_view, 4> kTrueSenseFilters = {"pan", "red", "gr
 std::span<const std::string_view> filters_of(ChannelPatternKind kind) {
     if (kind == ChannelPatternKind::bayer) return kBayerFilters;
     return kTrueSenseFilters;
-}
-
-/// "red, green or blue".
-std::string or_list(std::span<const std::string_view> items) {
-    std::string text;
-    for (std::size_t i = 0; i < items.size(); ++i) {
-        if (i > 0) text += (i + 1 == items.size()) ? " or " : ", ";
-        text += items[i];
-    }
-    return text;
-}
-
-std::string lower(std::string text) {
-    for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return text;
 }
 
 /// The conversion factor of the bandpass's spectral units (1 when unknown).
@@ -125,7 +111,7 @@ std::string read_polarization(const io::XmlNode& channel, std::string_view eleme
     if (!node) return std::string(modelled);
     node->warn_unknown_children({}, diagnostics);
     const std::string type = trim(node->attribute("type").value_or(std::string(modelled)));
-    if (lower(type) != modelled) {
+    if (to_lower(type) != modelled) {
         diagnostics.warning(node->where_attribute("type"),
                             "type '" + type + "': polarization is not modelled, glint writes " +
                                 "the total (unpolarized) signal as for type " +
@@ -232,12 +218,12 @@ std::optional<ChannelPattern> read_pattern(const io::XmlNode& node, Diagnostics&
         const auto filter = required_attribute(mapping, "filtername", diagnostics);
         const auto channel = required_attribute(mapping, "channelname", diagnostics);
         if (!filter || !channel) continue;
-        const std::string filter_name = lower(trim(*filter));
+        const std::string filter_name = to_lower(trim(*filter));
         if (std::find(filters.begin(), filters.end(), filter_name) == filters.end()) {
             diagnostics.error(mapping.where_attribute("filtername"),
                               "filter '" + trim(*filter) + "' is not a filter of the " +
                                   model::name_of(pattern.kind) + " pattern, expected " +
-                                  or_list(filters));
+                                  join(filters, ", ", " or "));
             continue;
         }
         pattern.mappings.emplace_back(filter_name, trim(*channel));
@@ -305,7 +291,8 @@ void check_pattern(const ChannelPattern& pattern, const std::vector<Channel>& ch
     for (const auto& [filter, channel_name] : pattern.mappings) {
         if (std::find(filters.begin(), filters.end(), filter) == filters.end()) {
             diagnostics.error(pattern.where, "filter '" + filter + "' is not a filter of the " +
-                                                 kind + " pattern, expected " + or_list(filters));
+                                                 kind + " pattern, expected " +
+                                                 join(filters, ", ", " or "));
             continue;
         }
         const bool found = std::any_of(channels.begin(), channels.end(),

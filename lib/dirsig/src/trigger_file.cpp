@@ -20,22 +20,6 @@ bool is_separator(char c) {
            c == ';';
 }
 
-/// The token as a finite number, if it is one (a leading '+' is accepted).
-std::optional<double> parse_number(std::string_view token) {
-    std::string_view digits = token;
-    if (!digits.empty() && digits.front() == '+') {
-        digits.remove_prefix(1);
-        if (digits.empty() || digits.front() == '-' || digits.front() == '+') return std::nullopt;
-    }
-    double value = 0.0;
-    const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value,
-                                           std::chars_format::general);
-    if (ec != std::errc() || end != digits.data() + digits.size() || !std::isfinite(value)) {
-        return std::nullopt;
-    }
-    return value;
-}
-
 }  // namespace
 
 std::vector<double> parse_trigger_times(std::string_view text, const std::string& file_name,
@@ -59,7 +43,7 @@ std::vector<double> parse_trigger_times(std::string_view text, const std::string
             while (i < text.size() && !is_separator(text[i]) && text[i] != '#') ++i;
             const std::string_view token = text.substr(begin, i - begin);
             const ErrorContext where{file_name, line, ""};
-            const std::optional<double> value = parse_number(token);
+            const std::optional<double> value = parse_double(token);  // the token has no blanks
             if (!value) {
                 any_error = true;
                 diagnostics.error(where, "trigger time \"" + std::string(token) +

@@ -14,6 +14,7 @@
 #include <system_error>
 
 #include "glint/core/error.h"
+#include "glint/core/text.h"
 
 namespace glint::io {
 namespace {
@@ -29,13 +30,6 @@ std::string one_line(std::string text) {
         if (c == '\n') c = ' ';
     }
     return text.empty() ? std::string("unknown OpenImageIO error") : text;
-}
-
-std::string lower(std::string_view text) {
-    std::string out(text);
-    std::transform(out.begin(), out.end(), out.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return out;
 }
 
 const char* oiio_format_name(ImageFormat format) {
@@ -137,7 +131,7 @@ const char* image_format_name(ImageFormat format) {
 }
 
 std::optional<ImageFormat> image_format_from_name(std::string_view name) {
-    const std::string n = lower(name);
+    const std::string n = to_lower(name);
     if (n == "png") return ImageFormat::png;
     if (n == "tif" || n == "tiff") return ImageFormat::tiff;
     if (n == "jpg" || n == "jpeg") return ImageFormat::jpeg;

@@ -7,16 +7,10 @@
 #include <string>
 
 #include "glint/core/error.h"
+#include "glint/core/text.h"
 
 namespace glint::io {
 namespace {
-
-std::string lower(std::string_view text) {
-    std::string out(text);
-    std::transform(out.begin(), out.end(), out.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return out;
-}
 
 OutputKind kind_of(ImageFormat format) {
     switch (format) {
@@ -37,7 +31,7 @@ OutputKind kind_of(ImageFormat format) {
 }  // namespace
 
 std::optional<OutputKind> output_kind_from_name(std::string_view name) {
-    if (lower(name) == "envi") return OutputKind::envi;
+    if (to_lower(name) == "envi") return OutputKind::envi;
     const auto format = image_format_from_name(name);
     if (!format) return std::nullopt;
     return kind_of(*format);
@@ -53,7 +47,7 @@ OutputKind output_kind_of(const std::filesystem::path& output, std::string_view 
         return *kind;
     }
     if (const auto image = image_format_from_extension(output)) return kind_of(*image);
-    const std::string ext = lower(output.extension().string());
+    const std::string ext = to_lower(output.extension().string());
     for (const char* envi : {".img", ".dat", ".raw", ".bsq", ".bil", ".bip", ".envi"}) {
         if (ext == envi) return OutputKind::envi;
     }

@@ -46,14 +46,8 @@ std::string describe_int_range(std::int64_t min, std::int64_t max) {
 }
 
 std::string describe_enum(std::initializer_list<std::string_view> allowed) {
-    std::string out = "one of ";
-    bool first = true;
-    for (std::string_view item : allowed) {
-        if (!first) out += ", ";
-        out.append(item);
-        first = false;
-    }
-    return out;
+    return "one of " +
+           join(std::span<const std::string_view>(allowed.begin(), allowed.size()), ", ");
 }
 
 std::optional<double> check_double(std::string_view text, const ErrorContext& where,

@@ -11,6 +11,7 @@
 #include <mutex>
 
 #include "glint/core/error.h"
+#include "glint/core/text.h"
 
 namespace glint::scene::detail {
 
@@ -82,12 +83,6 @@ std::string bytes_text(std::uint64_t bytes) {
     return std::to_string(bytes) + " bytes";
 }
 
-std::string lower(std::string text) {
-    std::transform(text.begin(), text.end(), text.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return text;
-}
-
 }  // namespace
 
 std::string embree_config(const DeviceSettings& settings) {
@@ -98,7 +93,7 @@ std::string embree_config(const DeviceSettings& settings) {
     };
     if (settings.threads > 0) add("threads=" + std::to_string(settings.threads));
     if (!settings.isa.empty()) {
-        const std::string isa = lower(settings.isa);
+        const std::string isa = to_lower(settings.isa);
         const bool known = std::any_of(std::begin(kEmbreeIsaNames), std::end(kEmbreeIsaNames),
                                        [&isa](const char* name) { return isa == name; });
         if (!known) {

@@ -34,16 +34,6 @@ std::string focal_plane_name(const ClockedFocalPlane& source) {
            quoted(source.focal_plane->name);
 }
 
-void merge(const Diagnostics& from, Diagnostics& into) {
-    for (const Diagnostic& d : from.items()) {
-        if (d.severity == Diagnostic::Severity::error) {
-            into.error(d.where, d.message);
-        } else {
-            into.warning(d.where, d.message);
-        }
-    }
-}
-
 /// An element count scaled by `factor`: rounded to the nearest integer, at least 1.
 double scaled_count(std::size_t count, double factor) {
     return std::max(1.0, std::round(static_cast<double>(count) * factor));

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -20,6 +21,14 @@ std::string to_lower(std::string_view text);
 
 /// True when `a` and `b` are equal ignoring ASCII case.
 bool iequals(std::string_view a, std::string_view b) noexcept;
+
+/// The items separated by `separator`, the last two by `last_separator` when one is given:
+/// join({"a", "b", "c"}, ", ", " or ") is "a, b or c".
+std::string join(std::span<const std::string_view> items, std::string_view separator,
+                 std::string_view last_separator = {});
+/// The same for strings.
+std::string join(std::span<const std::string> items, std::string_view separator,
+                 std::string_view last_separator = {});
 
 /// `text` without leading and trailing blanks (space, tab, CR, LF, FF, VT).
 std::string_view trim(std::string_view text) noexcept;
