@@ -3,12 +3,15 @@
 # CMakePresets.json and scripts/; this file only strings them together.
 #   make demo   install what is missing, build, run the default example
 #   make test   install what is missing, build, run the whole test suite (ctest)
+#   make install   install the build under PREFIX (default /usr/local; docs/install.md)
+#   make package   the .deb (cpack -G DEB) in build/<preset>/
 # PRESET=debug or PRESET=asan selects another build (default: release).
 
 PRESET ?= release
 BUILD_DIR := build/$(PRESET)
+PREFIX ?= /usr/local
 
-.PHONY: all deps configure build test demo bench clean format
+.PHONY: all deps configure build test demo bench clean format install package
 
 all: build
 
@@ -26,6 +29,12 @@ test: build
 
 demo: build
 	@examples/demo/run.sh $(BUILD_DIR)/bin out/demo
+
+install: build
+	@cmake --install $(BUILD_DIR) --prefix $(PREFIX)
+
+package: build
+	@cd $(BUILD_DIR) && cpack -G DEB
 
 bench: build
 	@bench/run.sh $(BUILD_DIR)/bin

@@ -1,9 +1,16 @@
 # SPDX-License-Identifier: Apache-2.0
 # One helper each for adding a library component, a tool and a test executable.
+# Libraries and tools install themselves (cmake/GlintInstall.cmake has the rest of the
+# package: config files, data, docs, examples, CPack).
+include(GNUInstallDirs)
+find_program(GLINT_HELP2MAN help2man DOC "help2man, for the tools' man pages (optional)")
 
 # glint_add_library(<component> [DEPENDS <targets>...])
 #   lib/<component>/src/*.cpp -> static library glint_<component> (alias glint::<component>),
-#   public headers under lib/<component>/include/glint/<component>/.
+#   public headers under lib/<component>/include/glint/<component>/. Installed (library,
+#   headers) and exported as glint::<component> in the glintTargets export set; the compiler
+#   warnings stay build-only ($<BUILD_INTERFACE:>), glint_standard and glint_sanitize are
+#   exported (GlintInstall.cmake).
 function(glint_add_library component)
     cmake_parse_arguments(ARG "" "" "DEPENDS;PRIVATE_DEPENDS" ${ARGN})
     file(GLOB sources CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/${component}/src/*.cpp")
@@ -14,16 +21,24 @@ function(glint_add_library component)
     add_library(glint_${component} STATIC ${sources})
     add_library(glint::${component} ALIAS glint_${component})
     target_include_directories(glint_${component}
-        PUBLIC "${CMAKE_CURRENT_SOURCE_DIR}/${component}/include"
+        PUBLIC "$<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/${component}/include>"
+               "$<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>"
         PRIVATE "${CMAKE_CURRENT_SOURCE_DIR}/${component}/src")
-    target_link_libraries(glint_${component} PUBLIC glint_standard glint_sanitize ${ARG_DEPENDS}
-        PRIVATE glint_warnings ${ARG_PRIVATE_DEPENDS})
+    target_link_libraries(glint_${component}
+        PUBLIC glint_standard glint_sanitize ${ARG_DEPENDS}
+        PRIVATE "$<BUILD_INTERFACE:glint_warnings>" ${ARG_PRIVATE_DEPENDS})
+    set_target_properties(glint_${component} PROPERTIES EXPORT_NAME ${component})
+    install(TARGETS glint_${component} EXPORT glintTargets
+        ARCHIVE DESTINATION "${CMAKE_INSTALL_LIBDIR}")
+    install(DIRECTORY "${CMAKE_CURRENT_SOURCE_DIR}/${component}/include/"
+        DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}" FILES_MATCHING PATTERN "*.h")
 endfunction()
 
-# glint_add_tool(<name> DEPENDS <targets>...)
-#   tools/<name>/*.cpp -> executable glint-<name>.
+# glint_add_tool(<name> [DESCRIPTION <text>] DEPENDS <targets>...)
+#   tools/<name>/*.cpp -> executable glint-<name>, installed to bin/, with a man page
+#   (glint_add_man_page).
 function(glint_add_tool name)
-    cmake_parse_arguments(ARG "" "" "DEPENDS" ${ARGN})
+    cmake_parse_arguments(ARG "" "DESCRIPTION" "DEPENDS" ${ARGN})
     file(GLOB sources CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/${name}/*.cpp")
     if(NOT sources)
         return()
@@ -32,6 +47,36 @@ function(glint_add_tool name)
     target_link_libraries(glint-${name} PRIVATE glint_standard glint_warnings glint_sanitize
         ${ARG_DEPENDS})
     set_target_properties(glint-${name} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/bin")
+    install(TARGETS glint-${name} RUNTIME DESTINATION "${CMAKE_INSTALL_BINDIR}")
+    glint_add_man_page(glint-${name} "${ARG_DESCRIPTION}")
+endfunction()
+
+# glint_add_man_page(<tool target> <one-line description>)
+#   <build>/man/<tool>.1 from the tool's --help by help2man (target glint-man, part of the
+#   default build), installed to share/man/man1. Skipped when help2man is missing
+#   (cmake/GlintInstall.cmake says so once).
+function(glint_add_man_page tool description)
+    if(NOT GLINT_HELP2MAN)
+        return()
+    endif()
+    if(description STREQUAL "")
+        set(description "a glint tool")
+    endif()
+    set(page "${CMAKE_BINARY_DIR}/man/${tool}.1")
+    add_custom_command(OUTPUT "${page}"
+        COMMAND "${CMAKE_COMMAND}" -E make_directory "${CMAKE_BINARY_DIR}/man"
+        COMMAND "${GLINT_HELP2MAN}" --no-info --no-discard-stderr
+            "--version-string=${PROJECT_VERSION}" "--name=${description}"
+            "--output=${page}" "$<TARGET_FILE:${tool}>"
+        DEPENDS ${tool}
+        COMMENT "Generating man page ${tool}.1"
+        VERBATIM)
+    if(NOT TARGET glint-man)
+        add_custom_target(glint-man ALL)
+    endif()
+    add_custom_target(${tool}-man DEPENDS "${page}")
+    add_dependencies(glint-man ${tool}-man)
+    install(FILES "${page}" DESTINATION "${CMAKE_INSTALL_MANDIR}/man1")
 endfunction()
 
 # glint_add_unit_test(<component> DEPENDS <targets>...)

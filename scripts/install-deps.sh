@@ -13,6 +13,8 @@ packages=(
     libembree-dev libopenimageio-dev libcli11-dev libyaml-cpp-dev libtinyxml2-dev
     nlohmann-json3-dev libgtest-dev libgmock-dev libtbb-dev libeigen3-dev
     libgeographiclib-dev libtinyobjloader-dev zlib1g-dev
+    # the tools' man pages (generated from --help; optional: skipped without it)
+    help2man
     # programs glint runs and test oracles
     ffmpeg openimageio-tools gdal-bin python3 python3-gdal python3-numpy python3-spectral
     python3-sgp4 python3-astropy python3-opencv jq

@@ -55,8 +55,8 @@ void RenderCli::configure(CLI::App& app) {
                    "Write DIRSIG's capture list (captures, time windows, files) to FILE")
         ->type_name("FILE");
     app.add_option("--data-dir", m_options.render.data_dir,
-                   "glint's data folder (solar spectrum); default $GLINT_DATA_DIR or the "
-                   "source tree's data/")
+                   "glint's data folder (solar spectrum); default $GLINT_DATA_DIR, else "
+                   "<exe dir>/../share/glint when installed, else the source tree's data/")
         ->type_name("DIR");
 }
 

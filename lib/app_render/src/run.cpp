@@ -8,6 +8,7 @@
 
 #include "glint/app_render/render_tool.h"
 #include "glint/core/error.h"
+#include "glint/core/install_paths.h"
 #include "glint/core/runner.h"
 #include "glint/core/text.h"
 #include "glint/inputs/load.h"
@@ -83,10 +84,13 @@ std::uint64_t parse_memory_size(const std::string& text) {
 }
 
 std::filesystem::path default_data_dir() {
-    if (const char* dir = std::getenv("GLINT_DATA_DIR"); dir != nullptr && *dir != '\0') {
-        return dir;
+    DataDirCandidates candidates;
+    if (const char* dir = std::getenv("GLINT_DATA_DIR"); dir != nullptr) {
+        candidates.environment = dir;
     }
-    return GLINT_SOURCE_DATA_DIR;
+    candidates.executable = executable_path();
+    candidates.built_in = GLINT_SOURCE_DATA_DIR;
+    return data_dir_lookup(candidates);
 }
 
 int run(Options options, Context& ctx, std::ostream& out) {
@@ -97,6 +101,7 @@ int run(Options options, Context& ctx, std::ostream& out) {
     render.arguments = options.arguments;
     render.radiance_only = options.radiance_only;
     if (render.data_dir.empty()) render.data_dir = default_data_dir();
+    ctx.log.info("Data folder: " + render.data_dir.string());
     if (!options.schedule.empty()) {
         render.only_captures = sensor::read_schedule_selection(options.schedule);
     }

@@ -35,8 +35,9 @@ radiometry::Convergence parse_convergence(const std::string& text);
 /// optional trailing "B" or "iB"). Throws glint::Error (usage).
 std::uint64_t parse_memory_size(const std::string& text);
 
-/// The data folder: $GLINT_DATA_DIR when set, else the source tree's data/ this build was
-/// configured from.
+/// The data folder: $GLINT_DATA_DIR when set, else <exe dir>/../share/glint when it holds
+/// solar/astm_g173.csv (an installed glint), else the source tree's data/ this build was
+/// configured from (glint::data_dir_lookup, glint/core/install_paths.h).
 std::filesystem::path default_data_dir();
 
 /// Runs glint-render; returns the exit status.
