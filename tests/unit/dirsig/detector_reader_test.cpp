@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "platform_test_util.h"
 
@@ -114,19 +115,8 @@ TEST(DetectorReader, ProductOverTwoToThe31Refused) {
     EXPECT_EQ(plane_of(fine.platform, 0, 0).detector_array.y_count, 2147u);
 }
 
-TEST(DetectorReader, CountErrors) {
+TEST(DetectorReader, NegativeCountIsOutOfRange) {
     TempDir dir;
-    const std::string text =
-        with_detector(array(std::string(kClock) + "\n<xelementcount>0</xelementcount>\n"
-                                                  "<yelementcount>12.5</yelementcount>\n"
-                                                  "<xelementspacing>5</xelementspacing>\n"
-                                                  "<yelementspacing>5</yelementspacing>"));
-    const Read read = read_text(dir, text);
-    expect_diagnostic(read, "xelementcount 0 is out of range, expected an integer in [1, 1000000]",
-                      line_of(text, "<xelementcount>"),
-                      std::string(kDetectorPath) + "/xelementcount");
-    expect_diagnostic(read, "expected an integer, got \"12.5\"", line_of(text, "<yelementcount>"),
-                      std::string(kDetectorPath) + "/yelementcount");
     const Read negative = read_text(
         dir, with_detector(array(std::string(kClock) +
                                  "\n<xelementcount>-3</xelementcount>\n<yelementcount>2"
@@ -134,12 +124,6 @@ TEST(DetectorReader, CountErrors) {
                                  "<yelementspacing>5</yelementspacing>")));
     EXPECT_NE(find(negative.diagnostics, "xelementcount -3 is out of range"), nullptr)
         << dump(negative.diagnostics);
-    const Read missing = read_text(dir, with_detector(array(kClock)));
-    const int line = line_of(with_detector(array(kClock)), "<detectorarray");
-    expect_diagnostic(missing, "missing required element <xelementcount>", line, kDetectorPath);
-    expect_diagnostic(missing, "missing required element <yelementcount>", line, kDetectorPath);
-    expect_diagnostic(missing, "missing required element <xelementspacing>", line, kDetectorPath);
-    expect_diagnostic(missing, "missing required element <yelementspacing>", line, kDetectorPath);
 }
 
 // ---- sizes and units -------------------------------------------------------------------------
@@ -232,24 +216,12 @@ TEST(DetectorReader, ExtrasWarnAndUnknownsWarn) {
 
 // ---- rolling readout ------------------------------------------------------------------------
 
-TEST(DetectorReader, RollingReadoutNeedsLineTime) {
+TEST(DetectorReader, LineTimeWithoutRollingReadoutAndBadRollingReadout) {
     TempDir dir;
     const std::string body = std::string(kClock) +
                              "\n<xelementcount>2</xelementcount><yelementcount>2</yelementcount>"
                              "<xelementspacing>2</xelementspacing><yelementspacing>2"
                              "</yelementspacing>";
-    const std::string text = with_detector(array(body, " rollingreadout=\"true\""));
-    const Read missing = read_text(dir, text);
-    expect_diagnostic(missing,
-                      "rollingreadout=\"true\" needs <linetime> (seconds between the readout of "
-                      "consecutive rows)",
-                      line_of(text, "<detectorarray"),
-                      std::string(kDetectorPath) + "@rollingreadout");
-    const std::string zero_text =
-        with_detector(array(body + "\n<linetime>0</linetime>", " rollingreadout=\"yes\""));
-    const Read zero = read_text(dir, zero_text);
-    expect_diagnostic(zero, "expected a number > 0, got \"0\"", line_of(zero_text, "<linetime>"),
-                      std::string(kDetectorPath) + "/linetime");
     const std::string ignored_text = with_detector(array(body + "\n<linetime>1e-5</linetime>"));
     const Read ignored = read_text(dir, ignored_text);
     EXPECT_FALSE(ignored.diagnostics.has_errors());
@@ -271,46 +243,6 @@ std::string with_clock(const std::string& clock, const std::string& clocktable =
                          clocktable);
 }
 
-TEST(DetectorReader, ClockTypeErrors) {
-    TempDir dir;
-    const std::string clock_path = std::string(kDetectorPath) + "/clock";
-    const std::string unknown_text = with_clock("<clock type=\"quartz\"/>");
-    const Read unknown = read_text(dir, unknown_text);
-    expect_diagnostic(unknown,
-                      "unknown clock type \"quartz\", expected independent, synchronous or "
-                      "external (also externaltrigger, trigger, irregular)",
-                      line_of(unknown_text, "<detectorarray") + 1, clock_path + "@type");
-    const std::string untyped_text = with_clock("<clock><rate>1</rate></clock>");
-    const Read untyped = read_text(dir, untyped_text);
-    expect_diagnostic(untyped, "missing required attribute type",
-                      line_of(untyped_text, "<detectorarray") + 1, clock_path);
-    const std::string no_clock_text = with_detector(
-        array("<xelementcount>2</xelementcount><yelementcount>2</yelementcount><xelementspacing>2"
-              "</xelementspacing><yelementspacing>2</yelementspacing>"));
-    const Read no_clock = read_text(dir, no_clock_text);
-    expect_diagnostic(no_clock, "missing required element <clock>",
-                      line_of(no_clock_text, "<detectorarray"), kDetectorPath);
-}
-
-TEST(DetectorReader, IndependentClockErrors) {
-    TempDir dir;
-    const std::string clock_path = std::string(kDetectorPath) + "/clock";
-    const std::string text = with_clock(
-        "<clock type=\"independent\" temporalunits=\"seconds\">\n<rate>-10</rate>\n"
-        "<offset>soon</offset>\n</clock>");
-    const Read read = read_text(dir, text);
-    expect_diagnostic(read, "unknown temporalunits \"seconds\", expected hertz",
-                      line_of(text, "<detectorarray") + 1, clock_path + "@temporalunits");
-    expect_diagnostic(read, "expected a number > 0, got \"-10\"", line_of(text, "<rate>"),
-                      clock_path + "/rate");
-    expect_diagnostic(read, "expected a number, got \"soon\"", line_of(text, "<offset>"),
-                      clock_path + "/offset");
-    const std::string none_text = with_clock("<clock type=\"independent\"/>");
-    const Read none = read_text(dir, none_text);
-    expect_diagnostic(none, "missing required element <rate>",
-                      line_of(none_text, "<detectorarray") + 1, clock_path);
-}
-
 TEST(DetectorReader, SynchronousClockNeedsAnExistingMaster) {
     TempDir dir;
     const std::string table =
@@ -330,22 +262,117 @@ TEST(DetectorReader, SynchronousClockNeedsAnExistingMaster) {
     const Read ok =
         read_text(dir, with_clock("<clock type=\"synchronous\" master=\"Main\"/>", table));
     EXPECT_FALSE(ok.diagnostics.has_errors()) << dump(ok.diagnostics);
-
-    const std::string bad_text = with_clock(
-        "<clock type=\"synchronous\">\n<divider>0</divider>\n<offset>-1</offset>\n</clock>", table);
-    const Read bad = read_text(dir, bad_text);
-    expect_diagnostic(bad, "synchronous clock has no master, expected @master or <master>",
-                      line_of(bad_text, "<clock type=\"synchronous\""), clock_path);
-    expect_diagnostic(bad, "expected an integer in [1, 1000000000], got \"0\"",
-                      line_of(bad_text, "<divider>"), clock_path + "/divider");
-    expect_diagnostic(bad, "expected an integer in [0, 1000000000], got \"-1\"",
-                      line_of(bad_text, "<offset>"), clock_path + "/offset");
-    const std::string both_text = with_clock(
-        "<clock type=\"synchronous\" master=\"Main\">\n<master>Main</master>\n</clock>", table);
-    const Read both = read_text(dir, both_text);
-    expect_diagnostic(both, "both @master and <master> given", line_of(both_text, "<master>"),
-                      clock_path + "/master");
 }
+
+// ---- one bad array or clock, its diagnostics -------------------------------------------------
+
+/// A platform text and one error it must give, on the line of `anchor` plus `below`.
+struct DetectorErrorCase {
+    std::string name;
+    std::string text;
+    std::string message;  ///< part of the error's message
+    std::string anchor;   ///< text whose line (line_of) the error is on...
+    int below = 0;        ///< ...plus this many lines
+    std::string element;
+};
+
+class DetectorReaderErrors : public ::testing::TestWithParam<DetectorErrorCase> {};
+
+TEST_P(DetectorReaderErrors, MessageLineAndElement) {
+    const DetectorErrorCase& c = GetParam();
+    TempDir dir;
+    const Read read = read_text(dir, c.text);
+    expect_diagnostic(read, c.message, line_of(c.text, c.anchor) + c.below, c.element);
+}
+
+std::vector<DetectorErrorCase> detector_errors() {
+    const std::string array_path = kDetectorPath;
+    const std::string clock_path = array_path + "/clock";
+    const std::string bad_counts =
+        with_detector(array(std::string(kClock) + "\n<xelementcount>0</xelementcount>\n"
+                                                  "<yelementcount>12.5</yelementcount>\n"
+                                                  "<xelementspacing>5</xelementspacing>\n"
+                                                  "<yelementspacing>5</yelementspacing>"));
+    const std::string no_counts = with_detector(array(kClock));
+    const std::string rolling_body = std::string(kClock) +
+                                     "\n<xelementcount>2</xelementcount><yelementcount>2"
+                                     "</yelementcount><xelementspacing>2</xelementspacing>"
+                                     "<yelementspacing>2</yelementspacing>";
+    const std::string independent = with_clock(
+        "<clock type=\"independent\" temporalunits=\"seconds\">\n<rate>-10</rate>\n"
+        "<offset>soon</offset>\n</clock>");
+    const std::string table =
+        "<clocktable><clock name=\"Main\" type=\"independent\" temporalunits=\"hertz\">"
+        "<rate>50</rate></clock></clocktable>";
+    const std::string synchronous = with_clock(
+        "<clock type=\"synchronous\">\n<divider>0</divider>\n<offset>-1</offset>\n</clock>", table);
+    return {
+        // counts
+        {"CountZero", bad_counts,
+         "xelementcount 0 is out of range, expected an integer in [1, 1000000]", "<xelementcount>",
+         0, array_path + "/xelementcount"},
+        {"CountNotAnInteger", bad_counts, "expected an integer, got \"12.5\"", "<yelementcount>", 0,
+         array_path + "/yelementcount"},
+        {"MissingXCount", no_counts, "missing required element <xelementcount>", "<detectorarray",
+         0, array_path},
+        {"MissingYCount", no_counts, "missing required element <yelementcount>", "<detectorarray",
+         0, array_path},
+        {"MissingXSpacing", no_counts, "missing required element <xelementspacing>",
+         "<detectorarray", 0, array_path},
+        {"MissingYSpacing", no_counts, "missing required element <yelementspacing>",
+         "<detectorarray", 0, array_path},
+        // rolling readout
+        {"RollingReadoutNeedsLineTime",
+         with_detector(array(rolling_body, " rollingreadout=\"true\"")),
+         "rollingreadout=\"true\" needs <linetime> (seconds between the readout of consecutive "
+         "rows)",
+         "<detectorarray", 0, array_path + "@rollingreadout"},
+        {"RollingReadoutZeroLineTime",
+         with_detector(array(rolling_body + "\n<linetime>0</linetime>", " rollingreadout=\"yes\"")),
+         "expected a number > 0, got \"0\"", "<linetime>", 0, array_path + "/linetime"},
+        // clock types
+        {"UnknownClockType", with_clock("<clock type=\"quartz\"/>"),
+         "unknown clock type \"quartz\", expected independent, synchronous or external (also "
+         "externaltrigger, trigger, irregular)",
+         "<detectorarray", 1, clock_path + "@type"},
+        {"UntypedClock", with_clock("<clock><rate>1</rate></clock>"),
+         "missing required attribute type", "<detectorarray", 1, clock_path},
+        {"NoClock",
+         with_detector(array("<xelementcount>2</xelementcount><yelementcount>2</yelementcount>"
+                             "<xelementspacing>2</xelementspacing><yelementspacing>2"
+                             "</yelementspacing>")),
+         "missing required element <clock>", "<detectorarray", 0, array_path},
+        // independent clocks
+        {"IndependentClockUnits", independent, "unknown temporalunits \"seconds\", expected hertz",
+         "<detectorarray", 1, clock_path + "@temporalunits"},
+        {"IndependentClockNegativeRate", independent, "expected a number > 0, got \"-10\"",
+         "<rate>", 0, clock_path + "/rate"},
+        {"IndependentClockBadOffset", independent, "expected a number, got \"soon\"", "<offset>", 0,
+         clock_path + "/offset"},
+        {"IndependentClockWithoutRate", with_clock("<clock type=\"independent\"/>"),
+         "missing required element <rate>", "<detectorarray", 1, clock_path},
+        // synchronous clocks
+        {"SynchronousClockWithoutMaster", synchronous,
+         "synchronous clock has no master, expected @master or <master>",
+         "<clock type=\"synchronous\"", 0, clock_path},
+        {"SynchronousClockZeroDivider", synchronous,
+         "expected an integer in [1, 1000000000], got \"0\"", "<divider>", 0,
+         clock_path + "/divider"},
+        {"SynchronousClockNegativeOffset", synchronous,
+         "expected an integer in [0, 1000000000], got \"-1\"", "<offset>", 0,
+         clock_path + "/offset"},
+        {"SynchronousClockMasterTwice",
+         with_clock("<clock type=\"synchronous\" master=\"Main\">\n<master>Main</master>\n</clock>",
+                    table),
+         "both @master and <master> given", "<master>", 0, clock_path + "/master"},
+    };
+}
+
+INSTANTIATE_TEST_SUITE_P(DetectorReader, DetectorReaderErrors,
+                         ::testing::ValuesIn(detector_errors()),
+                         [](const ::testing::TestParamInfo<DetectorErrorCase>& test_case) {
+                             return test_case.param.name;
+                         });
 
 TEST(DetectorReader, ClockTableErrors) {
     TempDir dir;

@@ -193,7 +193,7 @@ TEST(DirsigSceneReaderErrors, MissingGlist) {
     EXPECT_EQ(e.where.element, "classicscene/geometrylist/geometrylistinclude[A]");
 }
 
-TEST(DirsigSceneReaderErrors, OdbIncludeAndGdbGeometry) {
+TEST(DirsigSceneReaderErrors, OdbInclude) {
     TempDir dir;
     write(dir / "s.scene", "<classicscene>\n<matfilename>" +
                                (kData / "materials/site.mat").string() +
@@ -205,80 +205,115 @@ TEST(DirsigSceneReaderErrors, OdbIncludeAndGdbGeometry) {
     const Diagnostic e = only_error(diagnostics);
     EXPECT_THAT(e.message, HasSubstr("odb geometry (old.odb) is not supported"));
     EXPECT_EQ(e.where.line, 4);
-
-    Bad bad;
-    bad.run(
-        "<geometrylist>\n<object>\n<basegeometry>\n<gdb><filename>house.gdb</filename></gdb>\n"
-        "</basegeometry>\n<staticinstance/>\n</object>\n</geometrylist>\n");
-    const Diagnostic g = only_error(bad.diagnostics);
-    EXPECT_THAT(g.message, HasSubstr("gdb geometry (house.gdb) is not supported"));
-    EXPECT_EQ(g.where.line, 4);
-    EXPECT_EQ(g.where.element, "geometrylist/object/basegeometry/gdb");
 }
 
-TEST(DirsigSceneReaderErrors, UnknownBaseGeometry) {
+// ---- one bad glist, one error ----------------------------------------------------------------
+
+/// A glist (run through Bad) and its only error: the message (whole, or a part of it), line
+/// and element path.
+struct GlistErrorCase {
+    const char* name;
+    const char* glist;
+    const char* message;
+    bool whole_message;  ///< the message is all of it, not a part
+    int line;
+    const char* element;
+};
+
+class DirsigGlistErrors : public ::testing::TestWithParam<GlistErrorCase> {};
+
+TEST_P(DirsigGlistErrors, OnlyErrorMessageLineAndElement) {
+    const GlistErrorCase& c = GetParam();
     Bad bad;
-    bad.run(
-        "<geometrylist>\n<object>\n<basegeometry>\n<checkers><matid>1</matid></checkers>\n"
-        "</basegeometry>\n<staticinstance/>\n</object>\n</geometrylist>\n");
+    bad.run(c.glist);
     const Diagnostic e = only_error(bad.diagnostics);
-    EXPECT_THAT(e.message, HasSubstr("unknown basegeometry <checkers>"));
-    EXPECT_EQ(e.where.line, 4);
-    EXPECT_EQ(e.where.element, "geometrylist/object/basegeometry/checkers");
+    if (c.whole_message) {
+        EXPECT_EQ(e.message, c.message);
+    } else {
+        EXPECT_THAT(e.message, HasSubstr(c.message));
+    }
+    EXPECT_EQ(e.where.line, c.line);
+    EXPECT_EQ(e.where.element, c.element);
 }
 
-TEST(DirsigSceneReaderErrors, MatrixWithFifteenValues) {
-    Bad bad;
-    bad.run(
-        "<geometrylist>\n<object>\n<basegeometry><groundplane><matid>1</matid></groundplane>"
-        "</basegeometry>\n<staticinstance name=\"m\">\n"
-        "<matrix>1 0 0 0 0 1 0 0 0 0 1 0 0 0 0</matrix>\n</staticinstance>\n</object>\n"
-        "</geometrylist>\n");
-    const Diagnostic e = only_error(bad.diagnostics);
-    EXPECT_EQ(e.message, "matrix has 15 values, expected 16");
-    EXPECT_EQ(e.where.line, 5);
-    EXPECT_EQ(e.where.element, "geometrylist/object/staticinstance[m]/matrix");
-}
+const GlistErrorCase kGlistErrors[] = {
+    {"GdbGeometry",
+     "<geometrylist>\n<object>\n<basegeometry>\n<gdb><filename>house.gdb</filename></gdb>\n"
+     "</basegeometry>\n<staticinstance/>\n</object>\n</geometrylist>\n",
+     "gdb geometry (house.gdb) is not supported", false, 4, "geometrylist/object/basegeometry/gdb"},
+    {"UnknownBaseGeometry",
+     "<geometrylist>\n<object>\n<basegeometry>\n<checkers><matid>1</matid></checkers>\n"
+     "</basegeometry>\n<staticinstance/>\n</object>\n</geometrylist>\n",
+     "unknown basegeometry <checkers>", false, 4, "geometrylist/object/basegeometry/checkers"},
+    {"MatrixWithFifteenValues",
+     "<geometrylist>\n<object>\n<basegeometry><groundplane><matid>1</matid></groundplane>"
+     "</basegeometry>\n<staticinstance name=\"m\">\n"
+     "<matrix>1 0 0 0 0 1 0 0 0 0 1 0 0 0 0</matrix>\n</staticinstance>\n</object>\n"
+     "</geometrylist>\n",
+     "matrix has 15 values, expected 16", true, 5, "geometrylist/object/staticinstance[m]/matrix"},
+    {"UnknownMaterialId",
+     "<geometrylist>\n<object>\n<basegeometry>\n<groundplane>\n<matid>7</matid>\n"
+     "</groundplane>\n</basegeometry>\n<staticinstance/>\n</object>\n</geometrylist>\n",
+     "unknown material id \"7\"", true, 5, "geometrylist/object/basegeometry/groundplane/matid"},
+    {"MissingNestedGlist",
+     "<geometrylist>\n<object>\n<basegeometry>\n<glist><filename>sub/none.glist"
+     "</filename></glist>\n</basegeometry>\n<staticinstance/>\n</object>\n"
+     "</geometrylist>\n",
+     "glist sub/none.glist not found", false, 4, "geometrylist/object/basegeometry/glist/filename"},
+};
 
-TEST(DirsigSceneReaderErrors, UnknownMaterialId) {
-    Bad bad;
-    bad.run(
-        "<geometrylist>\n<object>\n<basegeometry>\n<groundplane>\n<matid>7</matid>\n"
-        "</groundplane>\n</basegeometry>\n<staticinstance/>\n</object>\n</geometrylist>\n");
-    const Diagnostic e = only_error(bad.diagnostics);
-    EXPECT_EQ(e.message, "unknown material id \"7\"");
-    EXPECT_EQ(e.where.line, 5);
-    EXPECT_EQ(e.where.element, "geometrylist/object/basegeometry/groundplane/matid");
-}
+INSTANTIATE_TEST_SUITE_P(DirsigSceneReader, DirsigGlistErrors, ::testing::ValuesIn(kGlistErrors),
+                         [](const ::testing::TestParamInfo<GlistErrorCase>& test_case) {
+                             return std::string(test_case.param.name);
+                         });
 
-TEST(DirsigSceneReaderErrors, BadCurveFileRow) {
+// ---- one bad curve file row, one error --------------------------------------------------------
+
+/// The rows of r.txt, the REFLECTANCE_PROP curve file of material 5, and the only error: a
+/// part of its message and, where checked, its line in r.txt and element path.
+struct CurveFileCase {
+    const char* name;
+    const char* rows;
+    const char* message;
+    int line = 0;              ///< 0: not checked
+    const char* element = "";  ///< "": not checked
+};
+
+class DirsigCurveFileErrors : public ::testing::TestWithParam<CurveFileCase> {};
+
+TEST_P(DirsigCurveFileErrors, OnlyError) {
+    const CurveFileCase& c = GetParam();
     TempDir dir;
     write(dir / "m.mat",
           "MATERIAL_ENTRY {\n  ID = 5\n  SURFACE_PROPERTIES {\n    REFLECTANCE_PROP {\n"
           "      TXT_FILENAME = r.txt\n    }\n  }\n}\n");
-    write(dir / "r.txt", "0.4 0.1\n0.5 abc\n");
+    write(dir / "r.txt", c.rows);
     Diagnostics diagnostics;
-    const auto materials = read_dirsig_materials(dir / "m.mat", {}, diagnostics);
+    read_dirsig_materials(dir / "m.mat", {}, diagnostics);
     const Diagnostic e = only_error(diagnostics);
-    EXPECT_THAT(e.message, HasSubstr("expected two numbers, got \"0.5\" and \"abc\""));
-    EXPECT_EQ(e.where.file, (dir / "r.txt").string());
-    EXPECT_EQ(e.where.line, 2);
-    EXPECT_EQ(e.where.element,
-              "MATERIAL_ENTRY[5]/SURFACE_PROPERTIES/REFLECTANCE_PROP/TXT_FILENAME");
-
-    write(dir / "r.txt", "0.4 0.1 7\n");
-    Diagnostics d2;
-    read_dirsig_materials(dir / "m.mat", {}, d2);
-    EXPECT_THAT(only_error(d2).message, HasSubstr("expected 2 columns"));
-    write(dir / "r.txt", "0.4 0.1\n0.3 0.2\n");
-    Diagnostics d3;
-    read_dirsig_materials(dir / "m.mat", {}, d3);
-    EXPECT_THAT(only_error(d3).message, HasSubstr("not positive and strictly increasing"));
-    write(dir / "r.txt", "0.4 1.5\n");
-    Diagnostics d4;
-    read_dirsig_materials(dir / "m.mat", {}, d4);
-    EXPECT_THAT(only_error(d4).message, HasSubstr("reflectance 1.5 is outside [0, 1]"));
+    EXPECT_THAT(e.message, HasSubstr(c.message));
+    if (c.line != 0) {
+        EXPECT_EQ(e.where.file, (dir / "r.txt").string());
+        EXPECT_EQ(e.where.line, c.line);
+    }
+    if (*c.element != '\0') {
+        EXPECT_EQ(e.where.element, c.element);
+    }
 }
+
+const CurveFileCase kCurveFileErrors[] = {
+    {"RowNotTwoNumbers", "0.4 0.1\n0.5 abc\n", "expected two numbers, got \"0.5\" and \"abc\"", 2,
+     "MATERIAL_ENTRY[5]/SURFACE_PROPERTIES/REFLECTANCE_PROP/TXT_FILENAME"},
+    {"ThreeColumns", "0.4 0.1 7\n", "expected 2 columns"},
+    {"DecreasingWavelengths", "0.4 0.1\n0.3 0.2\n", "not positive and strictly increasing"},
+    {"ReflectanceAboveOne", "0.4 1.5\n", "reflectance 1.5 is outside [0, 1]"},
+};
+
+INSTANTIATE_TEST_SUITE_P(DirsigSceneReader, DirsigCurveFileErrors,
+                         ::testing::ValuesIn(kCurveFileErrors),
+                         [](const ::testing::TestParamInfo<CurveFileCase>& test_case) {
+                             return std::string(test_case.param.name);
+                         });
 
 TEST(DirsigSceneReaderErrors, MaterialProblems) {
     TempDir dir;
@@ -302,7 +337,7 @@ TEST(DirsigSceneReaderErrors, MaterialProblems) {
     EXPECT_EQ(diagnostics.warning_count(), 2u) << all;
 }
 
-TEST(DirsigSceneReaderErrors, NestedGlistCycleAndBadMotion) {
+TEST(DirsigSceneReaderErrors, GlistIncludingItselfAndBadMotion) {
     Bad bad;
     bad.run(
         "<geometrylist>\n<object>\n<basegeometry><glist><filename>g.glist</filename></glist>"
@@ -313,16 +348,6 @@ TEST(DirsigSceneReaderErrors, NestedGlistCycleAndBadMotion) {
     EXPECT_THAT(all, HasSubstr("g.glist:3: geometrylist/object/basegeometry/glist/filename: "
                                "glist g.glist includes itself"));
     EXPECT_THAT(all, HasSubstr("g.glist:9: geometrylist/object/dynamicinstance[d]/motion@type"));
-
-    Bad missing;
-    missing.run(
-        "<geometrylist>\n<object>\n<basegeometry>\n<glist><filename>sub/none.glist"
-        "</filename></glist>\n</basegeometry>\n<staticinstance/>\n</object>\n"
-        "</geometrylist>\n");
-    const Diagnostic e = only_error(missing.diagnostics);
-    EXPECT_THAT(e.message, HasSubstr("glist sub/none.glist not found"));
-    EXPECT_EQ(e.where.line, 4);
-    EXPECT_EQ(e.where.element, "geometrylist/object/basegeometry/glist/filename");
 }
 
 TEST(DirsigSceneReaderErrors, BadOrigin) {

@@ -7,6 +7,7 @@
 
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "platform_test_util.h"
 
@@ -127,15 +128,6 @@ TEST(MountReader, MountsFixtureFieldByField) {
 
 // ---- types ----------------------------------------------------------------------------------
 
-TEST(MountReader, UnknownMountType) {
-    TempDir dir;
-    const Read read = read_text(dir, with_mount("<mount name=\"M\" type=\"gyro\"/>"));
-    expect_diagnostic(read,
-                      "unknown mount type \"gyro\", expected static, commanded, tabulated, whisk, "
-                      "tracking, lemniscate, line or scripted",
-                      5, std::string(kMountPath) + "@type");
-}
-
 TEST(MountReader, UnsupportedTypesWarnAndHoldStatic) {
     TempDir dir;
     const Read read = read_text(
@@ -181,17 +173,6 @@ TEST(MountReader, EveryRotationOrderPermutationIsAccepted) {
 
 // ---- commanded / tabulated -------------------------------------------------------------------
 
-TEST(MountReader, CommandedNeedsDataAndEntries) {
-    TempDir dir;
-    const Read no_data = read_text(dir, with_mount("<mount name=\"M\" type=\"commanded\"/>"));
-    expect_diagnostic(no_data, "missing required element <data> (a commanded mount needs a table",
-                      5, kMountPath);
-    const Read no_entry =
-        read_text(dir, with_mount("<mount name=\"M\" type=\"commanded\">\n<data/>\n</mount>"));
-    expect_diagnostic(no_entry, "commanded mount has no <entry>, expected at least one", 6,
-                      std::string(kMountPath) + "/data");
-}
-
 TEST(MountReader, CommandedEntryErrors) {
     TempDir dir;
     const std::string text = with_mount(
@@ -235,94 +216,9 @@ TEST(MountReader, TabulatedPeriod) {
                                   "</datetime></entry></data></mount>"));
     ASSERT_FALSE(constant.diagnostics.has_errors());
     EXPECT_FALSE(constant.platform.attachments.at(0).mounts.at(0).period_s);
-
-    const Read short_period =
-        read_text(dir, with_mount("<mount name=\"M\" type=\"tabulated\">\n<data period=\"2\">" +
-                                  entries + "</data></mount>"));
-    expect_diagnostic(short_period,
-                      "period 2 s is shorter than the last entry time 3 s, expected a period >= "
-                      "the last time",
-                      6, std::string(kMountPath) + "/data@period");
-    const Read negative = read_text(
-        dir, with_mount("<mount name=\"M\" type=\"tabulated\">\n<data>\n<period>-1</period>" +
-                        entries + "</data></mount>"));
-    expect_diagnostic(negative, "expected a number > 0, got \"-1\"", 7,
-                      std::string(kMountPath) + "/data/period");
-    const Read both =
-        read_text(dir, with_mount("<mount name=\"M\" type=\"tabulated\">\n<data period=\"5\">\n"
-                                  "<period>5</period>" +
-                                  entries + "</data></mount>"));
-    expect_diagnostic(both, "both @period and <period> given", 7,
-                      std::string(kMountPath) + "/data/period");
-}
-
-// ---- whisk -----------------------------------------------------------------------------------
-
-TEST(MountReader, WhiskErrors) {
-    TempDir dir;
-    const Read no_data = read_text(dir, with_mount("<mount name=\"M\" type=\"whisk\"/>"));
-    expect_diagnostic(no_data, "missing required element <data> (a whisk mount needs its scan)", 5,
-                      kMountPath);
-
-    const std::string text = with_mount(
-        "<mount name=\"M\" type=\"whisk\">\n<data>\n<axis>diagonal</axis>\n"
-        "<minimumangle>10</minimumangle>\n<maximumangle>-10</maximumangle>\n<rate>0</rate>\n"
-        "<profile>square</profile>\n</data>\n</mount>");
-    const Read read = read_text(dir, text);
-    const std::string data = std::string(kMountPath) + "/data";
-    expect_diagnostic(read, "expected one of acrosstrack, alongtrack, got \"diagonal\"", 7,
-                      data + "/axis");
-    expect_diagnostic(read,
-                      "maximumangle -10 is less than minimumangle 10, expected minimumangle <= "
-                      "maximumangle",
-                      9, data + "/maximumangle");
-    expect_diagnostic(read, "expected a number > 0, got \"0\"", 10, data + "/rate");
-    expect_diagnostic(read, "expected one of sinusoidal, linear, got \"square\"", 11,
-                      data + "/profile");
-
-    const Read missing = read_text(
-        dir, with_mount("<mount name=\"M\" type=\"whisk\">\n<data><rate>1</rate></data></mount>"));
-    expect_diagnostic(missing, "missing required element <minimumangle>", 6, data);
-    expect_diagnostic(missing, "missing required element <maximumangle>", 6, data);
-}
-
-TEST(MountReader, WhiskAxisElements) {
-    TempDir dir;
-    const Read both = read_text(
-        dir, with_mount("<mount name=\"M\" type=\"whisk\">\n<data><rate>1</rate>\n"
-                        "<alongtrack><minimumangle>0</minimumangle><maximumangle>1</maximumangle>"
-                        "</alongtrack>\n<acrosstrack/>\n</data></mount>"));
-    expect_diagnostic(both, "both <alongtrack> and <acrosstrack> given, expected one scan axis", 8,
-                      std::string(kMountPath) + "/data/acrosstrack");
-    const Read contradiction = read_text(
-        dir, with_mount("<mount name=\"M\" type=\"whisk\">\n<data><rate>1</rate>"
-                        "<axis>acrosstrack</axis>\n<alongtrack><minimumangle>0</minimumangle>"
-                        "<maximumangle>1</maximumangle></alongtrack>\n</data></mount>"));
-    expect_diagnostic(contradiction, "<alongtrack> contradicts <axis>acrosstrack</axis>", 7,
-                      std::string(kMountPath) + "/data/alongtrack");
 }
 
 // ---- tracking --------------------------------------------------------------------------------
-
-TEST(MountReader, TrackingErrors) {
-    TempDir dir;
-    const Read none = read_text(dir, with_mount("<mount name=\"M\" type=\"tracking\">\n<data/>\n"
-                                                "</mount>"));
-    expect_diagnostic(none, "tracking mount has no target, expected <targetname> or <point>", 6,
-                      std::string(kMountPath) + "/data");
-    const Read both = read_text(
-        dir, with_mount("<mount name=\"M\" type=\"tracking\">\n<targetname>car</targetname>\n"
-                        "<point>1 2 3</point>\n</mount>"));
-    expect_diagnostic(both, "both <targetname> and <point> given, expected one target", 7,
-                      std::string(kMountPath) + "/point");
-    const Read bad_point = read_text(
-        dir, with_mount("<mount name=\"M\" type=\"tracking\">\n<data>\n<point>1, 2</point>\n"
-                        "<targetoffset><point>a b c</point></targetoffset>\n</data>\n</mount>"));
-    expect_diagnostic(bad_point, "\"1, 2\" is not a point, expected x y z", 7,
-                      std::string(kMountPath) + "/data/point");
-    expect_diagnostic(bad_point, "\"a b c\" is not a point", 8,
-                      std::string(kMountPath) + "/data/targetoffset/point");
-}
 
 TEST(MountReader, TrackingOffsetWithoutPointElement) {
     TempDir dir;
@@ -354,12 +250,6 @@ TEST(MountReader, RotationDeviatesErrors) {
     expect_diagnostic(read, "<yrotation> and <acrosstrack> both give the jitter about y", 9,
                       rd + "/acrosstrack");
     expect_diagnostic(read, "missing required element <psdfile>", 10, rd + "/zrotation");
-
-    const Read negative = read_text(
-        dir, with_mount("<mount name=\"M\">\n<rotationdeviates>\n<xrotation><stddev>-1</stddev>"
-                        "</xrotation>\n</rotationdeviates>\n</mount>"));
-    expect_diagnostic(negative, "expected a number >= 0, got \"-1\"", 7,
-                      std::string(kMountPath) + "/rotationdeviates/xrotation/stddev");
 }
 
 TEST(MountReader, RotationDeviatesInferredKindsAndVariables) {
@@ -385,6 +275,111 @@ TEST(MountReader, RotationDeviatesInferredKindsAndVariables) {
     expect_diagnostic(undefined, "undefined variable $NOPE_NOT_SET", 7,
                       std::string(kMountPath) + "/rotationdeviates/xrotation/psdfile");
 }
+
+// ---- one bad mount, one diagnostic ------------------------------------------------------------
+
+/// A mount (wrapped by with_mount: its opening tag on line 5) and the error it must give.
+struct MountErrorCase {
+    std::string name;
+    std::string mount;
+    std::string message;  ///< part of the error's message
+    int line;
+    std::string element;  ///< element path after kMountPath
+};
+
+class MountReaderErrors : public ::testing::TestWithParam<MountErrorCase> {};
+
+TEST_P(MountReaderErrors, MessageLineAndElement) {
+    const MountErrorCase& c = GetParam();
+    TempDir dir;
+    const Read read = read_text(dir, with_mount(c.mount));
+    expect_diagnostic(read, c.message, c.line, std::string(kMountPath) + c.element);
+}
+
+constexpr const char* kBadWhisk =
+    "<mount name=\"M\" type=\"whisk\">\n<data>\n<axis>diagonal</axis>\n"
+    "<minimumangle>10</minimumangle>\n<maximumangle>-10</maximumangle>\n<rate>0</rate>\n"
+    "<profile>square</profile>\n</data>\n</mount>";
+constexpr const char* kWhiskWithoutAngles =
+    "<mount name=\"M\" type=\"whisk\">\n<data><rate>1</rate></data></mount>";
+constexpr const char* kTrackingBadPoints =
+    "<mount name=\"M\" type=\"tracking\">\n<data>\n<point>1, 2</point>\n"
+    "<targetoffset><point>a b c</point></targetoffset>\n</data>\n</mount>";
+
+std::vector<MountErrorCase> mount_errors() {
+    const std::string entries =  // tabulated entries at 0 and 3 s
+        "<entry><datetime>0</datetime></entry><entry><datetime>3</datetime></entry>";
+    return {
+        {"UnknownMountType", "<mount name=\"M\" type=\"gyro\"/>",
+         "unknown mount type \"gyro\", expected static, commanded, tabulated, whisk, tracking, "
+         "lemniscate, line or scripted",
+         5, "@type"},
+        // commanded / tabulated
+        {"CommandedNeedsData", "<mount name=\"M\" type=\"commanded\"/>",
+         "missing required element <data> (a commanded mount needs a table", 5, ""},
+        {"CommandedNeedsEntries", "<mount name=\"M\" type=\"commanded\">\n<data/>\n</mount>",
+         "commanded mount has no <entry>, expected at least one", 6, "/data"},
+        {"TabulatedPeriodShorterThanTheLastEntry",
+         "<mount name=\"M\" type=\"tabulated\">\n<data period=\"2\">" + entries + "</data></mount>",
+         "period 2 s is shorter than the last entry time 3 s, expected a period >= the last time",
+         6, "/data@period"},
+        {"TabulatedNegativePeriod",
+         "<mount name=\"M\" type=\"tabulated\">\n<data>\n<period>-1</period>" + entries +
+             "</data></mount>",
+         "expected a number > 0, got \"-1\"", 7, "/data/period"},
+        {"TabulatedPeriodTwice",
+         "<mount name=\"M\" type=\"tabulated\">\n<data period=\"5\">\n<period>5</period>" +
+             entries + "</data></mount>",
+         "both @period and <period> given", 7, "/data/period"},
+        // whisk
+        {"WhiskNeedsData", "<mount name=\"M\" type=\"whisk\"/>",
+         "missing required element <data> (a whisk mount needs its scan)", 5, ""},
+        {"WhiskUnknownAxis", kBadWhisk, "expected one of acrosstrack, alongtrack, got \"diagonal\"",
+         7, "/data/axis"},
+        {"WhiskMaximumBelowMinimum", kBadWhisk,
+         "maximumangle -10 is less than minimumangle 10, expected minimumangle <= maximumangle", 9,
+         "/data/maximumangle"},
+        {"WhiskZeroRate", kBadWhisk, "expected a number > 0, got \"0\"", 10, "/data/rate"},
+        {"WhiskUnknownProfile", kBadWhisk, "expected one of sinusoidal, linear, got \"square\"", 11,
+         "/data/profile"},
+        {"WhiskNeedsMinimumAngle", kWhiskWithoutAngles, "missing required element <minimumangle>",
+         6, "/data"},
+        {"WhiskNeedsMaximumAngle", kWhiskWithoutAngles, "missing required element <maximumangle>",
+         6, "/data"},
+        {"WhiskBothAxisElements",
+         "<mount name=\"M\" type=\"whisk\">\n<data><rate>1</rate>\n"
+         "<alongtrack><minimumangle>0</minimumangle><maximumangle>1</maximumangle>"
+         "</alongtrack>\n<acrosstrack/>\n</data></mount>",
+         "both <alongtrack> and <acrosstrack> given, expected one scan axis", 8,
+         "/data/acrosstrack"},
+        {"WhiskAxisElementContradictsAxis",
+         "<mount name=\"M\" type=\"whisk\">\n<data><rate>1</rate>"
+         "<axis>acrosstrack</axis>\n<alongtrack><minimumangle>0</minimumangle>"
+         "<maximumangle>1</maximumangle></alongtrack>\n</data></mount>",
+         "<alongtrack> contradicts <axis>acrosstrack</axis>", 7, "/data/alongtrack"},
+        // tracking
+        {"TrackingNeedsATarget", "<mount name=\"M\" type=\"tracking\">\n<data/>\n</mount>",
+         "tracking mount has no target, expected <targetname> or <point>", 6, "/data"},
+        {"TrackingTwoTargets",
+         "<mount name=\"M\" type=\"tracking\">\n<targetname>car</targetname>\n"
+         "<point>1 2 3</point>\n</mount>",
+         "both <targetname> and <point> given, expected one target", 7, "/point"},
+        {"TrackingBadPoint", kTrackingBadPoints, "\"1, 2\" is not a point, expected x y z", 7,
+         "/data/point"},
+        {"TrackingBadOffsetPoint", kTrackingBadPoints, "\"a b c\" is not a point", 8,
+         "/data/targetoffset/point"},
+        // rotation deviates
+        {"NegativeRotationDeviate",
+         "<mount name=\"M\">\n<rotationdeviates>\n<xrotation><stddev>-1</stddev>"
+         "</xrotation>\n</rotationdeviates>\n</mount>",
+         "expected a number >= 0, got \"-1\"", 7, "/rotationdeviates/xrotation/stddev"},
+    };
+}
+
+INSTANTIATE_TEST_SUITE_P(MountReader, MountReaderErrors, ::testing::ValuesIn(mount_errors()),
+                         [](const ::testing::TestParamInfo<MountErrorCase>& test_case) {
+                             return test_case.param.name;
+                         });
 
 TEST(MountReader, NestedMountsRecurse) {
     TempDir dir;

@@ -7,7 +7,9 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "capture_test_util.h"
 #include "glint/model/spectral_response.h"
@@ -194,100 +196,156 @@ TEST(SpectralReader, PolarizationIsKeptAndWarnedAbout) {
 
 // ---- bad input --------------------------------------------------------------------------------
 
-TEST(SpectralReaderErrors, DeltaThatDoesNotDivideTheRange) {
-    const auto read = read_spectral(bandpass("0.4", "0.7", "0.07") + kOneChannel);
-    EXPECT_TRUE(has_error(read,
-                          "bandpass delta 0.07 does not divide the range 0.4–0.7 microns (4 "
-                          "steps would need delta 0.075), expected a delta that divides "
-                          "maximum − minimum",
-                          "<delta>", std::string(kPath) + "/bandpass/delta"));
-    EXPECT_EQ(read.capture.spectral_response.bandpass.count, 0u);
-}
-
-TEST(SpectralReaderErrors, BillionSampleBandpassIsRefusedBeforeAllocation) {
-    const auto read = read_spectral(bandpass("0.4", "1.4", "1e-9") + kOneChannel);
-    EXPECT_TRUE(has_error(read,
-                          "bandpass 0.4–1.4 microns at delta 1e-09 has 1000000001 samples, "
-                          "expected at most 100000",
-                          "<delta>", std::string(kPath) + "/bandpass/delta"));
-    EXPECT_EQ(read.capture.spectral_response.bandpass.count, 0u);
-    // A huge range is refused the same way (no overflow of the count).
-    const auto huge = read_spectral(bandpass("1", "1e300", "1e-300") + kOneChannel);
-    EXPECT_TRUE(has_error(huge, "has more than 10^18 samples, expected at most 100000", "<delta>",
-                          std::string(kPath) + "/bandpass/delta"));
-    // 100,000 samples are accepted, 100,001 are not.
+TEST(SpectralReader, HundredThousandSamplesAreAccepted) {
+    // One more is refused (SpectralReaderBadInput, Bandpass100001Samples).
     EXPECT_TRUE(clean(read_spectral(bandpass("0.4", "1.39999", "0.00001") + kOneChannel)));
-    EXPECT_TRUE(has_error(read_spectral(bandpass("0.4", "1.4", "0.00001") + kOneChannel),
-                          "has 100001 samples", "<delta>", std::string(kPath) + "/bandpass/delta"));
 }
 
-TEST(SpectralReaderErrors, BandpassValues) {
-    auto read = read_spectral(bandpass("0.7", "0.4", "0.01") + kOneChannel);
-    EXPECT_TRUE(has_error(read,
-                          "maximum 0.4 microns is not above minimum 0.7 microns, expected "
-                          "minimum < maximum",
-                          "<maximum>", std::string(kPath) + "/bandpass/maximum"));
-    read = read_spectral(bandpass("zero", "0.7", "-0.01", "furlongs") + kOneChannel);
-    EXPECT_TRUE(has_error(read, "expected a number > 0, got \"zero\"", "<minimum>",
-                          std::string(kPath) + "/bandpass/minimum"));
-    EXPECT_TRUE(has_error(read, "expected a number > 0, got \"-0.01\"", "<delta>",
-                          std::string(kPath) + "/bandpass/delta"));
-    EXPECT_TRUE(has_error(read,
-                          "expected one of microns, micrometers, um, nanometers, nm, got "
-                          "\"furlongs\"",
-                          "<bandpass", std::string(kPath) + "/bandpass@spectralunits"));
-    read = read_spectral(std::string("<bandpass>\n</bandpass>") + kOneChannel);
-    EXPECT_TRUE(has_error(read, "missing required element <delta>", "<bandpass>",
-                          std::string(kPath) + "/bandpass"));
-    read = read_spectral(kOneChannel);
-    EXPECT_TRUE(has_error(read, "missing required element <bandpass>", "<spectralresponse>",
-                          std::string(kPath)));
+/// A spectral response body (in a capture of `type`) and one error it must give, on the line
+/// of `anchor` with element path kPath + `element`.
+struct SpectralErrorCase {
+    std::string name;
+    std::string body;
+    std::string message;
+    std::string anchor;
+    std::string element;
+    std::string type = "simple";
+    std::optional<std::size_t> errors = std::nullopt;  ///< the read's error count, when checked
+    bool bandpass_refused = false;                     ///< the bandpass keeps no samples
+};
+
+class SpectralReaderBadInput : public ::testing::TestWithParam<SpectralErrorCase> {};
+
+TEST_P(SpectralReaderBadInput, MessageLineAndElement) {
+    const SpectralErrorCase& c = GetParam();
+    const auto read = read_spectral(c.body, c.type);
+    EXPECT_TRUE(has_error(read, c.message, c.anchor, std::string(kPath) + c.element));
+    if (c.errors) {
+        EXPECT_EQ(read.diagnostics.error_count(), *c.errors);
+    }
+    if (c.bandpass_refused) {
+        EXPECT_EQ(read.capture.spectral_response.bandpass.count, 0u);
+    }
 }
 
-TEST(SpectralReaderErrors, SimpleCaptureNeedsAChannel) {
-    const auto read = read_spectral(kBandpass);
-    EXPECT_TRUE(has_error(read, "no channel, expected at least one <channel> in <channellist>",
-                          "<spectralresponse>", kPath));
-}
-
-TEST(SpectralReaderErrors, ChannelAttributes) {
-    const auto read =
-        read_spectral(std::string(kBandpass) +
-                      "<channellist>\n"
-                      "<channel shape=\"square\"><center>0.5</center></channel>\n"
-                      "<channel name=\" \" normalize=\"perhaps\" gain=\"x\"><center>0.5</center>"
-                      "<width>0.01</width></channel>\n"
-                      "</channellist>");
-    const std::string list = std::string(kPath) + "/channellist";
-    EXPECT_TRUE(
-        has_error(read, "missing required attribute name", "<channel shape", list + "/channel"));
-    EXPECT_TRUE(has_error(read,
-                          "expected one of gaussian, tabulated, tophat, triangle, got "
-                          "\"square\"",
-                          "<channel shape", list + "/channel@shape"));
-    EXPECT_TRUE(has_error(read, "channel name is empty, expected a name", "<channel name=\" \"",
-                          list + "/channel[ ]@name"));
-    EXPECT_TRUE(has_error(read, "expected a boolean", "<channel name=\" \"",
-                          list + "/channel[ ]@normalize"));
-    EXPECT_TRUE(has_error(read, "expected a number, got \"x\"", "<channel name=\" \"",
-                          list + "/channel[ ]@gain"));
-}
-
-TEST(SpectralReaderErrors, GaussianValues) {
-    const auto read = read_spectral(
-        std::string(kBandpass) +
+std::vector<SpectralErrorCase> spectral_errors() {
+    const std::string band = kBandpass;
+    const std::string bad_bandpass = bandpass("zero", "0.7", "-0.01", "furlongs") + kOneChannel;
+    const std::string attributes = band +
+                                   "<channellist>\n"
+                                   "<channel shape=\"square\"><center>0.5</center></channel>\n"
+                                   "<channel name=\" \" normalize=\"perhaps\" gain=\"x\"><center>"
+                                   "0.5</center><width>0.01</width></channel>\n"
+                                   "</channellist>";
+    const std::string gaussian =
+        band +
         "<channellist>\n<channel name=\"G\">\n<center>green</center>\n<width>-0.04</width>\n"
-        "</channel>\n<channel name=\"H\">\n</channel>\n</channellist>");
-    const std::string list = std::string(kPath) + "/channellist";
-    EXPECT_TRUE(has_error(read, "expected a number, got \"green\"", "<center>",
-                          list + "/channel[G]/center"));
-    EXPECT_TRUE(has_error(read, "expected a number > 0, got \"-0.04\"", "<width>",
-                          list + "/channel[G]/width"));
-    EXPECT_TRUE(has_error(read, "missing required element <center>", "<channel name=\"H\"",
-                          list + "/channel[H]"));
-    EXPECT_TRUE(has_error(read, "missing required element <width>", "<channel name=\"H\"",
-                          list + "/channel[H]"));
+        "</channel>\n<channel name=\"H\">\n</channel>\n</channellist>";
+    const std::string outside =
+        band +
+        "<channellist>\n"
+        "<channel name=\"NIR\"><center>0.85</center><width>0.05</width></channel>\n"
+        "<channel name=\"Box\" shape=\"tophat\"><center>0.3</center><width>0.1</width>"
+        "</channel>\n"
+        "<channel name=\"Table\" shape=\"tabulated\"><entry><spectralpoint>0.8</spectralpoint>"
+        "<value>1</value></entry><entry><spectralpoint>0.9</spectralpoint><value>1</value>"
+        "</entry></channel>\n"
+        "</channellist>";
+    const std::string list = "/channellist";
+    return {
+        // bandpass
+        {"DeltaThatDoesNotDivideTheRange", bandpass("0.4", "0.7", "0.07") + kOneChannel,
+         "bandpass delta 0.07 does not divide the range 0.4–0.7 microns (4 steps would need "
+         "delta 0.075), expected a delta that divides maximum − minimum",
+         "<delta>", "/bandpass/delta", "simple", std::nullopt, true},
+        {"BillionSampleBandpassIsRefusedBeforeAllocation",
+         bandpass("0.4", "1.4", "1e-9") + kOneChannel,
+         "bandpass 0.4–1.4 microns at delta 1e-09 has 1000000001 samples, expected at most "
+         "100000",
+         "<delta>", "/bandpass/delta", "simple", std::nullopt, true},
+        // A huge range is refused the same way (no overflow of the count).
+        {"HugeRangeIsRefusedWithoutOverflow", bandpass("1", "1e300", "1e-300") + kOneChannel,
+         "has more than 10^18 samples, expected at most 100000", "<delta>", "/bandpass/delta"},
+        {"Bandpass100001Samples", bandpass("0.4", "1.4", "0.00001") + kOneChannel,
+         "has 100001 samples", "<delta>", "/bandpass/delta"},
+        {"MaximumBelowMinimum", bandpass("0.7", "0.4", "0.01") + kOneChannel,
+         "maximum 0.4 microns is not above minimum 0.7 microns, expected minimum < maximum",
+         "<maximum>", "/bandpass/maximum"},
+        {"MinimumNotANumber", bad_bandpass, "expected a number > 0, got \"zero\"", "<minimum>",
+         "/bandpass/minimum"},
+        {"NegativeDelta", bad_bandpass, "expected a number > 0, got \"-0.01\"", "<delta>",
+         "/bandpass/delta"},
+        {"UnknownSpectralUnits", bad_bandpass,
+         "expected one of microns, micrometers, um, nanometers, nm, got \"furlongs\"", "<bandpass",
+         "/bandpass@spectralunits"},
+        {"BandpassWithoutDelta", std::string("<bandpass>\n</bandpass>") + kOneChannel,
+         "missing required element <delta>", "<bandpass>", "/bandpass"},
+        {"NoBandpass", kOneChannel, "missing required element <bandpass>", "<spectralresponse>",
+         ""},
+        // channels
+        {"SimpleCaptureNeedsAChannel", band,
+         "no channel, expected at least one <channel> in <channellist>", "<spectralresponse>", ""},
+        {"ChannelWithoutName", attributes, "missing required attribute name", "<channel shape",
+         list + "/channel"},
+        {"UnknownChannelShape", attributes,
+         "expected one of gaussian, tabulated, tophat, triangle, got \"square\"", "<channel shape",
+         list + "/channel@shape"},
+        {"EmptyChannelName", attributes, "channel name is empty, expected a name",
+         "<channel name=\" \"", list + "/channel[ ]@name"},
+        {"NormalizeNotABoolean", attributes, "expected a boolean", "<channel name=\" \"",
+         list + "/channel[ ]@normalize"},
+        {"GainNotANumber", attributes, "expected a number, got \"x\"", "<channel name=\" \"",
+         list + "/channel[ ]@gain"},
+        {"GaussianCentreNotANumber", gaussian, "expected a number, got \"green\"", "<center>",
+         list + "/channel[G]/center"},
+        {"GaussianNegativeWidth", gaussian, "expected a number > 0, got \"-0.04\"", "<width>",
+         list + "/channel[G]/width"},
+        {"GaussianWithoutCentre", gaussian, "missing required element <center>",
+         "<channel name=\"H\"", list + "/channel[H]"},
+        {"GaussianWithoutWidth", gaussian, "missing required element <width>",
+         "<channel name=\"H\"", list + "/channel[H]"},
+        {"ChannelCentreOutsideTheBandpass", outside,
+         "center 0.85 microns lies outside the bandpass 0.4–0.7 microns and its response does "
+         "not reach into it, expected a center inside the bandpass",
+         "<channel name=\"NIR\"", list + "/channel[NIR]"},
+        {"TophatCentreOutsideTheBandpass", outside,
+         "center 0.3 microns lies outside the bandpass 0.4–0.7 microns", "<channel name=\"Box\"",
+         list + "/channel[Box]"},
+        {"TabulatedResponseOutsideTheBandpass", outside,
+         "tabulated response 0.8–0.9 microns lies outside the bandpass 0.4–0.7 microns",
+         "<channel name=\"Table\"", list + "/channel[Table]"},
+        {"ChannelCentreOutsideANanometreBandpass",
+         bandpass("400", "700", "5", "nanometers") +
+             "<channellist>\n<channel name=\"UV\"><center>300</center><width>10</width>"
+             "</channel>\n</channellist>",
+         "center 300 nanometers lies outside the bandpass 400–700 nanometers",
+         "<channel name=\"UV\"", list + "/channel[UV]"},
+        {"DuplicateChannelNames",
+         band + "<channellist>\n"
+                "<channel name=\"G\"><center>0.55</center><width>0.04</width></channel>\n"
+                "<channel name=\"G\"><center>0.56</center><width>0.04</width></channel>\n"
+                "</channellist>",
+         "duplicate channel name 'G' (first at line 6), expected unique names",
+         "<channel name=\"G\"><center>0.56", list + "/channel[G]", "simple", 1},
+        // patterns
+        {"PatternOnARawCapture",
+         band + kOneChannel +
+             "<channelpattern name=\"bayer\">"
+             "<mapping filtername=\"red\" channelname=\"G\"/>"
+             "<mapping filtername=\"green\" channelname=\"G\"/>"
+             "<mapping filtername=\"blue\" channelname=\"G\"/>"
+             "</channelpattern>",
+         "a channel pattern needs capturemethod type simple, expected no <channelpattern> in a "
+         "raw capture",
+         "<channelpattern", "/channelpattern[bayer]", "raw", 1},
+    };
 }
+
+INSTANTIATE_TEST_SUITE_P(SpectralReader, SpectralReaderBadInput,
+                         ::testing::ValuesIn(spectral_errors()),
+                         [](const ::testing::TestParamInfo<SpectralErrorCase>& test_case) {
+                             return test_case.param.name;
+                         });
 
 TEST(SpectralReaderErrors, TabulatedValues) {
     const auto read = read_spectral(
@@ -319,56 +377,6 @@ TEST(SpectralReaderErrors, TabulatedValues) {
     EXPECT_TRUE(has_error(read, "tabulated response is zero everywhere and cannot be normalized",
                           "<channel name=\"Zero\"", list + "/channel[Zero]"));
     EXPECT_EQ(read.diagnostics.error_count(), 4u);
-}
-
-TEST(SpectralReaderErrors, ChannelCentreOutsideTheBandpass) {
-    const auto read = read_spectral(
-        std::string(kBandpass) +
-        "<channellist>\n"
-        "<channel name=\"NIR\"><center>0.85</center><width>0.05</width></channel>\n"
-        "<channel name=\"Box\" shape=\"tophat\"><center>0.3</center><width>0.1</width>"
-        "</channel>\n"
-        "<channel name=\"Table\" shape=\"tabulated\"><entry><spectralpoint>0.8</spectralpoint>"
-        "<value>1</value></entry><entry><spectralpoint>0.9</spectralpoint><value>1</value>"
-        "</entry></channel>\n"
-        "</channellist>");
-    const std::string list = std::string(kPath) + "/channellist";
-    EXPECT_TRUE(has_error(read,
-                          "center 0.85 microns lies outside the bandpass 0.4–0.7 microns and "
-                          "its response does not reach into it, expected a center inside the "
-                          "bandpass",
-                          "<channel name=\"NIR\"", list + "/channel[NIR]"));
-    EXPECT_TRUE(has_error(read, "center 0.3 microns lies outside the bandpass 0.4–0.7 microns",
-                          "<channel name=\"Box\"", list + "/channel[Box]"));
-    EXPECT_TRUE(has_error(read,
-                          "tabulated response 0.8–0.9 microns lies outside the bandpass "
-                          "0.4–0.7 microns",
-                          "<channel name=\"Table\"", list + "/channel[Table]"));
-}
-
-TEST(SpectralReaderErrors, ChannelCentreOutsideANanometreBandpass) {
-    const auto read = read_spectral(
-        bandpass("400", "700", "5", "nanometers") +
-        "<channellist>\n<channel name=\"UV\"><center>300</center><width>10</width></channel>\n"
-        "</channellist>");
-    EXPECT_TRUE(has_error(read,
-                          "center 300 nanometers lies outside the bandpass 400–700 nanometers",
-                          "<channel name=\"UV\"", std::string(kPath) + "/channellist/channel[UV]"));
-}
-
-TEST(SpectralReaderErrors, DuplicateChannelNames) {
-    const auto read =
-        read_spectral(std::string(kBandpass) +
-                      "<channellist>\n"
-                      "<channel name=\"G\"><center>0.55</center><width>0.04</width></channel>\n"
-                      "<channel name=\"G\"><center>0.56</center><width>0.04</width></channel>\n"
-                      "</channellist>");
-    EXPECT_TRUE(has_error(read,
-                          "duplicate channel name 'G' (first at line 6), expected unique "
-                          "names",
-                          "<channel name=\"G\"><center>0.56",
-                          std::string(kPath) + "/channellist/channel[G]"));
-    EXPECT_EQ(read.diagnostics.error_count(), 1u);
 }
 
 TEST(SpectralReaderErrors, PatternProblems) {
@@ -414,21 +422,6 @@ TEST(SpectralReaderErrors, PatternProblems) {
     EXPECT_TRUE(has_error(read, "expected one of bayer, truesense, got \"xtrans\"",
                           "<channelpattern", std::string(kPath) + "/channelpattern[xtrans]@name"));
     EXPECT_FALSE(read.capture.spectral_response.pattern.has_value());
-}
-
-TEST(SpectralReaderErrors, PatternOnARawCapture) {
-    const auto read = read_spectral(std::string(kBandpass) + kOneChannel +
-                                        "<channelpattern name=\"bayer\">"
-                                        "<mapping filtername=\"red\" channelname=\"G\"/>"
-                                        "<mapping filtername=\"green\" channelname=\"G\"/>"
-                                        "<mapping filtername=\"blue\" channelname=\"G\"/>"
-                                        "</channelpattern>",
-                                    "raw");
-    EXPECT_TRUE(has_error(read,
-                          "a channel pattern needs capturemethod type simple, expected no "
-                          "<channelpattern> in a raw capture",
-                          "<channelpattern", std::string(kPath) + "/channelpattern[bayer]"));
-    EXPECT_EQ(read.diagnostics.error_count(), 1u);
 }
 
 TEST(ChannelPattern, ChannelFor) {
