@@ -87,10 +87,9 @@ void DemosaicCli::finish() {
         o.data_type = io::envi_type_from_string(m_data_type);
         if (!o.data_type) throw usage_error("unknown ENVI data type '" + m_data_type + "'");
     }
-    o.command_line = m_command_line;
 }
 
-int DemosaicCli::execute(Context& ctx) {
+int DemosaicCli::execute(Context& ctx, std::ostream& /*out*/) {
     finish();
     app_demosaic::run_demosaic(m_options, ctx);
     return 0;

@@ -16,18 +16,14 @@ namespace glint::tools::demosaic {
 /// Everything parsed from the command line.
 class DemosaicCli {
 public:
-    /// `command_line`: the arguments as typed, recorded in ENVI outputs' provenance.
-    explicit DemosaicCli(std::string command_line) : m_command_line(std::move(command_line)) {}
-
     /// Adds the options to `app`.
     void configure(CLI::App& app);
     /// Checks and converts what was parsed, runs glint-demosaic; returns the exit status.
-    int execute(Context& ctx);
+    int execute(Context& ctx, std::ostream& out);
 
 private:
     void finish();
 
-    std::string m_command_line;
     CLI::App* m_app = nullptr;
     app_demosaic::DemosaicToolOptions m_options;
     std::vector<std::string> m_files;

@@ -30,12 +30,6 @@ io::EnviDataType parse_data_type(const std::string& text) {
 
 }  // namespace
 
-DetectCli::DetectCli(int argc, const char* const* argv) {
-    for (int i = 0; i < argc; ++i) {
-        m_options.command_line += (i ? " " : "") + std::string(argv[i]);
-    }
-}
-
 void DetectCli::configure(CLI::App& app) {
     m_app = &app;
     if (CLI::Option* seed = app.get_option_no_throw("--seed")) {
@@ -90,7 +84,7 @@ void DetectCli::configure(CLI::App& app) {
         ->type_name("MODE");
 }
 
-int DetectCli::execute(Context& ctx) {
+int DetectCli::execute(Context& ctx, std::ostream& /*out*/) {
     const CLI::App& app = *m_app;
     glint::detect::DetectorOverrides& o = m_options.overrides;
     if (app.count("--qe") > 0) o.quantum_efficiency = m_qe;

@@ -14,12 +14,10 @@ namespace glint::tools::detect {
 
 class DetectCli {
 public:
-    /// Keeps the command line for the provenance of the output.
-    DetectCli(int argc, const char* const* argv);
     /// Adds the options to `app`.
     void configure(CLI::App& app);
     /// Turns the parsed values into options and runs; returns the exit status.
-    int execute(Context& ctx);
+    int execute(Context& ctx, std::ostream& out);
 
 private:
     CLI::App* m_app = nullptr;

@@ -138,17 +138,16 @@ void EnviCli::finish_convert() {
         o.data_type = io::envi_type_from_string(m_data_type);
         if (!o.data_type) throw usage_error("unknown ENVI data type '" + m_data_type + "'");
     }
-    o.command_line = m_command_line;
 }
 
-int EnviCli::execute(Context& ctx) {
+int EnviCli::execute(Context& ctx, std::ostream& out) {
     if (m_info->parsed()) {
         m_info_options.format = *app_envi::report_format_from_name(m_info_format);
-        return app_envi::run_info(m_info_options, ctx, std::cout);
+        return app_envi::run_info(m_info_options, ctx, out);
     }
     if (m_stats->parsed()) {
         m_stats_options.format = *app_envi::report_format_from_name(m_stats_format);
-        return app_envi::run_stats(m_stats_options, ctx, std::cout);
+        return app_envi::run_stats(m_stats_options, ctx, out);
     }
     if (m_convert->parsed()) {
         finish_convert();

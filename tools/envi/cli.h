@@ -18,18 +18,14 @@ namespace glint::tools::envi {
 /// Everything parsed from the command line.
 class EnviCli {
 public:
-    /// `command_line`: the arguments as typed, recorded in ENVI outputs' provenance.
-    explicit EnviCli(std::string command_line) : m_command_line(std::move(command_line)) {}
-
     /// Adds the subcommands and their options to `app`.
     void configure(CLI::App& app);
     /// Runs the chosen subcommand; returns the exit status.
-    int execute(Context& ctx);
+    int execute(Context& ctx, std::ostream& out);
 
 private:
     void finish_convert();
 
-    std::string m_command_line;
     CLI::App* m_info = nullptr;
     CLI::App* m_stats = nullptr;
     CLI::App* m_convert = nullptr;

@@ -15,8 +15,6 @@ namespace glint::tools::render {
 
 class RenderCli {
 public:
-    /// Keeps the command line for the provenance of the outputs.
-    RenderCli(int argc, const char* const* argv);
     /// Adds the options to `app`.
     void configure(CLI::App& app);
     /// Turns the parsed values into options and renders; returns the exit status.

@@ -8,10 +8,6 @@
 
 namespace glint::tools::schedule {
 
-ScheduleCli::ScheduleCli(int argc, const char* const* argv) {
-    for (int i = 0; i < argc; ++i) m_options.arguments.emplace_back(argv[i]);
-}
-
 void ScheduleCli::configure(CLI::App& app) {
     m_app = &app;
     app.add_option("input", m_options.input, "The simulation: a .jsim or a DIRSIG4 .sim")

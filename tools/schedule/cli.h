@@ -17,8 +17,6 @@ namespace glint::tools::schedule {
 /// Everything parsed from the command line.
 class ScheduleCli {
 public:
-    /// Keeps the command line for the provenance of the outputs.
-    ScheduleCli(int argc, const char* const* argv);
     /// Adds the options to `app`.
     void configure(CLI::App& app);
     /// Turns the parsed values into options and runs the tool writing data to `out`;

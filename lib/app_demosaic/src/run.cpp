@@ -123,7 +123,7 @@ DemosaicToolResult run_demosaic(const DemosaicToolOptions& o, Context& ctx) {
     result.used = resolve(o, source, ctx);
     result.width = source.plane.width;
     result.height = source.plane.height;
-    const internal::Provenance provenance{o.input, result.used, o.command_line};
+    const internal::Provenance provenance{o.input, result.used, ctx.command_line()};
     ctx.log.info("demosaicing " + o.input.string() + " (" + std::to_string(result.width) + " x " +
                  std::to_string(result.height) + ", " + source.type_name +
                  "): " + internal::describe(provenance) + " to " + o.output.string());

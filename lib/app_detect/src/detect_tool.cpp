@@ -161,7 +161,7 @@ Result run(const Options& options, Context& ctx) {
     sources.input_path = options.input;
     sources.platform_path = choice.platform_path;
     sources.instrument = choice.instrument_name;
-    sources.command_line = options.command_line;
+    sources.command_line = ctx.command_line();
     sources.captures = &captures;
     io::EnviHeader out_header = internal::output_header(settings, sources);
     const detect::DetectionChain chain(settings, header.samples);

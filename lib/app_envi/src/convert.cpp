@@ -292,7 +292,7 @@ ConvertResult to_envi(const ConvertOptions& o, RasterSource& source,
     h.set_extra("glint tool", "glint-envi convert");
     h.set_extra("glint version", version());
     h.set_extra("glint source", source.path().string());
-    if (!o.command_line.empty()) h.set_extra("glint command line", o.command_line);
+    if (!ctx.arguments.empty()) h.set_extra("glint command line", ctx.command_line());
 
     ConvertResult result;
     result.kind = OutputKind::envi;

@@ -97,8 +97,6 @@ int run(Options options, Context& ctx, std::ostream& out) {
     sensor::RenderOptions& render = options.render;
     render.schedule.seed = ctx.seed;
     render.version = version();
-    render.command_line = join(options.arguments, " ");
-    render.arguments = options.arguments;
     render.radiance_only = options.radiance_only;
     if (render.data_dir.empty()) render.data_dir = default_data_dir();
     ctx.log.info("Data folder: " + render.data_dir.string());

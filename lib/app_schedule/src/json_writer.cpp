@@ -140,8 +140,7 @@ class CaptureListWriter final : public CaptureWriter {
 public:
     CaptureListWriter(const RunInfo& info, std::ostream& out)
         : m_list(out, *info.schedule,
-                 schedule::CaptureListProvenance{"glint-schedule", info.options->arguments,
-                                                 info.seed}) {}
+                 schedule::CaptureListProvenance{"glint-schedule", *info.arguments, info.seed}) {}
 
     void begin() override { m_list.begin(); }
     void capture(const CaptureRecord& record) override {
@@ -181,7 +180,7 @@ Json provenance_json(const RunInfo& info) {
     Json j;
     j["tool"] = "glint-schedule";
     j["glint_version"] = version();
-    j["arguments"] = info.options->arguments;
+    j["arguments"] = *info.arguments;
     j["seed"] = info.seed;
     return j;
 }

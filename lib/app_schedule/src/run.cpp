@@ -176,7 +176,7 @@ int run(const Options& options, Context& ctx, std::ostream& out) {
     if (!schedule) return 1;
     refuse_overwrite(options, *schedule);
     const Selection selection(*schedule, options.filters);
-    const internal::RunInfo info{&*schedule, &options, ctx.seed};
+    const internal::RunInfo info{&*schedule, &options, ctx.seed, &ctx.arguments};
 
     OutputTarget main_output(options.output, out);
     if (options.summary) {

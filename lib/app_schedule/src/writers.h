@@ -23,6 +23,7 @@ struct RunInfo {
     const schedule::Schedule* schedule = nullptr;
     const Options* options = nullptr;
     std::uint64_t seed = 1;
+    const std::vector<std::string>* arguments = nullptr;  ///< the command line (Context)
 };
 
 /// One capture and everything derived from it that more than one writer uses.

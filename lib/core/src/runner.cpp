@@ -151,6 +151,10 @@ int run_tool(const ToolSpec& spec, int argc, const char* const* argv, const Tool
     Context context;
     context.threads = common.threads;
     context.seed = common.seed;
+    // The program by its name, not the path it was started from: the provenance in outputs
+    // stays the same wherever glint is installed.
+    context.arguments.assign(argv, argv + argc);
+    if (!context.arguments.empty()) context.arguments.front() = program;
     const LogLevel threshold = common.quiet            ? LogLevel::error
                                : common.verbosity >= 2 ? LogLevel::debug
                                : common.verbosity == 1 ? LogLevel::info

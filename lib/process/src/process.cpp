@@ -209,24 +209,6 @@ std::optional<std::filesystem::path> find_program(std::string_view name, const c
     return std::nullopt;
 }
 
-std::string format_command_line(const std::vector<std::string>& argv) {
-    std::string line;
-    for (const auto& arg : argv) {
-        if (!line.empty()) line += ' ';
-        const bool plain = !arg.empty() && arg.find_first_not_of(
-                                               "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuv"
-                                               "wxyz0123456789_./=:,+%@-") == std::string::npos;
-        if (plain) {
-            line += arg;
-            continue;
-        }
-        line += '\'';
-        for (char c : arg) line += c == '\'' ? std::string("'\\''") : std::string(1, c);
-        line += '\'';
-    }
-    return line;
-}
-
 ProcessResult run_process(const ProcessOptions& options) {
     if (options.argv.empty() || options.argv.front().empty()) {
         throw usage_error("no program to run");

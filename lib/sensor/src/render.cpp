@@ -24,7 +24,7 @@ RenderReport plan(model::SimulationInputs inputs, const RenderOptions& options,
         c.pixels = prepared->inputs.schedule->sources()[p.capture.source].problems_per_capture;
         report.captures.push_back(c);
     }
-    detail::write_log_info(*prepared, options);
+    detail::write_log_info(*prepared, options, context);
     return report;
 }
 
@@ -60,7 +60,7 @@ RenderReport render(model::SimulationInputs inputs, const RenderOptions& options
         context.progress.update("pixels", pixels_done, report.pixels);
     }
     context.progress.finish("pixels", report.pixels);
-    detail::write_log_info(*prepared, options);
+    detail::write_log_info(*prepared, options, context);
     report.files = prepared->outputs.published();
     return report;
 }

@@ -48,7 +48,7 @@ radiometry::Convergence convergence_of(const model::FocalPlane& fp, const Render
 
 io::EnviHeader header_of(const schedule::ClockedFocalPlane& source, const OutputUnits& units,
                          const radiometry::Convergence& convergence, const RenderOptions& options,
-                         const RenderInputs& inputs) {
+                         const RenderInputs& inputs, const Context& context) {
     const model::FocalPlane& fp = *source.focal_plane;
     const model::CaptureMethod& method = fp.capture_method;
     io::EnviHeader h;
@@ -68,7 +68,7 @@ io::EnviHeader header_of(const schedule::ClockedFocalPlane& source, const Output
     }
     h.data_units = units.description().data_units;
     h.set_extra("glint version", options.version);
-    h.set_extra("glint command line", options.command_line);
+    h.set_extra("glint command line", context.command_line());
     h.set_extra("glint seed", std::to_string(options.schedule.seed));
     h.set_extra("glint simulation", inputs.schedule->simulation_file().string());
     h.set_extra("glint plugin index",
@@ -99,7 +99,8 @@ io::EnviHeader header_of(const schedule::ClockedFocalPlane& source, const Output
 /// fluxunits and areaunits are ignored (as the DIRSIG5 BasicPlatform manual says) for the
 /// photon product at the focal plane, per cm², channels integrated and not normalized, that
 /// detection needs. A TDI pixel's integration time is that of all its stages.
-model::CaptureMethod units_method(const schedule::ClockedFocalPlane& source, const Context& context) {
+model::CaptureMethod units_method(const schedule::ClockedFocalPlane& source,
+                                  const Context& context) {
     const model::FocalPlane& fp = *source.focal_plane;
     model::CaptureMethod method = fp.capture_method;
     // A TDI pixel integrates over all its stages: stages × the stage time.
@@ -160,7 +161,7 @@ FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t s
     OutputUnits units(units_method(source, context), source.instrument->properties, grid);
 
     const radiometry::Convergence convergence = convergence_of(fp, options);
-    io::EnviHeader header = header_of(source, units, convergence, options, inputs);
+    io::EnviHeader header = header_of(source, units, convergence, options, inputs, context);
     FocalPlaneState state{std::move(grid),  reference,   std::move(materials), std::move(camera),
                           std::move(units), convergence, std::move(header),    std::nullopt};
     const bool detects = fp.capture_method.detector_model.has_value() ||

@@ -113,7 +113,7 @@ std::unique_ptr<Prepared> prepare(model::SimulationInputs loaded, const RenderOp
 
 /// Writes the capture list of the run (--log_info_filename), atomically; nothing when the
 /// option is empty.
-void write_log_info(const Prepared& prepared, const RenderOptions& options);
+void write_log_info(const Prepared& prepared, const RenderOptions& options, const Context& context);
 
 /// Renders one capture into its file; `geometry` is built for its window, `path_cache` is its
 /// focal plane's. Returns its statistics.

@@ -110,13 +110,14 @@ std::unique_ptr<Prepared> prepare(model::SimulationInputs loaded, const RenderOp
     return p;
 }
 
-void write_log_info(const Prepared& prepared, const RenderOptions& options) {
+void write_log_info(const Prepared& prepared, const RenderOptions& options,
+                    const Context& context) {
     if (options.log_info_file.empty()) return;
     const RenderInputs& in = prepared.inputs;
     std::ostringstream text;
     schedule::CaptureListWriter list(
         text, *in.schedule,
-        schedule::CaptureListProvenance{"glint-render", options.arguments, options.schedule.seed});
+        schedule::CaptureListProvenance{"glint-render", context.arguments, options.schedule.seed});
     list.begin();
     for (const PlannedCapture& p : prepared.captures) {
         list.add(p.capture, p.file, in.schedule->truth_files(p.capture));

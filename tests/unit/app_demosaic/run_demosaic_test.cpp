@@ -72,8 +72,8 @@ TEST(RunDemosaic, EnviOutputHoldsTheDemosaicedValuesAndProvenance) {
     o.output = dir / "out.img";
     o.phase = dm::BayerPhase::gbrg;
     o.method = dm::DemosaicMethod::mhc;
-    o.command_line = "glint-demosaic in.img out.img";
     Context ctx;
+    ctx.arguments = {"glint-demosaic", "in.img", "out.img"};  // as the runner records them
     const DemosaicToolResult result = run_demosaic(o, ctx);
     EXPECT_EQ(result.kind, io::OutputKind::envi);
     EXPECT_EQ(result.stored_type, "uint16");

@@ -48,7 +48,7 @@ protected:
             },
             LogLevel::debug);
         m_options.input = kData / "small.jsim";
-        m_options.arguments = {"glint-schedule", "small.jsim"};
+        m_ctx.arguments = {"glint-schedule", "small.jsim"};
     }
 
     /// Runs with m_options; returns stdout.

@@ -55,6 +55,32 @@ TEST(Runner, VersionGoesToStdoutAndExitsZero) {
     EXPECT_EQ(o.out, std::string("glint-demo ") + version() + "\n");
 }
 
+TEST(Runner, RecordsTheCommandLineOnceInTheContext) {
+    // argv[0] as started (a path) becomes the program's name, so provenance does not depend
+    // on where glint is installed; the arguments stay as typed, quoted where needed.
+    std::vector<std::string> arguments;
+    std::string line;
+    std::vector<std::string> args{"/opt/x/bin/glint-demo", "--name", "a b", "--seed", "7"};
+    std::vector<const char*> argv;
+    for (const auto& a : args) argv.push_back(a.c_str());
+    std::string name;
+    std::ostringstream out, err;
+    const int status = run_tool(
+        ToolSpec{"demo", "A demonstration tool", kCommonSeed}, static_cast<int>(argv.size()),
+        argv.data(), ToolStreams{out, err, false},
+        [&](CLI::App& app) { app.add_option("--name", name, "A name"); },
+        [&](Context& ctx) {
+            arguments = ctx.arguments;
+            line = ctx.command_line();
+            return kExitSuccess;
+        });
+    EXPECT_EQ(status, 0) << err.str();
+    EXPECT_EQ(arguments, (std::vector<std::string>{"glint-demo", "--name", "a b", "--seed", "7"}));
+    EXPECT_EQ(line, "glint-demo --name 'a b' --seed 7");
+    EXPECT_TRUE(Context{}.arguments.empty());  // a library call made directly records none
+    EXPECT_EQ(Context{}.command_line(), "");
+}
+
 TEST(Runner, BadFlagIsAUsageErrorOnOneLine) {
     bool ran = false;
     const Outcome o = run({"--bogus"}, [&](Context&) {

@@ -162,7 +162,7 @@ TEST(Process, KilledBySignalIsReported) {
 }
 
 TEST(Process, FormatCommandLineQuotes) {
-    EXPECT_EQ(format_command_line({"ffmpeg", "-i", "a b.png", "it's"}),
+    EXPECT_EQ(format_command_line(std::vector<std::string>{"ffmpeg", "-i", "a b.png", "it's"}),
               "ffmpeg -i 'a b.png' 'it'\\''s'");
 }
 

@@ -61,7 +61,6 @@ struct DemosaicToolOptions {
     bool raw = false;                           ///< image outputs: no stretch
     std::optional<int> bit_depth;               ///< image outputs: 8, 16 or 32
     std::optional<io::EnviDataType> data_type;  ///< ENVI outputs
-    std::string command_line;  ///< recorded as `glint command line` in ENVI outputs when not empty
 };
 
 /// What glint-demosaic did.

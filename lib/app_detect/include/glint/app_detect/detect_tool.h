@@ -24,7 +24,6 @@ struct Options {
     std::string focal_plane;  ///< --focal-plane; empty: the header's `glint focal plane`
     detect::DetectorOverrides overrides;  ///< --qe, --read-noise, ..., --mosaic, --tdi-mode
     std::optional<std::uint64_t> seed;    ///< --seed; else the header's `glint seed`, else 1
-    std::string command_line;             ///< recorded as `glint command line`
 };
 
 /// What a run did.

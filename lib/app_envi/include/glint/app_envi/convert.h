@@ -59,7 +59,6 @@ struct ConvertOptions {
     bool raw = false;                           ///< no stretch
     std::optional<int> bit_depth;               ///< 8, 16, 32 (64 for ENVI)
     std::optional<io::EnviDataType> data_type;  ///< ENVI output type
-    std::string command_line;  ///< recorded as `glint command line` in ENVI outputs when not empty
 };
 
 /// What convert did.

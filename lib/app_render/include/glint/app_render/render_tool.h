@@ -18,13 +18,12 @@
 namespace glint::app_render {
 
 struct Options {
-    std::filesystem::path input;         ///< the .jsim or .sim
-    std::filesystem::path schedule;      ///< --schedule FILE (empty: the whole schedule)
-    bool dry_run = false;                ///< print the plan, trace nothing
-    bool radiance_only = false;          ///< stop at radiance (the detector stage is [G]'s)
-    sensor::RenderOptions render;        ///< everything else
-    dirsig::ReadOptions read;            ///< how the input files are resolved
-    std::vector<std::string> arguments;  ///< the command line, program first
+    std::filesystem::path input;     ///< the .jsim or .sim
+    std::filesystem::path schedule;  ///< --schedule FILE (empty: the whole schedule)
+    bool dry_run = false;            ///< print the plan, trace nothing
+    bool radiance_only = false;      ///< stop at radiance (the detector stage is [G]'s)
+    sensor::RenderOptions render;    ///< everything else
+    dirsig::ReadOptions read;        ///< how the input files are resolved
 };
 
 /// Parses --convergence's "min,max,threshold" (threshold in W/(cm² sr µm)). Throws

@@ -47,8 +47,6 @@ struct Options {
     /// context, not from here).
     schedule::ScheduleOptions schedule;
     dirsig::ReadOptions read_options;
-    /// The command line as given (provenance), program name first.
-    std::vector<std::string> arguments;
 };
 
 /// Runs glint-schedule writing data to `out` (or the -o file). Diagnostics go to ctx.log

@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
 // The per-run context every tool entry point receives: log, progress, cancellation and the
-// common options (threads, seed). No state lives anywhere else.
+// common options (threads, seed) and the command line. No state lives anywhere else.
 #pragma once
 
 #include <cstdint>
+#include <string>
+#include <vector>
 
 #include "glint/core/cancel.h"
 #include "glint/core/log.h"
 #include "glint/core/progress.h"
+#include "glint/core/text.h"
 
 namespace glint {
 
@@ -21,6 +24,13 @@ struct Context {
     CancelToken cancel;
     unsigned threads = 0;  ///< 0 = all hardware threads
     std::uint64_t seed = kDefaultSeed;
+    /// The command line, program first by its name ("glint-render"), the arguments as typed
+    /// (the runner records it once; outputs carry it as provenance). Empty when a library
+    /// entry point is called directly.
+    std::vector<std::string> arguments;
+
+    /// The arguments as one shell-quoted line (format_command_line), for ENVI headers.
+    std::string command_line() const { return format_command_line(arguments); }
 };
 
 }  // namespace glint

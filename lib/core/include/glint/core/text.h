@@ -30,6 +30,10 @@ std::string join(std::span<const std::string_view> items, std::string_view separ
 std::string join(std::span<const std::string> items, std::string_view separator,
                  std::string_view last_separator = {});
 
+/// Quotes an argv for a log line (single quotes where needed). For display only: nothing
+/// glint runs goes through a shell.
+std::string format_command_line(std::span<const std::string> argv);
+
 /// `text` without leading and trailing blanks (space, tab, CR, LF, FF, VT).
 std::string_view trim(std::string_view text) noexcept;
 

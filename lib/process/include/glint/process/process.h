@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "glint/core/cancel.h"
+#include "glint/core/text.h"
 
 namespace glint::process {
 
@@ -73,9 +74,5 @@ ProcessResult run_process(const ProcessOptions& options);
 /// (the PATH variable when null). Empty PATH entries mean the current directory.
 std::optional<std::filesystem::path> find_program(std::string_view name,
                                                   const char* path_env = nullptr);
-
-/// Quotes an argv for a log line (single quotes where needed). For display only: nothing
-/// glint runs goes through a shell.
-std::string format_command_line(const std::vector<std::string>& argv);
 
 }  // namespace glint::process

@@ -46,10 +46,8 @@ struct RenderOptions {
     std::filesystem::path data_dir;
     /// Global capture indices to render (--schedule FILE); empty: all.
     std::set<std::uint64_t> only_captures;
-    /// Provenance written into every header.
+    /// Provenance written into every header (with the Context's command line).
     std::string version;
-    std::string command_line;
-    std::vector<std::string> arguments;  ///< the command line, program first
     /// DIRSIG's --log_info_filename: the capture list (captures, time windows, files) of the
     /// run, written atomically when the run ends (also for plan()); empty: none.
     std::filesystem::path log_info_file;
