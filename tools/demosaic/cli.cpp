@@ -55,7 +55,7 @@ void DemosaicCli::configure(CLI::App& app) {
 }
 
 void DemosaicCli::finish() {
-    app_demosaic::DemosaicToolOptions& o = m_options;
+    app_demosaic::Options& o = m_options;
     std::size_t next = 0;
     if (!m_input.empty()) {
         o.input = m_input;
@@ -89,10 +89,9 @@ void DemosaicCli::finish() {
     }
 }
 
-int DemosaicCli::execute(Context& ctx, std::ostream& /*out*/) {
+int DemosaicCli::execute(Context& ctx, std::ostream& out) {
     finish();
-    app_demosaic::run_demosaic(m_options, ctx);
-    return 0;
+    return app_demosaic::run(m_options, ctx, out);
 }
 
 }  // namespace glint::tools::demosaic

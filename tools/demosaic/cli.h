@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The command line of glint-demosaic: options (with the spellings of the processing-task
 // example of the DIRSIG5 BasicPlatform manual, --input_filename= and --output_filename=),
-// parsed by CLI11 into app_demosaic::DemosaicToolOptions.
+// parsed by CLI11 into app_demosaic::Options.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -25,7 +25,7 @@ private:
     void finish();
 
     CLI::App* m_app = nullptr;
-    app_demosaic::DemosaicToolOptions m_options;
+    app_demosaic::Options m_options;
     std::vector<std::string> m_files;
     std::string m_input;
     std::string m_output;

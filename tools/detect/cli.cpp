@@ -2,33 +2,10 @@
 // glint-detect's options (docs/tools/glint-detect.md).
 #include "cli.h"
 
-#include <cctype>
-
 #include "glint/core/error.h"
 #include "glint/io/envi.h"
 
 namespace glint::tools::detect {
-namespace {
-
-std::string lower(std::string text) {
-    for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return text;
-}
-
-/// An ENVI data type given as a name ("uint16") or a code ("12").
-io::EnviDataType parse_data_type(const std::string& text) {
-    for (long code : {1L, 2L, 3L, 4L, 5L, 12L, 13L, 14L, 15L}) {
-        const auto type = io::envi_type_from_code(code);
-        if (lower(text) == io::envi_type_name(*type) || text == std::to_string(code)) {
-            return *type;
-        }
-    }
-    throw usage_error("--data-type: unknown ENVI data type '" + text +
-                      "' (uint8, int16, uint16, int32, uint32, int64, uint64, float32, float64 "
-                      "or their codes 1, 2, 12, 3, 13, 14, 15, 4, 5)");
-}
-
-}  // namespace
 
 void DetectCli::configure(CLI::App& app) {
     m_app = &app;
@@ -84,7 +61,7 @@ void DetectCli::configure(CLI::App& app) {
         ->type_name("MODE");
 }
 
-int DetectCli::execute(Context& ctx, std::ostream& /*out*/) {
+int DetectCli::execute(Context& ctx, std::ostream& out) {
     const CLI::App& app = *m_app;
     glint::detect::DetectorOverrides& o = m_options.overrides;
     if (app.count("--qe") > 0) o.quantum_efficiency = m_qe;
@@ -94,44 +71,18 @@ int DetectCli::execute(Context& ctx, std::ostream& /*out*/) {
     if (app.count("--min-electrons") > 0) o.min_electrons = m_min_e;
     if (app.count("--max-electrons") > 0) o.max_electrons = m_max_e;
     if (app.count("--integration-time") > 0) o.integration_time_s = m_time;
-    if (app.count("--data-type") > 0) o.data_type = parse_data_type(m_data_type);
-    if (app.count("--mosaic") > 0) {
-        const std::string m = lower(m_mosaic);
-        if (m == "none") {
-            o.mosaic = glint::detect::MosaicChoice::none;
-        } else if (m == "bayer") {
-            o.mosaic = glint::detect::MosaicChoice::bayer;
-        } else if (m == "truesense") {
-            o.mosaic = glint::detect::MosaicChoice::truesense;
-        } else {
-            throw usage_error("--mosaic: expected bayer, truesense or none, got '" + m_mosaic +
-                              "'");
-        }
-    }
+    if (app.count("--data-type") > 0) o.data_type = app_detect::parse_data_type(m_data_type);
+    if (app.count("--mosaic") > 0) o.mosaic = app_detect::parse_mosaic(m_mosaic);
     if (app.count("--bayer-phase") > 0) {
-        o.bayer_phase = glint::detect::bayer_phase_from_name(m_phase);
-        if (!o.bayer_phase) {
-            throw usage_error("--bayer-phase: expected rggb, grbg, gbrg or bggr, got '" + m_phase +
-                              "'");
-        }
+        o.bayer_phase = app_detect::parse_bayer_phase(m_phase);
         if (o.mosaic == glint::detect::MosaicChoice::truesense ||
             o.mosaic == glint::detect::MosaicChoice::none) {
             throw usage_error("--bayer-phase applies to Bayer mosaics only");
         }
     }
-    if (app.count("--tdi-mode") > 0) {
-        const std::string m = lower(m_tdi_mode);
-        if (m == "charge") {
-            o.tdi_mode = glint::detect::TdiMode::charge;
-        } else if (m == "digital") {
-            o.tdi_mode = glint::detect::TdiMode::digital;
-        } else {
-            throw usage_error("--tdi-mode: expected charge or digital, got '" + m_tdi_mode + "'");
-        }
-    }
+    if (app.count("--tdi-mode") > 0) o.tdi_mode = app_detect::parse_tdi_mode(m_tdi_mode);
     if (app.count("--seed") > 0) m_options.seed = ctx.seed;
-    app_detect::run(m_options, ctx);
-    return 0;
+    return app_detect::run(m_options, ctx, out);
 }
 
 }  // namespace glint::tools::detect

@@ -40,7 +40,7 @@ void EnviCli::configure(CLI::App& app) {
     m_info->add_option("--format", m_info_format, "Report format: text or json")
         ->check(CLI::IsMember({"text", "json"}))
         ->capture_default_str();
-    m_info->add_option("files", m_info_options.files, "ENVI data files or headers")
+    m_info->add_option("files", m_options.info.files, "ENVI data files or headers")
         ->required()
         ->type_name("FILE");
 
@@ -48,7 +48,7 @@ void EnviCli::configure(CLI::App& app) {
     m_stats->add_option("--format", m_stats_format, "Report format: text or json")
         ->check(CLI::IsMember({"text", "json"}))
         ->capture_default_str();
-    m_stats->add_option("file", m_stats_options.file, "ENVI file (or any image)")
+    m_stats->add_option("file", m_options.stats.file, "ENVI file (or any image)")
         ->required()
         ->type_name("FILE");
 
@@ -61,7 +61,7 @@ void EnviCli::configure(CLI::App& app) {
         ->type_name("FILE");
     c.add_option("-o,--output,--output_filename", m_output, "Output file (image_tool spelling)")
         ->type_name("FILE");
-    c.add_option("-f,--format", m_convert_options.format,
+    c.add_option("-f,--format", m_options.convert.format,
                  "Output format: png, tiff, jpeg, exr, ppm or envi (default: from OUT's "
                  "extension)");
     c.add_option("--band", m_band, "Write this one band (numbered from 0)")->type_name("N");
@@ -72,13 +72,13 @@ void EnviCli::configure(CLI::App& app) {
     c.add_option("--percent", m_percent,
                  "Percentile stretch: clip P% of the values at each end (0 <= P < 50)")
         ->type_name("P");
-    c.add_flag("--per-band,--per_band", m_convert_options.per_band,
+    c.add_flag("--per-band,--per_band", m_options.convert.per_band,
                "Stretch each band on its own limits (default: one stretch for all bands)");
     c.add_option("--min", m_min, "Fixed stretch: this value maps to 0 (with --max)")
         ->type_name("A");
     c.add_option("--max", m_max, "Fixed stretch: this value maps to full scale (with --min)")
         ->type_name("B");
-    c.add_flag("--raw", m_convert_options.raw, "No stretch: write values unchanged");
+    c.add_flag("--raw", m_options.convert.raw, "No stretch: write values unchanged");
     c.add_option("--bit-depth,--bit_depth", m_bit_depth,
                  "Output bits per value: 8, 16 (half for EXR), 32 (float); ENVI also 64")
         ->check(CLI::IsMember({8, 16, 32, 64}))
@@ -90,19 +90,19 @@ void EnviCli::configure(CLI::App& app) {
 
     m_encode = app.add_subcommand("encode", "Encode image frames into a video with ffmpeg");
     CLI::App& e = *m_encode;
-    e.add_option("-r,--framerate", m_encode_options.framerate, "Frames per second")
+    e.add_option("-r,--framerate", m_options.encode.framerate, "Frames per second")
         ->capture_default_str()
         ->type_name("F");
-    e.add_option("-o,--output", m_encode_options.output, "Output video (e.g. video.mp4)")
+    e.add_option("-o,--output", m_options.encode.output, "Output video (e.g. video.mp4)")
         ->required()
         ->type_name("FILE");
-    e.add_option("--codec", m_encode_options.codec,
+    e.add_option("--codec", m_options.encode.codec,
                  "ffmpeg video codec (default: libx264 for mp4/m4v/mov/mkv)");
-    e.add_option("--pix-fmt", m_encode_options.pixel_format,
+    e.add_option("--pix-fmt", m_options.encode.pixel_format,
                  "ffmpeg pixel format (default: yuv420p with libx264)");
     e.add_option("--crf", m_crf, "libx264 constant rate factor, 0-51 (ffmpeg's default: 23)");
     e.add_option("--timeout", m_timeout_s, "Stop ffmpeg after this many seconds")->type_name("S");
-    e.add_option("frames", m_encode_options.frames,
+    e.add_option("frames", m_options.encode.frames,
                  "Frames in display order, or one pattern such as frames/f%04d.png")
         ->required()
         ->type_name("FRAME");
@@ -111,7 +111,7 @@ void EnviCli::configure(CLI::App& app) {
 }
 
 void EnviCli::finish_convert() {
-    app_envi::ConvertOptions& o = m_convert_options;
+    app_envi::ConvertOptions& o = m_options.convert;
     CLI::App& c = *m_convert;
     if (!m_output.empty()) {
         if (m_convert_files.size() != 1) {
@@ -141,26 +141,24 @@ void EnviCli::finish_convert() {
 }
 
 int EnviCli::execute(Context& ctx, std::ostream& out) {
+    using app_envi::Subcommand;
     if (m_info->parsed()) {
-        m_info_options.format = *app_envi::report_format_from_name(m_info_format);
-        return app_envi::run_info(m_info_options, ctx, out);
-    }
-    if (m_stats->parsed()) {
-        m_stats_options.format = *app_envi::report_format_from_name(m_stats_format);
-        return app_envi::run_stats(m_stats_options, ctx, out);
-    }
-    if (m_convert->parsed()) {
+        m_options.subcommand = Subcommand::info;
+        m_options.info.format = *app_envi::report_format_from_name(m_info_format);
+    } else if (m_stats->parsed()) {
+        m_options.subcommand = Subcommand::stats;
+        m_options.stats.format = *app_envi::report_format_from_name(m_stats_format);
+    } else if (m_convert->parsed()) {
+        m_options.subcommand = Subcommand::convert;
         finish_convert();
-        app_envi::run_convert(m_convert_options, ctx);
-        return 0;
+    } else if (m_encode->parsed()) {
+        m_options.subcommand = Subcommand::encode;
+        if (m_encode->count("--crf") > 0) m_options.encode.crf = m_crf;
+        if (m_encode->count("--timeout") > 0) m_options.encode.timeout_s = m_timeout_s;
+    } else {
+        throw usage_error("no subcommand given");
     }
-    if (m_encode->parsed()) {
-        if (m_encode->count("--crf") > 0) m_encode_options.crf = m_crf;
-        if (m_encode->count("--timeout") > 0) m_encode_options.timeout_s = m_timeout_s;
-        app_envi::run_encode(m_encode_options, ctx);
-        return 0;
-    }
-    throw usage_error("no subcommand given");
+    return app_envi::run(m_options, ctx, out);
 }
 
 }  // namespace glint::tools::envi

@@ -7,10 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "glint/app_envi/convert.h"
-#include "glint/app_envi/encode.h"
-#include "glint/app_envi/info.h"
-#include "glint/app_envi/stats.h"
+#include "glint/app_envi/envi_tool.h"
 #include "glint/core/context.h"
 
 namespace glint::tools::envi {
@@ -31,12 +28,10 @@ private:
     CLI::App* m_convert = nullptr;
     CLI::App* m_encode = nullptr;
 
-    app_envi::InfoOptions m_info_options;
-    app_envi::StatsOptions m_stats_options;
+    app_envi::Options m_options;
     std::string m_info_format = "text";
     std::string m_stats_format = "text";
 
-    app_envi::ConvertOptions m_convert_options;
     std::vector<std::string> m_convert_files;
     std::string m_output;
     std::string m_bands;
@@ -48,7 +43,6 @@ private:
     std::size_t m_band = 0;
     int m_bit_depth = 8;
 
-    app_envi::EncodeOptions m_encode_options;
     int m_crf = 23;
     double m_timeout_s = 0;
 };

@@ -86,9 +86,8 @@ std::string write_envi(const fs::path& output, const demosaic::RgbImage& image,
     return type_name;
 }
 
-void write_picture(const DemosaicToolOptions& o, io::OutputKind kind,
-                   const demosaic::RgbImage& image, const Provenance& provenance,
-                   DemosaicToolResult& result, Context& ctx) {
+void write_picture(const Options& o, io::OutputKind kind, const demosaic::RgbImage& image,
+                   const Provenance& provenance, Result& result, Context& ctx) {
     const io::ImageFormat format = io::image_format_of(kind);
     const io::PixelType type = io::output_pixel_type(format, o.bit_depth, o.output);
     const bool integer = io::pixel_type_is_integer(type);

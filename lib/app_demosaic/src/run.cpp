@@ -4,6 +4,7 @@
 
 #include "glint/core/atomic_file.h"
 #include "glint/core/error.h"
+#include "glint/core/runner.h"
 #include "glint/io/image.h"
 #include "stages.h"
 
@@ -13,7 +14,7 @@ namespace {
 namespace fs = std::filesystem;
 using io::OutputKind;
 
-void check_options(const DemosaicToolOptions& o, OutputKind kind) {
+void check_options(const Options& o, OutputKind kind) {
     if (o.input.empty()) throw usage_error("no input file named");
     if (o.output.empty()) throw usage_error("no output file named");
     io::check_stretch_request({o.gamma, o.percent, o.min, o.max});
@@ -54,8 +55,8 @@ HeaderCfa header_cfa(const internal::MosaicSource& source) {
 
 /// The pattern, phase and method to apply: options first, then the input's header, then the
 /// defaults; throws usage errors for a phase or method that does not fit the pattern.
-demosaic::DemosaicOptions resolve(const DemosaicToolOptions& o,
-                                  const internal::MosaicSource& source, Context& ctx) {
+demosaic::DemosaicOptions resolve(const Options& o, const internal::MosaicSource& source,
+                                  Context& ctx) {
     const HeaderCfa cfa = header_cfa(source);
     demosaic::DemosaicOptions used;
     used.pattern = o.pattern.value_or(cfa.pattern.value_or(demosaic::CfaPattern::bayer));
@@ -108,7 +109,7 @@ demosaic::DemosaicMethod parse_method(const std::string& name) {
                       "pan-guided for truesense)");
 }
 
-DemosaicToolResult run_demosaic(const DemosaicToolOptions& o, Context& ctx) {
+Result demosaic_file(const Options& o, Context& ctx) {
     const OutputKind kind = io::output_kind_of(o.output, o.format);
     check_options(o, kind);
     const internal::MosaicSource source = internal::read_mosaic(o.input, ctx);
@@ -118,7 +119,7 @@ DemosaicToolResult run_demosaic(const DemosaicToolOptions& o, Context& ctx) {
         header += ".hdr";
         ensure_not_an_input(header, source.files);
     }
-    DemosaicToolResult result;
+    Result result;
     result.kind = kind;
     result.used = resolve(o, source, ctx);
     result.width = source.plane.width;
@@ -142,6 +143,11 @@ DemosaicToolResult run_demosaic(const DemosaicToolOptions& o, Context& ctx) {
         internal::write_picture(o, kind, image, provenance, result, ctx);
     }
     return result;
+}
+
+int run(const Options& options, Context& ctx, std::ostream& /*out*/) {
+    demosaic_file(options, ctx);
+    return kExitSuccess;
 }
 
 }  // namespace glint::app_demosaic

@@ -41,8 +41,7 @@ std::string write_envi(const std::filesystem::path& output, const demosaic::RgbI
 
 /// Writes an image of `kind` with the stretch the options ask for; fills the result's
 /// limits and stored type.
-void write_picture(const DemosaicToolOptions& options, io::OutputKind kind,
-                   const demosaic::RgbImage& image, const Provenance& provenance,
-                   DemosaicToolResult& result, Context& ctx);
+void write_picture(const Options& options, io::OutputKind kind, const demosaic::RgbImage& image,
+                   const Provenance& provenance, Result& result, Context& ctx);
 
 }  // namespace glint::app_demosaic::internal

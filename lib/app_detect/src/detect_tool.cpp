@@ -10,6 +10,7 @@
 
 #include "glint/core/atomic_file.h"
 #include "glint/core/error.h"
+#include "glint/core/runner.h"
 #include "glint/core/text.h"
 #include "glint/detect/adc.h"
 #include "glint/detect/chain.h"
@@ -90,7 +91,7 @@ void log_summary(const detect::DetectionSettings& s, const Result& r, Context& c
 
 }  // namespace
 
-Result run(const Options& options, Context& ctx) {
+Result detect_file(const Options& options, Context& ctx) {
     if (options.input.empty()) throw usage_error("no input file named");
     if (options.output.empty()) throw usage_error("no output file named (-o FILE)");
     const std::string input_name = options.input.string();
@@ -177,6 +178,11 @@ Result run(const Options& options, Context& ctx) {
     writer->commit();
     result.settings = std::move(settings);
     return result;
+}
+
+int run(const Options& options, Context& ctx, std::ostream& /*out*/) {
+    detect_file(options, ctx);
+    return kExitSuccess;
 }
 
 }  // namespace glint::app_detect

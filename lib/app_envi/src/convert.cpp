@@ -319,7 +319,7 @@ ConvertResult to_envi(const ConvertOptions& o, RasterSource& source,
 
 }  // namespace
 
-ConvertResult run_convert(const ConvertOptions& o, Context& ctx) {
+ConvertResult convert_file(const ConvertOptions& o, Context& ctx) {
     const OutputKind kind = io::output_kind_of(o.output, o.format);
     check_options(o, kind);
     std::unique_ptr<RasterSource> source;

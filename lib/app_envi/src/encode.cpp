@@ -9,7 +9,7 @@
 
 namespace glint::app_envi {
 
-process::VideoResult run_encode(const EncodeOptions& options, Context& ctx) {
+process::VideoResult encode_frames(const EncodeOptions& options, Context& ctx) {
     if (options.frames.empty()) throw usage_error("no frames to encode");
     if (options.output.empty()) throw usage_error("no output video named (--output)");
     if (options.crf && (*options.crf < 0 || *options.crf > 51)) {

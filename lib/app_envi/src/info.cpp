@@ -145,7 +145,7 @@ std::string format_info_json(const fs::path& file, const io::EnviHeader& header,
     return info_json(file, header, data_path, header_path).dump(2);
 }
 
-int run_info(const InfoOptions& options, Context& ctx, std::ostream& out) {
+int report_info(const InfoOptions& options, Context& ctx, std::ostream& out) {
     if (options.files.empty()) throw usage_error("no files to report on");
     int status = 0;
     nlohmann::ordered_json all = nlohmann::ordered_json::array();

@@ -159,7 +159,7 @@ void write_stats(const StatsReport& report, ReportFormat format, std::ostream& o
     }
 }
 
-int run_stats(const StatsOptions& options, Context& ctx, std::ostream& out) {
+int report_stats(const StatsOptions& options, Context& ctx, std::ostream& out) {
     write_stats(compute_stats(options.file, ctx), options.format, out);
     return 0;
 }

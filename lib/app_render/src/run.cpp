@@ -93,8 +93,8 @@ std::filesystem::path default_data_dir() {
     return data_dir_lookup(candidates);
 }
 
-int run(Options options, Context& ctx, std::ostream& out) {
-    sensor::RenderOptions& render = options.render;
+int run(const Options& options, Context& ctx, std::ostream& out) {
+    sensor::RenderOptions render = options.render;
     render.schedule.seed = ctx.seed;
     render.version = version();
     render.radiance_only = options.radiance_only;

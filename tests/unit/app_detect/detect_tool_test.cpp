@@ -69,7 +69,7 @@ TEST_F(DetectToolTest, SameBytesForAnyThreadCount) {
     for (unsigned threads : {1u, 2u, 3u, 8u}) {
         m_ctx.threads = threads;
         const std::string name = "t" + std::to_string(threads) + ".img";
-        const Result r = run(options(input, name), m_ctx);
+        const Result r = detect_file(options(input, name), m_ctx);
         EXPECT_EQ(r.lines, 300u);
         EXPECT_EQ(r.settings.seed, kDefaultSeed);
         const std::string data = bytes(m_temp / name);
@@ -82,7 +82,7 @@ TEST_F(DetectToolTest, SameBytesForAnyThreadCount) {
     }
     Options other = options(input, "seed.img");
     other.seed = 2;
-    run(other, m_ctx);
+    detect_file(other, m_ctx);
     EXPECT_NE(bytes(m_temp / "seed.img"), reference);
 }
 
@@ -91,7 +91,7 @@ TEST_F(DetectToolTest, CapturesFromTheHeader) {
     h.set_extra("glint lines per capture", "6");
     h.set_extra("glint capture indices", "{4, 9}");
     const auto input = cube("in.img", 8, 12, 1e9, h);
-    const Result r = run(options(input, "dc.img"), m_ctx);
+    const Result r = detect_file(options(input, "dc.img"), m_ctx);
     EXPECT_EQ(r.captures, 2u);
     EXPECT_EQ(r.lines_per_capture, 6u);
     // The same pixels labelled captures 4 and 10: the first capture's counts are the same,
@@ -99,7 +99,7 @@ TEST_F(DetectToolTest, CapturesFromTheHeader) {
     io::EnviHeader swapped;
     swapped.set_extra("glint lines per capture", "6");
     swapped.set_extra("glint capture indices", "{4, 10}");
-    run(options(cube("in2.img", 8, 12, 1e9, swapped), "dc2.img"), m_ctx);
+    detect_file(options(cube("in2.img", 8, 12, 1e9, swapped), "dc2.img"), m_ctx);
     const std::string a = bytes(m_temp / "dc.img");
     const std::string b = bytes(m_temp / "dc2.img");
     EXPECT_EQ(a.substr(0, a.size() / 2), b.substr(0, b.size() / 2)) << "capture 4 alike";
@@ -109,7 +109,7 @@ TEST_F(DetectToolTest, CapturesFromTheHeader) {
     bad.set_extra("glint lines per capture", "6");
     bad.set_extra("glint capture indices", "{1, 2, 3}");
     try {
-        run(options(cube("bad.img", 8, 12, 1e9, bad), "bad_out.img"), m_ctx);
+        detect_file(options(cube("bad.img", 8, 12, 1e9, bad), "bad_out.img"), m_ctx);
         FAIL() << "no error";
     } catch (const Error& e) {
         EXPECT_THAT(e.what(), HasSubstr("glint capture indices: 3 capture indices for 2 captures"));
@@ -136,7 +136,7 @@ TEST_F(DetectToolTest, AFailingLineLeavesNothing) {
     }
     m_ctx.threads = 2;
     try {
-        run(options(m_temp / "bad.img", "dc.img"), m_ctx);
+        detect_file(options(m_temp / "bad.img", "dc.img"), m_ctx);
         FAIL() << "no error";
     } catch (const Error& e) {
         EXPECT_EQ(e.category(), ErrorCategory::input);

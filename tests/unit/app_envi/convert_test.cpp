@@ -36,10 +36,10 @@ TEST_F(ConvertTest, EnviTiffFloatEnviRoundTrip) {
     const auto cube = write_cube("cube.img", 7, 5, 3, io::EnviDataType::float32, ramp, header);
     ConvertOptions to_tiff = options_for(cube, path("cube.tif"));
     to_tiff.bit_depth = 32;
-    const ConvertResult r1 = run_convert(to_tiff, m_ctx);
+    const ConvertResult r1 = convert_file(to_tiff, m_ctx);
     EXPECT_TRUE(r1.limits.empty());  // float output: values unchanged
     EXPECT_EQ(r1.stored_type, "float");
-    const ConvertResult r2 = run_convert(options_for(path("cube.tif"), path("back.img")), m_ctx);
+    const ConvertResult r2 = convert_file(options_for(path("cube.tif"), path("back.img")), m_ctx);
     EXPECT_EQ(r2.stored_type, "float32");
 
     io::EnviHeader h1;
@@ -61,8 +61,8 @@ TEST_F(ConvertTest, EnviExrKeepsBandNamesAsChannels) {
     const auto cube = write_cube("cube.img", 4, 3, 2, io::EnviDataType::float32, ramp, header);
     ConvertOptions o = options_for(cube, path("cube.exr"));
     o.bands = {0, 1};
-    run_convert(o, m_ctx);
-    run_convert(options_for(path("cube.exr"), path("back.img")), m_ctx);
+    convert_file(o, m_ctx);
+    convert_file(options_for(path("cube.exr"), path("back.img")), m_ctx);
     io::EnviHeader back;
     const auto values = io::read_envi_bip(path("back.img"), &back);
     EXPECT_EQ(back.band_names, (std::vector<std::string>{"red", "nir"}));
@@ -73,7 +73,7 @@ TEST_F(ConvertTest, DefaultMinMaxStretchToPng) {
     // One band, values 0..9 along x: min 0 → 0, max 9 → 255, 3 → round(255/3) = 85.
     const auto cube = write_cube("g.img", 10, 2, 1, io::EnviDataType::float64,
                                  [](std::size_t x, std::size_t, std::size_t) { return double(x); });
-    const ConvertResult r = run_convert(options_for(cube, path("g.png")), m_ctx);
+    const ConvertResult r = convert_file(options_for(cube, path("g.png")), m_ctx);
     ASSERT_EQ(r.limits.size(), 1u);
     EXPECT_EQ(r.limits[0].low, 0.0);
     EXPECT_EQ(r.limits[0].high, 9.0);
@@ -94,7 +94,7 @@ TEST_F(ConvertTest, PercentStretchJointAndPerBand) {
     o.bands = {0, 1, 1};
     o.percent = 2.0;
     o.per_band = true;
-    ConvertResult r = run_convert(o, m_ctx);
+    ConvertResult r = convert_file(o, m_ctx);
     ASSERT_EQ(r.limits.size(), 3u);
     // n = 100, q = 0.02: ranks 1 and 98.
     EXPECT_EQ(r.limits[0].low, 1.0);
@@ -112,7 +112,7 @@ TEST_F(ConvertTest, PercentStretchJointAndPerBand) {
     // and ceil(0.98 * 299) = 294 → 1000 + (294 - 100) / 2 = 1097.
     fs::remove(path("p.png"));
     o.per_band = false;
-    r = run_convert(o, m_ctx);
+    r = convert_file(o, m_ctx);
     EXPECT_EQ(r.limits[0].low, 5.0);
     EXPECT_EQ(r.limits[0].high, 1097.0);
     EXPECT_EQ(r.limits[2].low, 5.0);
@@ -128,7 +128,7 @@ TEST_F(ConvertTest, FixedStretchGammaAnd16Bit) {
     o.max = 1.0;
     o.gamma = 2.0;
     o.bit_depth = 16;
-    run_convert(o, m_ctx);
+    convert_file(o, m_ctx);
     const io::Image png = io::read_image(path("f.png"));
     EXPECT_EQ(png.info.sample_type, io::SampleType::uint16);
     EXPECT_EQ(png.at(0, 0, 0), 0.0);
@@ -143,14 +143,14 @@ TEST_F(ConvertTest, BandSelection) {
     ConvertOptions one = options_for(cube, path("one.tif"));
     one.band = 2;
     one.raw = true;
-    run_convert(one, m_ctx);
+    convert_file(one, m_ctx);
     io::Image tif = io::read_image(path("one.tif"));
     ASSERT_EQ(tif.info.channels, 1u);
     EXPECT_EQ(tif.at(3, 1, 0), 23.0);
 
     ConvertOptions swap = options_for(cube, path("swap.img"));
     swap.bands = {2, 0};
-    const ConvertResult r = run_convert(swap, m_ctx);
+    const ConvertResult r = convert_file(swap, m_ctx);
     EXPECT_EQ(r.stored_type, "uint8");
     io::EnviHeader h;
     const auto values = io::read_envi_bip(path("swap.img"), &h);
@@ -162,7 +162,7 @@ TEST_F(ConvertTest, BandSelection) {
     ConvertOptions bad = options_for(cube, path("bad.png"));
     bad.band = 3;
     try {
-        run_convert(bad, m_ctx);
+        convert_file(bad, m_ctx);
         FAIL() << "expected an error";
     } catch (const Error& e) {
         EXPECT_EQ(e.category(), ErrorCategory::usage);
@@ -176,7 +176,7 @@ TEST_F(ConvertTest, DefaultRgbBandsByWavelength) {
     header.wavelength_units = "Nanometers";
     header.wavelength = {400, 460, 550, 640, 800};
     const auto cube = write_cube("w.img", 2, 2, 5, io::EnviDataType::float32, ramp, header);
-    const ConvertResult r = run_convert(options_for(cube, path("w.png")), m_ctx);
+    const ConvertResult r = convert_file(options_for(cube, path("w.png")), m_ctx);
     EXPECT_EQ(r.bands, (std::vector<std::size_t>{3, 2, 1}));
 }
 
@@ -187,7 +187,7 @@ TEST_F(ConvertTest, ImageTypesMapToEnviTypes) {
     w.format = io::ImageFormat::png;
     w.pixel_type = io::PixelType::uint16;
     io::write_image(path("in16.png"), 6, 4, 3, pixels, w);
-    const ConvertResult r = run_convert(options_for(path("in16.png"), path("o16.img")), m_ctx);
+    const ConvertResult r = convert_file(options_for(path("in16.png"), path("o16.img")), m_ctx);
     EXPECT_EQ(r.stored_type, "uint16");
     io::EnviHeader h;
     EXPECT_EQ(io::read_envi_bip(path("o16.img"), &h), pixels);
@@ -198,10 +198,10 @@ TEST_F(ConvertTest, ImageTypesMapToEnviTypes) {
     std::vector<double> halves(6 * 4 * 3, 0.5);
     io::write_image(path("h.exr"), 6, 4, 3, halves, w);
     ConvertOptions o = options_for(path("h.exr"), path("h.img"));
-    EXPECT_EQ(run_convert(o, m_ctx).stored_type, "float32");
+    EXPECT_EQ(convert_file(o, m_ctx).stored_type, "float32");
     o.output = path("h64.img");
     o.data_type = io::EnviDataType::float64;
-    EXPECT_EQ(run_convert(o, m_ctx).stored_type, "float64");
+    EXPECT_EQ(convert_file(o, m_ctx).stored_type, "float64");
 }
 
 TEST_F(ConvertTest, RefusalsLeaveNoOutput) {
@@ -209,7 +209,7 @@ TEST_F(ConvertTest, RefusalsLeaveNoOutput) {
                                  [](std::size_t, std::size_t, std::size_t) { return 1.0; });
     auto expect_usage = [&](ConvertOptions o, const std::string& needle) {
         try {
-            run_convert(o, m_ctx);
+            convert_file(o, m_ctx);
             ADD_FAILURE() << "expected an error: " << needle;
         } catch (const Error& e) {
             EXPECT_EQ(e.category(), ErrorCategory::usage) << e.what();
@@ -237,7 +237,7 @@ TEST_F(ConvertTest, RefusalsLeaveNoOutput) {
     std::ofstream(path("bad.img.hdr")) << "ENVI\nsamples = 2\nlines = 2\nbands = 1\n"
                                           "data type = 99\n";
     std::ofstream(path("bad.img")) << "abcd";
-    EXPECT_THROW(run_convert(options_for(path("bad.img"), path("bad.png")), m_ctx), Error);
+    EXPECT_THROW(convert_file(options_for(path("bad.img"), path("bad.png")), m_ctx), Error);
     EXPECT_FALSE(fs::exists(path("o.png")));
     EXPECT_FALSE(fs::exists(path("bad.png")));
     EXPECT_TRUE(temporaries().empty());
@@ -248,7 +248,7 @@ TEST_F(ConvertTest, CancelledRunLeavesNothing) {
                                  [](std::size_t, std::size_t, std::size_t) { return 1.0; });
     m_ctx.cancel.cancel();
     try {
-        run_convert(options_for(cube, path("c.png")), m_ctx);
+        convert_file(options_for(cube, path("c.png")), m_ctx);
         FAIL() << "expected cancellation";
     } catch (const Error& e) {
         EXPECT_EQ(e.category(), ErrorCategory::cancelled);

@@ -37,7 +37,7 @@ TEST_F(InfoTest, JsonFields) {
     options.files = {file};
     options.format = ReportFormat::json;
     std::ostringstream out;
-    EXPECT_EQ(run_info(options, m_ctx, out), 0);
+    EXPECT_EQ(report_info(options, m_ctx, out), 0);
     const auto j = nlohmann::json::parse(out.str());
     EXPECT_EQ(j["file"], file.string());
     EXPECT_EQ(j["samples"], 5);
@@ -67,7 +67,7 @@ TEST_F(InfoTest, TextReport) {
     InfoOptions options;
     options.files = {file};
     std::ostringstream out;
-    EXPECT_EQ(run_info(options, m_ctx, out), 0);
+    EXPECT_EQ(report_info(options, m_ctx, out), 0);
     const std::string text = out.str();
     for (const char* expected :
          {"samples:           5", "lines:             4", "data type:         uint8 (1)",
@@ -89,7 +89,7 @@ TEST_F(InfoTest, SeveralFilesCarryOnPastABadOne) {
     options.files = {good, path("bad.img"), path("missing.img"), good};
     options.format = ReportFormat::json;
     std::ostringstream out;
-    EXPECT_EQ(run_info(options, m_ctx, out), 1);
+    EXPECT_EQ(report_info(options, m_ctx, out), 1);
     const auto j = nlohmann::json::parse(out.str());
     ASSERT_TRUE(j.is_array());
     EXPECT_EQ(j.size(), 2u);

@@ -84,7 +84,7 @@ TEST_F(StatsTest, JsonAndTextReports) {
     StatsOptions options;
     options.file = file;
     options.format = ReportFormat::json;
-    EXPECT_EQ(run_stats(options, m_ctx, json), 0);
+    EXPECT_EQ(report_stats(options, m_ctx, json), 0);
     const auto j = nlohmann::json::parse(json.str());
     EXPECT_EQ(j["bands"], 2);
     EXPECT_EQ(j["data_type"], "uint16");
@@ -94,7 +94,7 @@ TEST_F(StatsTest, JsonAndTextReports) {
     EXPECT_EQ(j["band_stats"][1]["mean"], 101.0);
     std::ostringstream text;
     options.format = ReportFormat::text;
-    run_stats(options, m_ctx, text);
+    report_stats(options, m_ctx, text);
     EXPECT_NE(text.str().find("green"), std::string::npos);
     EXPECT_NE(text.str().find("uint16"), std::string::npos);
 }

@@ -32,6 +32,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -44,7 +45,7 @@
 namespace glint::app_demosaic {
 
 /// Options of glint-demosaic.
-struct DemosaicToolOptions {
+struct Options {
     std::filesystem::path input;
     std::filesystem::path output;
     /// Unset: the input header's `glint cfa pattern` (glint-detect writes it), else bayer.
@@ -64,7 +65,7 @@ struct DemosaicToolOptions {
 };
 
 /// What glint-demosaic did.
-struct DemosaicToolResult {
+struct Result {
     std::size_t width = 0;
     std::size_t height = 0;
     demosaic::DemosaicOptions used;  ///< pattern, phase and method applied
@@ -86,6 +87,10 @@ demosaic::DemosaicMethod parse_method(const std::string& name);
 /// that would overwrite the input; input for a file that is not a one-band image or is
 /// smaller than one block of the pattern (both naming the file); io for read/write failures.
 /// Nothing is left under the output name unless it succeeded.
-DemosaicToolResult run_demosaic(const DemosaicToolOptions& options, Context& ctx);
+Result demosaic_file(const Options& options, Context& ctx);
+
+/// glint-demosaic: demosaic_file; returns the exit status (0; failures are thrown). `out`
+/// (stdout) gets nothing: the tool writes its output file.
+int run(const Options& options, Context& ctx, std::ostream& out);
 
 }  // namespace glint::app_demosaic

@@ -8,10 +8,13 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <ostream>
 #include <string>
 
 #include "glint/core/context.h"
+#include "glint/detect/cfa.h"
 #include "glint/detect/detector.h"
+#include "glint/io/envi.h"
 
 namespace glint::app_detect {
 
@@ -25,6 +28,16 @@ struct Options {
     detect::DetectorOverrides overrides;  ///< --qe, --read-noise, ..., --mosaic, --tdi-mode
     std::optional<std::uint64_t> seed;    ///< --seed; else the header's `glint seed`, else 1
 };
+
+/// --data-type: an ENVI data type by name ("uint16") or code ("12"). Throws glint::Error
+/// (usage) naming the choices.
+io::EnviDataType parse_data_type(const std::string& text);
+/// --mosaic: bayer, truesense or none (any case). Throws glint::Error (usage).
+detect::MosaicChoice parse_mosaic(const std::string& text);
+/// --bayer-phase: rggb, grbg, gbrg or bggr. Throws glint::Error (usage).
+detect::BayerPhase parse_bayer_phase(const std::string& text);
+/// --tdi-mode: charge or digital (any case). Throws glint::Error (usage).
+detect::TdiMode parse_tdi_mode(const std::string& text);
 
 /// What a run did.
 struct Result {
@@ -41,6 +54,10 @@ struct Result {
 /// band count other than the channel count, capture keys that do not match the lines, a
 /// value the detector cannot take); io when a file cannot be read or written. Nothing is
 /// left under the output name unless the run succeeded.
-Result run(const Options& options, Context& ctx);
+Result detect_file(const Options& options, Context& ctx);
+
+/// glint-detect: detect_file; returns the exit status (0; failures are thrown). `out`
+/// (stdout) gets nothing: the tool writes its output file.
+int run(const Options& options, Context& ctx, std::ostream& out);
 
 }  // namespace glint::app_detect

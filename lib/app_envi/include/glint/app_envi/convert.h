@@ -72,6 +72,6 @@ struct ConvertResult {
 /// Converts. Throws glint::Error: usage for contradictory options, an out-of-range band or
 /// an output that would overwrite the input; input/io naming the file otherwise. Nothing is
 /// left under the output name unless the conversion succeeded.
-ConvertResult run_convert(const ConvertOptions& options, Context& ctx);
+ConvertResult convert_file(const ConvertOptions& options, Context& ctx);
 
 }  // namespace glint::app_envi

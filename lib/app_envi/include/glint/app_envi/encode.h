@@ -27,6 +27,6 @@ struct EncodeOptions {
 };
 
 /// Encodes; throws glint::Error (see process::encode_video).
-process::VideoResult run_encode(const EncodeOptions& options, Context& ctx);
+process::VideoResult encode_frames(const EncodeOptions& options, Context& ctx);
 
 }  // namespace glint::app_envi

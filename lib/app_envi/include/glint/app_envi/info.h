@@ -33,9 +33,9 @@ struct InfoOptions {
 /// Reports on every file to `out`. A file that cannot be read is reported through
 /// ctx.log.error (naming it) and skipped; the others are still reported.
 /// Returns 0 when every file was reported, 1 otherwise.
-int run_info(const InfoOptions& options, Context& ctx, std::ostream& out);
+int report_info(const InfoOptions& options, Context& ctx, std::ostream& out);
 
-/// The text report of one file (what run_info prints for it).
+/// The text report of one file (what report_info prints for it).
 std::string format_info_text(const std::filesystem::path& file, const io::EnviHeader& header,
                              const std::filesystem::path& data_path,
                              const std::filesystem::path& header_path);

@@ -59,6 +59,6 @@ StatsReport compute_stats(const std::filesystem::path& file, Context& ctx);
 void write_stats(const StatsReport& report, ReportFormat format, std::ostream& out);
 
 /// compute_stats + write_stats; returns 0.
-int run_stats(const StatsOptions& options, Context& ctx, std::ostream& out);
+int report_stats(const StatsOptions& options, Context& ctx, std::ostream& out);
 
 }  // namespace glint::app_envi

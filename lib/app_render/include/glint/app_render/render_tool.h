@@ -40,6 +40,6 @@ std::uint64_t parse_memory_size(const std::string& text);
 std::filesystem::path default_data_dir();
 
 /// Runs glint-render; returns the exit status.
-int run(Options options, Context& ctx, std::ostream& out);
+int run(const Options& options, Context& ctx, std::ostream& out);
 
 }  // namespace glint::app_render

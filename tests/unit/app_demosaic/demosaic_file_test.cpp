@@ -45,18 +45,18 @@ dm::Plane write_mosaic(const std::filesystem::path& path, std::size_t w, std::si
     return plane;
 }
 
-DemosaicToolOptions options(const std::filesystem::path& input,
+Options options(const std::filesystem::path& input,
                             const std::filesystem::path& output) {
-    DemosaicToolOptions o;
+    Options o;
     o.input = input;
     o.output = output;
     return o;
 }
 
-Error run_expecting_error(const DemosaicToolOptions& options) {
+Error run_expecting_error(const Options& options) {
     Context ctx;
     try {
-        run_demosaic(options, ctx);
+        demosaic_file(options, ctx);
     } catch (const Error& e) {
         return e;
     }
@@ -67,14 +67,14 @@ Error run_expecting_error(const DemosaicToolOptions& options) {
 TEST(RunDemosaic, EnviOutputHoldsTheDemosaicedValuesAndProvenance) {
     TempDir dir;
     const dm::Plane plane = write_mosaic(dir / "in.img", 9, 7);
-    DemosaicToolOptions o;
+    Options o;
     o.input = dir / "in.img";
     o.output = dir / "out.img";
     o.phase = dm::BayerPhase::gbrg;
     o.method = dm::DemosaicMethod::mhc;
     Context ctx;
     ctx.arguments = {"glint-demosaic", "in.img", "out.img"};  // as the runner records them
-    const DemosaicToolResult result = run_demosaic(o, ctx);
+    const Result result = demosaic_file(o, ctx);
     EXPECT_EQ(result.kind, io::OutputKind::envi);
     EXPECT_EQ(result.stored_type, "uint16");
     EXPECT_EQ(result.used.method, dm::DemosaicMethod::mhc);
@@ -102,11 +102,11 @@ TEST(RunDemosaic, EnviOutputHoldsTheDemosaicedValuesAndProvenance) {
 TEST(RunDemosaic, Float32KeepsMhcOvershoot) {
     TempDir dir;
     const dm::Plane plane = write_mosaic(dir / "in.img", 12, 10);
-    DemosaicToolOptions o = options(dir / "in.img", dir / "out.img");
+    Options o = options(dir / "in.img", dir / "out.img");
     o.method = dm::DemosaicMethod::mhc;
     o.data_type = io::EnviDataType::float32;
     Context ctx;
-    run_demosaic(o, ctx);
+    demosaic_file(o, ctx);
     const std::vector<double> values = io::read_envi_bip(dir / "out.img", nullptr);
     const dm::RgbImage expected = dm::demosaic_bayer_mhc(plane, dm::BayerPhase::rggb);
     for (std::size_t i = 0; i < values.size(); ++i) {
@@ -117,9 +117,9 @@ TEST(RunDemosaic, Float32KeepsMhcOvershoot) {
 TEST(RunDemosaic, PngGetsAMinMaxStretchOverTheThreeChannels) {
     TempDir dir;
     const dm::Plane plane = write_mosaic(dir / "in.img", 16, 12);
-    DemosaicToolOptions o = options(dir / "in.img", dir / "out.png");
+    Options o = options(dir / "in.img", dir / "out.png");
     Context ctx;
-    const DemosaicToolResult result = run_demosaic(o, ctx);
+    const Result result = demosaic_file(o, ctx);
     ASSERT_TRUE(result.limits);
     const dm::RgbImage rgb = dm::demosaic_bayer_bilinear(plane, dm::BayerPhase::rggb);
     EXPECT_EQ(result.limits->low, *std::min_element(rgb.rgb.begin(), rgb.rgb.end()));
@@ -137,10 +137,10 @@ TEST(RunDemosaic, PngGetsAMinMaxStretchOverTheThreeChannels) {
 TEST(RunDemosaic, ExrKeepsTheValuesUnlessAStretchIsAsked) {
     TempDir dir;
     const dm::Plane plane = write_mosaic(dir / "in.img", 8, 8);
-    DemosaicToolOptions o = options(dir / "in.img", dir / "out.exr");
+    Options o = options(dir / "in.img", dir / "out.exr");
     o.pattern = dm::CfaPattern::truesense;
     Context ctx;
-    const DemosaicToolResult result = run_demosaic(o, ctx);
+    const Result result = demosaic_file(o, ctx);
     EXPECT_FALSE(result.limits);
     EXPECT_EQ(result.used.method, dm::DemosaicMethod::pan_guided);
     const io::Image image = io::read_image(dir / "out.exr");
@@ -155,10 +155,10 @@ TEST(RunDemosaic, PatternAndPhaseDefaultToWhatTheInputHeaderRecords) {
     write_mosaic(dir / "ts.img", 8, 8, 1, "truesense");
     write_mosaic(dir / "bayer.img", 8, 8, 1, "bayer", "bggr");
     Context ctx;
-    DemosaicToolResult r = run_demosaic(options(dir / "ts.img", dir / "ts_rgb.img"), ctx);
+    Result r = demosaic_file(options(dir / "ts.img", dir / "ts_rgb.img"), ctx);
     EXPECT_EQ(r.used.pattern, dm::CfaPattern::truesense);
     EXPECT_EQ(r.used.method, dm::DemosaicMethod::pan_guided);
-    r = run_demosaic(options(dir / "bayer.img", dir / "bayer_rgb.img"), ctx);
+    r = demosaic_file(options(dir / "bayer.img", dir / "bayer_rgb.img"), ctx);
     EXPECT_EQ(r.used.pattern, dm::CfaPattern::bayer);
     EXPECT_EQ(r.used.phase, dm::BayerPhase::bggr);
     io::EnviHeader h;
@@ -169,9 +169,9 @@ TEST(RunDemosaic, PatternAndPhaseDefaultToWhatTheInputHeaderRecords) {
     std::vector<std::string> warnings;
     ctx.log =
         Log([&](LogLevel, const std::string& m) { warnings.push_back(m); }, LogLevel::warning);
-    DemosaicToolOptions o = options(dir / "bayer.img", dir / "grbg.img");
+    Options o = options(dir / "bayer.img", dir / "grbg.img");
     o.phase = dm::BayerPhase::grbg;
-    r = run_demosaic(o, ctx);
+    r = demosaic_file(o, ctx);
     EXPECT_EQ(r.used.phase, dm::BayerPhase::grbg);
     ASSERT_EQ(warnings.size(), 1u);
     EXPECT_NE(warnings[0].find("records the Bayer phase bggr; using grbg as asked"),
@@ -189,7 +189,7 @@ TEST(RunDemosaic, PatternAndPhaseDefaultToWhatTheInputHeaderRecords) {
 TEST(RunDemosaic, RefusesContradictoryOptions) {
     TempDir dir;
     write_mosaic(dir / "in.img", 8, 8);
-    DemosaicToolOptions o = options(dir / "in.img", dir / "out.img");
+    Options o = options(dir / "in.img", dir / "out.img");
     o.percent = 1.0;
     EXPECT_EQ(run_expecting_error(o).category(), ErrorCategory::usage);
     o = options(dir / "in.img", dir / "out.png");
@@ -213,7 +213,7 @@ TEST(RunDemosaic, BadInputsLeaveNoOutput) {
     TempDir dir;
     write_mosaic(dir / "cube.img", 8, 8, 2);
     write_mosaic(dir / "small.img", 8, 3);
-    DemosaicToolOptions o = options(dir / "cube.img", dir / "out.png");
+    Options o = options(dir / "cube.img", dir / "out.png");
     Error e = run_expecting_error(o);
     EXPECT_EQ(e.category(), ErrorCategory::input);
     EXPECT_EQ(e.context().file, (dir / "cube.img").string());
@@ -235,11 +235,11 @@ TEST(RunDemosaic, BadInputsLeaveNoOutput) {
 TEST(RunDemosaic, CancelledRunLeavesNoOutput) {
     TempDir dir;
     write_mosaic(dir / "in.img", 8, 8);
-    DemosaicToolOptions o = options(dir / "in.img", dir / "out.img");
+    Options o = options(dir / "in.img", dir / "out.img");
     Context ctx;
     ctx.cancel.cancel();
     try {
-        run_demosaic(o, ctx);
+        demosaic_file(o, ctx);
         FAIL() << "no error";
     } catch (const Error& e) {
         EXPECT_EQ(e.category(), ErrorCategory::cancelled);
