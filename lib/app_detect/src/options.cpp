@@ -10,10 +10,10 @@
 namespace glint::app_detect {
 
 io::EnviDataType parse_data_type(const std::string& text) {
-    for (long code : {1L, 2L, 3L, 4L, 5L, 12L, 13L, 14L, 15L}) {
-        const auto type = io::envi_type_from_code(code);
-        if (to_lower(text) == io::envi_type_name(*type) || text == std::to_string(code)) {
-            return *type;
+    // The real types (no complex ones: digital counts are real).
+    if (const auto type = io::envi_type_from_string(text)) {
+        for (long code : {1L, 2L, 3L, 4L, 5L, 12L, 13L, 14L, 15L}) {
+            if (static_cast<long>(*type) == code) return *type;
         }
     }
     throw usage_error("--data-type: unknown ENVI data type '" + text +

@@ -28,6 +28,8 @@ TEST(DetectOptions, DataTypeByNameOrCode) {
     EXPECT_EQ(parse_data_type("12"), io::EnviDataType::uint16);
     EXPECT_EQ(parse_data_type("float64"), io::EnviDataType::float64);
     EXPECT_EQ(parse_data_type("1"), io::EnviDataType::uint8);
+    EXPECT_NE(usage_message([] { parse_data_type("complex64"); }), "");  // counts are real
+    EXPECT_NE(usage_message([] { parse_data_type("6"); }), "");
     EXPECT_EQ(usage_message([] { parse_data_type("int8"); }),
               "--data-type: unknown ENVI data type 'int8' (uint8, int16, uint16, int32, uint32, "
               "int64, uint64, float32, float64 or their codes 1, 2, 12, 3, 13, 14, 15, 4, 5)");
