@@ -3,6 +3,7 @@
 // BasicPlatform's platform, motion and tasks files with the PSD and trigger files they name.
 #include "glint/inputs/load.h"
 
+#include <map>
 #include <memory>
 #include <string>
 #include <utility>
@@ -100,10 +101,55 @@ void read_trigger_files(model::Platform& platform, const ReadOptions& options,
     read_clock_triggers(platform.attachments, options, diagnostics);
 }
 
-std::optional<model::PlatformInputs> read_platform_entry(const model::Simulation& simulation,
-                                                         std::size_t plugin_index,
-                                                         const ReadOptions& options,
-                                                         Diagnostics& diagnostics) {
+namespace {
+
+/// The files of one load already parsed (with their PSD and trigger files), by path: an entry
+/// naming a file another entry named shares its model, and its problems are reported once.
+struct ParsedFiles {
+    std::map<std::filesystem::path, std::shared_ptr<const model::Platform>> platforms;
+    std::map<std::filesystem::path, model::PlatformMotion> motions;
+    std::map<std::filesystem::path, model::TaskList> task_lists;
+};
+
+std::shared_ptr<const model::Platform> parsed_platform(const std::filesystem::path& file,
+                                                       const ReadOptions& options,
+                                                       ParsedFiles& parsed,
+                                                       Diagnostics& diagnostics) {
+    auto& slot = parsed.platforms[file];
+    if (!slot) {
+        auto platform =
+            std::make_shared<model::Platform>(dirsig::read_platform(file, options, diagnostics));
+        read_psd_tables(*platform, options, diagnostics);
+        read_trigger_files(*platform, options, diagnostics);
+        slot = std::move(platform);
+    }
+    return slot;
+}
+
+const model::PlatformMotion& parsed_motion(const std::filesystem::path& file,
+                                           const ReadOptions& options, ParsedFiles& parsed,
+                                           Diagnostics& diagnostics) {
+    if (const auto found = parsed.motions.find(file); found != parsed.motions.end()) {
+        return found->second;
+    }
+    model::PlatformMotion motion = dirsig::read_motion(file, options, diagnostics);
+    read_psd_tables(motion, options, diagnostics);
+    return parsed.motions.emplace(file, std::move(motion)).first->second;
+}
+
+const model::TaskList& parsed_tasks(const std::filesystem::path& file, const ReadOptions& options,
+                                    ParsedFiles& parsed, Diagnostics& diagnostics) {
+    if (const auto found = parsed.task_lists.find(file); found != parsed.task_lists.end()) {
+        return found->second;
+    }
+    return parsed.task_lists.emplace(file, dirsig::read_tasks(file, options, diagnostics))
+        .first->second;
+}
+
+std::optional<model::PlatformInputs> read_entry(const model::Simulation& simulation,
+                                                std::size_t plugin_index,
+                                                const ReadOptions& options, ParsedFiles& parsed,
+                                                Diagnostics& diagnostics) {
     if (plugin_index >= simulation.plugins.size()) {
         throw usage_error("plugin index " + std::to_string(plugin_index) + " out of range (" +
                           simulation.file + " has " + std::to_string(simulation.plugins.size()) +
@@ -125,15 +171,20 @@ std::optional<model::PlatformInputs> read_platform_entry(const model::Simulation
 
     model::PlatformInputs entry;
     entry.plugin_index = plugin_index;
-    auto platform = std::make_shared<model::Platform>(
-        dirsig::read_platform(platform_file->resolved, options, diagnostics));
-    entry.motion = dirsig::read_motion(motion_file->resolved, options, diagnostics);
-    entry.tasks = dirsig::read_tasks(tasks_file->resolved, options, diagnostics);
-    read_psd_tables(*platform, options, diagnostics);
-    read_psd_tables(entry.motion, options, diagnostics);
-    read_trigger_files(*platform, options, diagnostics);
-    entry.platform = std::move(platform);
+    entry.platform = parsed_platform(platform_file->resolved, options, parsed, diagnostics);
+    entry.motion = parsed_motion(motion_file->resolved, options, parsed, diagnostics);
+    entry.tasks = parsed_tasks(tasks_file->resolved, options, parsed, diagnostics);
     return entry;
+}
+
+}  // namespace
+
+std::optional<model::PlatformInputs> read_platform_entry(const model::Simulation& simulation,
+                                                         std::size_t plugin_index,
+                                                         const ReadOptions& options,
+                                                         Diagnostics& diagnostics) {
+    ParsedFiles parsed;
+    return read_entry(simulation, plugin_index, options, parsed, diagnostics);
 }
 
 model::SimulationInputs load(const std::filesystem::path& simulation_file,
@@ -159,8 +210,9 @@ model::SimulationInputs load(const std::filesystem::path& simulation_file,
         inputs.atmosphere = default_atmosphere();
     }
     diagnostics.throw_if_errors();  // the scene's problems before the platforms'
+    ParsedFiles parsed;
     for (const std::size_t index : inputs.simulation.basic_platform_indices()) {
-        if (auto entry = read_platform_entry(inputs.simulation, index, read, diagnostics)) {
+        if (auto entry = read_entry(inputs.simulation, index, read, parsed, diagnostics)) {
             inputs.platforms.push_back(std::move(*entry));
         }
     }

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <memory>
 #include <string>
@@ -17,6 +18,7 @@
 
 #include "glint/core/log.h"
 #include "glint/dirsig/readers.h"
+#include "glint/test/temp_dir.h"
 
 namespace glint::inputs {
 namespace {
@@ -83,8 +85,8 @@ TEST(InputsLoad, TheDemoOpensEachFileOnce) {
 TEST(InputsLoad, ADirsigClassicSceneOpensEachFileOnce) {
     const Loaded loaded = load_counting(kData / "legacy" / "example.sim");
     expect_each_opened_once(*loaded.files);
-    for (const char* name : {"example.sim", "site.scene", "ground.glist", "site.mat",
-                             "clear.atm", "cam.platform", "hover.ppd"}) {
+    for (const char* name : {"example.sim", "site.scene", "ground.glist", "site.mat", "clear.atm",
+                             "cam.platform", "hover.ppd"}) {
         EXPECT_TRUE(opened(*loaded.files, kData / "legacy" / name)) << name;
     }
 }
@@ -96,8 +98,34 @@ TEST(InputsLoad, EntriesSharingAPlatformFileOpenItOnce) {
     expect_each_opened_once(*loaded.files);
     EXPECT_TRUE(opened(*loaded.files, kData / "platform" / "two_instruments.platform"));
     EXPECT_EQ(loaded.inputs.platforms.size(), 3u);
-    // The two entries that share the file get one platform each (their own copy).
-    EXPECT_NE(loaded.inputs.platforms[0].platform, loaded.inputs.platforms[1].platform);
+    // The two entries that share the file share its model (parsed, and reported, once).
+    EXPECT_EQ(loaded.inputs.platforms[0].platform, loaded.inputs.platforms[1].platform);
+}
+
+TEST(InputsLoad, AFileTwoEntriesNameReportsItsWarningsOnce) {
+    // aviris.platform has one warning (a channel centre outside the bandpass); two entries
+    // name it: it is parsed once, so the warning is reported once.
+    test::TempDir dir;
+    const fs::path legacy = kData / "legacy";
+    const std::string entry = R"({"name": "BasicPlatform", "inputs": {"platform_filename": ")" +
+                              (kData / "platform" / "aviris.platform").string() +
+                              R"(", "motion_filename": ")" + (legacy / "hover.ppd").string() +
+                              R"(", "tasks_filename": ")" + (legacy / "one_frame.tasks").string() +
+                              R"(", "output_prefix": "P"}})";
+    std::string second = entry;
+    second.replace(second.find("\"P\""), 3, "\"Q\"");
+    std::ofstream(dir / "two.jsim")
+        << "[{\"scene_list\": [], \"plugin_list\": [" << entry << ", " << second << "]}]";
+    Diagnostics diagnostics;
+    LoadOptions options;
+    options.atmosphere = false;
+    const model::SimulationInputs inputs = load(dir / "two.jsim", options, Log{}, diagnostics);
+    ASSERT_EQ(inputs.platforms.size(), 2u);
+    std::size_t warnings = 0;
+    for (const Diagnostic& d : diagnostics.items()) {
+        warnings += d.where.file.find("aviris.platform") != std::string::npos ? 1 : 0;
+    }
+    EXPECT_EQ(warnings, 1u);
 }
 
 TEST(InputsLoad, PsdFilesAreReadIntoTheModel) {

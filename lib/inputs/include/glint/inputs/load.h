@@ -31,7 +31,8 @@ struct LoadOptions {
 /// Reads `simulation_file` (a `.jsim` holding one simulation, or a `.sim`) and everything it
 /// references, in this order: the simulation; its scene_list (merged, inputs::
 /// read_simulation_scene); its atmosphere (read_simulation_atmosphere); then each BasicPlatform
-/// entry's platform, motion and tasks files; then the PSD files named by jitter (filling
+/// entry's platform, motion and tasks files (a file two entries name is parsed once and its
+/// model shared, so its problems are reported once); then the PSD files named by jitter (filling
 /// JitterSpec::psd and JitterAxis::psd) and the trigger files of external clocks (filling
 /// Clock::trigger_times_s). Every problem goes to `diagnostics` (file:line); a BasicPlatform
 /// entry without one of its three files is an error at the entry. Throws glint::Error (input)
