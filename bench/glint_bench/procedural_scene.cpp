@@ -15,20 +15,6 @@ namespace {
 /// Key of the random stream that places the buildings (fixed: the scene ignores --seed).
 constexpr std::uint64_t kSceneSeed = 20240611;
 
-model::Material flat_material(const std::string& id, double reflectance,
-                              model::SpecularLobe specular = {}) {
-    model::Material m;
-    m.id = id;
-    m.name = id;
-    m.reflectance.wavelengths_um = {0.1, 100.0};
-    m.reflectance.values = {reflectance, reflectance};
-    m.emissivity.wavelengths_um = {0.1, 100.0};
-    m.emissivity.values = {1.0 - reflectance, 1.0 - reflectance};
-    m.emissivity_is_default = true;
-    m.specular = specular;
-    return m;
-}
-
 model::Mesh terrain_mesh(unsigned quads, double size_m) {
     model::Mesh mesh;
     const unsigned side = quads + 1;
@@ -88,8 +74,9 @@ ProceduralScene build_procedural_scene(const SceneParameters& p) {
     ProceduralScene out;
     model::Scene& scene = out.scene;
     scene.file = "(procedural)";
-    scene.materials.push_back(flat_material("soil", 0.25));
-    scene.materials.push_back(flat_material("roof", 0.35, {0.15, 0.25}));
+    scene.materials.push_back(model::flat_material("soil", 0.25));
+    scene.materials.push_back(model::flat_material("roof", 0.35, model::kDefaultTemperature_k,
+                                                   std::nullopt, {0.15, 0.25}));
 
     model::GeometryObject terrain;
     terrain.name = "terrain";

@@ -24,28 +24,7 @@
 
 namespace glint::radiometry::test {
 
-/// A material of constant reflectance over 0.1–100 µm; emissivity 1 − ρ unless given.
-inline model::Material flat_material(const std::string& id, double reflectance,
-                                     double temperature_k = 300.0,
-                                     std::optional<double> emissivity = std::nullopt,
-                                     model::SpecularLobe specular = {}) {
-    model::Material m;
-    m.id = id;
-    m.name = id;
-    m.reflectance.wavelengths_um = {0.1, 100.0};
-    m.reflectance.values = {reflectance, reflectance};
-    if (emissivity) {
-        m.emissivity.wavelengths_um = {0.1, 100.0};
-        m.emissivity.values = {*emissivity, *emissivity};
-        m.emissivity_is_default = false;
-    } else {
-        m.emissivity.wavelengths_um = {0.1, 100.0};
-        m.emissivity.values = {1.0 - reflectance, 1.0 - reflectance};
-    }
-    m.temperature_k = temperature_k;
-    m.specular = specular;
-    return m;
-}
+using model::flat_material;
 
 /// Adds a primitive object of material `material` with one static identity instance, or a
 /// dynamic instance moving with `motion`; returns the instance index.

@@ -183,4 +183,11 @@ struct Scene {
     std::vector<Instance> instances;
 };
 
+/// A grey material of constant `reflectance` over 0.1–100 µm, at `temperature_k`, with
+/// emissivity `emissivity` when given (else 1 − reflectance, emissivity_is_default) and the
+/// `specular` lobe: scenes built in code (tests, benchmarks, plugins).
+Material flat_material(const std::string& id, double reflectance,
+                       double temperature_k = kDefaultTemperature_k,
+                       std::optional<double> emissivity = std::nullopt, SpecularLobe specular = {});
+
 }  // namespace glint::model
