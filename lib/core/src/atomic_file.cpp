@@ -29,13 +29,45 @@ void fsync_folder(const std::filesystem::path& folder) {
     ::close(fd);
 }
 
+/// The path a chain of symbolic links ends at (the path itself when it is none); relative link
+/// texts are taken from the link's folder. More than 40 links is an error (a loop).
+std::filesystem::path follow_links(std::filesystem::path path) {
+    for (int hops = 0; hops < 40; ++hops) {
+        std::error_code ec;
+        if (!std::filesystem::is_symlink(path, ec)) return path;
+        const std::filesystem::path next = std::filesystem::read_symlink(path, ec);
+        if (ec) return path;
+        path = next.is_absolute() ? next : path.parent_path() / next;
+    }
+    throw io_error("cannot create output: too many levels of symbolic links", path.string());
+}
+
 }  // namespace
 
 AtomicFile::AtomicFile(std::filesystem::path target) : m_target(std::move(target)) {
+    // What the name stands for, following links: /dev/stdout names a pipe or terminal.
+    struct stat info {};
+    if (::stat(m_target.c_str(), &info) == 0 && !S_ISREG(info.st_mode)) {
+        if (S_ISDIR(info.st_mode)) {
+            throw io_error("cannot create output: is a folder", m_target.string());
+        }
+        m_fd = ::open(m_target.c_str(), O_WRONLY | O_CLOEXEC);
+        if (m_fd < 0) {
+            const int code = errno;
+            throw io_error("cannot open output: " + errno_text(code), m_target.string());
+        }
+        m_direct = true;
+        m_temp = m_target;
+        m_buffer.reserve(kBufferBytes);
+        return;
+    }
+    // A link to a file (existing or not) is published at that file, keeping the link.
+    const std::filesystem::path publish = follow_links(m_target);
     const std::string extension = m_target.extension().string();
     std::string pattern =
-        (folder_of(m_target) / ("." + m_target.filename().string() + ".tmp-XXXXXX")).string() +
+        (folder_of(publish) / ("." + publish.filename().string() + ".tmp-XXXXXX")).string() +
         extension;
+    m_publish = publish;
     std::vector<char> name(pattern.begin(), pattern.end());
     name.push_back('\0');
     m_fd = ::mkostemps(name.data(), static_cast<int>(extension.size()), O_CLOEXEC);
@@ -57,7 +89,9 @@ AtomicFile::AtomicFile(AtomicFile&& other) noexcept
       m_fd(other.m_fd),
       m_buffer(std::move(other.m_buffer)),
       m_bytes_written(other.m_bytes_written),
-      m_committed(other.m_committed) {
+      m_committed(other.m_committed),
+      m_direct(other.m_direct),
+      m_publish(std::move(other.m_publish)) {
     other.m_fd = -1;
     other.m_temp.clear();  // the moved-from object owns nothing to remove
 }
@@ -103,6 +137,12 @@ void AtomicFile::flush_buffer() {
 
 void AtomicFile::release_for_external_writer() {
     if (m_fd < 0) return;
+    if (m_direct) {  // the external writer opens the target itself
+        flush_buffer();
+        ::close(m_fd);
+        m_fd = -1;
+        return;
+    }
     flush_buffer();
     ::close(m_fd);
     m_fd = -1;
@@ -110,6 +150,19 @@ void AtomicFile::release_for_external_writer() {
 
 void AtomicFile::commit() {
     if (m_committed) return;
+    if (m_direct) {  // a device, FIFO or socket: written straight, nothing to sync or rename
+        if (m_fd >= 0) {
+            flush_buffer();
+            const int fd = m_fd;
+            m_fd = -1;
+            if (::close(fd) != 0) {
+                const int code = errno;
+                throw io_error("close failed: " + errno_text(code), m_target.string());
+            }
+        }
+        m_committed = true;
+        return;
+    }
     if (m_fd < 0) {
         m_fd = ::open(m_temp.c_str(), O_RDWR | O_CLOEXEC);
         if (m_fd < 0) {
@@ -129,13 +182,13 @@ void AtomicFile::commit() {
         const int code = errno;
         throw io_error("close failed: " + errno_text(code), m_target.string());
     }
-    if (::rename(m_temp.c_str(), m_target.c_str()) != 0) {
+    if (::rename(m_temp.c_str(), m_publish.c_str()) != 0) {
         const int code = errno;
         throw io_error("cannot rename temporary output into place: " + errno_text(code),
                        m_target.string());
     }
     m_committed = true;
-    fsync_folder(folder_of(m_target));
+    fsync_folder(folder_of(m_publish));
 }
 
 void AtomicFile::abandon() noexcept {
@@ -143,10 +196,10 @@ void AtomicFile::abandon() noexcept {
         ::close(m_fd);
         m_fd = -1;
     }
-    if (!m_temp.empty()) {
+    if (!m_temp.empty() && !m_direct) {
         ::unlink(m_temp.c_str());
-        m_temp.clear();
     }
+    m_temp.clear();
 }
 
 void write_file_atomically(const std::filesystem::path& target, std::string_view content) {

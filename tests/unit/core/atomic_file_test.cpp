@@ -3,9 +3,14 @@
 #include "glint/core/atomic_file.h"
 
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
 
 #include "glint/core/error.h"
 #include "glint/test/temp_dir.h"
@@ -103,6 +108,76 @@ TEST(AtomicFile, RefusesToOverwriteAnInput) {
         EXPECT_NE(std::string(e.what()).find("refusing to overwrite input"), std::string::npos);
     }
     EXPECT_NO_THROW(ensure_not_an_input(dir / "out.img", inputs));
+}
+
+// ---- targets that are not plain files (never renamed over) --------------------------------
+
+/// The file names in `folder`.
+std::vector<std::string> names_in(const std::filesystem::path& folder) {
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+        names.push_back(entry.path().filename().string());
+    }
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+TEST(AtomicFile, AFifoIsWrittenStraightAndStaysAFifo) {
+    // A FIFO stands for every target that is not a regular file (/dev/null, /dev/stdout's
+    // pipe or terminal): the bytes reach its reader and the FIFO is not replaced.
+    test::TempDir dir;
+    const std::filesystem::path fifo = dir / "out.fifo";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    std::string received;
+    std::thread reader([&] { received = slurp(fifo); });
+    {
+        AtomicFile file(fifo);
+        EXPECT_TRUE(file.direct());
+        EXPECT_EQ(file.temp_path(), fifo);
+        file.write("through the pipe");
+        file.commit();
+    }
+    reader.join();
+    EXPECT_EQ(received, "through the pipe");
+    struct stat info {};
+    ASSERT_EQ(::lstat(fifo.c_str(), &info), 0);
+    EXPECT_TRUE(S_ISFIFO(info.st_mode));
+    EXPECT_EQ(names_in(dir.path()), std::vector<std::string>{"out.fifo"});  // no temporary
+}
+
+TEST(AtomicFile, ASymlinkIsPublishedAtItsTargetAndStaysALink) {
+    test::TempDir dir;
+    std::filesystem::create_directory(dir / "real");
+    write_file_atomically(dir / "real" / "data.txt", "old");
+    std::filesystem::create_symlink("real/data.txt", dir / "link.txt");
+    {
+        AtomicFile file(dir / "link.txt");
+        EXPECT_FALSE(file.direct());
+        EXPECT_EQ(file.temp_path().parent_path(), dir / "real");  // beside the file it names
+        file.write("new");
+        file.commit();
+    }
+    EXPECT_TRUE(std::filesystem::is_symlink(dir / "link.txt"));
+    EXPECT_EQ(slurp(dir / "real" / "data.txt"), "new");
+    EXPECT_EQ(names_in(dir / "real"), std::vector<std::string>{"data.txt"});
+    // A link to a file that does not exist yet creates that file.
+    std::filesystem::create_symlink("real/later.txt", dir / "dangling.txt");
+    write_file_atomically(dir / "dangling.txt", "created");
+    EXPECT_TRUE(std::filesystem::is_symlink(dir / "dangling.txt"));
+    EXPECT_EQ(slurp(dir / "real" / "later.txt"), "created");
+}
+
+TEST(AtomicFile, AFolderIsRefused) {
+    test::TempDir dir;
+    std::filesystem::create_directory(dir / "sub");
+    try {
+        AtomicFile file(dir / "sub");
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.category(), ErrorCategory::io);
+        EXPECT_NE(std::string(e.what()).find("is a folder"), std::string::npos) << e.what();
+    }
+    EXPECT_TRUE(std::filesystem::is_directory(dir / "sub"));
 }
 
 }  // namespace

@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // Atomic output: a file is written under a temporary name in its target folder, flushed to
 // disk and renamed into place only when complete, so a failed or interrupted run never
-// leaves a partial file under a final name.
+// leaves a partial file under a final name. A target that is a symbolic link is published at
+// the file the link names (the link stays); a target that exists and is not a regular file (a
+// character or block device such as /dev/null, a FIFO, a socket, /dev/stdout's pipe or
+// terminal) is written straight, never renamed over.
 #pragma once
 
 #include <cstddef>
@@ -13,10 +16,13 @@
 
 namespace glint {
 
-/// A file being written atomically. The temporary file lives beside the target, named
+/// A file being written atomically. The temporary file lives beside the target (beside the
+/// file a symbolic link names, after following every link), named
 /// `.<target name>.tmp-XXXXXX<target extension>` (the extension is kept so that libraries
 /// which choose a format by extension can write it). The destructor removes the temporary
-/// file unless commit() succeeded. Write errors throw glint::Error (io).
+/// file unless commit() succeeded. An existing target that is not a regular file is opened
+/// and written directly (direct(); temp_path() is then the target itself and nothing is
+/// renamed). A folder is refused. Write errors throw glint::Error (io).
 class AtomicFile {
 public:
     explicit AtomicFile(std::filesystem::path target);
@@ -41,6 +47,8 @@ public:
     void abandon() noexcept;
 
     const std::filesystem::path& target() const { return m_target; }
+    /// True when the target is written straight (a device, FIFO or socket), not renamed.
+    bool direct() const { return m_direct; }
     const std::filesystem::path& temp_path() const { return m_temp; }
     std::uint64_t bytes_written() const { return m_bytes_written; }
     bool committed() const { return m_committed; }
@@ -54,6 +62,8 @@ private:
     std::vector<char> m_buffer;
     std::uint64_t m_bytes_written = 0;
     bool m_committed = false;
+    bool m_direct = false;
+    std::filesystem::path m_publish;  ///< where commit() renames to (links followed)
 };
 
 /// Writes `content` to `target` atomically.
