@@ -2,6 +2,8 @@
 // Diagnostics: collecting, logging and summarising the problems found in an input.
 #include "glint/core/diagnostics.h"
 
+#include <algorithm>
+
 namespace glint {
 
 void Diagnostics::error(ErrorContext where, std::string message) {
@@ -37,6 +39,25 @@ void Diagnostics::throw_if_errors() const {
         }
         throw input_error(message, d.where);
     }
+}
+
+void Diagnostics::log_and_rethrow(const Error& error, const Log& log) const {
+    log_to(log);
+    if (error.category() != ErrorCategory::input || m_errors == 0) throw error;
+    const auto first = std::find_if(m_items.begin(), m_items.end(), [](const Diagnostic& d) {
+        return d.severity == Diagnostic::Severity::error;
+    });
+    const bool raised_here = first != m_items.end() &&
+                             first->where.file == error.context().file &&
+                             first->where.line == error.context().line &&
+                             error.message().rfind(first->message, 0) == 0;
+    std::size_t count = m_errors;
+    if (!raised_here) {
+        log.error(error.what());
+        ++count;
+    }
+    throw input_error("nothing written: " + std::to_string(count) + " error" +
+                      (count == 1 ? "" : "s") + " in the inputs");
 }
 
 }  // namespace glint

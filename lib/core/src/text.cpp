@@ -2,8 +2,10 @@
 // Small text helpers shared by every component (glint/core/text.h).
 #include "glint/core/text.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <system_error>
 
 namespace glint {
@@ -143,6 +145,99 @@ std::vector<std::string> split_list(std::string_view text, char separator) {
         text.remove_prefix(at + 1);
     }
     return items;
+}
+
+}  // namespace glint
+
+namespace glint {
+
+std::size_t utf8_sequence_length(std::string_view text, std::size_t at) noexcept {
+    if (at >= text.size()) return 0;
+    const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[at + i]); };
+    const unsigned char lead = byte(0);
+    if (lead < 0x80) return 1;
+    std::size_t length = 0;
+    std::uint32_t code = 0;
+    if (lead >= 0xC2 && lead <= 0xDF) {
+        length = 2;
+        code = lead & 0x1Fu;
+    } else if (lead >= 0xE0 && lead <= 0xEF) {
+        length = 3;
+        code = lead & 0x0Fu;
+    } else if (lead >= 0xF0 && lead <= 0xF4) {
+        length = 4;
+        code = lead & 0x07u;
+    } else {
+        return 0;  // a continuation byte, C0/C1 (overlong) or F5–FF
+    }
+    if (text.size() - at < length) return 0;
+    for (std::size_t i = 1; i < length; ++i) {
+        if ((byte(i) & 0xC0u) != 0x80u) return 0;
+        code = (code << 6) | (byte(i) & 0x3Fu);
+    }
+    const bool overlong = (length == 3 && code < 0x800) || (length == 4 && code < 0x10000);
+    const bool surrogate = code >= 0xD800 && code <= 0xDFFF;
+    if (overlong || surrogate || code > 0x10FFFF) return 0;
+    return length;
+}
+
+bool is_valid_utf8(std::string_view text) noexcept {
+    for (std::size_t i = 0; i < text.size();) {
+        const std::size_t length = utf8_sequence_length(text, i);
+        if (length == 0) return false;
+        i += length;
+    }
+    return true;
+}
+
+std::string to_valid_utf8(std::string_view text) {
+    std::string out;
+    out.reserve(text.size());
+    for (std::size_t i = 0; i < text.size();) {
+        const std::size_t length = utf8_sequence_length(text, i);
+        if (length == 0) {
+            out += "\xEF\xBF\xBD";  // U+FFFD REPLACEMENT CHARACTER
+            ++i;
+        } else {
+            out.append(text.substr(i, length));
+            i += length;
+        }
+    }
+    return out;
+}
+
+std::string quote(std::string_view text, std::size_t max_bytes) {
+    const std::string_view shown = text.substr(0, std::min(text.size(), max_bytes));
+    std::string out = "\"";
+    for (std::size_t i = 0; i < shown.size();) {
+        const char c = shown[i];
+        const auto byte = static_cast<unsigned char>(c);
+        const std::size_t length = utf8_sequence_length(shown, i);
+        if (c == '"' || c == '\\') {
+            out += '\\';
+            out += c;
+        } else if (c == '\n') {
+            out += "\\n";
+        } else if (c == '\t') {
+            out += "\\t";
+        } else if (c == '\r') {
+            out += "\\r";
+        } else if (length == 0 || byte < 0x20 || byte == 0x7F) {
+            char escape[8];
+            std::snprintf(escape, sizeof escape, "\\x%02X", byte);
+            out += escape;
+            ++i;
+            continue;
+        } else {
+            out.append(shown.substr(i, length));
+            i += length;
+            continue;
+        }
+        ++i;
+    }
+    out += '"';
+    if (shown.size() < text.size()) out += "... (" + std::to_string(text.size()) + " bytes)";
+    return out;
 }
 
 }  // namespace glint

@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "glint/dirsig/read_options.h"
+#include "glint/core/text.h"
 
 namespace glint::dirsig {
 namespace {
@@ -22,8 +23,6 @@ std::string trim(const std::string& text) {
     while (last > first && is_blank(text[last - 1])) --last;
     return text.substr(first, last - first);
 }
-
-std::string quoted(const std::string& text) { return "\"" + text + "\""; }
 
 }  // namespace
 
@@ -70,7 +69,7 @@ model::FileRef PathResolver::resolve(const std::string& text, const std::filesys
             bool valid = !name.empty() && is_name_start(name[0]);
             for (char n : name) valid = valid && is_name_char(n);
             if (!valid) {
-                diagnostics.error(where, "malformed variable reference in path " + quoted(written) +
+                diagnostics.error(where, "malformed variable reference in path " + quote(written) +
                                              ": expected ${NAME} with NAME made of letters, "
                                              "digits and '_'");
                 return ref;
@@ -91,7 +90,7 @@ model::FileRef PathResolver::resolve(const std::string& text, const std::filesys
         if (name == "SCENE_DIR") {
             if (!scene_dir) {
                 diagnostics.error(
-                    where, "$SCENE_DIR used outside a scene file in path " + quoted(written));
+                    where, "$SCENE_DIR used outside a scene file in path " + quote(written));
                 ok = false;
             } else {
                 value = scene_dir->string();
@@ -104,7 +103,7 @@ model::FileRef PathResolver::resolve(const std::string& text, const std::filesys
         if (!value) {
             if (name != "SCENE_DIR") {
                 diagnostics.error(where,
-                                  "undefined variable $" + name + " in path " + quoted(written));
+                                  "undefined variable $" + name + " in path " + quote(written));
             }
             ok = false;
         } else {
@@ -114,7 +113,7 @@ model::FileRef PathResolver::resolve(const std::string& text, const std::filesys
     }
     if (!ok) return ref;
     if (expanded.empty()) {
-        diagnostics.error(where, "path " + quoted(written) + " expands to an empty path");
+        diagnostics.error(where, "path " + quote(written) + " expands to an empty path");
         return ref;
     }
 

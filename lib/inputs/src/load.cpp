@@ -228,9 +228,8 @@ model::SimulationInputs load_logged(const std::filesystem::path& simulation_file
         model::SimulationInputs inputs = load(simulation_file, options, log, diagnostics);
         diagnostics.log_to(log);  // the warnings
         return inputs;
-    } catch (const Error&) {
-        diagnostics.log_to(log);  // every problem, not only the first
-        throw;
+    } catch (const Error& error) {
+        diagnostics.log_and_rethrow(error, log);  // every problem, each once
     }
 }
 

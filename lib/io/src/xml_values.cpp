@@ -23,19 +23,6 @@ std::string format_number(double value) {
     return format_shortest(value);
 }
 
-/// The offending text, quoted and cut short when long.
-std::string quoted(std::string_view text) {
-    constexpr std::size_t kMaxShown = 64;
-    std::string out = "\"";
-    if (text.size() > kMaxShown) {
-        out.append(text.substr(0, kMaxShown));
-        out += "...";
-    } else {
-        out.append(text);
-    }
-    return out + "\"";
-}
-
 std::string describe_int_range(std::int64_t min, std::int64_t max) {
     constexpr auto kLowest = std::numeric_limits<std::int64_t>::min();
     constexpr auto kHighest = std::numeric_limits<std::int64_t>::max();
@@ -54,7 +41,7 @@ std::optional<double> check_double(std::string_view text, const ErrorContext& wh
                                    const NumberRule& rule, Diagnostics& diagnostics) {
     const std::optional<double> value = parse_double(text);
     if (!value || !rule.accepts(*value)) {
-        diagnostics.error(where, "expected " + rule.describe() + ", got " + quoted(trim(text)));
+        diagnostics.error(where, "expected " + rule.describe() + ", got " + quote(trim(text)));
         return std::nullopt;
     }
     return value;
@@ -66,7 +53,7 @@ std::optional<std::int64_t> check_int(std::string_view text, const ErrorContext&
     const std::optional<std::int64_t> value = parse_int(text);
     if (!value || *value < min || *value > max) {
         diagnostics.error(
-            where, "expected " + describe_int_range(min, max) + ", got " + quoted(trim(text)));
+            where, "expected " + describe_int_range(min, max) + ", got " + quote(trim(text)));
         return std::nullopt;
     }
     return value;
@@ -77,7 +64,7 @@ std::optional<bool> check_bool(std::string_view text, const ErrorContext& where,
     const std::optional<bool> value = parse_bool(text);
     if (!value) {
         diagnostics.error(
-            where, "expected a boolean (true, false, yes, no, 1 or 0), got " + quoted(trim(text)));
+            where, "expected a boolean (true, false, yes, no, 1 or 0), got " + quote(trim(text)));
     }
     return value;
 }
@@ -89,7 +76,7 @@ std::optional<std::string> check_enum(std::string_view text,
     for (std::string_view item : allowed) {
         if (iequals(value, item)) return std::string(item);
     }
-    diagnostics.error(where, "expected " + describe_enum(allowed) + ", got " + quoted(value));
+    diagnostics.error(where, "expected " + describe_enum(allowed) + ", got " + quote(value));
     return std::nullopt;
 }
 

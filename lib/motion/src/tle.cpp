@@ -2,6 +2,7 @@
 // Strict parsing of NORAD two-line element sets: every field is read from its fixed columns,
 // separators and checksums are checked, and each failure names the line, columns and field.
 #include "glint/motion/tle.h"
+#include "glint/core/text.h"
 
 #include <charconv>
 #include <cmath>
@@ -26,8 +27,6 @@ std::string_view trim(std::string_view text) noexcept {
     while (!text.empty() && text.back() == ' ') text.remove_suffix(1);
     return text;
 }
-
-std::string quoted(std::string_view text) { return "\"" + std::string(text) + "\""; }
 
 /// One TLE line being read, with what an error message needs to say where it is.
 class LineReader {
@@ -63,7 +62,7 @@ public:
         for (const int col : cols) {
             if (column(col) != ' ') {
                 fail(col, col, "separator",
-                     "expected a blank, found " + quoted(std::string(1, column(col))));
+                     "expected a blank, found " + quote(std::string(1, column(col))));
             }
         }
     }
@@ -78,7 +77,7 @@ public:
         int value = 0;
         for (const char c : text) {
             if (!is_digit(c)) {
-                fail(first, last, field, "expected digits, found " + quoted(columns(first, last)));
+                fail(first, last, field, "expected digits, found " + quote(columns(first, last)));
             }
             value = value * 10 + (c - '0');
         }
@@ -110,7 +109,7 @@ public:
         double value = 0.0;
         const char* end = text.data() + text.size();
         if (digits <= 0 || points > 1 || std::from_chars(text.data(), end, value).ptr != end) {
-            fail(first, last, field, "expected a decimal number, found " + quoted(raw));
+            fail(first, last, field, "expected a decimal number, found " + quote(raw));
         }
         return negative ? -value : value;
     }
@@ -135,7 +134,7 @@ public:
         if (!ok) {
             fail(first, last, field,
                  "expected sign, 5 digits, exponent sign and digit (\" 12345-4\"), found " +
-                     quoted(text));
+                     quote(text));
         }
         const int exponent = (exponent_sign == '-' ? -1 : 1) * (text[7] - '0');
         const double value = mantissa * 1e-5 * std::pow(10.0, exponent);
@@ -154,7 +153,7 @@ public:
             for (std::size_t i = 1; i < text.size(); ++i) {
                 if (!is_digit(text[i])) {
                     fail(3, 7, "satellite number",
-                         "expected 5 digits or Alpha-5, found " + quoted(text));
+                         "expected 5 digits or Alpha-5, found " + quote(text));
                 }
                 value = value * 10 + (text[i] - '0');
             }
@@ -167,7 +166,7 @@ public:
     void check_checksum() const {
         const char digit = column(69);
         if (!is_digit(digit)) {
-            fail(69, 69, "checksum", "expected a digit, found " + quoted(std::string(1, digit)));
+            fail(69, 69, "checksum", "expected a digit, found " + quote(std::string(1, digit)));
         }
         const int expected = tle_checksum(m_text);
         if (digit - '0' != expected) {
@@ -205,7 +204,7 @@ std::string_view checked_line(std::string_view line, int number, const ErrorCont
     if (line.empty() || line.front() != static_cast<char>('0' + number)) {
         reader.fail(1, 1, "line number",
                     "expected '" + std::to_string(number) + "', found " +
-                        (line.empty() ? std::string("an empty line") : quoted(line.substr(0, 1))));
+                        (line.empty() ? std::string("an empty line") : quote(line.substr(0, 1))));
     }
     if (line.size() != kLineLength) {
         reader.fail(0, 0, "", "has " + std::to_string(line.size()) + " characters, expected 69");
@@ -239,14 +238,14 @@ Tle Tle::parse(std::string_view line1, std::string_view line2, ErrorContext wher
     if (classification != ' ' && classification != 'U' && classification != 'C' &&
         classification != 'S') {
         l1.fail(8, 8, "classification",
-                "expected U, C, S or blank, found " + quoted(std::string(1, classification)));
+                "expected U, C, S or blank, found " + quote(std::string(1, classification)));
     }
     tle.classification = classification == ' ' ? 'U' : classification;
     tle.international_designator = std::string(trim(l1.columns(10, 17)));
 
     const int year2 = l1.integer(19, 20, "epoch year", false);
     if (!is_digit(l1.column(19)) || !is_digit(l1.column(20))) {
-        l1.fail(19, 20, "epoch year", "expected two digits, found " + quoted(l1.columns(19, 20)));
+        l1.fail(19, 20, "epoch year", "expected two digits, found " + quote(l1.columns(19, 20)));
     }
     tle.epoch_year = year2 >= 57 ? 1900 + year2 : 2000 + year2;
     tle.epoch_day = l1.decimal(21, 32, "epoch day");
@@ -277,7 +276,7 @@ Tle Tle::parse(std::string_view line1, std::string_view line2, ErrorContext wher
     for (const char c : ecc_text) {
         if (!is_digit(c) && c != ' ') {
             l2.fail(27, 33, "eccentricity",
-                    "expected 7 digits (leading \"0.\" implied), found " + quoted(ecc_text));
+                    "expected 7 digits (leading \"0.\" implied), found " + quote(ecc_text));
         }
         eccentricity = eccentricity * 10.0 + (c == ' ' ? 0 : c - '0');
     }
@@ -289,7 +288,7 @@ Tle Tle::parse(std::string_view line1, std::string_view line2, ErrorContext wher
     l2.check_range(tle.mean_anomaly_deg, 0.0, 360.0, false, 44, 51, "mean anomaly");
     tle.mean_motion_rev_day = l2.decimal(53, 63, "mean motion");
     if (!(tle.mean_motion_rev_day > 0.0)) {
-        l2.fail(53, 63, "mean motion", "must be positive, found " + quoted(l2.columns(53, 63)));
+        l2.fail(53, 63, "mean motion", "must be positive, found " + quote(l2.columns(53, 63)));
     }
     tle.revolution_number = l2.integer(64, 68, "revolution number", true);
     return tle;

@@ -44,9 +44,8 @@ RenderInputs make_render_inputs(model::SimulationInputs loaded, const RenderOpti
     Diagnostics diagnostics;
     try {
         build_all(in, std::move(loaded), options, context, diagnostics);
-    } catch (const Error&) {
-        diagnostics.log_to(context.log);  // every problem, not only the first
-        throw;
+    } catch (const Error& error) {
+        diagnostics.log_and_rethrow(error, context.log);  // every problem, each once
     }
     diagnostics.log_to(context.log);  // the warnings
     return in;

@@ -54,5 +54,63 @@ TEST(Diagnostics, LogsAtTheRightLevels) {
     EXPECT_EQ(lines, (std::vector<std::string>{"warning f:1: w", "error f:2: e"}));
 }
 
+/// The lines log_and_rethrow logs and the message of what it throws.
+struct Rethrown {
+    std::vector<std::string> lines;
+    ErrorCategory category = ErrorCategory::internal;
+    std::string what;
+};
+
+Rethrown rethrow(const Diagnostics& d, const Error& error) {
+    Rethrown out;
+    Log log([&](LogLevel level, const std::string& m) {
+        out.lines.push_back(std::string(log_level_name(level)) + " " + m);
+    }, LogLevel::warning);
+    try {
+        d.log_and_rethrow(error, log);
+    } catch (const Error& e) {
+        out.category = e.category();
+        out.what = e.what();
+    }
+    return out;
+}
+
+TEST(Diagnostics, LogAndRethrowPrintsEachProblemOnce) {
+    Diagnostics d;
+    d.warning(ErrorContext{"f", 1, {}}, "w");
+    d.error(ErrorContext{"f", 2, "x"}, "e");
+    // The error throw_if_errors raised is one of the logged ones: not printed again.
+    Error raised = input_error("placeholder");
+    try {
+        d.throw_if_errors();
+    } catch (const Error& e) {
+        raised = e;
+    }
+    const Rethrown once = rethrow(d, raised);
+    EXPECT_EQ(once.lines, (std::vector<std::string>{"warning f:1: w", "error f:2: x: e"}));
+    EXPECT_EQ(once.category, ErrorCategory::input);
+    EXPECT_EQ(once.what, "nothing written: 1 error in the inputs");
+
+    // Another input error (thrown directly by a later stage) is logged too and counted.
+    const Rethrown other = rethrow(d, input_error("late", ErrorContext{"g", 9, {}}));
+    EXPECT_EQ(other.lines,
+              (std::vector<std::string>{"warning f:1: w", "error f:2: x: e", "error g:9: late"}));
+    EXPECT_EQ(other.what, "nothing written: 2 errors in the inputs");
+}
+
+TEST(Diagnostics, LogAndRethrowKeepsOtherErrorsAsTheyAre) {
+    Diagnostics warnings_only;
+    warnings_only.warning(ErrorContext{"f", 1, {}}, "w");
+    const Rethrown input = rethrow(warnings_only, input_error("bad", ErrorContext{"f", 3, {}}));
+    EXPECT_EQ(input.lines, (std::vector<std::string>{"warning f:1: w"}));
+    EXPECT_EQ(input.what, "f:3: bad");
+
+    Diagnostics with_error;
+    with_error.error(ErrorContext{"f", 2, {}}, "e");
+    const Rethrown io = rethrow(with_error, io_error("disk full", "out.img"));
+    EXPECT_EQ(io.category, ErrorCategory::io);
+    EXPECT_EQ(io.lines, (std::vector<std::string>{"error f:2: e"}));
+}
+
 }  // namespace
 }  // namespace glint

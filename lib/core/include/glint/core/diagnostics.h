@@ -42,6 +42,12 @@ public:
     /// Throws glint::Error(input) carrying the first error (and how many more there are)
     /// when there is any error.
     void throw_if_errors() const;
+    /// For a catch block around a load that filled these diagnostics: logs them all, then
+    /// throws. An input error when errors were logged becomes one summary ("nothing
+    /// written: N errors in the inputs"; `error` itself is logged first unless it is the
+    /// first logged error that throw_if_errors raised), so no problem is printed twice;
+    /// anything else is rethrown as it is.
+    [[noreturn]] void log_and_rethrow(const Error& error, const Log& log) const;
 
 private:
     std::vector<Diagnostic> m_items;

@@ -34,6 +34,22 @@ std::string join(std::span<const std::string> items, std::string_view separator,
 /// glint runs goes through a shell.
 std::string format_command_line(std::span<const std::string> argv);
 
+/// `text` in double quotes for a message: control characters, `"`, `\\` and bytes that are
+/// not UTF-8 written as escapes (\n, \", \xFF), and cut after `max_bytes` bytes of input
+/// with "..." and the full size, so a 20 MB token is never echoed whole.
+std::string quote(std::string_view text, std::size_t max_bytes = 80);
+
+/// Length of the valid UTF-8 sequence starting at `text[at]` (1–4), or 0 when the bytes
+/// there are not one (stray continuation, overlong form, surrogate, beyond U+10FFFF, cut).
+std::size_t utf8_sequence_length(std::string_view text, std::size_t at) noexcept;
+
+/// True when `text` is entirely valid UTF-8.
+bool is_valid_utf8(std::string_view text) noexcept;
+
+/// `text` with each byte that is not part of valid UTF-8 replaced by U+FFFD, so it can go
+/// into JSON (which must be UTF-8) whatever bytes a file name or header held.
+std::string to_valid_utf8(std::string_view text);
+
 /// `text` without leading and trailing blanks (space, tab, CR, LF, FF, VT).
 std::string_view trim(std::string_view text) noexcept;
 

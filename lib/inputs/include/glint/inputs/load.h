@@ -50,7 +50,8 @@ std::optional<model::PlatformInputs> read_platform_entry(const model::Simulation
                                                          Diagnostics& diagnostics);
 
 /// load() with its own diagnostics, every one of which is logged to `log` (errors and
-/// warnings, in the order found); throws the first error (input) when there are errors.
+/// warnings, in the order found, each once); throws (Diagnostics::log_and_rethrow) when
+/// there are errors.
 model::SimulationInputs load_logged(const std::filesystem::path& simulation_file,
                                     const LoadOptions& options, const Log& log);
 

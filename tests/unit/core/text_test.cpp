@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: Apache-2.0
+// Tests of the message helpers in glint/core/text.h: quote and the UTF-8 checks.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "glint/core/text.h"
+
+namespace glint::test {
+namespace {
+
+TEST(Quote, PlainTextIsQuotedAsIs) {
+    EXPECT_EQ(quote("frame"), "\"frame\"");
+    EXPECT_EQ(quote(""), "\"\"");
+    EXPECT_EQ(quote("caf\xC3\xA9 \xE2\x82\xAC"), "\"caf\xC3\xA9 \xE2\x82\xAC\"");  // UTF-8 kept
+}
+
+TEST(Quote, EscapesWhatATerminalWouldMisread) {
+    EXPECT_EQ(quote("a\"b\\c"), "\"a\\\"b\\\\c\"");
+    EXPECT_EQ(quote("a\nb\tc\r"), "\"a\\nb\\tc\\r\"");
+    EXPECT_EQ(quote(std::string("x\0y", 3)), "\"x\\x00y\"");
+    EXPECT_EQ(quote("\x1B[31m"), "\"\\x1B[31m\"");
+    EXPECT_EQ(quote("Latin-1 \xE9t\xE9"), "\"Latin-1 \\xE9t\\xE9\"");  // not UTF-8
+    EXPECT_EQ(quote("\xFF\xFE"), "\"\\xFF\\xFE\"");
+}
+
+TEST(Quote, LongTextIsCutWithItsSize) {
+    const std::string token(20'000'000, 'x');  // the 20 MB OBJ token of a fuzzed input
+    const std::string shown = quote(token);
+    EXPECT_EQ(shown, "\"" + std::string(80, 'x') + "\"... (20000000 bytes)");
+    EXPECT_EQ(quote("abcdef", 3), "\"abc\"... (6 bytes)");
+    EXPECT_EQ(quote("abc", 3), "\"abc\"");
+}
+
+TEST(Utf8, SequenceLengths) {
+    EXPECT_EQ(utf8_sequence_length("a", 0), 1u);
+    EXPECT_EQ(utf8_sequence_length("\xC3\xA9", 0), 2u);
+    EXPECT_EQ(utf8_sequence_length("\xE2\x82\xAC", 0), 3u);
+    EXPECT_EQ(utf8_sequence_length("\xF0\x9F\x98\x80", 0), 4u);
+    EXPECT_EQ(utf8_sequence_length("\xA9", 0), 0u);              // stray continuation
+    EXPECT_EQ(utf8_sequence_length("\xC0\xAF", 0), 0u);          // overlong '/'
+    EXPECT_EQ(utf8_sequence_length("\xE0\x80\xAF", 0), 0u);      // overlong '/'
+    EXPECT_EQ(utf8_sequence_length("\xED\xA0\x80", 0), 0u);      // surrogate U+D800
+    EXPECT_EQ(utf8_sequence_length("\xF4\x90\x80\x80", 0), 0u);  // beyond U+10FFFF
+    EXPECT_EQ(utf8_sequence_length("\xE2\x82", 0), 0u);          // cut short
+    EXPECT_EQ(utf8_sequence_length("a", 1), 0u);                 // past the end
+}
+
+TEST(Utf8, ValidityAndReplacement) {
+    EXPECT_TRUE(is_valid_utf8(""));
+    EXPECT_TRUE(is_valid_utf8("plain caf\xC3\xA9"));
+    EXPECT_FALSE(is_valid_utf8("caf\xE9"));
+    EXPECT_FALSE(is_valid_utf8("\xFF"));
+    EXPECT_EQ(to_valid_utf8("caf\xE9.img"), "caf\xEF\xBF\xBD.img");
+    EXPECT_EQ(to_valid_utf8("\xFF\xFE"), "\xEF\xBF\xBD\xEF\xBF\xBD");
+    EXPECT_EQ(to_valid_utf8("ok \xE2\x82\xAC"), "ok \xE2\x82\xAC");
+    EXPECT_TRUE(is_valid_utf8(to_valid_utf8("\xC0\xAF\xED\xA0\x80\xF8")));
+}
+
+}  // namespace
+}  // namespace glint::test
