@@ -11,7 +11,9 @@
 #include "glint/app_platform2jsim/platform_json.h"
 #include "glint/core/atomic_file.h"
 #include "glint/core/error.h"
+#include "glint/core/text.h"
 #include "glint/dirsig/readers.h"
+#include "glint/model/output_name.h"
 
 namespace glint::app_platform2jsim {
 namespace {
@@ -265,6 +267,12 @@ int run_dump(const Options& options, Context& ctx, std::ostream& out) {
 }  // namespace
 
 int run(const Options& options, Context& ctx, std::ostream& out) {
+    if (options.output_prefix) {
+        if (const auto problem = model::output_name_problem(*options.output_prefix)) {
+            throw usage_error("--output_prefix " + quote(*options.output_prefix) + " " +
+                              *problem);
+        }
+    }
     switch (options.mode) {
         case Mode::convert:
             if (options.input.empty()) throw usage_error("no input: give a .sim or .jsim file");

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "glint/core/text.h"
+#include "glint/model/output_name.h"
 #include "platform_parts.h"
 #include "spectral_reader.h"
 
@@ -53,6 +54,19 @@ std::optional<std::string> non_empty_text(const io::XmlNode& node, std::string_v
         diagnostics.error(child->where(),
                           std::string(name) + " is empty, expected " + std::string(expected));
         return std::nullopt;
+    }
+    return text;
+}
+
+/// Child `name` as a part of an output file name: non-empty, and nothing that could leave
+/// the output folder (model::output_name_problem); "" after an error.
+std::string output_name_part(const io::XmlNode& node, std::string_view name,
+                             std::string_view expected, Diagnostics& diagnostics) {
+    std::string text = non_empty_text(node, name, expected, diagnostics).value_or("");
+    if (const auto problem = model::output_name_problem(text)) {
+        diagnostics.error(node.child(name)->where(), "<" + std::string(name) + "> " +
+                                                         quote(text) + " " + *problem);
+        return "";
     }
     return text;
 }
@@ -347,12 +361,12 @@ model::ImageFile read_image_file(const io::XmlNode& node, bool radiometric,
     if (!node.child("basename")) {
         diagnostics.error(node.where(), "missing required element <basename>");
     } else {
-        file.basename = non_empty_text(node, "basename", "a file name", diagnostics).value_or("");
+        file.basename = output_name_part(node, "basename", "a file name", diagnostics);
     }
     if (node.child("extension")) {
         file.extension =
-            non_empty_text(node, "extension", "a file extension such as img", diagnostics)
-                .value_or("img");
+            output_name_part(node, "extension", "a file extension such as img", diagnostics);
+        if (file.extension.empty()) file.extension = "img";
     }
     const auto schedule =
         node.optional_enum("schedule", {"simulation", "task", "capture"}, diagnostics);

@@ -11,7 +11,9 @@
 #include <unordered_map>
 
 #include "glint/dirsig/readers.h"
+#include "glint/core/text.h"
 #include "glint/io/xml.h"
+#include "glint/model/output_name.h"
 #include "jsim_keys.h"
 
 namespace glint::dirsig {
@@ -344,6 +346,13 @@ model::BasicPlatformInputs JsimReader::read_basic_platform(const Json& inputs,
     out.tasks_file = file_at(inputs, path, kTasksFilename);
     out.output_folder = string_at(inputs, path, kOutputFolder, false);
     out.output_prefix = string_at(inputs, path, kOutputPrefix, false);
+    if (out.output_prefix) {
+        if (const auto problem = model::output_name_problem(*out.output_prefix)) {
+            m_diagnostics.error(at(key_path(path, kOutputPrefix)),
+                                "output_prefix " + quote(*out.output_prefix) + " " + *problem);
+            out.output_prefix.reset();
+        }
+    }
     if (const auto it = inputs.find(kSplitChannels); it != inputs.end()) {
         std::optional<bool> value;
         if (it->is_boolean()) {

@@ -11,6 +11,7 @@
 
 #include "glint/core/error.h"
 #include "glint/core/text.h"
+#include "glint/model/output_name.h"
 #include "glint/model/platform.h"
 #include "glint/schedule/schedule.h"
 #include "schedule_impl.h"
@@ -23,15 +24,13 @@ namespace {
 constexpr double kMaxAxisCount = 1e6;
 constexpr double kMaxElementCount = 2147483648.0;  // 2^31
 
-std::string quoted(const std::string& text) { return "\"" + text + "\""; }
-
 std::string plugin_name(std::size_t plugin_index) {
     return "plugin_list[" + std::to_string(plugin_index) + "]";
 }
 
 std::string focal_plane_name(const ClockedFocalPlane& source) {
-    return "instrument " + quoted(source.instrument->name) + " focal plane " +
-           quoted(source.focal_plane->name);
+    return "instrument " + quote(source.instrument->name) + " focal plane " +
+           quote(source.focal_plane->name);
 }
 
 /// An element count scaled by `factor`: rounded to the nearest integer, at least 1.
@@ -119,7 +118,7 @@ void Loader::add_sources(std::size_t plugin_slot) {
         if (instrument.type == model::InstrumentType::data_recorder &&
             instrument.focal_planes.empty()) {
             diagnostics.warning(instrument.where,
-                                "data recorder " + quoted(instrument.name) +
+                                "data recorder " + quote(instrument.name) +
                                     " has no focal plane, so no sample clock: it is not "
                                     "scheduled (see docs/schedule.md)");
             continue;
@@ -162,14 +161,14 @@ void Loader::check_output_names() {
         const Owner& first = it->second;
         if (first.plugin_index != entry.plugin_index) {
             diagnostics.error(simulation.plugins[entry.plugin_index].where,
-                              "output file " + quoted(name) + " of " +
+                              "output file " + quote(name) + " of " +
                                   plugin_name(entry.plugin_index) + " (" + what +
                                   ") is also written by " + plugin_name(first.plugin_index) + " (" +
                                   first.what +
                                   "): give the BasicPlatform entries different output_prefix "
                                   "or output_folder values");
         } else {
-            diagnostics.error(image.where, "output file " + quoted(name) + " of " + what +
+            diagnostics.error(image.where, "output file " + quote(name) + " of " + what +
                                                " is also written by " + first.what +
                                                ", expected different basenames");
         }
@@ -180,7 +179,7 @@ void Loader::check_output_names() {
         for (const model::TruthCollection& truth : source.focal_plane->truth_collections) {
             if (!truth.enabled) continue;
             claim(source, truth.image_file,
-                  "truth collection " + quoted(truth.name) + " of " + plane);
+                  "truth collection " + quote(truth.name) + " of " + plane);
         }
     }
 }
@@ -214,7 +213,7 @@ void Loader::compute_ticks() {
                 diagnostics.warning(
                     task.where, plugin_name(entry.plugin_index) + " " + focal_plane_name(source) +
                                     " has no capture in task " + std::to_string(t) + " " +
-                                    quoted(task.name) + " [" + format_shortest(task.start_s) +
+                                    quote(task.name) + " [" + format_shortest(task.start_s) +
                                     " s, " + format_shortest(task.stop_s) + " s]");
             }
         }
@@ -245,6 +244,12 @@ Schedule Schedule::build(const model::SimulationInputs& inputs, const ScheduleOp
     if (!std::isfinite(options.scale_resolution) || options.scale_resolution <= 0.0) {
         throw usage_error("--scale_resolution " + format_shortest(options.scale_resolution) +
                           " is not a positive number, expected a factor > 0");
+    }
+    if (options.output_prefix) {
+        if (const auto problem = model::output_name_problem(*options.output_prefix)) {
+            throw usage_error("--output_prefix " + quote(*options.output_prefix) + " " +
+                              *problem);
+        }
     }
     const model::Simulation& simulation = inputs.simulation;
     Schedule schedule;

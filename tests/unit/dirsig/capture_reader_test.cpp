@@ -411,6 +411,37 @@ TEST(CaptureReaderErrors, MissingBasename) {
                           "capturemethod/imagefile"));
 }
 
+TEST(CaptureReaderErrors, OutputNamesThatCouldLeaveTheOutputFolder) {
+    // Each of these would put the image outside --output_folder (or give it an
+    // unprintable name): refused where it is written, for radiometric and truth images.
+    const std::pair<const char*, const char*> cases[] = {
+        {"<basename>../../escaped</basename>", "<basename> \"../../escaped\" contains '/'"},
+        {"<basename>a\\b</basename>", "<basename> \"a\\\\b\" contains '\\'"},
+        {"<basename>..</basename>", "<basename> \"..\" contains '..'"},
+        {"<basename>x&#9;y</basename>", "<basename> \"x\\ty\" contains the control character 0x09"},
+        {"<basename>x</basename><extension>img/../../x</extension>",
+         "<extension> \"img/../../x\" contains '/'"},
+    };
+    for (const bool radiometric : {true, false}) {
+        for (const auto& [children, message] : cases) {
+            const std::string xml = "<imagefile>\n" + std::string(children) + "\n</imagefile>";
+            const auto doc = io::XmlDocument::parse(xml, kCaptureFile);
+            CaptureRead read;
+            read.xml = xml;
+            const auto file =
+                dirsig::detail::read_image_file(doc.root(), radiometric, read.diagnostics);
+            EXPECT_EQ(read.diagnostics.error_count(), 1u) << children;
+            ASSERT_FALSE(read.diagnostics.items().empty()) << children;
+            const auto& item = read.diagnostics.items().front();
+            EXPECT_NE(item.message.find(message), std::string::npos) << item.message;
+            EXPECT_EQ(item.where.line, 2) << children;
+            EXPECT_EQ(item.where.file, kCaptureFile);
+            EXPECT_EQ(file.basename.find('/'), std::string::npos);
+            EXPECT_EQ(file.extension.find('/'), std::string::npos);
+        }
+    }
+}
+
 TEST(CaptureReaderErrors, HypersamplingBelowOne) {
     const auto read = read_capture(
         capture_xml("<samplestrategy><hypersamplingmultiplier>0.5</hypersamplingmultiplier>"

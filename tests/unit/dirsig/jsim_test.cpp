@@ -309,6 +309,25 @@ TEST(JsimReaderErrors, UnknownKeysAreWarnings) {
     ASSERT_EQ(sims.size(), 1u);
 }
 
+TEST(JsimReaderErrors, OutputPrefixThatCouldLeaveTheOutputFolder) {
+    TempDir dir;
+    Diagnostics diagnostics;
+    const auto sims = read_text(dir,
+                                "[{\"plugin_list\": [{\"name\": \"BasicPlatform\", \"inputs\": {\n"
+                                "  \"platform_filename\": \"a.platform\",\n"
+                                "  \"motion_filename\": \"a.ppd\", \"tasks_filename\": \"a.tasks\",\n"
+                                "  \"output_prefix\": \"../../escaped_\"}}]}]\n",
+                                diagnostics);
+    const Diagnostic error = only_error(diagnostics);
+    EXPECT_EQ(error.where.line, 4);
+    EXPECT_EQ(error.where.element, "[0].plugin_list[0].inputs.output_prefix");
+    EXPECT_EQ(error.message,
+              "output_prefix \"../../escaped_\" contains '/', expected a file name without "
+              "folder separators (the output folder says where files go)");
+    ASSERT_EQ(sims.size(), 1u);
+    EXPECT_FALSE(sims[0].plugins[0].basic_platform->output_prefix.has_value());
+}
+
 TEST(JsimReaderErrors, UndefinedVariable) {
     TempDir dir;
     Diagnostics diagnostics;
