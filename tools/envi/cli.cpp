@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "glint/core/error.h"
+#include "glint/core/runner.h"
 
 namespace glint::tools::envi {
 namespace {
@@ -64,7 +65,9 @@ void EnviCli::configure(CLI::App& app) {
     c.add_option("-f,--format", m_options.convert.format,
                  "Output format: png, tiff, jpeg, exr, ppm or envi (default: from OUT's "
                  "extension)");
-    c.add_option("--band", m_band, "Write this one band (numbered from 0)")->type_name("N");
+    c.add_option("--band", m_band, "Write this one band (numbered from 0)")
+        ->check(whole_number())
+        ->type_name("N");
     c.add_option("--bands", m_bands, "Write these bands as the output channels, e.g. 2,1,0")
         ->type_name("R,G,B");
     c.add_option("--gamma", m_gamma, "Display gamma: stretched values s become s^(1/G)")

@@ -5,6 +5,7 @@
 #include "cli.h"
 
 #include "glint/core/error.h"
+#include "glint/core/runner.h"
 
 namespace glint::tools::schedule {
 
@@ -23,6 +24,7 @@ void ScheduleCli::configure(CLI::App& app) {
                  "Print counts, problems (pixels) and time span of the selection instead of "
                  "the captures (text or json)");
     app.add_option("--task", m_task, "Only captures of task N (0-based, within each plugin)")
+        ->check(whole_number())
         ->type_name("N");
     app.add_option("--captures", m_captures,
                    "Only global capture indices A to B-1 (A:B, A:, :B or N)")

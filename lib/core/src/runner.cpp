@@ -4,13 +4,16 @@
 #include "glint/core/runner.h"
 
 #include <cctype>
+#include <charconv>
 #include <csignal>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <new>
 
 #include "glint/core/error.h"
 #include "glint/core/progress.h"
+#include "glint/core/text.h"
 
 #ifndef GLINT_VERSION_STRING
 #error "GLINT_VERSION_STRING must be defined by the build"
@@ -100,6 +103,21 @@ std::string format_diagnostic(const std::string& program, const std::string& lev
     return program + ": " + label + " " + message;
 }
 
+CLI::Validator whole_number(std::uint64_t max) {
+    const std::string range = "a whole number from 0 to " + std::to_string(max);
+    return CLI::Validator(
+        [max, range](std::string& text) -> std::string {
+            std::uint64_t value = 0;
+            const char* end = text.data() + text.size();
+            const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+            if (text.empty() || ptr != end || ec != std::errc() || value > max) {
+                return quote(text) + " is not " + range;
+            }
+            return {};
+        },
+        "", "whole number");
+}
+
 void add_common_flags(CLI::App& app, CommonOptions& options, unsigned which) {
     app.add_flag("-v,--verbose", options.verbosity, "More messages on stderr (-v info, -vv debug)");
     app.add_flag("-q,--quiet", options.quiet, "Only errors on stderr; no progress line");
@@ -108,12 +126,13 @@ void add_common_flags(CLI::App& app, CommonOptions& options, unsigned which) {
         ->type_name("FILE");
     if ((which & kCommonThreads) != 0) {
         app.add_option("--threads", options.threads, "Worker threads (0 = all cores)")
-            ->check(CLI::NonNegativeNumber)
+            ->check(whole_number(std::numeric_limits<unsigned>::max()))
             ->type_name("N");
     }
     if ((which & kCommonSeed) != 0) {
         app.add_option("--seed", options.seed,
                        "Seed of every random stream (same seed, same bytes)")
+            ->check(whole_number())
             ->type_name("N")
             ->capture_default_str();
     }

@@ -128,6 +128,38 @@ TEST(Runner, CommonFlagsReachTheContext) {
     EXPECT_EQ(run({"--seed", "1"}, succeed, kCommonBasic).status, kExitUsage);
 }
 
+TEST(Runner, SeedAndThreadsOutOfRangeAreUsageErrors) {
+    // CLI11 alone reads "-1" into an unsigned as 2^64 - 1 and saturates on overflow.
+    const std::pair<std::vector<std::string>, std::string> cases[] = {
+        {{"--seed", "-1"}, "--seed: \"-1\" is not a whole number from 0 to 18446744073709551615"},
+        {{"--seed", "18446744073709551616"},
+         "--seed: \"18446744073709551616\" is not a whole number from 0 to "
+         "18446744073709551615"},
+        {{"--seed", "1e3"}, "--seed: \"1e3\" is not a whole number"},
+        {{"--seed", "+5"}, "--seed: \"+5\" is not a whole number"},
+        {{"--seed=", ""}, "--seed"},
+        {{"--threads=-2"}, "--threads: \"-2\" is not a whole number from 0 to 4294967295"},
+        {{"--threads", "4294967296"}, "--threads: \"4294967296\" is not a whole number"},
+    };
+    for (const auto& [args, message] : cases) {
+        bool ran = false;
+        const Outcome o = run(args, [&](Context&) {
+            ran = true;
+            return 0;
+        });
+        EXPECT_EQ(o.status, kExitUsage) << message;
+        EXPECT_THAT(o.err, HasSubstr("glint-demo: error: " + message)) << o.err;
+        EXPECT_FALSE(ran) << message;
+    }
+    Context seen;
+    EXPECT_EQ(run({"--seed", "18446744073709551615"}, [&](Context& c) {
+                  seen = c;
+                  return 0;
+              }).status,
+              0);
+    EXPECT_EQ(seen.seed, 18446744073709551615u);
+}
+
 TEST(Runner, VerbosityAndQuietSetTheLogThreshold) {
     auto chatty = [](Context& c) {
         c.log.debug("a debug line");

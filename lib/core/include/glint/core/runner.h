@@ -40,6 +40,11 @@ enum CommonFlag : unsigned {
     kCommonSeed = 1u << 1,
 };
 
+/// A CLI11 check for options holding unsigned whole numbers: decimal digits only, at most
+/// `max`. CLI11 itself reads "-1" into an unsigned as 2^64 - 1 and saturates on overflow;
+/// with this check both are usage errors naming the option's range.
+CLI::Validator whole_number(std::uint64_t max = UINT64_MAX);
+
 /// Adds -v/--verbose, -q/--quiet, --progress and, per `which`, --threads and --seed.
 void add_common_flags(CLI::App& app, CommonOptions& options, unsigned which);
 
