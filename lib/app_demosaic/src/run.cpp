@@ -5,6 +5,8 @@
 #include "glint/core/atomic_file.h"
 #include "glint/core/error.h"
 #include "glint/core/runner.h"
+#include "glint/core/text.h"
+#include "glint/io/envi.h"
 #include "glint/io/image.h"
 #include "stages.h"
 
@@ -41,14 +43,41 @@ struct HeaderCfa {
     std::optional<demosaic::BayerPhase> phase;
 };
 
-HeaderCfa header_cfa(const internal::MosaicSource& source) {
+/// A mosaic key of the input's header that names no known value: an input error, or a
+/// warning when the option that would override it was given (`overridden`).
+void unknown_header_value(const Options& o, std::string_view key, const std::string& value,
+                          std::string_view expected, bool overridden, Context& ctx) {
+    const std::string header = io::envi_header_path_for(o.input).string();
+    const std::string message = quote(value) + " is not known, expected " + std::string(expected);
+    if (!overridden) {
+        throw input_error(message + " (or give the option that sets it)",
+                          ErrorContext{header, 0, std::string(key)});
+    }
+    ctx.log.warning(format_located(ErrorContext{header, 0, std::string(key)}, message) +
+                    "; the option given is used");
+}
+
+HeaderCfa header_cfa(const Options& o, const internal::MosaicSource& source, Context& ctx) {
     HeaderCfa cfa;
     if (!source.envi) return cfa;
     if (const auto name = source.envi->find_extra("glint cfa pattern")) {
         cfa.pattern = demosaic::cfa_pattern_from_name(*name);
+        if (!cfa.pattern) {
+            unknown_header_value(o, "glint cfa pattern", *name, "bayer or truesense",
+                                 o.pattern.has_value(), ctx);
+        }
     }
     if (const auto name = source.envi->find_extra("glint cfa phase")) {
         cfa.phase = demosaic::bayer_phase_from_name(*name);
+        // The phase matters only for a Bayer mosaic: an explicit --pattern other than bayer,
+        // or --phase, overrides it.
+        if (!cfa.phase) {
+            const bool overridden =
+                o.phase.has_value() ||
+                (o.pattern.has_value() && *o.pattern != demosaic::CfaPattern::bayer);
+            unknown_header_value(o, "glint cfa phase", *name, "rggb, grbg, gbrg or bggr",
+                                 overridden, ctx);
+        }
     }
     return cfa;
 }
@@ -57,7 +86,7 @@ HeaderCfa header_cfa(const internal::MosaicSource& source) {
 /// defaults; throws usage errors for a phase or method that does not fit the pattern.
 demosaic::DemosaicOptions resolve(const Options& o, const internal::MosaicSource& source,
                                   Context& ctx) {
-    const HeaderCfa cfa = header_cfa(source);
+    const HeaderCfa cfa = header_cfa(o, source, ctx);
     demosaic::DemosaicOptions used;
     used.pattern = o.pattern.value_or(cfa.pattern.value_or(demosaic::CfaPattern::bayer));
     if (o.pattern && cfa.pattern && *o.pattern != *cfa.pattern) {
