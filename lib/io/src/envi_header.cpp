@@ -8,6 +8,7 @@
 #include <charconv>
 #include <map>
 #include <system_error>
+#include <unordered_map>
 
 #include "envi_text.h"
 #include "glint/core/error.h"
@@ -349,13 +350,21 @@ void validate_envi_header(const EnviHeader& header, const std::string& file) {
 EnviHeader parse_envi_header(std::string_view text, const std::string& file) {
     const std::vector<Entry> entries = split_entries(text, file);
     std::map<std::string, const Entry*> standard;  // last occurrence wins, as in ENVI
+    std::unordered_map<std::string_view, std::size_t> extra_index;  // key → slot in extra
     EnviHeader header;
     header.file_type.clear();
     for (const Entry& entry : entries) {
         if (is_standard_key(entry.key)) {
             standard[entry.key] = &entry;
+            continue;
+        }
+        // A repeated extra key keeps its first place and its last value (set_extra's rule),
+        // found by hash so 10⁵ keys stay linear.
+        const auto [slot, added] = extra_index.emplace(entry.key, header.extra.size());
+        if (added) {
+            header.extra.emplace_back(entry.key, entry.value);
         } else {
-            header.set_extra(entry.key, entry.value);
+            header.extra[slot->second].second = entry.value;
         }
     }
     const auto find = [&](const char* key) -> const Entry* {

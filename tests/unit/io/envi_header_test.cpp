@@ -128,6 +128,31 @@ TEST(EnviHeaderParse, KeysAreCaseInsensitiveAndExtrasKeepFileOrder) {
     EXPECT_FALSE(h.find_extra("nothing"));
 }
 
+TEST(EnviHeaderParse, RepeatedExtraKeyKeepsItsPlaceAndLastValue) {
+    const EnviHeader h = parse_envi_header(
+        "ENVI\nsamples = 1\nlines = 1\nbands = 1\ndata type = 4\n"
+        "a = 1\nb = 2\nA = 3\n",
+        "x.hdr");
+    ASSERT_EQ(h.extra.size(), 2u);
+    EXPECT_EQ(h.extra[0], (std::pair<std::string, std::string>{"a", "3"}));
+    EXPECT_EQ(h.extra[1], (std::pair<std::string, std::string>{"b", "2"}));
+}
+
+TEST(EnviHeaderParse, HundredsOfThousandsOfExtraKeys) {
+    // A fuzzed header with 160k extra keys took 12.6 s (each key searched the list before
+    // it); keys are now found by hash. 200k keys, one repeated at the end.
+    std::string text = "ENVI\nsamples = 1\nlines = 1\nbands = 1\ndata type = 4\n";
+    constexpr int kKeys = 200'000;
+    for (int i = 0; i < kKeys; ++i) {
+        text += "key" + std::to_string(i) + " = " + std::to_string(i) + "\n";
+    }
+    text += "key7 = last\n";
+    const EnviHeader h = parse_envi_header(text, "x.hdr");
+    ASSERT_EQ(h.extra.size(), static_cast<std::size_t>(kKeys));
+    EXPECT_EQ(h.extra[7].second, "last");
+    EXPECT_EQ(h.extra.back(), (std::pair<std::string, std::string>{"key199999", "199999"}));
+}
+
 TEST(EnviHeaderParse, BraceValuesSpanLines) {
     const EnviHeader h = parse_envi_header(
         "ENVI\n"
