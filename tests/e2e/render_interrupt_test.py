@@ -1,18 +1,74 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
-"""SIGINT during glint-render: exit status 130, and no file under a final name (the
-simulation-schedule output is still incomplete when the signal arrives), no temporary file
-left behind, and the process gone within a few seconds.
+"""Stop signals during glint-render: SIGINT, SIGHUP and SIGTERM each end it with 128 + the
+signal's number, no file under a final name (the simulation-schedule output is still
+incomplete when the signal arrives), no temporary file left behind, and the process gone
+within a few seconds. Then a file-size limit (`ulimit -f`, SIGXFSZ): the write fails,
+exit 1 with the reason, nothing left behind.
 
 Usage: render_interrupt_test.py --bin BIN_DIR --data TESTS_DATA_DIR --work WORK_DIR
 """
 import argparse
 import os
+import resource
 import shutil
 import signal
 import subprocess
 import sys
 import time
+
+
+def files_under(folder):
+    left = []
+    for root, _, files in os.walk(folder):
+        left += [os.path.join(root, f) for f in files]
+    return left
+
+
+def stop_with(args, sig):
+    work = os.path.join(args.work, sig.name)
+    out = os.path.join(work, "out")
+    os.makedirs(work)
+    # 3 captures x 48 pixels x 200 000 samples: far longer than the second we wait.
+    command = [os.path.join(args.bin, "glint-render"), os.path.join(args.data, "render", "one.jsim"),
+               "--output-folder", out, "--convergence", "200000,200000,0", "--threads", "2"]
+    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    time.sleep(1.0)
+    assert process.poll() is None, "glint-render ended before the signal: the job is too small"
+    started = time.monotonic()
+    process.send_signal(sig)
+    try:
+        stdout, stderr = process.communicate(timeout=30)
+    except subprocess.TimeoutExpired:
+        process.kill()
+        raise AssertionError("glint-render did not stop within 30 s of %s" % sig.name)
+    stopped = time.monotonic() - started
+    assert process.returncode == 128 + sig.value, (sig.name, process.returncode, stderr.decode())
+    assert stdout == b"", stdout
+    expected = ("glint-render: error: interrupted (%s)\n" % sig.name).encode()
+    assert stderr == expected, (sig.name, stderr.decode())
+    left = files_under(work)
+    assert left == [], "files left behind after %s: %s" % (sig.name, left)
+    print("ok: %s: exit %d after %.2f s, nothing left" % (sig.name, process.returncode, stopped))
+
+
+def file_size_limit(args):
+    work = os.path.join(args.work, "fsize")
+    out = os.path.join(work, "out")
+    os.makedirs(work)
+    command = [os.path.join(args.bin, "glint-render"), os.path.join(args.data, "render", "one.jsim"),
+               "--output-folder", out, "--convergence", "1,1,0", "--threads", "1"]
+
+    def limit():  # 100 bytes: less than any output file
+        resource.setrlimit(resource.RLIMIT_FSIZE, (100, 100))
+
+    result = subprocess.run(command, capture_output=True, timeout=60, preexec_fn=limit)
+    stderr = result.stderr.decode()
+    assert result.returncode == 1, ("file-size limit", result.returncode, stderr)
+    assert "File too large" in stderr, stderr
+    left = files_under(work)
+    assert left == [], "files left behind after the file-size limit: %s" % left
+    print("ok: file-size limit: exit 1 (%s), nothing left" % stderr.strip().splitlines()[-1])
 
 
 def main():
@@ -22,30 +78,10 @@ def main():
     parser.add_argument("--work", required=True)
     args = parser.parse_args()
     shutil.rmtree(args.work, ignore_errors=True)
-    out = os.path.join(args.work, "out")
     os.makedirs(args.work)
-    # 3 captures x 48 pixels x 200 000 samples: far longer than the second we wait.
-    command = [os.path.join(args.bin, "glint-render"), os.path.join(args.data, "render", "one.jsim"),
-               "--output-folder", out, "--convergence", "200000,200000,0", "--threads", "2"]
-    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
-    time.sleep(1.0)
-    assert process.poll() is None, "glint-render ended before the signal: the job is too small"
-    started = time.monotonic()
-    process.send_signal(signal.SIGINT)
-    try:
-        stdout, stderr = process.communicate(timeout=30)
-    except subprocess.TimeoutExpired:
-        process.kill()
-        raise AssertionError("glint-render did not stop within 30 s of SIGINT")
-    stopped = time.monotonic() - started
-    assert process.returncode == 130, (process.returncode, stderr.decode())
-    assert stdout == b"", stdout
-    assert b"interrupted" in stderr, stderr.decode()
-    left = []
-    for root, _, files in os.walk(args.work):
-        left += [os.path.join(root, f) for f in files]
-    assert left == [], "files left behind: %s" % left
-    print("ok: exit 130 after %.2f s, nothing left" % stopped)
+    for sig in (signal.SIGINT, signal.SIGHUP, signal.SIGTERM):
+        stop_with(args, sig)
+    file_size_limit(args)
 
 
 if __name__ == "__main__":

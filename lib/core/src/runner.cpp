@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 // The tool runner: common flags, CLI11 parsing, the stderr log sink, progress printing,
-// SIGINT → cancellation, and the mapping from outcomes to exit statuses.
+// stop signals → cancellation, and the mapping from outcomes to exit statuses.
 #include "glint/core/runner.h"
 
 #include <cctype>
 #include <charconv>
 #include <csignal>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <memory>
 #include <new>
@@ -22,41 +23,65 @@
 namespace glint {
 namespace {
 
-// The one piece of process-wide state: a signal handler can reach nothing else. It points at
-// the running tool's cancel flag for the duration of run_tool only.
+// The process-wide state a signal handler needs (it can reach nothing else): the running
+// tool's cancel flag, for the duration of run_tool only, and the signal that raised it.
 std::atomic<bool>* g_interrupt_flag = nullptr;
+volatile std::sig_atomic_t g_interrupt_signal = 0;
+
+/// Signals whose default action ends the process and that a tool turns into a clean stop:
+/// the cancel flag is raised, the work stops at its next check, temporary files are removed
+/// and the exit status is 128 + the signal's number. (SIGKILL cannot be caught; SIGXFSZ is
+/// ignored instead, so that writing past the file-size limit fails with EFBIG and is
+/// reported like a full disk.)
+constexpr int kStopSignals[] = {SIGINT,    SIGTERM, SIGHUP,  SIGQUIT,   SIGPIPE, SIGALRM,
+                                SIGUSR1,   SIGUSR2, SIGXCPU, SIGVTALRM, SIGPROF};
+constexpr std::size_t kStopSignalCount = std::size(kStopSignals);
 
 extern "C" void on_interrupt(int signal_number) {
     if (g_interrupt_flag != nullptr) g_interrupt_flag->store(true);
-    // A second interrupt ends the process at once.
+    if (g_interrupt_signal == 0) g_interrupt_signal = signal_number;
+    // A second interrupt ends the process at once — except SIGPIPE, which every further
+    // write to the closed pipe raises again.
+    if (signal_number == SIGPIPE) return;
     struct sigaction action {};
     action.sa_handler = SIG_DFL;
     sigemptyset(&action.sa_mask);
     sigaction(signal_number, &action, nullptr);
 }
 
-/// Routes SIGINT and SIGTERM to a cancel flag while alive.
+/// Routes the stop signals to a cancel flag and ignores SIGXFSZ while alive.
 class InterruptGuard {
 public:
     explicit InterruptGuard(std::atomic<bool>* flag) {
         g_interrupt_flag = flag;
+        g_interrupt_signal = 0;
         struct sigaction action {};
         action.sa_handler = on_interrupt;
         sigemptyset(&action.sa_mask);
-        sigaction(SIGINT, &action, &m_old_int);
-        sigaction(SIGTERM, &action, &m_old_term);
+        for (std::size_t i = 0; i < kStopSignalCount; ++i) {
+            sigaction(kStopSignals[i], &action, &m_old[i]);
+        }
+        struct sigaction ignore {};
+        ignore.sa_handler = SIG_IGN;
+        sigemptyset(&ignore.sa_mask);
+        sigaction(SIGXFSZ, &ignore, &m_old_xfsz);
     }
     ~InterruptGuard() {
-        sigaction(SIGINT, &m_old_int, nullptr);
-        sigaction(SIGTERM, &m_old_term, nullptr);
+        for (std::size_t i = 0; i < kStopSignalCount; ++i) {
+            sigaction(kStopSignals[i], &m_old[i], nullptr);
+        }
+        sigaction(SIGXFSZ, &m_old_xfsz, nullptr);
         g_interrupt_flag = nullptr;
     }
     InterruptGuard(const InterruptGuard&) = delete;
     InterruptGuard& operator=(const InterruptGuard&) = delete;
 
+    /// The signal that raised the flag, 0 when none did.
+    int signal_number() const { return static_cast<int>(g_interrupt_signal); }
+
 private:
-    struct sigaction m_old_int {};
-    struct sigaction m_old_term {};
+    struct sigaction m_old[kStopSignalCount] {};
+    struct sigaction m_old_xfsz {};
 };
 
 bool wants_colour(bool terminal) {
@@ -74,6 +99,24 @@ std::string lowercase_first(std::string text) {
     }
     while (!text.empty() && (text.back() == '.' || text.back() == '\n')) text.pop_back();
     return text;
+}
+
+/// "SIGHUP" for SIGHUP, and so on for the stop signals.
+std::string signal_name(int signal_number) {
+    switch (signal_number) {
+        case SIGINT: return "SIGINT";
+        case SIGTERM: return "SIGTERM";
+        case SIGHUP: return "SIGHUP";
+        case SIGQUIT: return "SIGQUIT";
+        case SIGPIPE: return "SIGPIPE";
+        case SIGALRM: return "SIGALRM";
+        case SIGUSR1: return "SIGUSR1";
+        case SIGUSR2: return "SIGUSR2";
+        case SIGXCPU: return "SIGXCPU";
+        case SIGVTALRM: return "SIGVTALRM";
+        case SIGPROF: return "SIGPROF";
+        default: return "signal " + std::to_string(signal_number);
+    }
 }
 
 int exit_status_for(ErrorCategory category) {
@@ -205,13 +248,21 @@ int run_tool(const ToolSpec& spec, int argc, const char* const* argv, const Tool
     }
 
     int status = kExitFailure;
+    int stop_signal = 0;
     {
         InterruptGuard guard(context.cancel.flag_for_signal_handler());
+        const auto stopped_by = [&] { return guard.signal_number(); };
         try {
             status = execute(context);
         } catch (const Error& e) {
             if (terminal_progress) err << "\r\033[K";
-            report("error", e.what());
+            // A closed pipe downstream (`| head`) is not worth a message, as for any tool.
+            if (!(e.category() == ErrorCategory::cancelled && stopped_by() == SIGPIPE)) {
+                const int signal_number = stopped_by();
+                report("error", e.category() == ErrorCategory::cancelled && signal_number != 0
+                                    ? e.message() + " (" + signal_name(signal_number) + ")"
+                                    : std::string(e.what()));
+            }
             status = exit_status_for(e.category());
         } catch (const CLI::Error& e) {
             report("error", lowercase_first(e.what()));
@@ -223,8 +274,12 @@ int run_tool(const ToolSpec& spec, int argc, const char* const* argv, const Tool
             report("error", std::string("internal error: ") + e.what());
             status = kExitFailure;
         }
+        stop_signal = stopped_by();
     }
-    if (context.cancel.cancelled() && status != kExitSuccess) status = kExitInterrupted;
+    if (context.cancel.cancelled() && status != kExitSuccess) {
+        status = stop_signal != 0 ? 128 + stop_signal : kExitInterrupted;
+    }
+    if (stop_signal == SIGPIPE) return status;  // stdout is gone: nothing to flush or report
     streams.out.flush();
     if (!streams.out) {
         report("error", "cannot write to standard output");

@@ -233,6 +233,48 @@ TEST(Runner, InterruptCancelsAndExits130) {
     EXPECT_THAT(o.err, HasSubstr("glint-demo: error: interrupted"));
 }
 
+TEST(Runner, EveryStopSignalCancelsWithItsOwnStatus) {
+    // 128 + the signal's number, as a shell reports a process the signal ended; the work
+    // stops at its next check, so its temporary files are removed on the way out.
+    const std::pair<int, const char*> cases[] = {
+        {SIGTERM, "SIGTERM"}, {SIGHUP, "SIGHUP"},   {SIGQUIT, "SIGQUIT"}, {SIGALRM, "SIGALRM"},
+        {SIGUSR1, "SIGUSR1"}, {SIGUSR2, "SIGUSR2"}, {SIGXCPU, "SIGXCPU"}, {SIGPROF, "SIGPROF"},
+    };
+    for (const auto& [signal_number, name] : cases) {
+        const int raised = signal_number;
+        const Outcome o = run({}, [raised](Context& c) {
+            std::raise(raised);
+            c.cancel.throw_if_cancelled();
+            return 0;
+        });
+        EXPECT_EQ(o.status, 128 + signal_number) << name;
+        EXPECT_EQ(o.err, std::string("glint-demo: error: interrupted (") + name + ")\n");
+    }
+}
+
+TEST(Runner, ClosedPipeStopsQuietly) {
+    // `glint-schedule ... | head`: SIGPIPE on every write, no message, status 141.
+    const Outcome o = run({}, [](Context& c) {
+        std::raise(SIGPIPE);
+        std::raise(SIGPIPE);  // raised again by the next write: still no default action
+        c.cancel.throw_if_cancelled();
+        return 0;
+    });
+    EXPECT_EQ(o.status, 128 + SIGPIPE);
+    EXPECT_EQ(o.err, "");
+}
+
+TEST(Runner, FileSizeLimitIsAWriteErrorNotASignal) {
+    // SIGXFSZ is ignored while a tool runs, so writing past `ulimit -f` fails with EFBIG
+    // and goes through the usual error path (temporary files removed).
+    const Outcome o = run({}, [](Context& c) {
+        std::raise(SIGXFSZ);
+        EXPECT_FALSE(c.cancel.cancelled());
+        return 0;
+    });
+    EXPECT_EQ(o.status, 0);
+}
+
 TEST(ProgressPrinter, RendersTerminalLineAndMachineLines) {
     std::ostringstream terminal, machine;
     ProgressPrinter printer(&terminal, &machine);

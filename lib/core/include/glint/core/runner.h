@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // The tool runner that wraps every glint-<tool> main: builds the CLI11 app with the common
-// flags, parses, sets up the Context (stderr log, progress, SIGINT → cancel) and maps the
-// outcome to the documented exit status:
+// flags, parses, sets up the Context (stderr log, progress, stop signals → cancel) and maps
+// the outcome to the documented exit status:
 //   0 success; 1 runtime/data failure; 2 usage error (every CLI11 parse error);
-//   130 interrupted. --help and --version print to stdout and exit 0.
+//   128 + N stopped by signal N (130 SIGINT, 143 SIGTERM, 129 SIGHUP, 141 SIGPIPE, ...),
+//   temporary files removed. --help and --version print to stdout and exit 0.
 // Diagnostics are one line on stderr: "glint-<tool>: error: <message>".
 #pragma once
 
