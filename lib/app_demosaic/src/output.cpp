@@ -110,6 +110,7 @@ void write_picture(const Options& o, io::OutputKind kind, const demosaic::RgbIma
     write.pixel_type = type;
     write.channel_names = {"R", "G", "B"};
     write.software = std::string("glint-demosaic ") + version();
+    write.date_time_s = ctx.source_date_epoch_s;
     write.description = "glint-demosaic: " + describe(provenance);
     const double scale = integer ? io::pixel_type_max(type) : 1.0;
     io::ImageWriter writer(o.output, image.width, image.height, 3, write);

@@ -194,6 +194,7 @@ ConvertResult to_image(const ConvertOptions& o, OutputKind kind, RasterSource& s
     write.pixel_type = type;
     write.channel_names = channel_names(source, bands);
     write.software = std::string("glint-envi ") + version();
+    write.date_time_s = ctx.source_date_epoch_s;
     const double scale = integer ? io::pixel_type_max(type) : 1.0;
     io::ImageWriter writer(o.output, source.width(), source.height(), bands.size(), write);
     std::vector<double> line(source.width() * source.bands());

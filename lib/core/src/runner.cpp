@@ -6,6 +6,7 @@
 #include <cctype>
 #include <charconv>
 #include <csignal>
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <limits>
@@ -100,6 +101,10 @@ std::string lowercase_first(std::string text) {
     while (!text.empty() && (text.back() == '.' || text.back() == '\n')) text.pop_back();
     return text;
 }
+
+/// The latest SOURCE_DATE_EPOCH accepted: 9999-12-31 23:59:59 UTC, the last second a
+/// four-digit year (TIFF's "YYYY:MM:DD hh:mm:ss") can write.
+constexpr std::int64_t kLatestSourceDateEpoch_s = 253402300799;
 
 /// "SIGHUP" for SIGHUP, and so on for the stop signals.
 std::string signal_name(int signal_number) {
@@ -217,6 +222,16 @@ int run_tool(const ToolSpec& spec, int argc, const char* const* argv, const Tool
     // stays the same wherever glint is installed.
     context.arguments.assign(argv, argv + argc);
     if (!context.arguments.empty()) context.arguments.front() = program;
+    if (const char* epoch = std::getenv("SOURCE_DATE_EPOCH")) {
+        const std::optional<std::int64_t> seconds = parse_int(epoch);
+        if (!seconds || *seconds < 0 || *seconds > kLatestSourceDateEpoch_s) {
+            report("error", "SOURCE_DATE_EPOCH " + quote(epoch) +
+                                " is not a whole number of seconds since 1970 (0 to " +
+                                std::to_string(kLatestSourceDateEpoch_s) + ")");
+            return kExitUsage;
+        }
+        context.source_date_epoch_s = seconds;
+    }
     const LogLevel threshold = common.quiet            ? LogLevel::error
                                : common.verbosity >= 2 ? LogLevel::debug
                                : common.verbosity == 1 ? LogLevel::info

@@ -9,10 +9,12 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <system_error>
 
+#include "glint/core/datetime.h"
 #include "glint/core/error.h"
 #include "glint/core/text.h"
 
@@ -22,6 +24,15 @@ namespace {
 namespace fs = std::filesystem;
 
 ErrorContext at_file(const fs::path& path) { return ErrorContext{path.string(), 0, {}}; }
+
+/// Exif/TIFF "YYYY:MM:DD hh:mm:ss" (UTC) of `seconds` since 1970.
+std::string exif_date_time(std::int64_t seconds) {
+    const CivilTime t = to_civil_utc(DateTime{seconds, 0.0, 0});
+    char text[40];
+    std::snprintf(text, sizeof text, "%04d:%02d:%02d %02d:%02d:%02d", t.year, t.month, t.day,
+                  t.hour, t.minute, t.second);
+    return text;
+}
 
 /// OIIO messages may span lines; diagnostics are one line.
 std::string one_line(std::string text) {
@@ -408,6 +419,8 @@ ImageWriter::ImageWriter(const fs::path& path, std::size_t width, std::size_t he
     spec.attribute("oiio:UnassociatedAlpha", 1);
     if (!options.software.empty()) spec.attribute("Software", options.software);
     if (!options.description.empty()) spec.attribute("ImageDescription", options.description);
+    // An empty DateTime keeps the writers from recording the current time.
+    spec.attribute("DateTime", options.date_time_s ? exif_date_time(*options.date_time_s) : "");
     if (options.format == ImageFormat::jpeg) {
         spec.attribute("Compression",
                        "jpeg:" + std::to_string(std::clamp(options.jpeg_quality, 1, 100)));

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,10 @@ struct Context {
     /// (the runner records it once; outputs carry it as provenance). Empty when a library
     /// entry point is called directly.
     std::vector<std::string> arguments;
+    /// SOURCE_DATE_EPOCH (seconds since 1970 UTC) when the environment sets it: the one
+    /// date-time outputs may record. Unset, outputs record none, so identical runs give
+    /// identical bytes.
+    std::optional<std::int64_t> source_date_epoch_s;
 
     /// The arguments as one shell-quoted line (format_command_line), for ENVI headers.
     std::string command_line() const { return format_command_line(arguments); }

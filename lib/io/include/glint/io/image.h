@@ -108,6 +108,10 @@ struct ImageWriteOptions {
     int jpeg_quality = 95;    ///< 1-100
     std::string software;     ///< "Software" metadata, e.g. "glint-envi 0.1.0"; empty = none
     std::string description;  ///< "ImageDescription" metadata; empty = none
+    /// "DateTime" metadata, seconds since 1970 UTC (the tools pass SOURCE_DATE_EPOCH); none
+    /// = no date-time at all (OpenImageIO would otherwise stamp TIFF and OpenEXR files with
+    /// the current time, so two identical runs would differ).
+    std::optional<std::int64_t> date_time_s;
 };
 
 /// Writes an image line by line into a temporary file beside `path`; commit() closes it
