@@ -16,29 +16,16 @@
 
 #include "glint/core/error.h"
 #include "glint/io/envi.h"
+#include "glint/io/input_files.h"
 
 namespace glint::io {
 namespace {
 
 /// Headers are a few kB (50 kB for 2,500 bands); anything far larger is not a header.
-constexpr std::uintmax_t kMaxHeaderBytes = 16u << 20;
+constexpr std::size_t kMaxHeaderBytes = std::size_t{16} << 20;
 
 std::string read_header_text(const std::filesystem::path& path) {
-    std::error_code ec;
-    const std::uintmax_t size = std::filesystem::file_size(path, ec);
-    if (!ec && size > kMaxHeaderBytes) {
-        throw input_error("header is " + std::to_string(size) +
-                              " bytes, more than any ENVI header (is it a data file?)",
-                          ErrorContext{path.string(), 0, {}});
-    }
-    std::ifstream stream(path, std::ios::binary);
-    if (!stream) {
-        const int code = errno;
-        throw io_error("cannot open header: " + errno_text(code), path.string());
-    }
-    std::string text((std::istreambuf_iterator<char>(stream)), std::istreambuf_iterator<char>());
-    if (stream.bad()) throw io_error("cannot read header", path.string());
-    return text;
+    return read_input_file(path, path.string(), kMaxHeaderBytes, "header");
 }
 
 /// Reads exactly `size` bytes at `offset`.

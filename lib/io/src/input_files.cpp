@@ -2,9 +2,12 @@
 // Whole-file reads of inputs and the record of one load (glint/io/input_files.h).
 #include "glint/io/input_files.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <cerrno>
-#include <fstream>
-#include <iterator>
 #include <system_error>
 #include <utility>
 
@@ -13,32 +16,73 @@
 namespace glint::io {
 namespace {
 
-/// DIRSIG inputs are a few MB at most; anything far larger is not one of them.
-constexpr std::uintmax_t kMaxInputBytes = 256u << 20;
+/// Bytes asked of read(2) at a time.
+constexpr std::size_t kChunkBytes = std::size_t{1} << 16;
+
+/// Closes a file descriptor when it goes out of scope.
+class FileDescriptor {
+public:
+    explicit FileDescriptor(int fd) noexcept : m_fd(fd) {}
+    FileDescriptor(const FileDescriptor&) = delete;
+    FileDescriptor& operator=(const FileDescriptor&) = delete;
+    ~FileDescriptor() {
+        if (m_fd >= 0) ::close(m_fd);
+    }
+    int get() const noexcept { return m_fd; }
+
+private:
+    int m_fd;
+};
+
+Error too_large(std::size_t max_bytes, const std::string& name) {
+    return input_error(
+        "larger than " + std::to_string(max_bytes) + " bytes (a device or not a text file?)",
+        ErrorContext{name, 0, {}});
+}
 
 }  // namespace
 
-std::string read_input_file(const std::filesystem::path& path, const std::string& display_name) {
+std::string read_input_file(const std::filesystem::path& path, const std::string& display_name,
+                            std::size_t max_bytes, std::string_view kind) {
     const std::string& name = display_name.empty() ? path.string() : display_name;
+    // Checked before opening: opening a device can block or have side effects.
     std::error_code ec;
     const auto status = std::filesystem::status(path, ec);
     if (!ec && std::filesystem::is_directory(status)) {
         throw io_error("is a folder, expected a file", name);
     }
-    const std::uintmax_t size = std::filesystem::file_size(path, ec);
-    if (!ec && size > kMaxInputBytes) {
-        throw input_error("file is " + std::to_string(size) + " bytes, more than the " +
-                              std::to_string(kMaxInputBytes >> 20) + " MiB accepted for an input",
-                          ErrorContext{name, 0, {}});
+    if (!ec && (std::filesystem::is_character_file(status) ||
+                std::filesystem::is_block_file(status))) {
+        throw io_error("is a device, expected a file", name);
     }
-    std::ifstream stream(path, std::ios::binary);
-    if (!stream) {
+    const FileDescriptor fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
+    if (fd.get() < 0) {
         const int code = errno;
-        throw io_error("cannot open file: " + errno_text(code), name);
+        throw io_error("cannot open " + std::string(kind) + ": " + errno_text(code), name);
     }
-    std::string text((std::istreambuf_iterator<char>(stream)), std::istreambuf_iterator<char>());
-    if (stream.bad()) throw io_error("cannot read file", name);
-    return text;
+    std::string text;
+    struct stat info {};
+    if (::fstat(fd.get(), &info) == 0 && S_ISREG(info.st_mode) && info.st_size > 0) {
+        const auto size = static_cast<std::uintmax_t>(info.st_size);
+        if (size > max_bytes) throw too_large(max_bytes, name);
+        text.reserve(static_cast<std::size_t>(size) + kChunkBytes);  // no growth at the end
+    }
+    // One byte more than the cap is asked for, to tell "exactly max_bytes" from "more".
+    while (text.size() <= max_bytes) {
+        const std::size_t old_size = text.size();
+        const std::size_t want = std::min(kChunkBytes, max_bytes + 1 - old_size);
+        text.resize(old_size + want);
+        const ssize_t n = ::read(fd.get(), text.data() + old_size, want);
+        if (n < 0) {
+            const int code = errno;
+            text.resize(old_size);
+            if (code == EINTR) continue;
+            throw io_error("cannot read " + std::string(kind) + ": " + errno_text(code), name);
+        }
+        text.resize(old_size + static_cast<std::size_t>(n));
+        if (n == 0) return text;
+    }
+    throw too_large(max_bytes, name);
 }
 
 std::filesystem::path InputFiles::key(const std::filesystem::path& path) {
@@ -53,7 +97,7 @@ const std::string& InputFiles::text(const std::filesystem::path& path,
     if (const auto found = m_texts.find(k); found != m_texts.end()) return found->second;
     m_opened.push_back(k);
     m_log.debug("reading " + (display_name.empty() ? path.string() : display_name));
-    std::string text = read_input_file(path, display_name);
+    std::string text = m_source ? m_source(path, display_name) : read_input_file(path, display_name);
     return m_texts.emplace(k, std::move(text)).first->second;
 }
 

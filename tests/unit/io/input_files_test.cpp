@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: Apache-2.0
+// Tests of the whole-file input read (io::read_input_file) and io::InputFiles: regular files
+// and FIFOs are read; devices (/dev/zero) and folders are refused at once; the byte cap counts
+// the bytes actually read (a FIFO reports no size); ENVI headers have their own, smaller cap;
+// InputFiles reads through a source handed in.
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+#include <thread>
+
+#include "glint/core/error.h"
+#include "glint/io/envi.h"
+#include "glint/io/input_files.h"
+#include "glint/test/temp_dir.h"
+
+namespace glint::io {
+namespace {
+
+using test::TempDir;
+using ::testing::HasSubstr;
+
+/// The glint::Error `read` throws ("" when it throws none).
+template <typename Read>
+std::string error_of(Read&& read) {
+    try {
+        read();
+    } catch (const Error& error) {
+        return error.what();
+    }
+    return {};
+}
+
+/// Writes `text` into the FIFO `path` from another thread (the open blocks until a reader
+/// comes); join() after the read.
+std::thread feed_fifo(const std::filesystem::path& path, std::string text) {
+    return std::thread([path, text = std::move(text)] {
+        const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
+        if (fd < 0) return;
+        std::size_t done = 0;
+        while (done < text.size()) {
+            const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+            if (n <= 0) break;
+            done += static_cast<std::size_t>(n);
+        }
+        ::close(fd);
+    });
+}
+
+TEST(ReadInputFile, RegularFileAndFifo) {
+    TempDir dir;
+    std::ofstream(dir / "a.txt") << "hello\n";
+    EXPECT_EQ(read_input_file(dir / "a.txt"), "hello\n");
+    std::ofstream(dir / "empty.txt").close();
+    EXPECT_EQ(read_input_file(dir / "empty.txt"), "");
+
+    ASSERT_EQ(::mkfifo((dir / "in.fifo").c_str(), 0600), 0);
+    std::thread writer = feed_fifo(dir / "in.fifo", "from a pipe\n");
+    EXPECT_EQ(read_input_file(dir / "in.fifo"), "from a pipe\n");
+    writer.join();
+}
+
+TEST(ReadInputFile, DevicesAndFoldersAreRefusedAtOnce) {
+    for (const char* device : {"/dev/zero", "/dev/urandom"}) {
+        if (!std::filesystem::exists(device)) continue;
+        EXPECT_EQ(error_of([&] { read_input_file(device); }),
+                  std::string(device) + ": is a device, expected a file");
+        EXPECT_EQ(error_of([&] { read_input_file(device, "scene.tasks"); }),
+                  "scene.tasks: is a device, expected a file");
+    }
+    TempDir dir;
+    EXPECT_EQ(error_of([&] { read_input_file(dir.path(), "d"); }), "d: is a folder, expected a file");
+    EXPECT_EQ(error_of([&] { read_input_file(dir / "none.txt", "none.txt"); }),
+              "none.txt: cannot open file: No such file or directory");
+}
+
+TEST(ReadInputFile, CapCountsTheBytesRead) {
+    TempDir dir;
+    std::ofstream(dir / "exact.txt") << std::string(1024, 'x');
+    EXPECT_EQ(read_input_file(dir / "exact.txt", "exact.txt", 1024).size(), 1024u);
+    std::ofstream(dir / "big.txt") << std::string(1025, 'x');
+    EXPECT_EQ(error_of([&] { read_input_file(dir / "big.txt", "big.txt", 1024); }),
+              "big.txt: larger than 1024 bytes (a device or not a text file?)");
+
+    // A FIFO has no size to check beforehand: the cap stops the read itself.
+    ASSERT_EQ(::mkfifo((dir / "in.fifo").c_str(), 0600), 0);
+    std::thread writer = feed_fifo(dir / "in.fifo", std::string(8192, 'y'));
+    try {
+        read_input_file(dir / "in.fifo", "in.fifo", 4096);
+        ADD_FAILURE() << "no error";
+    } catch (const Error& error) {
+        EXPECT_EQ(error.category(), ErrorCategory::input);
+        EXPECT_EQ(error.context().file, "in.fifo");
+        EXPECT_EQ(error.message(), "larger than 4096 bytes (a device or not a text file?)");
+    }
+    writer.join();
+}
+
+TEST(InputFiles, ReadsThroughTheSourceGiven) {
+    int calls = 0;
+    InputFiles files({}, [&calls](const std::filesystem::path& path, const std::string& name) {
+        ++calls;
+        if (path == "/virtual/a.txt") return std::string("in memory");
+        throw io_error("cannot open file: No such file or directory", name);
+    });
+    EXPECT_EQ(files.text("/virtual/a.txt", "a.txt"), "in memory");
+    EXPECT_EQ(files.text("/virtual/./a.txt", "a.txt"), "in memory");  // kept, not read again
+    EXPECT_EQ(calls, 1);
+    EXPECT_EQ(files.open_count("/virtual/a.txt"), 1u);
+    EXPECT_EQ(error_of([&] { files.text("/virtual/b.txt", "b.txt"); }),
+              "b.txt: cannot open file: No such file or directory");
+}
+
+TEST(EnviHeaderRead, DeviceAndOversizedHeadersAreRefused) {
+    TempDir dir;
+    std::ofstream(dir / "x.img") << std::string(4, '\0');
+    std::filesystem::create_symlink("/dev/zero", dir / "x.img.hdr");
+    EXPECT_EQ(error_of([&] { EnviReader reader(dir / "x.img"); }),
+              (dir / "x.img.hdr").string() + ": is a device, expected a file");
+
+    std::ofstream(dir / "y.img") << std::string(4, '\0');
+    std::ofstream(dir / "y.img.hdr") << "ENVI\n" << std::string(16u << 20, ' ');
+    EXPECT_EQ(error_of([&] { EnviReader reader(dir / "y.img"); }),
+              (dir / "y.img.hdr").string() +
+                  ": larger than 16777216 bytes (a device or not a text file?)");
+}
+
+}  // namespace
+}  // namespace glint::io
