@@ -3,12 +3,16 @@
 // plugin_list, medium_list). BasicPlatform and BasicAtmosphere inputs are read into the model
 // with their paths resolved against the .jsim's folder; other plugins and medium_list are kept
 // verbatim. Problems name the JSON path ("[0].plugin_list[1].inputs.platform_filename") and
-// its line, which a second, SAX pass over the text records for every value.
+// its line, which a first, SAX pass over the text records for every value (as a tree of
+// nodes, so memory stays linear in the text) while refusing nesting deeper than 64 levels.
 #include <algorithm>
 #include <cctype>
+#include <cstdint>
 #include <iterator>
 #include <nlohmann/json.hpp>
+#include <string_view>
 #include <unordered_map>
+#include <utility>
 
 #include "glint/dirsig/readers.h"
 #include "glint/core/text.h"
@@ -85,13 +89,71 @@ std::string index_path(const std::string& parent, std::size_t index) {
     return parent + "[" + std::to_string(index) + "]";
 }
 
-/// SAX handler recording the line of every value (and object key) by its JSON path.
+/// JSON deeper than this is refused before it is parsed (a .jsim nests about 6 levels; each
+/// level costs the parsers memory and time).
+constexpr std::size_t kMaxJsonDepth = 64;
+
+/// The line of every value and object key of a JSON text, looked up by JSON path
+/// ("[0].plugin_list[1].inputs.platform_filename"). Each value is one node named by its
+/// parent and its key or index, never by its whole path, so memory is linear in the text.
+class LineTable {
+public:
+    using Node = std::uint32_t;
+    static constexpr Node kNone = 0;  ///< the parent of the root value
+
+    /// Records a value at `line`: the root (parent kNone), an object member (`key`) or an
+    /// array element (`index`). The first of duplicate keys is kept.
+    Node add(Node parent, bool is_index, std::string_view name, int line) {
+        const Node node = ++m_count;
+        m_nodes.emplace(child_key(parent, is_index, name), std::pair<Node, int>{node, line});
+        return node;
+    }
+
+    /// Line of `path`; a path not in the text (a missing key) gets the line of its deepest
+    /// ancestor that is, 1 when none is.
+    int line_of(std::string_view path) const {
+        auto found = m_nodes.find(child_key(kNone, false, {}));  // the root value
+        if (found == m_nodes.end()) return 1;
+        int line = found->second.second;
+        std::size_t at = 0;
+        while (at < path.size()) {  // steps: "[index]", ".key", or a key at the start
+            const bool is_index = path[at] == '[';
+            const std::size_t begin = at + (is_index || path[at] == '.' ? 1 : 0);
+            const std::size_t end = is_index ? path.find(']', begin)
+                                             : std::min(path.find_first_of(".[", begin), path.size());
+            if (end == std::string_view::npos) break;
+            found = m_nodes.find(
+                child_key(found->second.first, is_index, path.substr(begin, end - begin)));
+            if (found == m_nodes.end()) break;
+            line = found->second.second;
+            at = end + (is_index ? 1 : 0);
+        }
+        return line;
+    }
+
+private:
+    static std::string child_key(Node parent, bool is_index, std::string_view name) {
+        std::string key(sizeof parent + 1 + name.size(), '\0');
+        std::copy_n(reinterpret_cast<const char*>(&parent), sizeof parent, key.begin());
+        key[sizeof parent] = is_index ? 'i' : 'k';
+        std::copy(name.begin(), name.end(), key.begin() + sizeof parent + 1);
+        return key;
+    }
+
+    std::unordered_map<std::string, std::pair<Node, int>> m_nodes;
+    Node m_count = 0;
+};
+
+/// SAX handler recording the line of every value (and object key) in a LineTable; stops the
+/// parse at nesting deeper than kMaxJsonDepth.
 class LineRecorder : public nlohmann::json_sax<Json> {
 public:
     LineRecorder(const std::string& text, const LineIndex& index, const std::size_t& consumed)
         : m_text(text), m_index(index), m_consumed(consumed) {}
 
-    const std::unordered_map<std::string, int>& lines() const { return m_lines; }
+    LineTable take_lines() { return std::move(m_lines); }
+    /// The line of the bracket that went deeper than kMaxJsonDepth, 0 when none did.
+    int too_deep_line() const { return m_too_deep_line; }
 
     bool null() override { return value(); }
     bool boolean(bool) override { return value(); }
@@ -114,7 +176,7 @@ public:
 
 private:
     struct Frame {
-        std::string path;
+        LineTable::Node node = LineTable::kNone;
         bool is_array = false;
         std::size_t next_index = 0;
         std::string key;
@@ -128,21 +190,26 @@ private:
         return m_index.line_of(at > 0 ? at - 1 : 0);
     }
 
-    std::string next_path() {
-        if (m_stack.empty()) return {};
+    LineTable::Node add_next() {
+        if (m_stack.empty()) return m_lines.add(LineTable::kNone, false, {}, current_line());
         Frame& top = m_stack.back();
-        if (top.is_array) return index_path(top.path, top.next_index++);
-        return key_path(top.path, top.key);
+        if (top.is_array) {
+            return m_lines.add(top.node, true, std::to_string(top.next_index++), current_line());
+        }
+        return m_lines.add(top.node, false, top.key, current_line());
     }
 
     bool value() {
-        m_lines.emplace(next_path(), current_line());
+        add_next();
         return true;
     }
     bool open(bool is_array) {
-        std::string path = next_path();
-        m_lines.emplace(path, current_line());
-        m_stack.push_back(Frame{std::move(path), is_array, 0, {}});
+        if (m_stack.size() >= kMaxJsonDepth) {
+            m_too_deep_line = current_line();
+            return false;
+        }
+        const LineTable::Node node = add_next();
+        m_stack.push_back(Frame{node, is_array, 0, {}});
         return true;
     }
     bool close() {
@@ -154,13 +221,14 @@ private:
     const LineIndex& m_index;
     const std::size_t& m_consumed;
     std::vector<Frame> m_stack;
-    std::unordered_map<std::string, int> m_lines;
+    LineTable m_lines;
+    int m_too_deep_line = 0;
 };
 
 /// What the reading functions share: where messages point and where paths resolve from.
 class JsimReader {
 public:
-    JsimReader(std::string file, std::unordered_map<std::string, int> lines,
+    JsimReader(std::string file, LineTable lines,
                std::filesystem::path base_dir, const ReadOptions& options, Diagnostics& diagnostics)
         : m_file(std::move(file)),
           m_lines(std::move(lines)),
@@ -173,16 +241,7 @@ public:
 private:
     ErrorContext at(const std::string& path) const {
         // A path that is not in the text (a missing key) is placed at its parent's line.
-        std::string probe = path;
-        while (true) {
-            if (const auto it = m_lines.find(probe); it != m_lines.end()) {
-                return ErrorContext{m_file, it->second, path};
-            }
-            const std::size_t cut = probe.find_last_of(".[");
-            if (cut == std::string::npos || probe.empty()) break;
-            probe.erase(cut);
-        }
-        return ErrorContext{m_file, 1, path};
+        return ErrorContext{m_file, m_lines.line_of(path), path};
     }
 
     static std::string describe(const Json& value) {
@@ -241,7 +300,7 @@ private:
                                                    const std::string& path) const;
 
     std::string m_file;
-    std::unordered_map<std::string, int> m_lines;
+    LineTable m_lines;
     std::filesystem::path m_base_dir;
     const ReadOptions& m_options;
     Diagnostics& m_diagnostics;
@@ -386,6 +445,17 @@ std::vector<model::Simulation> read_jsim(const std::filesystem::path& file,
     }
     const LineIndex index(text);
 
+    // The line pass comes first: it refuses deep nesting before the document is built.
+    std::size_t consumed = 0;
+    LineRecorder recorder(text, index, consumed);
+    Json::sax_parse(CountingIterator(text.data(), text.data(), &consumed),
+                    CountingIterator(text.data(), text.data() + text.size(), &consumed), &recorder);
+    if (recorder.too_deep_line() > 0) {
+        diagnostics.error(ErrorContext{name, recorder.too_deep_line(), {}},
+                          "JSON nesting deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+        return {};
+    }
+
     Json document;
     try {
         document = Json::parse(text);
@@ -402,12 +472,7 @@ std::vector<model::Simulation> read_jsim(const std::filesystem::path& file,
         return {};
     }
 
-    std::size_t consumed = 0;
-    LineRecorder recorder(text, index, consumed);
-    Json::sax_parse(CountingIterator(text.data(), text.data(), &consumed),
-                    CountingIterator(text.data(), text.data() + text.size(), &consumed), &recorder);
-
-    const JsimReader reader(name, recorder.lines(), file.parent_path(), options, diagnostics);
+    const JsimReader reader(name, recorder.take_lines(), file.parent_path(), options, diagnostics);
     std::vector<model::Simulation> simulations;
     if (document.is_object()) {
         simulations.push_back(reader.read_simulation(document, ""));

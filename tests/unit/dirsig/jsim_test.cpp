@@ -7,6 +7,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
+
 #include <fstream>
 #include <string>
 
@@ -454,6 +456,53 @@ TEST(FormatJsim, UnresolvedPathsAndOtherPluginsVerbatim) {
     bad.inputs_json = "{not json";
     broken.plugins.push_back(bad);
     EXPECT_THROW(format_jsim({broken}, "/tmp"), Error);
+}
+
+/// Peak resident memory of this process so far, in MiB.
+double peak_rss_mib() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in KiB on Linux
+}
+
+TEST(JsimReaderLimits, DeepNestingIsRefusedAtItsLineInBoundedMemory) {
+    // 100,000 nested arrays, one per line: the line recorder kept every value's whole JSON
+    // path, so memory grew with the square of the depth (over 9 GB here).
+    TempDir dir;
+    std::string text;
+    for (int i = 0; i < 100'000; ++i) text += "[\n";
+    for (int i = 0; i < 100'000; ++i) text += "]";
+    const double before_mib = peak_rss_mib();
+    Diagnostics diagnostics;
+    EXPECT_TRUE(read_text(dir, text, diagnostics).empty());
+    const Diagnostic error = only_error(diagnostics);
+    EXPECT_EQ(error.text(), (dir / "a.jsim").string() + ":65: JSON nesting deeper than 64 levels");
+    EXPECT_LT(peak_rss_mib() - before_mib, 200.0);
+
+    Diagnostics at_limit;  // 64 levels are read (and are not simulations)
+    read_text(dir, std::string(64, '[') + std::string(64, ']'), at_limit, "b.jsim");
+    EXPECT_EQ(only_error(at_limit).message, "expected a simulation object, got array");
+}
+
+TEST(JsimReaderLimits, LineRecordIsLinearInTheText) {
+    // A 1 MB key holding 100,000 values: recording every value by its whole path took
+    // 100,000 copies of the key (100 GB); the record is now one node per value.
+    TempDir dir;
+    const std::string key(1 << 20, 'k');
+    std::string text = "[{\"plugin_list\": [],\n\"" + key + "\": [0";
+    for (int i = 1; i < 100'000; ++i) text += ",0";
+    text += "],\n\"extra\": 1}]\n";
+    const double before_mib = peak_rss_mib();
+    Diagnostics diagnostics;
+    const auto sims = read_text(dir, text, diagnostics);
+    EXPECT_LT(peak_rss_mib() - before_mib, 200.0);
+    ASSERT_EQ(sims.size(), 1u);
+    EXPECT_FALSE(diagnostics.has_errors());
+    ASSERT_EQ(diagnostics.warning_count(), 2u);  // in key order
+    EXPECT_EQ(diagnostics.items()[0].text(),
+              (dir / "a.jsim").string() + ":3: [0].extra: unknown key \"extra\" ignored");
+    EXPECT_EQ(diagnostics.items()[1].where.line, 2);
+    EXPECT_EQ(diagnostics.items()[1].where.element, "[0]." + key);
 }
 
 }  // namespace
