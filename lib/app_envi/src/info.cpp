@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "glint/core/error.h"
+#include "glint/core/json_text.h"
 #include "source.h"
 
 namespace glint::app_envi {
@@ -142,7 +143,7 @@ std::string format_info_text(const fs::path& file, const io::EnviHeader& h,
 
 std::string format_info_json(const fs::path& file, const io::EnviHeader& header,
                              const fs::path& data_path, const fs::path& header_path) {
-    return info_json(file, header, data_path, header_path).dump(2);
+    return json_text(info_json(file, header, data_path, header_path), 2);
 }
 
 int report_info(const InfoOptions& options, Context& ctx, std::ostream& out) {
@@ -170,7 +171,7 @@ int report_info(const InfoOptions& options, Context& ctx, std::ostream& out) {
         }
     }
     if (options.format == ReportFormat::json && !all.empty()) {
-        out << (options.files.size() == 1 ? all.front().dump(2) : all.dump(2)) << '\n';
+        out << json_text(options.files.size() == 1 ? all.front() : all, 2) << '\n';
     }
     return status;
 }

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "glint/core/error.h"
+#include "glint/core/json_text.h"
 #include "source.h"
 
 namespace glint::app_envi {
@@ -142,7 +143,7 @@ void write_stats(const StatsReport& report, ReportFormat format, std::ostream& o
             bands.push_back(std::move(band));
         }
         j["band_stats"] = std::move(bands);
-        out << j.dump(2) << '\n';
+        out << json_text(j, 2) << '\n';
         return;
     }
     out << report.file.string() << ": " << report.samples << " samples x " << report.lines

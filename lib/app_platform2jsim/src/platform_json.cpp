@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "glint/core/error.h"
+#include "glint/core/json_text.h"
 #include "glint/model/derived.h"
 #include "glint/model/names.h"
 
@@ -406,7 +407,7 @@ std::string platform_to_json(const model::Platform& platform, int indent) {
         instruments.push_back(instrument_json(i, paths[i]));
     j["instruments"] = std::move(instruments);
     // Invalid UTF-8 in a name must not make the dump fail: replace it.
-    return j.dump(indent < 0 ? -1 : indent, ' ', false, Json::error_handler_t::replace);
+    return json_text(j, indent < 0 ? -1 : indent);
 }
 
 }  // namespace glint::app_platform2jsim

@@ -11,6 +11,7 @@
 #include "glint/app_platform2jsim/platform_json.h"
 #include "glint/core/atomic_file.h"
 #include "glint/core/error.h"
+#include "glint/core/json_text.h"
 #include "glint/core/text.h"
 #include "glint/dirsig/readers.h"
 #include "glint/model/output_name.h"
@@ -257,7 +258,7 @@ int run_dump(const Options& options, Context& ctx, std::ostream& out) {
                     nlohmann::ordered_json::parse(app_platform2jsim::platform_to_json(*platform)));
             }
         }
-        text = all.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+        text = json_text(all, 2) + "\n";
     }
     refuse_overwrite(options.output, inputs);
     write_output(options.output, text, out);

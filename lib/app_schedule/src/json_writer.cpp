@@ -4,6 +4,7 @@
 // per line; totals at the end) and DIRSIG's --log_info_filename view (capture_list,
 // run_info). Field by field in docs/tools/glint-schedule.md.
 
+#include "glint/core/json_text.h"
 #include "glint/core/runner.h"
 #include "glint/model/names.h"
 #include "glint/schedule/capture_list.h"
@@ -80,7 +81,7 @@ Json capture_json(const CaptureRecord& record, const motion::SceneFrame& frame) 
 
 /// Writes `head` (an object) without its closing brace, so that more members can follow.
 void write_open_object(std::ostream& out, const Json& head) {
-    std::string text = head.dump(2);
+    std::string text = json_text(head, 2);
     text.resize(text.size() - 2);  // drop "\n}"
     out << text;
 }
@@ -120,7 +121,7 @@ public:
 
     void capture(const CaptureRecord& record) override {
         m_out << (m_first ? "\n    " : ",\n    ")
-              << capture_json(record, m_info.schedule->frame()).dump();
+              << json_text(capture_json(record, m_info.schedule->frame()));
         m_first = false;
     }
 

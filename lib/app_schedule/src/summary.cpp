@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "glint/core/json_text.h"
 #include "writers.h"
 
 namespace glint::app_schedule::internal {
@@ -155,7 +156,7 @@ void write_summary(const RunInfo& info, const Selection& selection, Context& ctx
         j["duration_s"] = any ? Json(span_end - span_begin) : Json(nullptr);
         j["capture_span_s"] = capture_span;
         j["plugins"] = std::move(plugins);
-        out << j.dump(2) << '\n';
+        out << json_text(j, 2) << '\n';
         return;
     }
     out << "simulation: " << schedule.simulation_file().generic_string() << '\n';

@@ -4,6 +4,8 @@
 // files), Windows paths and unresolved paths kept as written, other plugins verbatim.
 #include <nlohmann/json.hpp>
 
+#include "glint/core/json_text.h"
+#include "glint/core/text.h"
 #include "glint/dirsig/readers.h"
 #include "jsim_keys.h"
 
@@ -27,11 +29,23 @@ std::string relative_or_absolute(const std::filesystem::path& path,
 }
 
 std::string write_path(const model::FileRef& ref, const std::filesystem::path& folder) {
-    if (ref.resolved.empty()) return ref.text;  // unresolved (e.g. undefined variable)
-    if (is_windows_absolute(ref.resolved.generic_string()) || ref.resolved.is_relative()) {
-        return ref.text;
+    std::string text;
+    if (ref.resolved.empty() || is_windows_absolute(ref.resolved.generic_string()) ||
+        ref.resolved.is_relative()) {
+        text = ref.text;  // unresolved (e.g. undefined variable), or kept as written
+    } else {
+        text = relative_or_absolute(ref.resolved.lexically_normal(), folder);
     }
-    return relative_or_absolute(ref.resolved.lexically_normal(), folder);
+    // JSON holds UTF-8 only: a name in another encoding (a Latin-1 "é" from an old .sim)
+    // cannot be written so that it reads back as the same file.
+    if (!is_valid_utf8(text)) {
+        throw input_error("the file name " + quote(ref.text) +
+                              " is not UTF-8, and a .jsim (JSON) can only name files in UTF-8: "
+                              "rename the file (e.g. convmv -f latin1 -t utf8) or run the .sim "
+                              "directly",
+                          ref.where);
+    }
+    return text;
 }
 
 OrderedJson parse_kept(const std::string& json, const char* what) {
@@ -116,7 +130,7 @@ std::string format_jsim(const std::vector<model::Simulation>& simulations,
                                     : parse_kept(simulation.medium_list_json, "medium_list");
         document.push_back(std::move(object));
     }
-    return document.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+    return json_text(document, 2) + "\n";
 }
 
 }  // namespace glint::dirsig

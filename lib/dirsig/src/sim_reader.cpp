@@ -6,6 +6,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
+#include "glint/core/json_text.h"
 #include "glint/dirsig/readers.h"
 #include "glint/io/xml.h"
 
@@ -86,7 +87,7 @@ model::Simulation read_sim(const std::filesystem::path& file, const ReadOptions&
                 model::Plugin plugin;
                 plugin.name = "BasicAtmosphere";
                 plugin.where = it->second.where();
-                plugin.inputs_json = nlohmann::json{{"atmosphere_filename", ref->text}}.dump();
+                plugin.inputs_json = json_text(nlohmann::json{{"atmosphere_filename", ref->text}});
                 plugin.basic_atmosphere = model::BasicAtmosphereInputs{std::move(*ref)};
                 simulation.plugins.push_back(std::move(plugin));
             }
@@ -117,10 +118,10 @@ model::Simulation read_sim(const std::filesystem::path& file, const ReadOptions&
             model::Plugin plugin;
             plugin.name = "BasicPlatform";
             plugin.where = single.at("platform").where();
-            plugin.inputs_json = nlohmann::json{{"platform_filename", inputs.platform_file.text},
-                                                {"motion_filename", inputs.motion_file.text},
-                                                {"tasks_filename", inputs.tasks_file.text}}
-                                     .dump();
+            plugin.inputs_json =
+                json_text(nlohmann::json{{"platform_filename", inputs.platform_file.text},
+                                         {"motion_filename", inputs.motion_file.text},
+                                         {"tasks_filename", inputs.tasks_file.text}});
             plugin.basic_platform = std::move(inputs);
             simulation.plugins.push_back(std::move(plugin));
         }

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "glint/core/datetime.h"
+#include "glint/core/json_text.h"
 #include "glint/core/runner.h"
 
 namespace glint::schedule {
@@ -38,7 +39,7 @@ void CaptureListWriter::begin() {
                   ? Json(nullptr)
                   : Json(format_iso8601_utc(m_schedule.plugins()[0].tasks.reference, 6))},
              {"simulation_file", m_schedule.simulation_file().generic_string()}};
-    std::string text = head.dump(2);
+    std::string text = json_text(head, 2);
     text.resize(text.size() - 2);  // drop "\n}": more members follow
     m_out << text << ",\n  \"capture_list\": [";
 }
@@ -55,7 +56,7 @@ void CaptureListWriter::add(const Capture& capture, const std::filesystem::path&
     j["index"] = capture.index;
     j["plugin_index"] =
         m_schedule.plugins()[m_schedule.sources()[capture.source].plugin].plugin_index;
-    m_out << (m_first ? "\n    " : ",\n    ") << j.dump();
+    m_out << (m_first ? "\n    " : ",\n    ") << json_text(j);
     m_first = false;
 }
 
