@@ -208,7 +208,18 @@ int run_tool(const ToolSpec& spec, int argc, const char* const* argv, const Tool
             app.exit(e, streams.out, err);  // --help, --help-all, --version: stdout
             return kExitSuccess;
         }
-        report("error", lowercase_first(e.what()) + " (see " + program + " --help)");
+        // CLI11 checks required arguments before unknown ones, so `--bogus` alone would be
+        // reported as a missing input: name what was not understood first.
+        std::string message = lowercase_first(e.what());
+        if (dynamic_cast<const CLI::RequiredError*>(&e) != nullptr) {
+            const std::vector<std::string> extras = app.remaining(true);
+            if (!extras.empty()) {
+                message = std::string("the following argument") +
+                          (extras.size() == 1 ? " was" : "s were") +
+                          " not expected: " + join(extras, " ");
+            }
+        }
+        report("error", message + " (see " + program + " --help)");
         return kExitUsage;
     } catch (const Error& e) {
         report("error", e.what());

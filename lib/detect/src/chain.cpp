@@ -20,6 +20,16 @@ DetectionChain::DetectionChain(DetectionSettings settings, std::size_t samples)
     if (const auto& d = m_settings.detector) {
         m_electrons_per_fluence = m2_to_cm2(d->pixel_area_m2) * d->quantum_efficiency;
         m_dark_electrons = d->dark_electrons(m_settings.tdi_stages);
+        if (!(m_dark_electrons <= kMaxPoissonMean)) {
+            // Every pixel would fail; say why here rather than blame the first pixel.
+            throw input_error(
+                "the dark current gives " + format_shortest(m_dark_electrons) +
+                " electrons per pixel (" + format_shortest(d->dark_current_density_a_per_m2) +
+                " A/m2 over " + format_shortest(d->integration_time_s) + " s, " +
+                std::to_string(m_settings.tdi_stages) +
+                " stage(s)), more than the 1e15 glint can count: check the integration time "
+                "and the dark current density");
+        }
         m_read_sigma_e = d->read_noise_e;
         if (m_settings.tdi_mode == TdiMode::digital) {
             m_read_sigma_e *= std::sqrt(static_cast<double>(m_settings.tdi_stages));

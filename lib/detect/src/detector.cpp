@@ -11,9 +11,14 @@
 #include "glint/core/error.h"
 #include "glint/core/text.h"
 #include "glint/core/units.h"
+#include "glint/detect/noise.h"
 
 namespace glint::detect {
 namespace {
+
+/// The longest integration time accepted: 1e9 s (32 years); longer is a typing error, and
+/// with any dark current it would exceed the electron counts glint can draw.
+constexpr double kMaxIntegrationTime_s = 1e9;
 
 std::string quoted_list(const std::vector<std::string>& names) {
     std::string text;
@@ -99,16 +104,17 @@ DetectorModelSettings resolve_model(const model::FocalPlane& fp,
     check_range(qe, 0.0, 1.0, "a number in [0, 1]");
     const Source read =
         pick(o.read_noise_e, "--read-noise", base.read_noise_e, "<readnoise>", where);
-    check_range(read, 0.0, 1e12, "a finite number of electrons >= 0");
+    check_range(read, 0.0, 1e12, "a number of electrons from 0 to 1e12");
     const Source dark = pick(o.dark_current_density_a_per_m2, "--dark-current-density",
                              base.dark_current_density_a_per_m2, "<darkcurrentdensity>", where);
-    check_range(dark, 0.0, 1e12, "a finite density >= 0 in A/m2");
+    check_range(dark, 0.0, 1e12, "a density from 0 to 1e12 A/m2");
     const Source min_e =
         pick(o.min_electrons, "--min-electrons", base.min_electrons, "<minelectrons>", where);
     const Source max_e =
         pick(o.max_electrons, "--max-electrons", base.max_electrons, "<maxelectrons>", where);
-    check_range(min_e, -1e15, 1e15, "a finite number of electrons");
-    check_range(max_e, -1e15, 1e15, "a finite number of electrons");
+    // 1e15: the largest electron count glint draws (kMaxPoissonMean).
+    check_range(min_e, -kMaxPoissonMean, kMaxPoissonMean, "a number of electrons from -1e15 to 1e15");
+    check_range(max_e, -kMaxPoissonMean, kMaxPoissonMean, "a number of electrons from -1e15 to 1e15");
     if (!(min_e.value < max_e.value)) {
         throw value_error(o.min_electrons || o.max_electrons,
                           "the ADC range is empty: " + min_e.name + " " +
@@ -134,6 +140,7 @@ DetectorModelSettings resolve_model(const model::FocalPlane& fp,
                               "; set <temporalintegration><time> in seconds)",
                           time.where);
     }
+    check_range(time, 0.0, kMaxIntegrationTime_s, "a number of seconds from 0 to 1e9");
     const model::DetectorArray& array = fp.detector_array;
     const double x_m = scaled_size(array.x_size_m, array.x_count, o.scale_resolution);
     // TDI stages are not resolution: --scale_resolution leaves their size alone.

@@ -4,11 +4,15 @@
 // schedule order (render_capture.cpp).
 #include "glint/sensor/render.h"
 
+#include <cmath>
 #include <map>
+#include <new>
 #include <memory>
 #include <optional>
+#include <string>
 #include <utility>
 
+#include "glint/core/error.h"
 #include "render_parts.h"
 
 namespace glint::sensor {
@@ -27,6 +31,32 @@ RenderReport plan(model::SimulationInputs inputs, const RenderOptions& options,
     detail::write_log_info(*prepared, options, context);
     return report;
 }
+
+namespace {
+
+std::string mebibytes(double bytes) {
+    return std::to_string(static_cast<long long>(std::ceil(bytes / (1024.0 * 1024.0)))) + " MiB";
+}
+
+/// The message for a capture whose buffers could not be allocated: what it holds, what the
+/// whole render needs, and what to do about it.
+std::string out_of_memory(const detail::Prepared& prepared, const detail::PlannedCapture& p) {
+    const schedule::ClockedFocalPlane& source =
+        prepared.inputs.schedule->sources()[p.capture.source];
+    const detail::FocalPlaneState& state = prepared.states.at(p.capture.source);
+    const std::uint64_t values = state.grid.size() + state.units.channels();
+    const double capture_bytes = static_cast<double>(source.problems_per_capture) *
+                                 static_cast<double>(values) * sizeof(double);
+    return "out of memory in capture " + std::to_string(p.capture.index) + " of focal plane \"" +
+           source.focal_plane->name + "\": its " + std::to_string(source.x_count) + " x " +
+           std::to_string(source.y_count) + " pixels x " + std::to_string(values) +
+           " values x 8 bytes need about " + mebibytes(capture_bytes) +
+           ", and the render as planned about " +
+           mebibytes(static_cast<double>(prepared.report.memory_estimate_bytes)) +
+           " (glint-render --dry-run shows the plan; --scale_resolution lowers the pixel counts)";
+}
+
+}  // namespace
 
 RenderReport render(model::SimulationInputs inputs, const RenderOptions& options,
                     const Context& context) {
@@ -52,9 +82,13 @@ RenderReport render(model::SimulationInputs inputs, const RenderOptions& options
                 detail::build_options(options, p.capture.t0_s, p.capture.t1_s), context.log));
             report.device = moving->device();
         }
-        const CaptureReport stats =
-            detail::render_capture(*prepared, p, moving ? *moving : *static_scene,
-                                   path_caches[p.capture.source], options, context, image);
+        CaptureReport stats;
+        try {
+            stats = detail::render_capture(*prepared, p, moving ? *moving : *static_scene,
+                                           path_caches[p.capture.source], options, context, image);
+        } catch (const std::bad_alloc&) {
+            throw runtime_error(out_of_memory(*prepared, p));
+        }
         report.captures.push_back(stats);
         pixels_done += stats.pixels;
         context.progress.update("pixels", pixels_done, report.pixels);

@@ -15,6 +15,7 @@
 
 #include "glint/core/text.h"
 #include "glint/io/xml.h"
+#include "yaml_text.h"
 
 namespace glint::yaml {
 namespace {
@@ -85,14 +86,9 @@ model::Atmosphere read_yaml(const std::string& text, const std::filesystem::path
                             Diagnostics& diagnostics) {
     model::Atmosphere atmosphere;
     atmosphere.where = ErrorContext{file, 0, {}};
-    YAML::Node root;
-    try {
-        root = YAML::Load(text);
-    } catch (const YAML::Exception& e) {
-        diagnostics.error(ErrorContext{file, e.mark.line >= 0 ? e.mark.line + 1 : 0, {}},
-                          "YAML syntax error: " + e.msg);
-        return atmosphere;
-    }
+    const std::optional<YAML::Node> parsed = detail::parse_yaml(text, file, diagnostics);
+    if (!parsed) return atmosphere;
+    const YAML::Node& root = *parsed;
     if (!root.IsMap()) {
         diagnostics.error(ErrorContext{file, root.Mark().line >= 0 ? root.Mark().line + 1 : 1, {}},
                           "expected a YAML mapping with a 'model' key");

@@ -7,6 +7,7 @@
 #include "glint/dirsig/scene_reader.h"
 
 #include "scene_parts.h"
+#include "yaml_text.h"
 
 namespace glint::yaml {
 namespace {
@@ -116,15 +117,9 @@ model::Scene read_yaml_scene(const std::filesystem::path& file, const ReadOption
     Reader reader{scene.file, base_dir, local, diagnostics};
     try {
         const std::string text = local.read_text(file, scene.file);
-        YAML::Node root;
-        try {
-            root = YAML::Load(text);
-        } catch (const YAML::Exception& error) {
-            diagnostics.error({scene.file, error.mark.line >= 0 ? error.mark.line + 1 : 0, {}},
-                              "invalid YAML: " + error.msg);
-            return scene;
-        }
-        read_document(reader, root, scene);
+        const std::optional<YAML::Node> root = detail::parse_yaml(text, scene.file, diagnostics);
+        if (!root) return scene;
+        read_document(reader, *root, scene);
     } catch (const Error& error) {
         diagnostics.add(error);
     } catch (const YAML::Exception& error) {

@@ -97,7 +97,7 @@ TEST(AtmosphereReader, YamlSyntaxErrorHasLine) {
     (void)read_atmosphere(path, {}, diagnostics, "bad.yaml");
     const std::string text = first_error(diagnostics);
     EXPECT_NE(text.find("bad.yaml:"), std::string::npos) << text;
-    EXPECT_NE(text.find("YAML syntax error"), std::string::npos) << text;
+    EXPECT_NE(text.find("invalid YAML: "), std::string::npos) << text;
     ASSERT_TRUE(diagnostics.has_errors());
     EXPECT_GE(diagnostics.items()[0].where.line, 2);
 }

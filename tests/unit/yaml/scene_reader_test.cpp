@@ -231,6 +231,19 @@ TEST(SceneReaderErrors, BadYamlSyntax) {
     EXPECT_LE(d.where.line, 4);
 }
 
+TEST(SceneReaderErrors, NestingTooDeep) {
+    // 5000 nested lists: yaml-cpp stops at 2000 levels with the message "bad file".
+    TempDir dir;
+    const Read read =
+        read_text(dir, "objects: " + std::string(5000, '[') + std::string(5000, ']') + "\n");
+    ASSERT_EQ(read.diagnostics.error_count(), 1u);
+    const Diagnostic& d = read.diagnostics.items()[0];
+    EXPECT_EQ(d.message,
+              "invalid YAML: nested deeper than 2000 levels, expected a document a few levels "
+              "deep");
+    EXPECT_EQ(d.where.line, 1);
+}
+
 TEST(SceneReaderErrors, MissingFile) {
     Diagnostics diagnostics;
     read_yaml_scene(kData / "nope.yaml", ReadOptions{}, diagnostics);
