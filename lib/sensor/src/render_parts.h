@@ -89,6 +89,10 @@ std::vector<std::uint8_t> hypersampled_pixels(const model::Scene& scene,
                                               std::size_t instrument, const CaptureTiming& timing);
 
 /// A capture of the selection with what the loop needs about it.
+/// The most captures one glint-render run plans (the plan keeps each, ~200 bytes); more is
+/// refused before planning, with the advice to shard (docs/tools/glint-render.md).
+inline constexpr std::uint64_t kMaxCapturesPerRender = 1'000'000;
+
 struct PlannedCapture {
     schedule::Capture capture;
     std::filesystem::path file;

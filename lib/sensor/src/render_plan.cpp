@@ -29,6 +29,29 @@ std::vector<PlannedCapture> select_captures(const RenderInputs& in, const Render
             context.log.warning(why + ": not rendered");
         }
     }
+    // The plan holds every selected capture: refuse a run too long to plan before building
+    // it (a 1e9 Hz clock over 0.25 s would need 50 GB), from the analytic counts.
+    std::uint64_t selected = 0;
+    for (std::size_t s = 0; s < sources.size(); ++s) {
+        if (skip[s]) continue;
+        for (std::size_t t = 0; t < schedule.plugins()[sources[s].plugin].tasks.tasks.size();
+             ++t) {
+            selected += schedule.count(s, t);
+        }
+    }
+    if (!options.only_captures.empty()) {
+        selected = std::min<std::uint64_t>(selected, options.only_captures.size());
+    }
+    if (selected > kMaxCapturesPerRender) {
+        throw input_error(
+            "the schedule has " + std::to_string(selected) +
+            " captures to render, more than one glint-render run plans (" +
+            std::to_string(kMaxCapturesPerRender) +
+            "): check the clock rates and task windows (glint-schedule --summary shows them), or "
+            "render it in shards (glint-schedule --shard K/N -o part.json, then glint-render "
+            "--schedule part.json)",
+            ErrorContext{schedule.simulation_file().string(), 0, {}});
+    }
     std::map<std::pair<std::size_t, std::size_t>, std::uint64_t> events;  // (plugin, task)
     std::map<std::pair<std::size_t, std::size_t>, std::uint64_t> event_counts;
     for (std::size_t s = 0; s < sources.size(); ++s) {
