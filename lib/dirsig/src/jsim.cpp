@@ -170,9 +170,12 @@ public:
         if (!m_stack.empty()) m_stack.back().key = key;
         return true;
     }
-    bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override {
+    bool parse_error(std::size_t byte, const std::string&, const nlohmann::detail::exception&) override {
+        m_error_byte = byte;
         return false;
     }
+    /// Where the pass stopped at malformed JSON (1-based byte), 0 when it did not.
+    std::size_t error_byte() const { return m_error_byte; }
 
 private:
     struct Frame {
@@ -223,6 +226,7 @@ private:
     std::vector<Frame> m_stack;
     LineTable m_lines;
     int m_too_deep_line = 0;
+    std::size_t m_error_byte = 0;
 };
 
 /// What the reading functions share: where messages point and where paths resolve from.
@@ -459,12 +463,18 @@ std::vector<model::Simulation> read_jsim(const std::filesystem::path& file,
     Json document;
     try {
         document = Json::parse(text);
-    } catch (const Json::parse_error& error) {
-        // `byte` is 1-based: the offending character is text[byte - 1].
-        const std::size_t offset = error.byte > 0 ? error.byte - 1 : 0;
+    } catch (const Json::exception& error) {
+        // A syntax error carries its byte; any other (406: a number too large for a double)
+        // is placed where the line pass stopped. `byte` is 1-based: text[byte - 1].
+        const auto* syntax = dynamic_cast<const Json::parse_error*>(&error);
+        const std::size_t byte = syntax ? syntax->byte : recorder.error_byte();
+        const std::size_t offset = byte > 0 ? byte - 1 : 0;
         std::string description = error.what();
-        if (const std::size_t colon = description.find(": "); colon != std::string::npos) {
-            description.erase(0, colon + 2);  // drop "[json.exception...] parse error at ..."
+        if (const std::size_t bracket = description.find("] "); bracket != std::string::npos) {
+            description.erase(0, bracket + 2);  // drop "[json.exception...] "
+        }
+        if (const std::size_t colon = description.find(": "); syntax && colon != std::string::npos) {
+            description.erase(0, colon + 2);  // drop "parse error at line 4, column 30"
         }
         diagnostics.error(ErrorContext{name, index.line_of(offset), {}},
                           "malformed JSON at column " + std::to_string(index.column_of(offset)) +

@@ -505,5 +505,16 @@ TEST(JsimReaderLimits, LineRecordIsLinearInTheText) {
     EXPECT_EQ(diagnostics.items()[1].where.element, "[0]." + key);
 }
 
+TEST(JsimReaderErrors, NumberTooLargeForADouble) {
+    // nlohmann throws out_of_range (406), not parse_error, for it: found by fuzz/jsim_fuzz
+    // (fuzz/crashes/jsim/crash-c2ed3b91e95ac01df2c3c5f5776b8a6aebb31779), it escaped the reader.
+    TempDir dir;
+    Diagnostics diagnostics;
+    EXPECT_TRUE(read_text(dir, "[{\"plugin_list\": [],\n  \"x\": 55e55555}]\n", diagnostics).empty());
+    EXPECT_EQ(only_error(diagnostics).text(),
+              (dir / "a.jsim").string() +
+                  ":2: malformed JSON at column 15: number overflow parsing '55e55555'");
+}
+
 }  // namespace
 }  // namespace glint::dirsig
