@@ -85,6 +85,14 @@ std::string key_path(const std::string& parent, const std::string& key) {
     return parent.empty() ? key : parent + "." + key;
 }
 
+/// `text` cut to at most 200 bytes for a message (a JSON path or a parser's description can
+/// hold a whole megabyte key or a 5000-digit number), valid UTF-8.
+std::string shorten(std::string_view text) {
+    constexpr std::size_t kMaxBytes = 200;
+    if (text.size() <= kMaxBytes) return to_valid_utf8(text);
+    return to_valid_utf8(text.substr(0, kMaxBytes)) + "...";
+}
+
 std::string index_path(const std::string& parent, std::size_t index) {
     return parent + "[" + std::to_string(index) + "]";
 }
@@ -245,14 +253,14 @@ public:
 private:
     ErrorContext at(const std::string& path) const {
         // A path that is not in the text (a missing key) is placed at its parent's line.
-        return ErrorContext{m_file, m_lines.line_of(path), path};
+        return ErrorContext{m_file, m_lines.line_of(path), shorten(path)};
     }
 
     static std::string describe(const Json& value) {
         std::string out = value.type_name();
         if (value.is_primitive()) {
             std::string text = value.dump();
-            if (text.size() > 64) text = text.substr(0, 64) + "...";
+            if (text.size() > 64) text = to_valid_utf8(text.substr(0, 64)) + "...";
             out += " " + text;
         }
         return out;
@@ -269,7 +277,7 @@ private:
         for (const auto& [key, value] : object.items()) {
             if (std::find(known.begin(), known.end(), key) != known.end()) continue;
             m_diagnostics.warning(at(key_path(path, key)),
-                                  "unknown key \"" + key + "\"" + what + " ignored");
+                                  "unknown key " + quote(key) + what + " ignored");
         }
     }
 
@@ -476,6 +484,7 @@ std::vector<model::Simulation> read_jsim(const std::filesystem::path& file,
         if (const std::size_t colon = description.find(": "); syntax && colon != std::string::npos) {
             description.erase(0, colon + 2);  // drop "parse error at line 4, column 30"
         }
+        description = shorten(description);
         diagnostics.error(ErrorContext{name, index.line_of(offset), {}},
                           "malformed JSON at column " + std::to_string(index.column_of(offset)) +
                               ": " + description);

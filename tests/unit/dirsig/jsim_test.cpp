@@ -502,7 +502,9 @@ TEST(JsimReaderLimits, LineRecordIsLinearInTheText) {
     EXPECT_EQ(diagnostics.items()[0].text(),
               (dir / "a.jsim").string() + ":3: [0].extra: unknown key \"extra\" ignored");
     EXPECT_EQ(diagnostics.items()[1].where.line, 2);
-    EXPECT_EQ(diagnostics.items()[1].where.element, "[0]." + key);
+    // The megabyte key is not echoed whole: the element path and the key are cut.
+    EXPECT_EQ(diagnostics.items()[1].where.element, "[0]." + key.substr(0, 196) + "...");
+    EXPECT_LT(diagnostics.items()[1].text().size(), 600u);
 }
 
 TEST(JsimReaderErrors, NumberTooLargeForADouble) {
@@ -514,6 +516,12 @@ TEST(JsimReaderErrors, NumberTooLargeForADouble) {
     EXPECT_EQ(only_error(diagnostics).text(),
               (dir / "a.jsim").string() +
                   ":2: malformed JSON at column 15: number overflow parsing '55e55555'");
+
+    Diagnostics long_number;  // a 5000-digit number is not echoed whole
+    read_text(dir, "[{\"plugin_list\": [], \"x\": 1" + std::string(5000, '0') + "}]", long_number);
+    EXPECT_THAT(only_error(long_number).message,
+                HasSubstr("malformed JSON at column 5027: number overflow parsing '1000"));
+    EXPECT_LT(only_error(long_number).message.size(), 300u);
 }
 
 }  // namespace
