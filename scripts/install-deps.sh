@@ -8,6 +8,8 @@ set -euo pipefail
 packages=(
     # toolchain
     build-essential cmake ninja-build pkg-config git
+    # the fuzz targets (scripts/fuzz.sh, docs/testing.md): clang 14 and libFuzzer's runtime
+    clang libclang-rt-dev
     # libraries (pinned by Debian 12: Embree 3.13, OIIO 2.4, CLI11 2.1, yaml-cpp 0.7,
     # tinyxml2 9, nlohmann_json 3.11, GTest 1.12)
     libembree-dev libopenimageio-dev libcli11-dev libyaml-cpp-dev libtinyxml2-dev

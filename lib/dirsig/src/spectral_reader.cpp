@@ -295,8 +295,10 @@ void check_pattern(const ChannelPattern& pattern, const std::vector<Channel>& ch
                                                  join(filters, ", ", " or "));
             continue;
         }
-        const bool found = std::any_of(channels.begin(), channels.end(),
-                                       [&](const Channel& c) { return c.name == channel_name; });
+        // Captured by name: clang before 16 cannot capture a structured binding.
+        const bool found = std::any_of(
+            channels.begin(), channels.end(),
+            [&name = channel_name](const Channel& c) { return c.name == name; });
         if (!found) {
             diagnostics.error(pattern.where, "filter '" + filter + "' is mapped to channel '" +
                                                  channel_name +

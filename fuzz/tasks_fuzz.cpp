@@ -1,0 +1,17 @@
+// SPDX-License-Identifier: Apache-2.0
+// Fuzz target: the DIRSIG .tasks reader (dirsig::read_tasks), the input served from memory as a
+// .tasks file.
+#include <cstddef>
+#include <cstdint>
+
+#include "fuzz_support.h"
+#include "glint/dirsig/readers.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    using namespace glint;
+    const dirsig::ReadOptions options =
+        fuzz::memory_options("input.tasks", fuzz::as_text(data, size));
+    return fuzz::run([&](Diagnostics& diagnostics) {
+        (void)dirsig::read_tasks(fuzz::kFolder / "input.tasks", options, diagnostics);
+    });
+}
