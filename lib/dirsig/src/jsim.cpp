@@ -14,8 +14,8 @@
 #include <unordered_map>
 #include <utility>
 
-#include "glint/dirsig/readers.h"
 #include "glint/core/text.h"
+#include "glint/dirsig/readers.h"
 #include "glint/io/xml.h"
 #include "glint/model/output_name.h"
 #include "jsim_keys.h"
@@ -127,8 +127,9 @@ public:
         while (at < path.size()) {  // steps: "[index]", ".key", or a key at the start
             const bool is_index = path[at] == '[';
             const std::size_t begin = at + (is_index || path[at] == '.' ? 1 : 0);
-            const std::size_t end = is_index ? path.find(']', begin)
-                                             : std::min(path.find_first_of(".[", begin), path.size());
+            const std::size_t end = is_index
+                                        ? path.find(']', begin)
+                                        : std::min(path.find_first_of(".[", begin), path.size());
             if (end == std::string_view::npos) break;
             found = m_nodes.find(
                 child_key(found->second.first, is_index, path.substr(begin, end - begin)));
@@ -178,7 +179,8 @@ public:
         if (!m_stack.empty()) m_stack.back().key = key;
         return true;
     }
-    bool parse_error(std::size_t byte, const std::string&, const nlohmann::detail::exception&) override {
+    bool parse_error(std::size_t byte, const std::string&,
+                     const nlohmann::detail::exception&) override {
         m_error_byte = byte;
         return false;
     }
@@ -240,8 +242,8 @@ private:
 /// What the reading functions share: where messages point and where paths resolve from.
 class JsimReader {
 public:
-    JsimReader(std::string file, LineTable lines,
-               std::filesystem::path base_dir, const ReadOptions& options, Diagnostics& diagnostics)
+    JsimReader(std::string file, LineTable lines, std::filesystem::path base_dir,
+               const ReadOptions& options, Diagnostics& diagnostics)
         : m_file(std::move(file)),
           m_lines(std::move(lines)),
           m_base_dir(std::move(base_dir)),
@@ -481,7 +483,8 @@ std::vector<model::Simulation> read_jsim(const std::filesystem::path& file,
         if (const std::size_t bracket = description.find("] "); bracket != std::string::npos) {
             description.erase(0, bracket + 2);  // drop "[json.exception...] "
         }
-        if (const std::size_t colon = description.find(": "); syntax && colon != std::string::npos) {
+        if (const std::size_t colon = description.find(": ");
+            syntax && colon != std::string::npos) {
             description.erase(0, colon + 2);  // drop "parse error at line 4, column 30"
         }
         description = shorten(description);

@@ -51,8 +51,8 @@ std::string read_input_file(const std::filesystem::path& path, const std::string
     if (!ec && std::filesystem::is_directory(status)) {
         throw io_error("is a folder, expected a file", name);
     }
-    if (!ec && (std::filesystem::is_character_file(status) ||
-                std::filesystem::is_block_file(status))) {
+    if (!ec &&
+        (std::filesystem::is_character_file(status) || std::filesystem::is_block_file(status))) {
         throw io_error("is a device, expected a file", name);
     }
     const FileDescriptor fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
@@ -97,7 +97,8 @@ const std::string& InputFiles::text(const std::filesystem::path& path,
     if (const auto found = m_texts.find(k); found != m_texts.end()) return found->second;
     m_opened.push_back(k);
     m_log.debug("reading " + (display_name.empty() ? path.string() : display_name));
-    std::string text = m_source ? m_source(path, display_name) : read_input_file(path, display_name);
+    std::string text =
+        m_source ? m_source(path, display_name) : read_input_file(path, display_name);
     return m_texts.emplace(k, std::move(text)).first->second;
 }
 

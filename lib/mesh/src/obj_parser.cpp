@@ -53,15 +53,16 @@ bool check_index(std::string_view text, long long count, const char* what, const
                          (error == std::errc{} || error == std::errc::result_out_of_range) &&
                          digits.front() != '+';
     if (!integer) {
-        diagnostics.error(where, std::string(what) + " index " + quote(text) + " is not an integer");
+        diagnostics.error(where,
+                          std::string(what) + " index " + quote(text) + " is not an integer");
         return false;
     }
     const bool in_range =
         error == std::errc{} && value != 0 && (value > 0 ? value <= count : value >= -count);
     if (!in_range) {
         diagnostics.error(where, std::string(what) + " index " + std::string(text) +
-                                     " is out of range (" + std::to_string(count) + " " +
-                                     counted + " so far)");
+                                     " is out of range (" + std::to_string(count) + " " + counted +
+                                     " so far)");
         return false;
     }
     return true;
@@ -89,9 +90,8 @@ bool check_face(std::string_view rest, const ElementCounts& counts, const ErrorC
             const bool no_texcoord = at < rest.size() && rest[at] == '/';
             if (!no_texcoord) {
                 end = field_end(at);
-                if (!check_index(rest.substr(at, end - at), counts.texcoords,
-                                 "texture coordinate", "texture coordinates", true, where,
-                                 diagnostics)) {
+                if (!check_index(rest.substr(at, end - at), counts.texcoords, "texture coordinate",
+                                 "texture coordinates", true, where, diagnostics)) {
                     return false;
                 }
                 at = end;

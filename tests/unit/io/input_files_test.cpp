@@ -3,12 +3,13 @@
 // and FIFOs are read; devices (/dev/zero) and folders are refused at once; the byte cap counts
 // the bytes actually read (a FIFO reports no size); ENVI headers have their own, smaller cap;
 // InputFiles reads through a source handed in.
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
+#include "glint/io/input_files.h"
 
+#include <fcntl.h>
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <fstream>
 #include <string>
@@ -16,7 +17,6 @@
 
 #include "glint/core/error.h"
 #include "glint/io/envi.h"
-#include "glint/io/input_files.h"
 #include "glint/test/temp_dir.h"
 
 namespace glint::io {
@@ -74,7 +74,8 @@ TEST(ReadInputFile, DevicesAndFoldersAreRefusedAtOnce) {
                   "scene.tasks: is a device, expected a file");
     }
     TempDir dir;
-    EXPECT_EQ(error_of([&] { read_input_file(dir.path(), "d"); }), "d: is a folder, expected a file");
+    EXPECT_EQ(error_of([&] { read_input_file(dir.path(), "d"); }),
+              "d: is a folder, expected a file");
     EXPECT_EQ(error_of([&] { read_input_file(dir / "none.txt", "none.txt"); }),
               "none.txt: cannot open file: No such file or directory");
 }

@@ -66,8 +66,7 @@ TEST(ObjParser, RelativeIndices) {
 TEST(ObjParser, TextureAndNormalIndices) {
     const std::string head = kTriangle + "vt 0 0\nvn 0 0 1\nvn 0 0 1\n";
     Diagnostics good;
-    const model::Mesh mesh =
-        parse(head + "f 1/1/2 2//1 3/-1\nf 1/1 2/1/-2 3\n", good);
+    const model::Mesh mesh = parse(head + "f 1/1/2 2//1 3/-1\nf 1/1 2/1/-2 3\n", good);
     EXPECT_FALSE(good.has_errors()) << diagnostics_text(good);
     EXPECT_EQ(mesh.triangles.size(), 2u);
 
@@ -107,8 +106,7 @@ TEST(ObjParser, LinesEndAtCarriageReturnsToo) {
 
 TEST(ObjParser, EachBadFaceOnce) {
     Diagnostics diagnostics;
-    const model::Mesh mesh =
-        parse(kTriangle + "f 1 2 7\nf 1 2 3\nf 4294967296 1 2\n", diagnostics);
+    const model::Mesh mesh = parse(kTriangle + "f 1 2 7\nf 1 2 3\nf 4294967296 1 2\n", diagnostics);
     ASSERT_EQ(diagnostics.error_count(), 2u) << diagnostics_text(diagnostics);
     EXPECT_EQ(diagnostics.items()[0].where.line, 4);
     EXPECT_EQ(diagnostics.items()[1].where.line, 6);

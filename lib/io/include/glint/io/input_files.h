@@ -29,10 +29,8 @@ inline constexpr std::size_t kMaxInputBytes = std::size_t{256} << 20;
 /// character or block device (`/dev/zero`, `/dev/urandom`, a terminal: "is a device,
 /// expected a file"); input when it holds more than `max_bytes` ("larger than N bytes (a
 /// device or not a text file?)"). Regular files and FIFOs (pipes, `<(…)`) are read.
-std::string read_input_file(const std::filesystem::path& path,
-                            const std::string& display_name = {},
-                            std::size_t max_bytes = kMaxInputBytes,
-                            std::string_view kind = "file");
+std::string read_input_file(const std::filesystem::path& path, const std::string& display_name = {},
+                            std::size_t max_bytes = kMaxInputBytes, std::string_view kind = "file");
 
 /// The files one load reads. Not thread-safe: one load, one thread.
 class InputFiles {
