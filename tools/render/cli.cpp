@@ -2,6 +2,8 @@
 // glint-render's options (docs/tools/glint-render.md).
 #include "cli.h"
 
+#include "glint/core/runner.h"
+
 namespace glint::tools::render {
 
 void RenderCli::configure(CLI::App& app) {
@@ -40,6 +42,11 @@ void RenderCli::configure(CLI::App& app) {
     app.add_option("--max-memory", m_max_memory,
                    "Cap the memory of the ray-tracing scene (bytes, or with K, M, G, T)")
         ->type_name("SIZE");
+    app.add_option("--max-instances", m_options.read.max_instances,
+                   "Most scene instances nested glists may expand to (counted before building)")
+        ->check(whole_number())
+        ->type_name("N")
+        ->capture_default_str();
     app.add_option("--max-bounces", m_options.render.tracer.max_bounces,
                    "Surface scatterings after the first hit (Russian roulette ends most paths "
                    "earlier)")

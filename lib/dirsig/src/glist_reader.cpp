@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <map>
 #include <numbers>
 
 #include "glint/core/text.h"
@@ -22,6 +23,18 @@ constexpr double kDegToRad = std::numbers::pi / 180.0;
 constexpr int kMaxGlistDepth = 16;
 
 using Matrix4 = std::array<double, 16>;
+
+/// A nested glist as read once per read_glist: its objects were appended to the scene at
+/// `object_offset`, and `instances` (object indices relative to those objects) are placed
+/// again for every instance that includes it — a glist named by ten objects is parsed once
+/// and its meshes are stored once.
+struct NestedGlist {
+    std::size_t object_offset = 0;
+    std::vector<model::Instance> instances;
+};
+
+/// The nested glists read so far, by absolute normalised path.
+using GlistCache = std::map<std::filesystem::path, NestedGlist>;
 
 Matrix4 multiply(const Matrix4& a, const Matrix4& b) {
     Matrix4 c{};
@@ -76,6 +89,7 @@ struct GlistReader {
     Diagnostics& diagnostics;
     model::Scene& scene;
     std::vector<std::filesystem::path>& chain;  ///< glists being read, outermost first
+    GlistCache& cache;                          ///< nested glists already read
 
     /// x, y, z of `parent/name/inner` (or `parent/name/x..z` without the inner element).
     std::optional<std::array<double, 3>> triple(const io::XmlNode& parent, std::string_view name,
@@ -215,7 +229,7 @@ struct GlistReader {
             m.file = file;
             const MotionReadContext context{options, base_dir, source_text};
             m.flexible = read_flex_motion(*motion, context, diagnostics);
-            in.motion = std::move(m);
+            in.motion = std::make_shared<const model::PlatformMotion>(std::move(m));
             return in;
         }
         motion->warn_unknown_children({"filename"}, diagnostics);
@@ -224,7 +238,8 @@ struct GlistReader {
         in.motion_file =
             options.paths.resolve(text, base_dir, motion->child("filename")->where(), diagnostics);
         if (!in.motion_file.resolved.empty()) {
-            in.motion = read_motion(in.motion_file.resolved, options, diagnostics);
+            in.motion = std::make_shared<const model::PlatformMotion>(
+                read_motion(in.motion_file.resolved, options, diagnostics));
         }
         return in;
     }
@@ -238,7 +253,7 @@ struct GlistReader {
 /// Reads one glist file into `scene` (the recursive step behind read_glist).
 void read_glist_file(const std::filesystem::path& path, const ReadOptions& options,
                      model::Scene& scene, Diagnostics& diagnostics,
-                     std::vector<std::filesystem::path>& chain) {
+                     std::vector<std::filesystem::path>& chain, GlistCache& cache) {
     const std::string name = path.string();
     const std::size_t depth = chain.size();
     try {
@@ -250,7 +265,7 @@ void read_glist_file(const std::filesystem::path& path, const ReadOptions& optio
         chain.push_back(std::filesystem::absolute(path).lexically_normal());
         GlistReader reader{
             name, std::filesystem::absolute(path).parent_path(), text, options, diagnostics, scene,
-            chain};
+            chain, cache};
         for (const io::XmlNode& object : root.children("object")) reader.read_object(object);
     } catch (const Error& error) {
         diagnostics.add(error);
@@ -270,17 +285,40 @@ void GlistReader::place_nested(const model::FileRef& ref,
             ref.where, "glist nesting deeper than " + std::to_string(kMaxGlistDepth) + " levels");
         return;
     }
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(ref.resolved, ec)) {
+    auto cached = cache.find(key);
+    if (cached == cache.end()) {
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(ref.resolved, ec)) {
+            diagnostics.error(ref.where,
+                              "glist " + ref.text + " not found (" + ref.resolved.string() + ")");
+            return;
+        }
+        model::Scene sub;
+        sub.materials = scene.materials;
+        read_glist_file(ref.resolved, options, sub, diagnostics, chain, cache);
+        NestedGlist nested;
+        nested.object_offset = scene.objects.size();
+        nested.instances = std::move(sub.instances);
+        for (model::GeometryObject& object : sub.objects) {
+            scene.objects.push_back(std::move(object));
+        }
+        cached = cache.emplace(key, std::move(nested)).first;
+    }
+    const NestedGlist& sub = cached->second;
+    // Count before building: every including instance places every instance of the glist.
+    const std::uint64_t adding =
+        static_cast<std::uint64_t>(outer.size()) * static_cast<std::uint64_t>(sub.instances.size());
+    const std::uint64_t total = static_cast<std::uint64_t>(scene.instances.size()) + adding;
+    if (total > options.max_instances) {
         diagnostics.error(ref.where,
-                          "glist " + ref.text + " not found (" + ref.resolved.string() + ")");
+                          "glist " + ref.text + " (" + std::to_string(sub.instances.size()) +
+                              " instances) placed by " + std::to_string(outer.size()) +
+                              " instances would bring this glist to " + std::to_string(total) +
+                              " instances, more than the " +
+                              std::to_string(options.max_instances) +
+                              " allowed (--max-instances raises the limit)");
         return;
     }
-    model::Scene sub;
-    sub.materials = scene.materials;
-    read_glist_file(ref.resolved, options, sub, diagnostics, chain);
-    const std::size_t offset = scene.objects.size();
-    for (model::GeometryObject& object : sub.objects) scene.objects.push_back(std::move(object));
     for (const model::Instance& o : outer) {
         if (o.dynamic()) {
             diagnostics.error(o.where, "a dynamicinstance of glist base geometry (" + ref.text +
@@ -290,7 +328,7 @@ void GlistReader::place_nested(const model::FileRef& ref,
         const bool identity = is_identity(o.transform);
         for (const model::Instance& inner : sub.instances) {
             model::Instance in = inner;
-            in.object_index += offset;
+            in.object_index += sub.object_offset;
             in.tags.insert(in.tags.begin(), o.tags.begin(), o.tags.end());
             in.important = in.important || o.important;
             if (!identity) {
@@ -445,7 +483,8 @@ void GlistReader::read_object(const io::XmlNode& node) {
 void read_glist(const std::filesystem::path& file, const ReadOptions& options, model::Scene& scene,
                 Diagnostics& diagnostics) {
     std::vector<std::filesystem::path> chain;
-    read_glist_file(file, options, scene, diagnostics, chain);
+    GlistCache cache;
+    read_glist_file(file, options, scene, diagnostics, chain, cache);
 }
 
 }  // namespace glint::dirsig

@@ -155,12 +155,14 @@ model::Instance read_instance(Reader& r, const YAML::Node& node, const std::stri
             in.motion_file = r.options.paths.resolve(
                 *text, r.base_dir, r.where(motion, Reader::join(path, "motion")), r.diagnostics);
             if (!in.motion_file.resolved.empty()) {
-                in.motion = read_motion(in.motion_file.resolved, r.options, r.diagnostics);
+                in.motion = std::make_shared<const model::PlatformMotion>(
+                    read_motion(in.motion_file.resolved, r.options, r.diagnostics));
             }
         }
     } else if (const YAML::Node flex = node["flex_motion"]) {
         if (r.text_key(node, path, "flex_motion", true)) {
-            in.motion = read_inline_motion(r, flex, Reader::join(path, "flex_motion"));
+            in.motion = std::make_shared<const model::PlatformMotion>(
+                read_inline_motion(r, flex, Reader::join(path, "flex_motion")));
         }
     }
     return in;

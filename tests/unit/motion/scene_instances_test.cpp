@@ -34,7 +34,7 @@ TEST(SceneTargets, StaticDynamicRepeatedAndUnknownNames) {
     model::Instance b = named("sign");
     b.transform.matrix = std::array<double, 16>{0, -1, 0, 7, 1, 0, 0, 8, 0, 0, 1, 9, 0, 0, 0, 1};
     model::Instance c = named("truck");
-    c.motion = driving_east();
+    c.motion = std::make_shared<const model::PlatformMotion>(driving_east());
     model::Instance d = named("tower");  // a second "tower": the first one is the target
     d.transform.translation_m = {-5.0, -5.0, 0.0};
     scene.instances = {a, b, c, d};
@@ -51,7 +51,7 @@ TEST(SceneTargets, StaticDynamicRepeatedAndUnknownNames) {
 TEST(SceneTargets, TrajectoriesAreIndexedLikeTheInstances) {
     model::Scene scene;
     model::Instance moving = named("truck");
-    moving.motion = driving_east();
+    moving.motion = std::make_shared<const model::PlatformMotion>(driving_east());
     scene.instances = {named("house"), moving};
     const auto trajectories = make_instance_trajectories(scene, SceneFrame(), DateTime{});
     ASSERT_EQ(trajectories.size(), 2u);

@@ -41,7 +41,7 @@ inline std::size_t add_primitive(model::Scene& scene, const model::Primitive& pr
     model::Instance instance;
     instance.object_index = scene.objects.size() - 1;
     instance.name = scene.objects.back().name;
-    instance.motion = std::move(motion);
+    if (motion) instance.motion = std::make_shared<const model::PlatformMotion>(std::move(*motion));
     scene.instances.push_back(std::move(instance));
     return scene.instances.size() - 1;
 }

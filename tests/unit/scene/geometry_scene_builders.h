@@ -156,8 +156,9 @@ inline std::size_t add_dynamic(model::Scene& scene, std::size_t object, model::F
     model::Instance instance;
     instance.object_index = object;
     instance.name = name;
-    instance.motion = model::PlatformMotion{};
-    instance.motion->flexible = std::move(motion);
+    model::PlatformMotion platform_motion;
+    platform_motion.flexible = std::move(motion);
+    instance.motion = std::make_shared<const model::PlatformMotion>(std::move(platform_motion));
     instance.where = {scene.file, static_cast<int>(100 + scene.instances.size()), name};
     scene.instances.push_back(std::move(instance));
     return scene.instances.size() - 1;

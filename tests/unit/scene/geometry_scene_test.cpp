@@ -437,7 +437,7 @@ TEST(GeometryScene, InstanceTrajectoriesFollowTheInstances) {
     expect_vec_near(trajectories[1]->pose_at(3.0).position_m, {6.0, 0.0, 0.0}, 1e-9);
 
     // A motion with neither kind is refused at the instance.
-    scene.instances[1].motion = model::PlatformMotion{};
+    scene.instances[1].motion = std::make_shared<const model::PlatformMotion>();
     const Error e =
         error_of([&] { motion::make_instance_trajectories(scene, motion::SceneFrame(), DateTime{}); });
     EXPECT_EQ(e.category(), ErrorCategory::input);

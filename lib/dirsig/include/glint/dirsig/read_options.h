@@ -3,6 +3,7 @@
 // Windows absolute paths, and paths relative to the file that names them.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -36,6 +37,9 @@ struct PathResolver {
                            const ErrorContext& where, Diagnostics& diagnostics) const;
 };
 
+/// Default ReadOptions::max_instances: 10⁶ instances (about 0.6 GB while a glist expands).
+inline constexpr std::uint64_t kDefaultMaxInstances = 1'000'000;
+
 /// What every reader takes besides the file.
 struct ReadOptions {
     PathResolver paths;
@@ -43,6 +47,11 @@ struct ReadOptions {
     /// the options): each file is opened once and every open is logged. Null: files are read
     /// directly, unrecorded.
     std::shared_ptr<io::InputFiles> files;
+    /// The most instances a glist may expand to once nested glists are placed (each
+    /// including instance places every instance of the glist it names, so a few small files
+    /// can describe 10⁷): counted before any is built; more is an error. The tools'
+    /// --max-instances sets it.
+    std::uint64_t max_instances = kDefaultMaxInstances;
 
     /// The whole text of `file` (through `files` when set), named `display_name` in errors.
     /// Throws glint::Error as io::read_input_file does.

@@ -49,6 +49,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -166,12 +167,14 @@ struct Instance {
     std::vector<std::string> tags;
     bool important = false;  ///< name or a tag starts with kImportantLabel
     StaticTransform transform;
-    /// Dynamic instances: the motion read from `motion_file` or from an inline FlexMotion.
-    std::optional<PlatformMotion> motion;
+    /// Dynamic instances: the motion read from `motion_file` or from an inline FlexMotion;
+    /// shared by the copies a nested glist makes (an inline PlatformMotion is 6 KB, and a
+    /// scene may place 10⁶ instances).
+    std::shared_ptr<const PlatformMotion> motion;
     FileRef motion_file;  ///< empty for static and inline-FlexMotion instances
     ErrorContext where;
 
-    bool dynamic() const { return motion.has_value(); }
+    bool dynamic() const { return motion != nullptr; }
 };
 
 /// A whole scene.
