@@ -1,27 +1,33 @@
 // SPDX-License-Identifier: Apache-2.0
 // read_schedule_selection: the capture indices of a glint-schedule JSON file (--schedule).
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "glint/core/error.h"
+#include "glint/core/text.h"
+#include "glint/io/input_files.h"
 #include "glint/sensor/render.h"
 
 namespace glint::sensor {
 
+namespace {
+
+/// The largest schedule file read (2 GiB): a glint-schedule JSON of the 10⁶ captures one
+/// render plans is about 1 GB; anything larger is not one.
+constexpr std::size_t kMaxScheduleBytes = std::size_t{2} << 30;
+
+}  // namespace
+
 std::set<std::uint64_t> read_schedule_selection(const std::filesystem::path& file) {
-    std::ifstream stream(file, std::ios::binary);
-    if (!stream) throw io_error("cannot read the schedule file", file.string());
-    std::ostringstream text;
-    text << stream.rdbuf();
+    const std::string text =
+        io::read_input_file(file, file.string(), kMaxScheduleBytes, "schedule file");
     const ErrorContext where{file.string(), 0, {}};
     nlohmann::json json;
     try {
-        json = nlohmann::json::parse(text.str());
-    } catch (const nlohmann::json::parse_error& e) {
-        throw input_error(std::string("not JSON: ") + e.what(), where);
+        json = nlohmann::json::parse(text);
+    } catch (const nlohmann::json::exception& e) {  // parse_error, or out_of_range (1e999)
+        throw input_error("not JSON: " + quote(e.what()), where);
     }
     if (!json.is_object() || json.value("format", "") != "glint-schedule") {
         throw input_error("not a glint-schedule file (expected \"format\": \"glint-schedule\"; "
