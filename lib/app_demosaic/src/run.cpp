@@ -5,6 +5,7 @@
 #include "glint/core/atomic_file.h"
 #include "glint/core/error.h"
 #include "glint/core/runner.h"
+#include "glint/core/stdio_name.h"
 #include "glint/core/text.h"
 #include "glint/io/envi.h"
 #include "glint/io/image.h"
@@ -175,6 +176,10 @@ Result demosaic_file(const Options& o, Context& ctx) {
 }
 
 int run(const Options& options, Context& ctx, std::ostream& /*out*/) {
+    refuse_stdio_name(options.input, StdioRole::input, "the input of glint-demosaic",
+                      "an ENVI image is two files (data and header) read by offset");
+    refuse_stdio_name(options.output, StdioRole::output, "the output of glint-demosaic",
+                      "outputs are written through a temporary file and renamed when complete");
     demosaic_file(options, ctx);
     return kExitSuccess;
 }

@@ -11,6 +11,7 @@
 #include "glint/core/atomic_file.h"
 #include "glint/core/error.h"
 #include "glint/core/runner.h"
+#include "glint/core/stdio_name.h"
 #include "glint/core/text.h"
 #include "glint/detect/adc.h"
 #include "glint/detect/chain.h"
@@ -181,6 +182,10 @@ Result detect_file(const Options& options, Context& ctx) {
 }
 
 int run(const Options& options, Context& ctx, std::ostream& /*out*/) {
+    refuse_stdio_name(options.input, StdioRole::input, "the input of glint-detect",
+                      "an ENVI image is two files (data and header) read by offset");
+    refuse_stdio_name(options.output, StdioRole::output, "the output of glint-detect",
+                      "outputs are written through a temporary file and renamed when complete");
     detect_file(options, ctx);
     return kExitSuccess;
 }

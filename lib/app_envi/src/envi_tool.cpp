@@ -4,10 +4,50 @@
 
 #include "glint/core/error.h"
 #include "glint/core/runner.h"
+#include "glint/core/stdio_name.h"
 
 namespace glint::app_envi {
 
+namespace {
+
+constexpr const char* kEnviFiles = "an ENVI image is two files (data and header) read by offset";
+constexpr const char* kWrittenFiles =
+    "outputs are written through a temporary file and renamed when complete";
+
+/// `-` where a file is needed: a usage error before anything is read or written.
+void refuse_stdio_names(const Options& options) {
+    switch (options.subcommand) {
+        case Subcommand::info:
+            for (const auto& file : options.info.files) {
+                refuse_stdio_name(file, StdioRole::input, "an input of glint-envi info",
+                                  kEnviFiles);
+            }
+            return;
+        case Subcommand::stats:
+            refuse_stdio_name(options.stats.file, StdioRole::input, "the input of glint-envi stats",
+                              kEnviFiles);
+            return;
+        case Subcommand::convert:
+            refuse_stdio_name(options.convert.input, StdioRole::input,
+                              "the input of glint-envi convert", kEnviFiles);
+            refuse_stdio_name(options.convert.output, StdioRole::output,
+                              "the output of glint-envi convert", kWrittenFiles);
+            return;
+        case Subcommand::encode:
+            for (const auto& frame : options.encode.frames) {
+                refuse_stdio_name(frame, StdioRole::input, "an input of glint-envi encode",
+                                  kEnviFiles);
+            }
+            refuse_stdio_name(options.encode.output, StdioRole::output,
+                              "the output of glint-envi encode", kWrittenFiles);
+            return;
+    }
+}
+
+}  // namespace
+
 int run(const Options& options, Context& ctx, std::ostream& out) {
+    refuse_stdio_names(options);
     switch (options.subcommand) {
         case Subcommand::info:
             return report_info(options.info, ctx, out);
