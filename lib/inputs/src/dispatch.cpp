@@ -39,8 +39,14 @@ model::Scene read_scene(const std::filesystem::path& file, const ReadOptions& op
             dirsig = false;  // the YAML reader reports why the file cannot be read
         }
     }
-    return dirsig ? dirsig::read_dirsig_scene(file, options, diagnostics)
-                  : yaml::read_yaml_scene(file, options, diagnostics);
+    model::Scene scene = dirsig ? dirsig::read_dirsig_scene(file, options, diagnostics)
+                                : yaml::read_yaml_scene(file, options, diagnostics);
+    // The physical checks the renderer would make, here, so that every tool (and --check)
+    // refuses the same scenes with the material's file:line.
+    for (const model::Material& material : scene.materials) {
+        model::check_material(material, diagnostics);
+    }
+    return scene;
 }
 
 model::Atmosphere read_atmosphere(const std::filesystem::path& path, const ReadOptions& options,

@@ -2,6 +2,12 @@
 // Scene data built in code (glint/model/scene.h).
 #include "glint/model/scene.h"
 
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "glint/core/text.h"
+
 namespace glint::model {
 
 Material flat_material(const std::string& id, double reflectance, double temperature_k,
@@ -18,6 +24,74 @@ Material flat_material(const std::string& id, double reflectance, double tempera
     m.temperature_k = temperature_k;
     m.specular = specular;
     return m;
+}
+
+double sample_held(const SpectralTable& table, double wavelength_um) {
+    const std::vector<double>& x = table.wavelengths_um;
+    const std::vector<double>& y = table.values;
+    if (wavelength_um <= x.front()) return y.front();
+    if (wavelength_um >= x.back()) return y.back();
+    const auto hi =
+        static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), wavelength_um) - x.begin());
+    const std::size_t lo = hi - 1;
+    const double f = (wavelength_um - x[lo]) / (x[hi] - x[lo]);
+    return y[lo] + f * (y[hi] - y[lo]);
+}
+
+std::pair<double, double> measured_range_um(const Material& material) {
+    double lo = material.reflectance.wavelengths_um.front();
+    double hi = material.reflectance.wavelengths_um.back();
+    if (!material.emissivity.empty()) {
+        lo = std::max(lo, material.emissivity.wavelengths_um.front());
+        hi = std::min(hi, material.emissivity.wavelengths_um.back());
+    }
+    return {lo, hi};
+}
+
+void check_material(const Material& material, Diagnostics& diagnostics) {
+    // Rounding slack of interpolated sums; the renderer allows the same.
+    constexpr double kSlack = 1e-9;
+    const std::string name = "material '" + material.id + "'";
+    if (material.reflectance.empty()) {
+        diagnostics.error(material.where, name + " has no reflectance");
+        return;
+    }
+    if (!(material.temperature_k > 0.0) || !std::isfinite(material.temperature_k)) {
+        diagnostics.error(material.where, name + ": temperature " +
+                                              format_shortest(material.temperature_k) +
+                                              " K must be a finite number > 0");
+    }
+    std::set<double> wavelengths(material.reflectance.wavelengths_um.begin(),
+                                 material.reflectance.wavelengths_um.end());
+    if (!material.emissivity.empty()) {
+        wavelengths.insert(material.emissivity.wavelengths_um.begin(),
+                           material.emissivity.wavelengths_um.end());
+    }
+    const std::pair<double, double> measured = measured_range_um(material);
+    for (const double w : wavelengths) {
+        const double rho = sample_held(material.reflectance, w);
+        const double eps =
+            material.emissivity.empty() ? 1.0 - rho : sample_held(material.emissivity, w);
+        const std::string at = " at " + format_shortest(w) + " um";
+        if (!(rho >= -kSlack && rho <= 1.0 + kSlack)) {
+            diagnostics.error(material.where, name + ": reflectance " + format_shortest(rho) + at +
+                                                  " lies outside [0, 1]");
+            return;
+        }
+        if (!(eps >= -kSlack && eps <= 1.0 + kSlack)) {
+            diagnostics.error(material.where, name + ": emissivity " + format_shortest(eps) + at +
+                                                  " lies outside [0, 1]");
+            return;
+        }
+        if (eps + rho > 1.0 + kSlack && w >= measured.first && w <= measured.second) {
+            diagnostics.error(material.where,
+                              name + ": emissivity " + format_shortest(eps) + " + reflectance " +
+                                  format_shortest(rho) + " exceed 1" + at +
+                                  " (an opaque surface cannot emit and reflect more than a "
+                                  "blackbody)");
+            return;
+        }
+    }
 }
 
 }  // namespace glint::model

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "glint/core/error.h"
@@ -20,23 +21,11 @@ constexpr double kRangeSlack = 1e-9;
 std::vector<double> sample_held(const model::SpectralTable& table, const SpectralGrid& grid,
                                 bool& covered) {
     const std::vector<double>& x = table.wavelengths_um;
-    const std::vector<double>& y = table.values;
     std::vector<double> out(grid.size());
     for (std::size_t i = 0; i < grid.size(); ++i) {
         const double w = grid.wavelength_um(i);
-        if (w <= x.front()) {
-            out[i] = y.front();
-            if (w < x.front()) covered = false;
-        } else if (w >= x.back()) {
-            out[i] = y.back();
-            if (w > x.back()) covered = false;
-        } else {
-            const auto hi =
-                static_cast<std::size_t>(std::upper_bound(x.begin(), x.end(), w) - x.begin());
-            const std::size_t lo = hi - 1;
-            const double f = (w - x[lo]) / (x[hi] - x[lo]);
-            out[i] = y[lo] + f * (y[hi] - y[lo]);
-        }
+        if (w < x.front() || w > x.back()) covered = false;
+        out[i] = model::sample_held(table, w);
     }
     return out;
 }
@@ -84,15 +73,25 @@ MaterialTable::MaterialTable(std::span<const model::Material> materials, const S
         check_unit_range(eps, material, "emissivity", grid);
         bool emits = false;
         bool reflects = false;
+        // Where both curves are measured, model::check_material (every loader) has refused
+        // ε + ρ > 1; beyond that, both are held end values — a guess — and ε is lowered to
+        // 1 − ρ there, with one warning.
+        const auto [measured_lo_um, measured_hi_um] = model::measured_range_um(material);
+        std::optional<double> lowered_at_um;
         for (std::size_t i = 0; i < m_bands; ++i) {
             if (eps[i] + rho[i] > 1.0 + kRangeSlack) {
-                throw input_error("material '" + material.id + "': emissivity " +
-                                      format_shortest(eps[i]) + " + reflectance " +
-                                      format_shortest(rho[i]) + " exceed 1 at " +
-                                      format_shortest(grid.wavelength_um(i)) +
-                                      " um (an opaque surface cannot emit and reflect more "
-                                      "than a blackbody)",
-                                  material.where);
+                const double w = grid.wavelength_um(i);
+                if (w >= measured_lo_um && w <= measured_hi_um) {
+                    throw input_error("material '" + material.id + "': emissivity " +
+                                          format_shortest(eps[i]) + " + reflectance " +
+                                          format_shortest(rho[i]) + " exceed 1 at " +
+                                          format_shortest(w) +
+                                          " um (an opaque surface cannot emit and reflect more "
+                                          "than a blackbody)",
+                                      material.where);
+                }
+                eps[i] = 1.0 - rho[i];
+                if (!lowered_at_um) lowered_at_um = w;
             }
             rho[i] = std::clamp(rho[i], 0.0, 1.0);
             const double e =
@@ -102,6 +101,15 @@ MaterialTable::MaterialTable(std::span<const model::Material> materials, const S
             reflects = reflects || rho[i] > 0.0;
             m_reflectance.push_back(rho[i]);
             m_emission.push_back(e);
+        }
+        if (lowered_at_um) {
+            log.warning(
+                format_located(material.where, "material '" + material.id +
+                                                   "': beyond its measured curves (from " +
+                                                   format_shortest(*lowered_at_um) +
+                                                   " um) the held end values give emissivity + "
+                                                   "reflectance > 1; emissivity lowered to 1 - "
+                                                   "reflectance there"));
         }
         if (!covered) {
             const std::string where =

@@ -73,7 +73,7 @@ TEST(DirsigSceneReader, ReadsFixtureFieldByField) {
     EXPECT_EQ(asphalt.reflectance.values, (std::vector<double>{0.10, 0.12}));
     EXPECT_FALSE(asphalt.emissivity_is_default);
     EXPECT_EQ(asphalt.emissivity.wavelengths_um, (std::vector<double>{0.4, 14.0}));
-    EXPECT_EQ(asphalt.emissivity.values, (std::vector<double>{0.90, 0.95}));
+    EXPECT_EQ(asphalt.emissivity.values, (std::vector<double>{0.85, 0.95}));
     EXPECT_DOUBLE_EQ(asphalt.temperature_k, 310.0);
 
     ASSERT_EQ(scene.objects.size(), 4u);

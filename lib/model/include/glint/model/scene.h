@@ -53,8 +53,10 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
+#include "glint/core/diagnostics.h"
 #include "glint/model/common.h"
 #include "glint/model/motion.h"
 
@@ -192,5 +194,22 @@ struct Scene {
 Material flat_material(const std::string& id, double reflectance,
                        double temperature_k = kDefaultTemperature_k,
                        std::optional<double> emissivity = std::nullopt, SpecularLobe specular = {});
+
+/// `table` at `wavelength_um`: linear between its points, held constant beyond its ends
+/// (how the renderer samples material curves on its spectral grid). `table` is not empty.
+double sample_held(const SpectralTable& table, double wavelength_um);
+
+/// The wavelengths where all of a material's given curves are measured: the overlap of
+/// the reflectance's and (when given) the emissivity's ranges, µm; empty (lo > hi) when
+/// they do not overlap.
+std::pair<double, double> measured_range_um(const Material& material);
+
+/// The physical checks of a material every tool applies alike (glint-platform2jsim --check
+/// as glint-render): reflectance given, temperature finite and > 0, reflectance and
+/// emissivity within [0, 1] at every point of either curve, and emissivity + reflectance ≤ 1
+/// at every such point inside measured_range_um (both are linear between their points, so a
+/// sum within 1 there is within 1 on any grid; beyond it the renderer lowers the held
+/// emissivity, see physics.md). Problems go to `diagnostics` at the material's `where`.
+void check_material(const Material& material, Diagnostics& diagnostics);
 
 }  // namespace glint::model
