@@ -48,8 +48,8 @@ void ImageOutputs::plan(const std::filesystem::path& path, io::EnviHeader header
                               " is written by two focal planes of different shapes");
         }
         it->second->captures += captures;
-        it->second->header.lines = static_cast<std::size_t>(
-            it->second->lines_per_capture * it->second->captures);
+        it->second->header.lines =
+            static_cast<std::size_t>(it->second->lines_per_capture * it->second->captures);
         return;
     }
     auto file = std::make_unique<File>();
@@ -67,8 +67,8 @@ void ImageOutputs::write_capture(const std::filesystem::path& path, std::span<co
     File& f = *it->second;
     const std::size_t line_values = f.header.samples * f.header.bands;
     if (image.size() != line_values * f.lines_per_capture) {
-        throw internal_error("capture image of " + std::to_string(image.size()) +
-                             " values for " + path.string() + ", expected " +
+        throw internal_error("capture image of " + std::to_string(image.size()) + " values for " +
+                             path.string() + ", expected " +
                              std::to_string(line_values * f.lines_per_capture));
     }
     if (f.written >= f.captures) {
@@ -82,10 +82,11 @@ void ImageOutputs::write_capture(const std::filesystem::path& path, std::span<co
             std::error_code ec;
             std::filesystem::create_directories(folder, ec);
             if (ec) {
-                throw io_error("cannot create the output folder: " + ec.message(),
-                               folder.string());
+                throw io_error("cannot create the output folder: " + ec.message(), folder.string());
             }
         }
+        if (!m_locks.contains(folder))
+            m_locks.emplace(folder, FolderLock(folder.empty() ? "." : folder));
         f.writer.emplace(path, f.header);
     }
     for (std::uint64_t line = 0; line < f.lines_per_capture; ++line) {
@@ -114,6 +115,16 @@ void ImageOutputs::write_capture(const std::filesystem::path& path, std::span<co
     f.writer->commit();
     f.writer.reset();
     m_published.push_back(path);
+}
+
+void ImageOutputs::lock_folders() {
+    for (const std::filesystem::path& path : m_order) {
+        const std::filesystem::path folder = path.parent_path();
+        if (m_locks.contains(folder)) continue;
+        std::error_code ec;
+        if (!std::filesystem::is_directory(folder.empty() ? "." : folder, ec)) continue;
+        m_locks.emplace(folder, FolderLock(folder.empty() ? "." : folder));
+    }
 }
 
 std::vector<std::filesystem::path> ImageOutputs::planned() const { return m_order; }

@@ -22,6 +22,7 @@ RenderReport plan(model::SimulationInputs inputs, const RenderOptions& options,
     const std::unique_ptr<detail::Prepared> prepared =
         detail::prepare(std::move(inputs), options, context);
     RenderReport report = prepared->report;
+    prepared->outputs.lock_folders();  // a second run into these folders fails here
     for (const detail::PlannedCapture& p : prepared->captures) {
         CaptureReport c;
         c.index = p.capture.index;

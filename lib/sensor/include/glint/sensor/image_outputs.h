@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "glint/core/folder_lock.h"
 #include "glint/io/envi.h"
 
 namespace glint::sensor {
@@ -50,6 +51,11 @@ public:
     void write_capture(const std::filesystem::path& path, std::span<const double> image,
                        const CaptureStamp& stamp);
 
+    /// Locks every planned output folder that exists already (glint::FolderLock), so a
+    /// second run into one of them fails before it traces anything; folders created later
+    /// are locked when they are created. Throws glint::Error (io) when another run holds one.
+    void lock_folders();
+
     /// Files published so far, in the order they were completed.
     const std::vector<std::filesystem::path>& published() const noexcept { return m_published; }
     /// Files planned, in planning order.
@@ -60,6 +66,7 @@ private:
     std::map<std::filesystem::path, std::unique_ptr<File>> m_files;
     std::vector<std::filesystem::path> m_order;
     std::vector<std::filesystem::path> m_published;
+    std::map<std::filesystem::path, FolderLock> m_locks;  ///< by folder, held to the end
 };
 
 }  // namespace glint::sensor
