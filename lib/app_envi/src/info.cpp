@@ -154,7 +154,7 @@ int report_info(const InfoOptions& options, Context& ctx, std::ostream& out) {
     for (const auto& file : options.files) {
         ctx.cancel.throw_if_cancelled();
         try {
-            io::EnviReader reader(file);
+            io::EnviReader reader(file, io::EnviReader::LineUse::describe_only);
             if (options.format == ReportFormat::json) {
                 all.push_back(
                     info_json(file, reader.header(), reader.data_path(), reader.header_path()));

@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cctype>
 #include <cerrno>
 #include <cstring>
@@ -112,6 +113,7 @@ struct EnviReader::Impl {
     std::size_t line_values = 0;    ///< samples × bands
     std::vector<std::byte> stored;  ///< BIL/BSQ: one line as stored, band after band
     std::vector<std::byte> raw;     ///< read_line: the raw BIP line before conversion
+    bool describe_only = false;     ///< opened by info: no line may be read
 
     Impl() = default;
     Impl(const Impl&) = delete;
@@ -121,7 +123,8 @@ struct EnviReader::Impl {
     }
 };
 
-EnviReader::EnviReader(const std::filesystem::path& path) : m_impl(std::make_unique<Impl>()) {
+EnviReader::EnviReader(const std::filesystem::path& path, LineUse line_use)
+    : m_impl(std::make_unique<Impl>()) {
     std::string extension = path.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -176,6 +179,22 @@ EnviReader::EnviReader(const std::filesystem::path& path) : m_impl(std::make_uni
                           ErrorContext{m_data_path.string(), 0, {}});
     }
     m_impl->line_values = m_header.samples * m_header.bands;
+    if (line_use == LineUse::describe_only) {
+        m_impl->describe_only = true;
+        return;
+    }
+    // Readers hold a few lines as doubles: a line of 10⁹ samples (a sparse data file can
+    // claim one) would need 8 GB each. Refuse before any buffer is allocated.
+    const double line_bytes = static_cast<double>(m_impl->line_values) * sizeof(double);
+    if (line_bytes > static_cast<double>(kMaxLineBytes)) {
+        throw input_error(
+            "one line holds " + std::to_string(m_header.samples) + " samples x " +
+                std::to_string(m_header.bands) + " bands, " +
+                std::to_string(static_cast<long long>(std::ceil(line_bytes / (1 << 20)))) +
+                " MiB as doubles; glint reads ENVI images line by line and refuses lines over " +
+                std::to_string(kMaxLineBytes >> 20) + " MiB",
+            ErrorContext{m_header_path.string(), 0, {}});
+    }
     if (m_header.interleave != Interleave::bip) {
         m_impl->stored.resize(m_impl->line_values * m_header.value_bytes());
     }
@@ -185,6 +204,7 @@ EnviReader::~EnviReader() = default;
 EnviReader::EnviReader(EnviReader&&) noexcept = default;
 
 void EnviReader::read_line_raw(std::size_t y, std::span<std::byte> out) {
+    if (m_impl->describe_only) throw internal_error("read_line_raw on a describe-only reader");
     const EnviHeader& h = m_header;
     const std::size_t value_bytes = h.value_bytes();
     const std::size_t line_bytes = m_impl->line_values * value_bytes;
