@@ -8,6 +8,7 @@
 #include <cctype>
 
 #include "glint/core/text.h"
+#include "glint/dirsig/motion_reader.h"
 #include "glint/dirsig/readers.h"
 #include "glint/dirsig/scene_reader.h"
 #include "glint/inputs/simulation_inputs.h"
@@ -259,7 +260,14 @@ void load_basic_platform(const model::BasicPlatformInputs& entry, LoadedInputs& 
                          const dirsig::ReadOptions& options, LoadDepth depth) {
     load_platform_ref(entry.platform_file, inputs, options, depth);
     if (depth == LoadDepth::platforms) return;
-    check_exists(entry.motion_file, "motion", inputs);
+    // --check reads the motion file as a render does, so it refuses what a render refuses.
+    if (check_exists(entry.motion_file, "motion", inputs) && depth == LoadDepth::contents) {
+        const fs::path key = key_of(entry.motion_file.resolved);
+        if (inputs.motions.count(key) == 0) {
+            inputs.motions.emplace(key, dirsig::read_motion(entry.motion_file.resolved, options,
+                                                            inputs.diagnostics));
+        }
+    }
     load_tasks_ref(entry.tasks_file, inputs, options);
 }
 

@@ -17,6 +17,7 @@
 #include "glint/core/diagnostics.h"
 #include "glint/dirsig/read_options.h"
 #include "glint/model/atmosphere.h"
+#include "glint/model/motion.h"
 #include "glint/model/platform.h"
 #include "glint/model/scene.h"
 #include "glint/model/simulation.h"
@@ -30,6 +31,8 @@ struct LoadedInputs {
     /// Platforms and task lists that were read, by resolved path.
     std::map<std::filesystem::path, model::Platform> platforms;
     std::map<std::filesystem::path, model::TaskList> task_lists;
+    /// Motion files that were read (LoadDepth::contents, as a render reads them).
+    std::map<std::filesystem::path, model::PlatformMotion> motions;
     /// Scenes and atmospheres that were read (LoadDepth::contents), by resolved path.
     std::map<std::filesystem::path, model::Scene> scenes;
     std::map<std::filesystem::path, model::Atmosphere> atmospheres;
