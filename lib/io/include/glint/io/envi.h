@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // ENVI raw image + text header: the types, the header model, and line-streaming reader and
-// writer. This is the product format of every glint tool (FORMATS.md §13, docs/formats.md).
+// writer. This is the product format of every glint tool (docs/formats.md, "ENVI images").
 //
 // Header keys written (lowercase, this order): description, samples, lines, bands,
 // header offset, file type, data type, interleave, byte order, wavelength units, wavelength,
