@@ -36,6 +36,7 @@ else
     mapfile -t targets < <(all_targets)
 fi
 
+mkdir -p build
 cmake --preset fuzz >"$build.configure.log" 2>&1 ||
     { cat "$build.configure.log" >&2; echo "fuzz.sh: configure failed" >&2; exit 1; }
 cmake --build "$build" --target "${targets[@]/%/_fuzz}" >&2
