@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// Writing the demosaiced image of glint-demosaic: ENVI through io::EnviWriter (values
-// unchanged, provenance keys) or an image through io::ImageWriter with glint-envi's stretch
-// (the rules are at the top of demosaic.h).
+// Writing the demosaiced image of glint-demosaic line by line as it is demosaiced: ENVI
+// through io::EnviWriter (values unchanged, provenance keys) or an image through
+// io::ImageWriter with glint-envi's stretch (the rules are at the top of demosaic.h), whose
+// limits come from earlier passes over the mosaic.
 #include <cmath>
 #include <string>
 
@@ -28,13 +29,21 @@ io::EnviDataType default_envi_type(const MosaicSource& source) {
     }
 }
 
-/// Min/max or percentile limits over the three channels together.
-io::StretchLimits data_limits(const demosaic::RgbImage& image, double percent, Context& ctx) {
+/// Min/max or percentile limits over the three channels together: one pass of the
+/// demosaic for the range, a second for the percentiles.
+io::StretchLimits data_limits(const MosaicSource& source, const demosaic::DemosaicOptions& used,
+                              double percent, Context& ctx) {
     io::PercentileHistogram histogram;
-    for (double v : image.rgb) histogram.observe(v);
+    demosaic_pass(source, used, "demosaic-range", ctx,
+                  [&histogram](std::size_t, std::span<const double> rgb) {
+                      for (double v : rgb) histogram.observe(v);
+                  });
     if (percent > 0) {
         histogram.begin_counting();
-        for (double v : image.rgb) histogram.count(v);
+        demosaic_pass(source, used, "demosaic-percentiles", ctx,
+                      [&histogram](std::size_t, std::span<const double> rgb) {
+                          for (double v : rgb) histogram.count(v);
+                      });
     }
     if (histogram.finite_count() == 0) ctx.log.warning("the image holds no finite values");
     return histogram.limits(percent);
@@ -51,13 +60,13 @@ std::string describe(const Provenance& p) {
            p.source.filename().string();
 }
 
-std::string write_envi(const fs::path& output, const demosaic::RgbImage& image,
-                       const MosaicSource& source, const Provenance& provenance,
-                       std::optional<io::EnviDataType> data_type, Context& ctx) {
+std::string write_envi(const fs::path& output, const MosaicSource& source,
+                       const Provenance& provenance, std::optional<io::EnviDataType> data_type,
+                       Context& ctx) {
     io::EnviHeader h;
     h.description = "glint-demosaic: " + describe(provenance);
-    h.samples = image.width;
-    h.lines = image.height;
+    h.samples = source.width;
+    h.lines = source.height;
     h.bands = 3;
     h.data_type = data_type.value_or(default_envi_type(source));
     h.band_names = {"R", "G", "B"};
@@ -75,18 +84,13 @@ std::string write_envi(const fs::path& output, const demosaic::RgbImage& image,
     const std::string type_name = io::envi_type_name(h.data_type);
 
     io::EnviWriter writer(output, std::move(h));
-    const std::size_t line_values = image.width * 3;
-    for (std::size_t y = 0; y < image.height; ++y) {
-        ctx.cancel.throw_if_cancelled();
-        writer.write_line(std::span<const double>(image.rgb).subspan(y * line_values, line_values));
-        ctx.progress.update("demosaic-write", y + 1, image.height);
-    }
+    demosaic_pass(source, provenance.used, "demosaic", ctx,
+                  [&writer](std::size_t, std::span<const double> rgb) { writer.write_line(rgb); });
     writer.commit();
-    ctx.progress.finish("demosaic-write", image.height);
     return type_name;
 }
 
-void write_picture(const Options& o, io::OutputKind kind, const demosaic::RgbImage& image,
+void write_picture(const Options& o, io::OutputKind kind, const MosaicSource& source,
                    const Provenance& provenance, Result& result, Context& ctx) {
     const io::ImageFormat format = io::image_format_of(kind);
     const io::PixelType type = io::output_pixel_type(format, o.bit_depth, o.output);
@@ -95,9 +99,9 @@ void write_picture(const Options& o, io::OutputKind kind, const demosaic::RgbIma
     if (o.min) {
         result.limits = io::StretchLimits{*o.min, *o.max};
     } else if (o.percent) {
-        result.limits = data_limits(image, *o.percent, ctx);
+        result.limits = data_limits(source, provenance.used, *o.percent, ctx);
     } else if (!o.raw && (integer || gamma != 1.0)) {
-        result.limits = data_limits(image, 0.0, ctx);
+        result.limits = data_limits(source, provenance.used, 0.0, ctx);
     }
     if (result.limits) {
         ctx.log.info("stretch [" + format_shortest(result.limits->low) + ", " +
@@ -113,19 +117,18 @@ void write_picture(const Options& o, io::OutputKind kind, const demosaic::RgbIma
     write.date_time_s = ctx.source_date_epoch_s;
     write.description = "glint-demosaic: " + describe(provenance);
     const double scale = integer ? io::pixel_type_max(type) : 1.0;
-    io::ImageWriter writer(o.output, image.width, image.height, 3, write);
-    std::vector<double> line(image.width * 3);
-    for (std::size_t y = 0; y < image.height; ++y) {
-        ctx.cancel.throw_if_cancelled();
-        for (std::size_t i = 0; i < line.size(); ++i) {
-            const double v = image.rgb[y * line.size() + i];
-            line[i] = result.limits ? scale * io::stretch_value(v, *result.limits, gamma) : v;
-        }
-        writer.write_line(line);
-        ctx.progress.update("demosaic-write", y + 1, image.height);
-    }
+    io::ImageWriter writer(o.output, source.width, source.height, 3, write);
+    std::vector<double> line(source.width * 3);
+    demosaic_pass(source, provenance.used, "demosaic", ctx,
+                  [&](std::size_t, std::span<const double> rgb) {
+                      for (std::size_t i = 0; i < line.size(); ++i) {
+                          line[i] = result.limits
+                                        ? scale * io::stretch_value(rgb[i], *result.limits, gamma)
+                                        : rgb[i];
+                      }
+                      writer.write_line(line);
+                  });
     writer.commit();
-    ctx.progress.finish("demosaic-write", image.height);
 }
 
 }  // namespace glint::app_demosaic::internal

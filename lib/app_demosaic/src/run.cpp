@@ -2,6 +2,8 @@
 // glint-demosaic's entry point: option names and checks, the output kind, then read →
 // demosaic → write (the stages are in source.cpp and output.cpp).
 
+#include <cmath>
+
 #include "glint/core/atomic_file.h"
 #include "glint/core/error.h"
 #include "glint/core/runner.h"
@@ -120,6 +122,23 @@ demosaic::DemosaicOptions resolve(const Options& o, const internal::MosaicSource
     return used;
 }
 
+/// Refuses a mosaic so wide that the demosaic's window of lines and its output lines would
+/// need more than kMaxWorkingBytes.
+void check_working_memory(const internal::MosaicSource& source, demosaic::DemosaicMethod method) {
+    const double line_bytes = static_cast<double>(source.width) * 3 * sizeof(double);
+    const double needed =
+        static_cast<double>(demosaic::DemosaicStream::bytes_held(source.width, method)) +
+        2 * line_bytes;
+    if (needed <= static_cast<double>(kMaxWorkingBytes)) return;
+    const auto mib = [](double bytes) { return std::to_string(std::llround(bytes / 1048576.0)); };
+    throw input_error("a line of " + std::to_string(source.width) + " pixels needs " +
+                          mib(needed) + " MiB of working memory for the " +
+                          demosaic::demosaic_method_name(method) +
+                          " demosaic (a window of lines); glint-demosaic refuses over " +
+                          mib(static_cast<double>(kMaxWorkingBytes)) + " MiB",
+                      ErrorContext{source.path.string(), 0, {}});
+}
+
 }  // namespace
 
 demosaic::CfaPattern parse_pattern(const std::string& name) {
@@ -142,7 +161,7 @@ demosaic::DemosaicMethod parse_method(const std::string& name) {
 Result demosaic_file(const Options& o, Context& ctx) {
     const OutputKind kind = io::output_kind_of(o.output, o.format);
     check_options(o, kind);
-    const internal::MosaicSource source = internal::read_mosaic(o.input, ctx);
+    const internal::MosaicSource source = internal::open_mosaic(o.input);
     ensure_not_an_input(o.output, source.files);
     if (kind == OutputKind::envi) {
         fs::path header = o.output;
@@ -152,25 +171,17 @@ Result demosaic_file(const Options& o, Context& ctx) {
     Result result;
     result.kind = kind;
     result.used = resolve(o, source, ctx);
-    result.width = source.plane.width;
-    result.height = source.plane.height;
+    result.width = source.width;
+    result.height = source.height;
+    check_working_memory(source, result.used.method);
     const internal::Provenance provenance{o.input, result.used, ctx.command_line()};
     ctx.log.info("demosaicing " + o.input.string() + " (" + std::to_string(result.width) + " x " +
                  std::to_string(result.height) + ", " + source.type_name +
                  "): " + internal::describe(provenance) + " to " + o.output.string());
-
-    demosaic::RgbImage image;
-    try {
-        image = demosaic::demosaic(source.plane, result.used, &ctx.cancel);
-    } catch (const Error& e) {
-        if (e.category() != ErrorCategory::input) throw;
-        throw e.with_file(o.input.string());
-    }
     if (kind == OutputKind::envi) {
-        result.stored_type =
-            internal::write_envi(o.output, image, source, provenance, o.data_type, ctx);
+        result.stored_type = internal::write_envi(o.output, source, provenance, o.data_type, ctx);
     } else {
-        internal::write_picture(o, kind, image, provenance, result, ctx);
+        internal::write_picture(o, kind, source, provenance, result, ctx);
     }
     return result;
 }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// Reading the mosaic of glint-demosaic: a one-band ENVI file (any data type, through
-// io::EnviReader) or a one-channel image (through io::ImageReader), into doubles.
+// The mosaic of glint-demosaic: a one-band ENVI file (any data type, through io::EnviReader)
+// or a one-channel image (through io::ImageReader), described once and read line by line as
+// doubles, once per pass.
+#include <memory>
 #include <string>
 
 #include "glint/core/error.h"
@@ -18,53 +20,59 @@ Error not_one_band(const fs::path& path, std::size_t bands) {
         ErrorContext{path.string(), 0, {}});
 }
 
-MosaicSource read_envi(const fs::path& path, Context& ctx) {
-    io::EnviReader reader(path);
-    const io::EnviHeader& h = reader.header();
-    if (h.bands != 1) throw not_one_band(path, h.bands);
-    MosaicSource source;
-    source.envi = h;
-    source.type_name = io::envi_type_name(h.data_type);
-    source.files = {reader.data_path(), reader.header_path()};
-    source.plane = {h.samples, h.lines, std::vector<double>(h.samples * h.lines)};
-    for (std::size_t y = 0; y < h.lines; ++y) {
-        ctx.cancel.throw_if_cancelled();
-        reader.read_line(y,
-                         std::span<double>(source.plane.values).subspan(y * h.samples, h.samples));
-        ctx.progress.update("demosaic-read", y + 1, h.lines);
-    }
-    ctx.progress.finish("demosaic-read", h.lines);
-    return source;
-}
-
-MosaicSource read_picture(const fs::path& path, Context& ctx) {
-    io::ImageReader reader(path);
-    const io::ImageInfo& info = reader.info();
-    if (info.channels != 1) throw not_one_band(path, info.channels);
-    MosaicSource source;
-    source.type_name = io::sample_type_name(info.sample_type);
-    source.files = {path};
-    source.plane = {info.width, info.height, std::vector<double>(info.width * info.height)};
-    for (std::size_t y = 0; y < info.height; ++y) {
-        ctx.cancel.throw_if_cancelled();
-        reader.read_line(
-            y, std::span<double>(source.plane.values).subspan(y * info.width, info.width));
-        ctx.progress.update("demosaic-read", y + 1, info.height);
-    }
-    ctx.progress.finish("demosaic-read", info.height);
-    return source;
-}
-
-}  // namespace
-
-MosaicSource read_mosaic(const fs::path& path, Context& ctx) {
+/// Adds the mosaic's name to an error that lacks one (cancellation passes unchanged).
+template <typename Function>
+auto naming_errors(const fs::path& path, Function&& function) {
     try {
-        if (io::image_format_from_extension(path)) return read_picture(path, ctx);
-        return read_envi(path, ctx);
+        return function();
     } catch (const Error& e) {
         if (e.category() == ErrorCategory::cancelled) throw;
         throw e.with_file(path.string());
     }
+}
+
+}  // namespace
+
+MosaicSource open_mosaic(const fs::path& path) {
+    return naming_errors(path, [&path] {
+        MosaicSource source;
+        source.path = path;
+        if (io::image_format_from_extension(path)) {
+            const io::ImageReader reader(path);
+            const io::ImageInfo& info = reader.info();
+            if (info.channels != 1) throw not_one_band(path, info.channels);
+            source.width = info.width;
+            source.height = info.height;
+            source.type_name = io::sample_type_name(info.sample_type);
+            source.files = {path};
+            return source;
+        }
+        const io::EnviReader reader(path);
+        const io::EnviHeader& h = reader.header();
+        if (h.bands != 1) throw not_one_band(path, h.bands);
+        source.width = h.samples;
+        source.height = h.lines;
+        source.envi = h;
+        source.type_name = io::envi_type_name(h.data_type);
+        source.files = {reader.data_path(), reader.header_path()};
+        return source;
+    });
+}
+
+demosaic::MosaicLineReader line_reader(const MosaicSource& source) {
+    const fs::path path = source.path;
+    if (source.envi) {
+        auto reader = std::make_shared<io::EnviReader>(
+            naming_errors(path, [&path] { return io::EnviReader(path); }));
+        return [reader, path](std::size_t y, std::span<double> out) {
+            naming_errors(path, [&] { reader->read_line(y, out); });
+        };
+    }
+    auto reader = std::make_shared<io::ImageReader>(
+        naming_errors(path, [&path] { return io::ImageReader(path); }));
+    return [reader, path](std::size_t y, std::span<double> out) {
+        naming_errors(path, [&] { reader->read_line(y, out); });
+    };
 }
 
 }  // namespace glint::app_demosaic::internal

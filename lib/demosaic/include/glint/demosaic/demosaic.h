@@ -25,7 +25,10 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
+#include <memory>
 #include <optional>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -74,9 +77,52 @@ struct DemosaicOptions {
     DemosaicMethod method = DemosaicMethod::bilinear;
 };
 
-/// Demosaics `mosaic`. Throws glint::Error: usage when the method does not apply to the
-/// pattern, input when the plane is smaller than one block of the pattern (cfa_period) or its
-/// values do not match its size, cancelled when `cancel` is raised (polled once per line).
+/// Reads line `y` of a mosaic (width values, line 0 at the top) into `out`.
+using MosaicLineReader = std::function<void(std::size_t y, std::span<double> out)>;
+
+namespace internal {
+class LineDemosaicker;
+}
+
+/// Demosaics an image line by line. An output line depends only on the mosaic lines within a
+/// few lines of it (2 for the Bayer methods, 4 for pan-guided), so the stream asks `read` for
+/// each mosaic line once, in increasing order, as the output reaches it, and holds a window
+/// of lines (bytes_held), whatever the image's height. The values equal a whole-image
+/// computation's to the bit.
+class DemosaicStream {
+public:
+    /// Throws glint::Error: usage when the method does not apply to the pattern, input when
+    /// the image is smaller than one block of the pattern (cfa_period).
+    DemosaicStream(std::size_t width, std::size_t height, const DemosaicOptions& options,
+                   MosaicLineReader read);
+    ~DemosaicStream();
+    DemosaicStream(const DemosaicStream&) = delete;
+    DemosaicStream& operator=(const DemosaicStream&) = delete;
+
+    std::size_t width() const { return m_width; }
+    std::size_t height() const { return m_height; }
+    /// The next output line, 0 first: width × 3 values R, G, B. `rgb` must hold exactly that
+    /// many; asking past the last line is an internal error.
+    void next_line(std::span<double> rgb);
+
+    /// The most bytes a stream over an image `width` pixels wide holds with `method` (its
+    /// windows of lines; the caller's output line is not included).
+    static std::size_t bytes_held(std::size_t width, DemosaicMethod method);
+
+private:
+    std::size_t m_width;
+    std::size_t m_height;
+    std::size_t m_next = 0;
+    std::unique_ptr<internal::LineDemosaicker> m_lines;
+};
+
+/// Throws glint::Error (usage) when `options.method` does not apply to `options.pattern`.
+void check_method(const DemosaicOptions& options);
+
+/// Demosaics `mosaic` in memory (through a DemosaicStream). Throws glint::Error: usage when
+/// the method does not apply to the pattern, input when the plane is smaller than one block of
+/// the pattern (cfa_period), internal when its values do not match its size, cancelled when
+/// `cancel` is raised (polled once per line).
 RgbImage demosaic(const Plane& mosaic, const DemosaicOptions& options,
                   const CancelToken* cancel = nullptr);
 
