@@ -9,6 +9,6 @@ int main(int argc, char** argv) {
         {"demosaic",
          "Demosaic a Bayer or TrueSense colour filter array image into R, G, B "
          "(ENVI, PNG, TIFF, JPEG, EXR, PPM)",
-         glint::kCommonBasic},
+         glint::kCommonMaxMemory},
         argc, argv);
 }

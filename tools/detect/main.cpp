@@ -10,6 +10,6 @@ int main(int argc, char** argv) {
         {"detect",
          "Turn a radiometric product (Photons/cm2) into digital counts: QE, shot, dark and read "
          "noise, ADC, TDI accumulation and CFA mosaic of a focal plane",
-         glint::kCommonSeed | glint::kCommonThreads},
+         glint::kCommonSeed | glint::kCommonThreads | glint::kCommonMaxMemory},
         argc, argv);
 }

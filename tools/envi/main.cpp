@@ -9,6 +9,6 @@ int main(int argc, char** argv) {
         {"envi",
          "Inspect and convert ENVI files: info, stats, convert (to and from images), "
          "encode (frames to video)",
-         glint::kCommonBasic},
+         glint::kCommonMaxMemory},
         argc, argv);
 }

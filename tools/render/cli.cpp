@@ -3,6 +3,7 @@
 #include "cli.h"
 
 #include "glint/core/runner.h"
+#include "glint/core/text.h"
 
 namespace glint::tools::render {
 
@@ -41,6 +42,7 @@ void RenderCli::configure(CLI::App& app) {
                  "Print the plan (captures, pixels, outputs, memory estimate) and trace nothing");
     app.add_option("--max-memory", m_max_memory,
                    "Cap the memory of the ray-tracing scene (bytes, or with K, M, G, T)")
+        ->check(byte_size())
         ->type_name("SIZE");
     app.add_option("--max-instances", m_options.read.max_instances,
                    "Most scene instances nested glists may expand to (counted before building)")
@@ -72,7 +74,7 @@ int RenderCli::execute(Context& ctx, std::ostream& out) {
         render.convergence = app_render::parse_convergence(m_convergence);
     }
     if (app.count("--max-memory") > 0) {
-        render.device.max_memory_bytes = app_render::parse_memory_size(m_max_memory);
+        render.device.max_memory_bytes = *parse_byte_size(m_max_memory);  // checked by byte_size()
     }
     render.device.isa = m_isa;
     render.device.threads = ctx.threads;

@@ -2,8 +2,6 @@
 // glint-demosaic's entry point: option names and checks, the output kind, then read →
 // demosaic → write (the stages are in source.cpp and output.cpp).
 
-#include <cmath>
-
 #include "glint/core/atomic_file.h"
 #include "glint/core/error.h"
 #include "glint/core/runner.h"
@@ -123,19 +121,19 @@ demosaic::DemosaicOptions resolve(const Options& o, const internal::MosaicSource
 }
 
 /// Refuses a mosaic so wide that the demosaic's window of lines and its output lines would
-/// need more than kMaxWorkingBytes.
-void check_working_memory(const internal::MosaicSource& source, demosaic::DemosaicMethod method) {
+/// need more than --max-memory.
+void check_working_memory(const internal::MosaicSource& source, demosaic::DemosaicMethod method,
+                          std::size_t max_memory_bytes) {
     const double line_bytes = static_cast<double>(source.width) * 3 * sizeof(double);
     const double needed =
         static_cast<double>(demosaic::DemosaicStream::bytes_held(source.width, method)) +
         2 * line_bytes;
-    if (needed <= static_cast<double>(kMaxWorkingBytes)) return;
-    const auto mib = [](double bytes) { return std::to_string(std::llround(bytes / 1048576.0)); };
+    if (needed <= static_cast<double>(max_memory_bytes)) return;
     throw input_error("a line of " + std::to_string(source.width) + " pixels needs " +
-                          mib(needed) + " MiB of working memory for the " +
+                          format_byte_size(needed) + " of working memory for the " +
                           demosaic::demosaic_method_name(method) +
-                          " demosaic (a window of lines); glint-demosaic refuses over " +
-                          mib(static_cast<double>(kMaxWorkingBytes)) + " MiB",
+                          " demosaic (a window of lines), over --max-memory " +
+                          format_byte_size(static_cast<double>(max_memory_bytes)),
                       ErrorContext{source.path.string(), 0, {}});
 }
 
@@ -161,7 +159,7 @@ demosaic::DemosaicMethod parse_method(const std::string& name) {
 Result demosaic_file(const Options& o, Context& ctx) {
     const OutputKind kind = io::output_kind_of(o.output, o.format);
     check_options(o, kind);
-    const internal::MosaicSource source = internal::open_mosaic(o.input);
+    const internal::MosaicSource source = internal::open_mosaic(o.input, ctx.max_memory_bytes);
     ensure_not_an_input(o.output, source.files);
     if (kind == OutputKind::envi) {
         fs::path header = o.output;
@@ -173,7 +171,7 @@ Result demosaic_file(const Options& o, Context& ctx) {
     result.used = resolve(o, source, ctx);
     result.width = source.width;
     result.height = source.height;
-    check_working_memory(source, result.used.method);
+    check_working_memory(source, result.used.method, ctx.max_memory_bytes);
     const internal::Provenance provenance{o.input, result.used, ctx.command_line()};
     ctx.log.info("demosaicing " + o.input.string() + " (" + std::to_string(result.width) + " x " +
                  std::to_string(result.height) + ", " + source.type_name +

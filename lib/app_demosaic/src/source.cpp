@@ -33,12 +33,13 @@ auto naming_errors(const fs::path& path, Function&& function) {
 
 }  // namespace
 
-MosaicSource open_mosaic(const fs::path& path) {
-    return naming_errors(path, [&path] {
+MosaicSource open_mosaic(const fs::path& path, std::size_t max_memory_bytes) {
+    return naming_errors(path, [&path, max_memory_bytes] {
         MosaicSource source;
         source.path = path;
+        source.max_memory_bytes = max_memory_bytes;
         if (io::image_format_from_extension(path)) {
-            const io::ImageReader reader(path);
+            const io::ImageReader reader(path, max_memory_bytes);
             const io::ImageInfo& info = reader.info();
             if (info.channels != 1) throw not_one_band(path, info.channels);
             source.width = info.width;
@@ -47,7 +48,7 @@ MosaicSource open_mosaic(const fs::path& path) {
             source.files = {path};
             return source;
         }
-        const io::EnviReader reader(path);
+        const io::EnviReader reader(path, io::EnviReader::LineUse::read_lines, max_memory_bytes);
         const io::EnviHeader& h = reader.header();
         if (h.bands != 1) throw not_one_band(path, h.bands);
         source.width = h.samples;
@@ -61,15 +62,17 @@ MosaicSource open_mosaic(const fs::path& path) {
 
 demosaic::MosaicLineReader line_reader(const MosaicSource& source) {
     const fs::path path = source.path;
+    const std::size_t max_memory = source.max_memory_bytes;
     if (source.envi) {
-        auto reader = std::make_shared<io::EnviReader>(
-            naming_errors(path, [&path] { return io::EnviReader(path); }));
+        auto reader = std::make_shared<io::EnviReader>(naming_errors(path, [&path, max_memory] {
+            return io::EnviReader(path, io::EnviReader::LineUse::read_lines, max_memory);
+        }));
         return [reader, path](std::size_t y, std::span<double> out) {
             naming_errors(path, [&] { reader->read_line(y, out); });
         };
     }
     auto reader = std::make_shared<io::ImageReader>(
-        naming_errors(path, [&path] { return io::ImageReader(path); }));
+        naming_errors(path, [&path, max_memory] { return io::ImageReader(path, max_memory); }));
     return [reader, path](std::size_t y, std::span<double> out) {
         naming_errors(path, [&] { reader->read_line(y, out); });
     };

@@ -19,14 +19,16 @@ struct MosaicSource {
     std::filesystem::path path;
     std::size_t width = 0;
     std::size_t height = 0;
+    std::size_t max_memory_bytes = kDefaultMaxMemoryBytes;  ///< --max-memory, for the readers
     std::optional<io::EnviHeader> envi;        ///< the header, for ENVI inputs
     std::string type_name;                     ///< "uint16", "float32", ...
     std::vector<std::filesystem::path> files;  ///< every file read (overwrite checks)
 };
 
 /// Opens a one-band ENVI file, or an image when the name has an image extension, and
-/// describes it. Throws glint::Error naming the file.
-MosaicSource open_mosaic(const std::filesystem::path& path);
+/// describes it. Throws glint::Error naming the file (also for a line over the readers' share
+/// of `max_memory_bytes`, glint/io/line_memory.h).
+MosaicSource open_mosaic(const std::filesystem::path& path, std::size_t max_memory_bytes);
 
 /// A reader of the mosaic's lines as doubles, over its own handle on the file (one per pass);
 /// its errors name the file.

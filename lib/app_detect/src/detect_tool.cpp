@@ -98,7 +98,7 @@ Result detect_file(const Options& options, Context& ctx) {
     const std::string input_name = options.input.string();
     std::optional<io::EnviReader> reader;
     try {
-        reader.emplace(options.input);
+        reader.emplace(options.input, io::EnviReader::LineUse::read_lines, ctx.max_memory_bytes);
     } catch (const Error& e) {
         throw e.with_file(input_name);
     }

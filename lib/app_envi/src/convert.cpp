@@ -325,7 +325,7 @@ ConvertResult convert_file(const ConvertOptions& o, Context& ctx) {
     check_options(o, kind);
     std::unique_ptr<RasterSource> source;
     try {
-        source = RasterSource::open(o.input);
+        source = RasterSource::open(o.input, ctx.max_memory_bytes);
     } catch (const Error& e) {
         throw e.with_file(o.input.string());
     }

@@ -16,7 +16,8 @@ namespace fs = std::filesystem;
 
 class EnviSource final : public RasterSource {
 public:
-    explicit EnviSource(const fs::path& path) : m_reader(path) {
+    EnviSource(const fs::path& path, std::size_t max_memory_bytes)
+        : m_reader(path, io::EnviReader::LineUse::read_lines, max_memory_bytes) {
         m_path = path;
         m_envi = m_reader.header();
         m_width = m_envi->samples;
@@ -34,7 +35,8 @@ private:
 
 class ImageSource final : public RasterSource {
 public:
-    explicit ImageSource(const fs::path& path) : m_reader(path) {
+    ImageSource(const fs::path& path, std::size_t max_memory_bytes)
+        : m_reader(path, max_memory_bytes) {
         m_path = path;
         m_image = m_reader.info();
         m_width = m_image->width;
@@ -70,9 +72,10 @@ bool is_envi_path(const fs::path& path) {
            !io::image_format_from_extension(path);
 }
 
-std::unique_ptr<RasterSource> RasterSource::open(const fs::path& path) {
-    if (is_envi_path(path)) return std::make_unique<EnviSource>(path);
-    return std::make_unique<ImageSource>(path);
+std::unique_ptr<RasterSource> RasterSource::open(const fs::path& path,
+                                                 std::size_t max_memory_bytes) {
+    if (is_envi_path(path)) return std::make_unique<EnviSource>(path, max_memory_bytes);
+    return std::make_unique<ImageSource>(path, max_memory_bytes);
 }
 
 std::string format_number(double value, int precision) {

@@ -25,7 +25,8 @@ bool is_envi_path(const std::filesystem::path& path);
 class RasterSource {
 public:
     /// Opens `path` as ENVI or as an image; throws glint::Error naming the file.
-    static std::unique_ptr<RasterSource> open(const std::filesystem::path& path);
+    static std::unique_ptr<RasterSource> open(const std::filesystem::path& path,
+                                              std::size_t max_memory_bytes);
     virtual ~RasterSource() = default;
 
     std::size_t width() const { return m_width; }

@@ -92,7 +92,7 @@ std::string stat_text(double v) { return std::isnan(v) ? "-" : format_number(v, 
 
 StatsReport compute_stats(const fs::path& file, Context& ctx) {
     try {
-        auto source = internal::RasterSource::open(file);
+        auto source = internal::RasterSource::open(file, ctx.max_memory_bytes);
         StatsReport report;
         report.file = file;
         report.samples = source->width();

@@ -53,36 +53,6 @@ radiometry::Convergence parse_convergence(const std::string& text) {
     return {static_cast<std::uint64_t>(min), static_cast<std::uint64_t>(max), threshold};
 }
 
-std::uint64_t parse_memory_size(const std::string& text) {
-    std::string number = text;
-    std::string suffix;
-    while (!number.empty() && std::isalpha(static_cast<unsigned char>(number.back()))) {
-        suffix.insert(suffix.begin(),
-                      static_cast<char>(std::toupper(static_cast<unsigned char>(number.back()))));
-        number.pop_back();
-    }
-    if (suffix == "B") suffix.clear();
-    if (suffix.size() == 3 && suffix.substr(1) == "IB") suffix = suffix.substr(0, 1);
-    if (suffix.size() == 2 && suffix[1] == 'B') suffix = suffix.substr(0, 1);
-    double scale = 1.0;
-    if (suffix == "K")
-        scale = 1024.0;
-    else if (suffix == "M")
-        scale = 1024.0 * 1024.0;
-    else if (suffix == "G")
-        scale = 1024.0 * 1024.0 * 1024.0;
-    else if (suffix == "T")
-        scale = 1024.0 * 1024.0 * 1024.0 * 1024.0;
-    else if (!suffix.empty()) {
-        throw usage_error("--max-memory: unknown unit in \"" + text + "\" (use K, M, G or T)");
-    }
-    const double value = parse_number(number, "--max-memory");
-    if (!(value > 0) || value * scale > 1.8e19) {
-        throw usage_error("--max-memory: expected a size > 0, got \"" + text + "\"");
-    }
-    return static_cast<std::uint64_t>(value * scale);
-}
-
 std::filesystem::path default_data_dir() {
     DataDirCandidates candidates;
     if (const char* dir = std::getenv("GLINT_DATA_DIR"); dir != nullptr) {

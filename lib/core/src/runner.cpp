@@ -166,6 +166,18 @@ CLI::Validator whole_number(std::uint64_t max) {
         "", "whole number");
 }
 
+CLI::Validator byte_size() {
+    return CLI::Validator(
+        [](std::string& text) -> std::string {
+            const std::optional<std::uint64_t> bytes = parse_byte_size(text);
+            if (!bytes || *bytes == 0 || *bytes > SIZE_MAX) {
+                return quote(text) + " is not a size in bytes above 0 (such as 512M, 1.5G or 8G)";
+            }
+            return {};
+        },
+        "", "size");
+}
+
 void add_common_flags(CLI::App& app, CommonOptions& options, unsigned which) {
     app.add_flag("-v,--verbose", options.verbosity, "More messages on stderr (-v info, -vv debug)");
     app.add_flag("-q,--quiet", options.quiet, "Only errors on stderr; no progress line");
@@ -183,6 +195,17 @@ void add_common_flags(CLI::App& app, CommonOptions& options, unsigned which) {
             ->check(whole_number())
             ->type_name("N")
             ->capture_default_str();
+    }
+    if ((which & kCommonMaxMemory) != 0) {
+        app.add_option_function<std::string>(
+               "--max-memory",
+               [&options](const std::string& text) {
+                   options.max_memory_bytes = static_cast<std::size_t>(*parse_byte_size(text));
+               },
+               "Working memory for line buffers: bytes, or with K, M, G, T (powers of 1024); "
+               "wider inputs are refused with what they need (default 4G)")
+            ->check(byte_size())
+            ->type_name("SIZE");
     }
 }
 
@@ -229,6 +252,7 @@ int run_tool(const ToolSpec& spec, int argc, const char* const* argv, const Tool
     Context context;
     context.threads = common.threads;
     context.seed = common.seed;
+    context.max_memory_bytes = common.max_memory_bytes;
     // The program by its name, not the path it was started from: the provenance in outputs
     // stays the same wherever glint is installed.
     context.arguments.assign(argv, argv + argc);

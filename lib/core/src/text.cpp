@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <system_error>
 
@@ -122,6 +123,54 @@ std::optional<std::int64_t> parse_int(std::string_view text) {
     const auto [ptr, ec] = std::from_chars(body->data(), end, value, 10);
     if (ec != std::errc() || ptr != end) return std::nullopt;
     return value;
+}
+
+std::optional<std::uint64_t> parse_byte_size(std::string_view text) {
+    const std::string_view value = trim(text);
+    std::size_t end = 0;
+    while (end < value.size() &&
+           ((value[end] >= '0' && value[end] <= '9') || value[end] == '.')) {
+        ++end;
+    }
+    if (end == 0 || value[0] == '.' || value.substr(0, end).find('.') != value.rfind('.', end)) {
+        return std::nullopt;
+    }
+    double count = 0;
+    const auto [ptr, ec] = std::from_chars(value.data(), value.data() + end, count);
+    if (ec != std::errc() || ptr != value.data() + end) return std::nullopt;
+    std::string unit = to_lower(trim(value.substr(end)));
+    if (unit.size() == 3 && unit.ends_with("ib")) unit.resize(1);
+    if (unit.size() == 2 && unit.back() == 'b') unit.resize(1);
+    double scale = 1.0;
+    if (unit == "k") {
+        scale = 0x1p10;
+    } else if (unit == "m") {
+        scale = 0x1p20;
+    } else if (unit == "g") {
+        scale = 0x1p30;
+    } else if (unit == "t") {
+        scale = 0x1p40;
+    } else if (!unit.empty() && unit != "b") {
+        return std::nullopt;
+    }
+    const double bytes = std::floor(count * scale);
+    if (!(bytes < 0x1p64)) return std::nullopt;
+    return static_cast<std::uint64_t>(bytes);
+}
+
+std::string format_byte_size(double bytes) {
+    if (bytes < 1024.0) return std::to_string(static_cast<long long>(bytes)) + " bytes";
+    static const char* const kUnits[] = {"KiB", "MiB", "GiB", "TiB"};
+    double value = bytes / 1024.0;
+    std::size_t unit = 0;
+    while (value >= 1024.0 && unit + 1 < std::size(kUnits)) {
+        value /= 1024.0;
+        ++unit;
+    }
+    char text[32];
+    std::snprintf(text, sizeof text, value < 10 ? "%.2f %s" : value < 100 ? "%.1f %s" : "%.0f %s",
+                  value, kUnits[unit]);
+    return text;
 }
 
 std::optional<bool> parse_bool(std::string_view text) {

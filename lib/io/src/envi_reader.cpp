@@ -123,7 +123,8 @@ struct EnviReader::Impl {
     }
 };
 
-EnviReader::EnviReader(const std::filesystem::path& path, LineUse line_use)
+EnviReader::EnviReader(const std::filesystem::path& path, LineUse line_use,
+                       std::size_t max_memory_bytes)
     : m_impl(std::make_unique<Impl>()) {
     std::string extension = path.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
@@ -183,18 +184,7 @@ EnviReader::EnviReader(const std::filesystem::path& path, LineUse line_use)
         m_impl->describe_only = true;
         return;
     }
-    // Readers hold a few lines as doubles: a line of 10⁹ samples (a sparse data file can
-    // claim one) would need 8 GB each. Refuse before any buffer is allocated.
-    const double line_bytes = static_cast<double>(m_impl->line_values) * sizeof(double);
-    if (line_bytes > static_cast<double>(kMaxLineBytes)) {
-        throw input_error(
-            "one line holds " + std::to_string(m_header.samples) + " samples x " +
-                std::to_string(m_header.bands) + " bands, " +
-                std::to_string(static_cast<long long>(std::ceil(line_bytes / (1 << 20)))) +
-                " MiB as doubles; glint reads ENVI images line by line and refuses lines over " +
-                std::to_string(kMaxLineBytes >> 20) + " MiB",
-            ErrorContext{m_header_path.string(), 0, {}});
-    }
+    check_line_memory(m_header.samples, m_header.bands, max_memory_bytes, m_header_path);
     if (m_header.interleave != Interleave::bip) {
         m_impl->stored.resize(m_impl->line_values * m_header.value_bytes());
     }

@@ -2,6 +2,7 @@
 // Image reading and writing through OpenImageIO. OIIO's errors are collected right after
 // each failing call and rethrown as glint::Error naming the file.
 #include "glint/io/image.h"
+#include "glint/io/line_memory.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -251,7 +252,8 @@ struct ImageReader::Impl {
     std::vector<unsigned char> scratch;
 };
 
-ImageReader::ImageReader(const fs::path& path) : m_impl(std::make_unique<Impl>()), m_path(path) {
+ImageReader::ImageReader(const fs::path& path, std::size_t max_memory_bytes)
+    : m_impl(std::make_unique<Impl>()), m_path(path) {
     std::error_code ec;
     if (!fs::exists(path, ec)) throw input_error("no such file", at_file(path));
     if (fs::is_directory(path, ec)) {
@@ -281,6 +283,7 @@ ImageReader::ImageReader(const fs::path& path) : m_impl(std::make_unique<Impl>()
     m_info.format_name = m_impl->input->format_name();
     m_impl->read_type = read_type;
     m_impl->y_origin = spec.y;
+    check_line_memory(m_info.width, m_info.channels, max_memory_bytes, path);
     m_impl->scratch.resize(m_info.width * m_info.channels * read_type.size());
 }
 

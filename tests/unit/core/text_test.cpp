@@ -57,5 +57,31 @@ TEST(Utf8, ValidityAndReplacement) {
     EXPECT_TRUE(is_valid_utf8(to_valid_utf8("\xC0\xAF\xED\xA0\x80\xF8")));
 }
 
+TEST(ByteSize, ParsesBytesAndBinarySuffixes) {
+    EXPECT_EQ(parse_byte_size("1073741824"), std::uint64_t{1} << 30);
+    EXPECT_EQ(parse_byte_size("512M"), std::uint64_t{512} << 20);
+    EXPECT_EQ(parse_byte_size("4GiB"), std::uint64_t{4} << 30);
+    EXPECT_EQ(parse_byte_size(" 2 kb "), std::uint64_t{2048});
+    EXPECT_EQ(parse_byte_size("1.5G"), std::uint64_t{3} << 29);
+    EXPECT_EQ(parse_byte_size("0.5K"), std::uint64_t{512});
+    EXPECT_EQ(parse_byte_size("100B"), std::uint64_t{100});
+    EXPECT_EQ(parse_byte_size("16777215T"), std::uint64_t{16777215} << 40);
+    EXPECT_EQ(parse_byte_size("0"), std::uint64_t{0});  // callers refuse 0 themselves
+    for (const char* bad : {"", "G", "-1", "+1", "12X", "1..5G", ".5G", "1.5.G", "1 G B",
+                            "16777216T", "18446744073709551616", "1e3", "nanG"}) {
+        EXPECT_FALSE(parse_byte_size(bad).has_value()) << bad;
+    }
+}
+
+TEST(ByteSize, FormatsThreeSignificantDigits) {
+    EXPECT_EQ(format_byte_size(0), "0 bytes");
+    EXPECT_EQ(format_byte_size(1023), "1023 bytes");
+    EXPECT_EQ(format_byte_size(1024), "1.00 KiB");
+    EXPECT_EQ(format_byte_size(34304), "33.5 KiB");
+    EXPECT_EQ(format_byte_size(256.0 * 1024 * 1024), "256 MiB");
+    EXPECT_EQ(format_byte_size(8e9), "7.45 GiB");
+    EXPECT_EQ(format_byte_size(3.0 * 0x1p50), "3072 TiB");
+}
+
 }  // namespace
 }  // namespace glint::test

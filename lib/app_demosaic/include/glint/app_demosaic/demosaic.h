@@ -3,8 +3,9 @@
 // OpenImageIO reads) demosaiced (lib/demosaic) to three bands R, G, B, written as ENVI or as
 // PNG/TIFF/JPEG/EXR/PPM through OpenImageIO, atomically. The image is streamed: a
 // demosaic::DemosaicStream reads the mosaic line by line and each output line is written as it
-// is made, so memory holds a window of lines (a few dozen lines' worth at most, see
-// kMaxWorkingBytes), whatever the height. A stretch whose limits come from the data reads the
+// is made, so memory holds a window of lines (a few dozen lines' worth at most), whatever the
+// height; a mosaic so wide that the window would pass the context's --max-memory is refused
+// with the memory it needs (pan-guided: 536 bytes per pixel of width). A stretch whose limits come from the data reads the
 // mosaic once more (min/max) or twice more (percentiles) before writing.
 //
 // Output kind: `format` (png, tiff, jpeg, exr, ppm, envi), else the output's extension
@@ -46,11 +47,6 @@
 #include "glint/io/stretch.h"
 
 namespace glint::app_demosaic {
-
-/// The most working memory glint-demosaic takes for its window of lines and output lines; a
-/// wider mosaic is refused with the memory it would need (a pan-guided demosaic of a line of
-/// 10 million pixels needs about 5 GiB).
-inline constexpr std::size_t kMaxWorkingBytes = std::size_t{4} << 30;
 
 /// Options of glint-demosaic.
 struct Options {

@@ -30,10 +30,6 @@ struct Options {
 /// glint::Error (usage) naming the option.
 radiometry::Convergence parse_convergence(const std::string& text);
 
-/// Parses --max-memory's size: bytes, or a number with K, M, G or T (powers of 1024;
-/// optional trailing "B" or "iB"). Throws glint::Error (usage).
-std::uint64_t parse_memory_size(const std::string& text);
-
 /// The data folder: $GLINT_DATA_DIR when set, else <exe dir>/../share/glint when it holds
 /// solar/astm_g173.csv (an installed glint), else the source tree's data/ this build was
 /// configured from (glint::data_dir_lookup, glint/core/install_paths.h).

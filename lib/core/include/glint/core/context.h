@@ -18,6 +18,10 @@ namespace glint {
 /// Default `--seed` of every tool: fixed, so that two runs without --seed are identical.
 inline constexpr std::uint64_t kDefaultSeed = 1;
 
+/// Default `--max-memory` of the tools that read images line by line: what their line
+/// buffers and windows of lines may take together.
+inline constexpr std::size_t kDefaultMaxMemoryBytes = std::size_t{4} << 30;
+
 /// What a library entry point needs besides its options.
 struct Context {
     Log log;
@@ -25,6 +29,9 @@ struct Context {
     CancelToken cancel;
     unsigned threads = 0;  ///< 0 = all hardware threads
     std::uint64_t seed = kDefaultSeed;
+    /// --max-memory: the working memory a line-by-line tool may plan for its buffers; inputs
+    /// that would need more are refused with what they need.
+    std::size_t max_memory_bytes = kDefaultMaxMemoryBytes;
     /// The command line, program first by its name ("glint-render"), the arguments as typed
     /// (the runner records it once; outputs carry it as provenance). Empty when a library
     /// entry point is called directly.

@@ -31,6 +31,7 @@ struct CommonOptions {
     std::string progress_file;          ///< --progress FILE: key=value progress lines
     unsigned threads = 0;               ///< --threads N (0 = all cores)
     std::uint64_t seed = kDefaultSeed;  ///< --seed N
+    std::size_t max_memory_bytes = kDefaultMaxMemoryBytes;  ///< --max-memory SIZE
 };
 
 /// Which optional common flags a tool offers (help, version, verbose, quiet and progress are
@@ -39,6 +40,7 @@ enum CommonFlag : unsigned {
     kCommonBasic = 0,
     kCommonThreads = 1u << 0,
     kCommonSeed = 1u << 1,
+    kCommonMaxMemory = 1u << 2,
 };
 
 /// A CLI11 check for options holding unsigned whole numbers: decimal digits only, at most
@@ -46,7 +48,12 @@ enum CommonFlag : unsigned {
 /// with this check both are usage errors naming the option's range.
 CLI::Validator whole_number(std::uint64_t max = UINT64_MAX);
 
-/// Adds -v/--verbose, -q/--quiet, --progress and, per `which`, --threads and --seed.
+/// A CLI11 check for sizes in bytes (parse_byte_size): above 0 and at most SIZE_MAX, else a
+/// usage error naming the value and an example.
+CLI::Validator byte_size();
+
+/// Adds -v/--verbose, -q/--quiet, --progress and, per `which`, --threads, --seed and
+/// --max-memory.
 void add_common_flags(CLI::App& app, CommonOptions& options, unsigned which);
 
 /// What the runner needs to know about a tool.

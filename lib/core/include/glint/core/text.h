@@ -58,6 +58,14 @@ std::string_view trim(std::string_view text) noexcept;
 std::optional<double> parse_double(std::string_view text);
 /// Parses a whole string as a base-10 integer; nullopt otherwise (or on overflow).
 std::optional<std::int64_t> parse_int(std::string_view text);
+/// Parses a size in bytes: a number (digits, one optional decimal point), optionally followed
+/// by K, M, G or T (powers of 1024, any case, optionally with "iB" or "B": "512M", "1.5G",
+/// "4GiB", "1073741824"), rounded down to whole bytes; nullopt for anything else or a size of
+/// 2^64 bytes or more.
+std::optional<std::uint64_t> parse_byte_size(std::string_view text);
+/// A size for messages: "160 bytes" below 1 KiB, else three significant digits of KiB, MiB,
+/// GiB or TiB ("3.44 MiB", "10.0 GiB").
+std::string format_byte_size(double bytes);
 /// true/false/1/0/yes/no in any case; nullopt otherwise.
 std::optional<bool> parse_bool(std::string_view text);
 /// Splits "a, b,c" on commas (or `separator`), trimming each item; empty items dropped.

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "glint/core/atomic_file.h"
+#include "glint/io/line_memory.h"
 
 namespace glint::io {
 
@@ -110,22 +111,21 @@ std::filesystem::path envi_header_path_for(const std::filesystem::path& data_pat
 /// `x.img`, `x.dat`, `x.raw` or `x.bin`, whichever exists; a data path is returned as is.
 std::filesystem::path envi_data_path_for(const std::filesystem::path& path);
 
-/// The largest line an EnviReader opens, as doubles (256 MiB: 3.3·10⁷ values, e.g. 10⁵
-/// samples × 335 bands); a header claiming more is an input error naming the need.
-inline constexpr std::size_t kMaxLineBytes = std::size_t{256} << 20;
 
 /// Streams an ENVI file line by line. Any interleave and byte order; values are delivered
 /// in BIP order (for each sample, all bands) and native byte order.
 class EnviReader {
 public:
-    /// What the reader is opened for: reading lines (a line over kMaxLineBytes is refused),
+    /// What the reader is opened for: reading lines (a line over `max_memory_bytes` /
+    /// kLinesPerMaxMemory as doubles is refused, line_memory.h),
     /// or only describing the file (header and data size checked; no line may be read).
     enum class LineUse { read_lines, describe_only };
 
     /// Opens the data file (or its header), parses and validates the header and checks that
     /// the data file holds at least header offset + data bytes.
     explicit EnviReader(const std::filesystem::path& path,
-                        LineUse line_use = LineUse::read_lines);
+                        LineUse line_use = LineUse::read_lines,
+                        std::size_t max_memory_bytes = kDefaultMaxMemoryBytes);
     ~EnviReader();
     EnviReader(EnviReader&&) noexcept;
 

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "glint/core/atomic_file.h"
+#include "glint/io/line_memory.h"
 
 namespace glint::io {
 
@@ -69,8 +70,10 @@ struct ImageInfo {
 /// Reads an image line by line (top line first), channels interleaved, as code values.
 class ImageReader {
 public:
-    /// Opens the file; throws glint::Error naming it when it is missing or unreadable.
-    explicit ImageReader(const std::filesystem::path& path);
+    /// Opens the file; throws glint::Error naming it when it is missing or unreadable, or when
+    /// a line is over `max_memory_bytes` / kLinesPerMaxMemory as doubles (line_memory.h).
+    explicit ImageReader(const std::filesystem::path& path,
+                         std::size_t max_memory_bytes = kDefaultMaxMemoryBytes);
     ~ImageReader();
     ImageReader(ImageReader&&) noexcept;
 
