@@ -17,11 +17,7 @@ constexpr const char* kWrittenFiles =
 /// `-` where a file is needed: a usage error before anything is read or written.
 void refuse_stdio_names(const Options& options) {
     switch (options.subcommand) {
-        case Subcommand::info:
-            for (const auto& file : options.info.files) {
-                refuse_stdio_name(file, StdioRole::input, "an input of glint-envi info",
-                                  kEnviFiles);
-            }
+        case Subcommand::info:  // "-" is a header on standard input
             return;
         case Subcommand::stats:
             refuse_stdio_name(options.stats.file, StdioRole::input, "the input of glint-envi stats",

@@ -2,11 +2,14 @@
 // `glint-envi info`: text and JSON reports of ENVI headers.
 #include "glint/app_envi/info.h"
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "glint/core/error.h"
 #include "glint/core/json_text.h"
+#include "glint/core/stdio_name.h"
+#include "glint/io/input_files.h"
 #include "source.h"
 
 namespace glint::app_envi {
@@ -34,7 +37,9 @@ nlohmann::ordered_json info_json(const fs::path& file, const io::EnviHeader& h,
                                  const fs::path& data_path, const fs::path& header_path) {
     nlohmann::ordered_json j;
     j["file"] = file.string();
-    j["data_file"] = data_path.string();
+    // A header read from standard input has no data file beside it.
+    j["data_file"] =
+        data_path.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(data_path.string());
     j["header_file"] = header_path.string();
     j["description"] = h.description;
     j["samples"] = h.samples;
@@ -89,7 +94,9 @@ std::string format_info_text(const fs::path& file, const io::EnviHeader& h,
                              const fs::path& data_path, const fs::path& header_path) {
     std::ostringstream out;
     out << file.string() << '\n';
-    field(out, "data file", data_path.string());
+    field(out, "data file",
+          data_path.empty() ? "(none: header from standard input, no data file checked)"
+                            : data_path.string());
     field(out, "header file", header_path.string());
     if (!h.description.empty()) field(out, "description", h.description);
     field(out, "samples", std::to_string(h.samples));
@@ -146,22 +153,43 @@ std::string format_info_json(const fs::path& file, const io::EnviHeader& header,
     return json_text(info_json(file, header, data_path, header_path), 2);
 }
 
+namespace {
+
+/// A header and where it came from: a file (checked against its data file) or standard input.
+struct Described {
+    io::EnviHeader header;
+    fs::path data_path;  ///< empty for standard input
+    fs::path header_path;
+};
+
+Described describe(const fs::path& file) {
+    if (is_stdio_name(file)) {
+        const std::string text = io::read_standard_input(io::kMaxEnviHeaderBytes, "header");
+        return {io::parse_envi_header(text, io::kStandardInputName), {}, file};
+    }
+    const io::EnviReader reader(file, io::EnviReader::LineUse::describe_only);
+    return {reader.header(), reader.data_path(), reader.header_path()};
+}
+
+}  // namespace
+
 int report_info(const InfoOptions& options, Context& ctx, std::ostream& out) {
     if (options.files.empty()) throw usage_error("no files to report on");
+    if (std::count_if(options.files.begin(), options.files.end(), is_stdio_name) > 1) {
+        throw usage_error("standard input ('-') can be named once");
+    }
     int status = 0;
     nlohmann::ordered_json all = nlohmann::ordered_json::array();
     bool first = true;
     for (const auto& file : options.files) {
         ctx.cancel.throw_if_cancelled();
         try {
-            io::EnviReader reader(file, io::EnviReader::LineUse::describe_only);
+            const Described d = describe(file);
             if (options.format == ReportFormat::json) {
-                all.push_back(
-                    info_json(file, reader.header(), reader.data_path(), reader.header_path()));
+                all.push_back(info_json(file, d.header, d.data_path, d.header_path));
             } else {
                 if (!first) out << '\n';
-                out << format_info_text(file, reader.header(), reader.data_path(),
-                                        reader.header_path());
+                out << format_info_text(file, d.header, d.data_path, d.header_path);
                 first = false;
             }
         } catch (const Error& e) {

@@ -11,6 +11,7 @@
 #include "glint/app_platform2jsim/platform_json.h"
 #include "glint/core/atomic_file.h"
 #include "glint/core/error.h"
+#include "glint/core/stdio_name.h"
 #include "glint/core/json_text.h"
 #include "glint/core/text.h"
 #include "glint/dirsig/readers.h"
@@ -103,6 +104,26 @@ model::Plugin basic_platform_plugin(const Options& options) {
     plugin.basic_platform = std::move(in);
     plugin.where = ErrorContext{{}, 0, "--platform"};
     return plugin;
+}
+
+/// "-" names standard input or output; only the .jsim written (-o -) may be it.
+void refuse_stdio_names(const Options& o) {
+    const auto refuse = [](const fs::path& path, const std::string& what) {
+        refuse_stdio_name(path, StdioRole::input, what + " of glint-platform2jsim",
+                          kSimulationNeedsFile);
+    };
+    refuse(o.input, "the input");
+    for (const fs::path& file : o.check_files) refuse(file, "a file to check");
+    refuse(o.platform, "the --platform file");
+    refuse(o.motion, "the --motion file");
+    refuse(o.tasks, "the --tasks file");
+    if (o.scene) refuse(*o.scene, "the --scene file");
+    if (o.atmosphere) refuse(*o.atmosphere, "the --atmosphere file");
+    if (o.mode == Mode::append) {
+        refuse_stdio_name(o.output, StdioRole::output,
+                          "the .jsim that glint-platform2jsim --append rewrites",
+                          "append reads the existing file and replaces it");
+    }
 }
 
 int run_convert(const Options& options, Context& ctx, std::ostream& out) {
@@ -268,6 +289,7 @@ int run_dump(const Options& options, Context& ctx, std::ostream& out) {
 }  // namespace
 
 int run(const Options& options, Context& ctx, std::ostream& out) {
+    refuse_stdio_names(options);
     if (options.output_prefix) {
         if (const auto problem = model::output_name_problem(*options.output_prefix)) {
             throw usage_error("--output_prefix " + quote(*options.output_prefix) + " " +

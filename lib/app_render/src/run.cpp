@@ -8,6 +8,7 @@
 
 #include "glint/app_render/render_tool.h"
 #include "glint/core/error.h"
+#include "glint/core/stdio_name.h"
 #include "glint/core/install_paths.h"
 #include "glint/core/runner.h"
 #include "glint/core/text.h"
@@ -64,6 +65,8 @@ std::filesystem::path default_data_dir() {
 }
 
 int run(const Options& options, Context& ctx, std::ostream& out) {
+    refuse_stdio_name(options.input, StdioRole::input, "the simulation of glint-render",
+                      kSimulationNeedsFile);
     sensor::RenderOptions render = options.render;
     render.schedule.seed = ctx.seed;
     render.version = version();

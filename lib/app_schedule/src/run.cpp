@@ -6,6 +6,7 @@
 
 #include "glint/app_schedule/schedule_tool.h"
 #include "glint/core/error.h"
+#include "glint/core/stdio_name.h"
 #include "glint/inputs/load.h"
 #include "output.h"
 #include "writers.h"
@@ -46,6 +47,8 @@ std::optional<schedule::Schedule> load(const Options& options, Context& ctx) {
 
 void check_options(const Options& options) {
     if (options.input.empty()) throw usage_error("no simulation given: glint-schedule SIM.jsim");
+    refuse_stdio_name(options.input, StdioRole::input, "the simulation of glint-schedule",
+                      kSimulationNeedsFile);
     if (options.summary && !options.log_info_file.empty()) {
         throw usage_error("--log_info_filename cannot be combined with --summary");
     }

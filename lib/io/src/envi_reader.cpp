@@ -22,11 +22,8 @@
 namespace glint::io {
 namespace {
 
-/// Headers are a few kB (50 kB for 2,500 bands); anything far larger is not a header.
-constexpr std::size_t kMaxHeaderBytes = std::size_t{16} << 20;
-
 std::string read_header_text(const std::filesystem::path& path) {
-    return read_input_file(path, path.string(), kMaxHeaderBytes, "header");
+    return read_input_file(path, path.string(), kMaxEnviHeaderBytes, "header");
 }
 
 /// Reads exactly `size` bytes at `offset`.

@@ -40,7 +40,34 @@ Error too_large(std::size_t max_bytes, const std::string& name) {
         ErrorContext{name, 0, {}});
 }
 
+/// Reads `fd` to its end, at most `max_bytes` bytes; `reserve` bytes are expected.
+std::string read_all(int fd, std::size_t reserve, const std::string& name, std::size_t max_bytes,
+                     std::string_view kind) {
+    std::string text;
+    if (reserve > 0) text.reserve(reserve + kChunkBytes);  // no growth at the end
+    // One byte more than the cap is asked for, to tell "exactly max_bytes" from "more".
+    while (text.size() <= max_bytes) {
+        const std::size_t old_size = text.size();
+        const std::size_t want = std::min(kChunkBytes, max_bytes + 1 - old_size);
+        text.resize(old_size + want);
+        const ssize_t n = ::read(fd, text.data() + old_size, want);
+        if (n < 0) {
+            const int code = errno;
+            text.resize(old_size);
+            if (code == EINTR) continue;
+            throw io_error("cannot read " + std::string(kind) + ": " + errno_text(code), name);
+        }
+        text.resize(old_size + static_cast<std::size_t>(n));
+        if (n == 0) return text;
+    }
+    throw too_large(max_bytes, name);
+}
+
 }  // namespace
+
+std::string read_standard_input(std::size_t max_bytes, std::string_view kind) {
+    return read_all(STDIN_FILENO, 0, kStandardInputName, max_bytes, kind);
+}
 
 std::string read_input_file(const std::filesystem::path& path, const std::string& display_name,
                             std::size_t max_bytes, std::string_view kind) {
@@ -60,29 +87,14 @@ std::string read_input_file(const std::filesystem::path& path, const std::string
         const int code = errno;
         throw io_error("cannot open " + std::string(kind) + ": " + errno_text(code), name);
     }
-    std::string text;
+    std::size_t reserve = 0;
     struct stat info {};
     if (::fstat(fd.get(), &info) == 0 && S_ISREG(info.st_mode) && info.st_size > 0) {
         const auto size = static_cast<std::uintmax_t>(info.st_size);
         if (size > max_bytes) throw too_large(max_bytes, name);
-        text.reserve(static_cast<std::size_t>(size) + kChunkBytes);  // no growth at the end
+        reserve = static_cast<std::size_t>(size);
     }
-    // One byte more than the cap is asked for, to tell "exactly max_bytes" from "more".
-    while (text.size() <= max_bytes) {
-        const std::size_t old_size = text.size();
-        const std::size_t want = std::min(kChunkBytes, max_bytes + 1 - old_size);
-        text.resize(old_size + want);
-        const ssize_t n = ::read(fd.get(), text.data() + old_size, want);
-        if (n < 0) {
-            const int code = errno;
-            text.resize(old_size);
-            if (code == EINTR) continue;
-            throw io_error("cannot read " + std::string(kind) + ": " + errno_text(code), name);
-        }
-        text.resize(old_size + static_cast<std::size_t>(n));
-        if (n == 0) return text;
-    }
-    throw too_large(max_bytes, name);
+    return read_all(fd.get(), reserve, name, max_bytes, kind);
 }
 
 std::filesystem::path InputFiles::key(const std::filesystem::path& path) {

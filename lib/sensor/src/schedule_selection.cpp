@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "glint/core/error.h"
+#include "glint/core/stdio_name.h"
 #include "glint/core/text.h"
 #include "glint/io/input_files.h"
 #include "glint/sensor/render.h"
@@ -20,9 +21,13 @@ constexpr std::size_t kMaxScheduleBytes = std::size_t{2} << 30;
 }  // namespace
 
 std::set<std::uint64_t> read_schedule_selection(const std::filesystem::path& file) {
+    // "-": the schedule piped in (glint-schedule ... --format json | jq ... | glint-render
+    // --schedule - ...).
+    const bool piped = is_stdio_name(file);
     const std::string text =
-        io::read_input_file(file, file.string(), kMaxScheduleBytes, "schedule file");
-    const ErrorContext where{file.string(), 0, {}};
+        piped ? io::read_standard_input(kMaxScheduleBytes, "schedule")
+              : io::read_input_file(file, file.string(), kMaxScheduleBytes, "schedule file");
+    const ErrorContext where{piped ? io::kStandardInputName : file.string(), 0, {}};
     nlohmann::json json;
     try {
         json = nlohmann::json::parse(text);

@@ -29,4 +29,8 @@ inline void refuse_stdio_name(const std::filesystem::path& path, StdioRole role,
     }
 }
 
+/// Why a simulation (or a file it is made of) cannot come from standard input.
+inline constexpr const char* kSimulationNeedsFile =
+    "a simulation's files name each other relative to their own folders";
+
 }  // namespace glint

@@ -99,6 +99,9 @@ void validate_envi_header(const EnviHeader& header, const std::string& file);
 /// absent, as ENVI does), known data type code, positive sizes, no 64-bit overflow, list
 /// lengths equal to `bands`.
 EnviHeader parse_envi_header(std::string_view text, const std::string& file);
+/// The most bytes of a header glint reads: headers are a few kB (50 kB for 2,500 bands), so
+/// anything far larger is not a header.
+inline constexpr std::size_t kMaxEnviHeaderBytes = std::size_t{16} << 20;
 /// Formats header text as described at the top of this file.
 std::string format_envi_header(const EnviHeader& header);
 /// Makes a band name safe for a brace list: `,` `{` `}` become `;` `(` `)`, newlines spaces.

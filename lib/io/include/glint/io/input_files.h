@@ -32,6 +32,13 @@ inline constexpr std::size_t kMaxInputBytes = std::size_t{256} << 20;
 std::string read_input_file(const std::filesystem::path& path, const std::string& display_name = {},
                             std::size_t max_bytes = kMaxInputBytes, std::string_view kind = "file");
 
+/// How messages name standard input.
+inline constexpr const char* kStandardInputName = "(standard input)";
+
+/// Reads standard input to its end as text, at most `max_bytes` bytes, for the inputs a tool
+/// accepts as "-". Throws glint::Error as read_input_file does, naming "(standard input)".
+std::string read_standard_input(std::size_t max_bytes, std::string_view kind = "input");
+
 /// The files one load reads. Not thread-safe: one load, one thread.
 class InputFiles {
 public:
