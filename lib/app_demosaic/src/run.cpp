@@ -185,10 +185,7 @@ Result demosaic_file(const Options& o, Context& ctx) {
 }
 
 int run(const Options& options, Context& ctx, std::ostream& /*out*/) {
-    refuse_stdio_name(options.input, StdioRole::input, "the input of glint-demosaic",
-                      "an ENVI image is two files (data and header) read by offset");
-    refuse_stdio_name(options.output, StdioRole::output, "the output of glint-demosaic",
-                      "outputs are written through a temporary file and renamed when complete");
+    refuse_stdio_image_files(options.input, options.output, "glint-demosaic");
     demosaic_file(options, ctx);
     return kExitSuccess;
 }

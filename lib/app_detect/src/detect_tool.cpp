@@ -182,10 +182,7 @@ Result detect_file(const Options& options, Context& ctx) {
 }
 
 int run(const Options& options, Context& ctx, std::ostream& /*out*/) {
-    refuse_stdio_name(options.input, StdioRole::input, "the input of glint-detect",
-                      "an ENVI image is two files (data and header) read by offset");
-    refuse_stdio_name(options.output, StdioRole::output, "the output of glint-detect",
-                      "outputs are written through a temporary file and renamed when complete");
+    refuse_stdio_image_files(options.input, options.output, "glint-detect");
     detect_file(options, ctx);
     return kExitSuccess;
 }

@@ -10,10 +10,6 @@ namespace glint::app_envi {
 
 namespace {
 
-constexpr const char* kEnviFiles = "an ENVI image is two files (data and header) read by offset";
-constexpr const char* kWrittenFiles =
-    "outputs are written through a temporary file and renamed when complete";
-
 /// `-` where a file is needed: a usage error before anything is read or written.
 void refuse_stdio_names(const Options& options) {
     switch (options.subcommand) {
@@ -21,21 +17,19 @@ void refuse_stdio_names(const Options& options) {
             return;
         case Subcommand::stats:
             refuse_stdio_name(options.stats.file, StdioRole::input, "the input of glint-envi stats",
-                              kEnviFiles);
+                              kImageInputNeedsFile);
             return;
         case Subcommand::convert:
-            refuse_stdio_name(options.convert.input, StdioRole::input,
-                              "the input of glint-envi convert", kEnviFiles);
-            refuse_stdio_name(options.convert.output, StdioRole::output,
-                              "the output of glint-envi convert", kWrittenFiles);
+            refuse_stdio_image_files(options.convert.input, options.convert.output,
+                                     "glint-envi convert");
             return;
         case Subcommand::encode:
             for (const auto& frame : options.encode.frames) {
                 refuse_stdio_name(frame, StdioRole::input, "an input of glint-envi encode",
-                                  kEnviFiles);
+                                  kImageInputNeedsFile);
             }
             refuse_stdio_name(options.encode.output, StdioRole::output,
-                              "the output of glint-envi encode", kWrittenFiles);
+                              "the output of glint-envi encode", kOutputNeedsFile);
             return;
     }
 }

@@ -69,9 +69,7 @@ bool report(const LoadedInputs& inputs, Context& ctx, bool writes) {
     inputs.diagnostics.log_to(ctx.log);
     if (!inputs.diagnostics.has_errors()) return false;
     if (writes) {
-        const std::size_t n = inputs.diagnostics.error_count();
-        ctx.log.error("nothing written: " + std::to_string(n) + " error" + (n == 1 ? "" : "s") +
-                      " in the inputs");
+        ctx.log.error(nothing_written_message(inputs.diagnostics.error_count()));
     }
     return true;
 }

@@ -38,9 +38,7 @@ std::optional<schedule::Schedule> load(const Options& options, Context& ctx) {
         if (e.category() != ErrorCategory::input) throw;
         if (!diagnostics.has_errors()) diagnostics.add(e);
         diagnostics.log_to(ctx.log);
-        const std::size_t n = diagnostics.error_count();
-        ctx.log.error("nothing written: " + std::to_string(n) + " error" + (n == 1 ? "" : "s") +
-                      " in the inputs");
+        ctx.log.error(nothing_written_message(diagnostics.error_count()));
         return std::nullopt;
     }
 }

@@ -41,6 +41,11 @@ void Diagnostics::throw_if_errors() const {
     }
 }
 
+std::string nothing_written_message(std::size_t errors) {
+    return "nothing written: " + std::to_string(errors) + " error" + (errors == 1 ? "" : "s") +
+           " in the inputs";
+}
+
 void Diagnostics::log_and_rethrow(const Error& error, const Log& log) const {
     log_to(log);
     if (error.category() != ErrorCategory::input || m_errors == 0) throw error;
@@ -56,8 +61,7 @@ void Diagnostics::log_and_rethrow(const Error& error, const Log& log) const {
         log.error(error.what());
         ++count;
     }
-    throw input_error("nothing written: " + std::to_string(count) + " error" +
-                      (count == 1 ? "" : "s") + " in the inputs");
+    throw input_error(nothing_written_message(count));
 }
 
 }  // namespace glint

@@ -12,6 +12,7 @@
 
 #include "envi_text.h"
 #include "glint/core/error.h"
+#include "glint/core/text.h"
 #include "glint/io/envi.h"
 
 namespace glint::io {
@@ -52,13 +53,6 @@ std::string normalize_key(std::string_view key) {
         out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     }
     return out;
-}
-
-std::string quote_text(std::string_view text) {
-    constexpr std::size_t kMaxShown = 60;
-    std::string shown(text.substr(0, kMaxShown));
-    if (text.size() > kMaxShown) shown += "...";
-    return "\"" + shown + "\"";
 }
 
 std::string_view brace_content(std::string_view value) {
@@ -117,7 +111,6 @@ const TypeInfo* find_type(EnviDataType type) {
 using detail::brace_content;
 using detail::is_standard_key;
 using detail::normalize_key;
-using detail::quote_text;
 using detail::split_list;
 using detail::trim;
 
@@ -140,7 +133,7 @@ std::vector<Entry> split_entries(std::string_view text, const std::string& file)
     std::string_view first = lines.front();
     if (first.substr(0, kBom.size()) == kBom) first.remove_prefix(kBom.size());
     if (trim(first) != "ENVI") {
-        throw input_error("missing ENVI magic: the first line is " + quote_text(trim(first)) +
+        throw input_error("missing ENVI magic: the first line is " + quote(trim(first)) +
                               ", expected \"ENVI\"",
                           ErrorContext{file, 1, {}});
     }
@@ -151,7 +144,7 @@ std::vector<Entry> split_entries(std::string_view text, const std::string& file)
         if (line.empty() || line.front() == ';') continue;
         const std::size_t equals = line.find('=');
         if (equals == std::string_view::npos || trim(line.substr(0, equals)).empty()) {
-            throw input_error("expected \"key = value\", got " + quote_text(line),
+            throw input_error("expected \"key = value\", got " + quote(line),
                               ErrorContext{file, line_number, {}});
         }
         Entry entry{normalize_key(line.substr(0, equals)),
@@ -182,10 +175,10 @@ std::uint64_t parse_unsigned(const Entry& entry, const std::string& file, bool p
     std::uint64_t value = 0;
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (text.empty() || end != text.data() + text.size()) {
-        throw input_error(std::string(what) + ", got " + quote_text(text), context);
+        throw input_error(std::string(what) + ", got " + quote(text), context);
     }
     if (ec == std::errc::result_out_of_range) {
-        throw input_error(std::string(what) + " below 2^64, got " + quote_text(text), context);
+        throw input_error(std::string(what) + " below 2^64, got " + quote(text), context);
     }
     if (positive && value == 0) throw input_error("must be at least 1, got 0", context);
     return value;
@@ -199,7 +192,7 @@ double parse_number(std::string_view item, const Entry& entry, const std::string
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (text.empty() || end != text.data() + text.size() || ec != std::errc()) {
         throw input_error(
-            "value " + std::to_string(index + 1) + " is not a number: " + quote_text(item),
+            "value " + std::to_string(index + 1) + " is not a number: " + quote(item),
             ErrorContext{file, entry.line, entry.key});
     }
     return value;
@@ -338,7 +331,7 @@ void validate_envi_header(const EnviHeader& header, const std::string& file) {
     for (const auto& [key, value] : header.extra) {
         const std::string normalized = normalize_key(key);
         if (normalized.empty() || key.find_first_of("=\n\r{}") != std::string::npos) {
-            throw input_error("invalid header key " + quote_text(key), ErrorContext{file, 0, {}});
+            throw input_error("invalid header key " + quote(key), ErrorContext{file, 0, {}});
         }
         if (is_standard_key(normalized)) {
             throw input_error("is a standard key and cannot be an extra key",
@@ -387,7 +380,7 @@ EnviHeader parse_envi_header(std::string_view text, const std::string& file) {
     const auto [end, ec] =
         std::from_chars(code_text.data(), code_text.data() + code_text.size(), code);
     if (code_text.empty() || ec != std::errc() || end != code_text.data() + code_text.size()) {
-        throw input_error("expected an ENVI data type code, got " + quote_text(code_text),
+        throw input_error("expected an ENVI data type code, got " + quote(code_text),
                           ErrorContext{file, type_entry.line, type_entry.key});
     }
     const std::optional<EnviDataType> type = envi_type_from_code(code);
@@ -410,7 +403,7 @@ EnviHeader parse_envi_header(std::string_view text, const std::string& file) {
         } else if (value == "bip") {
             header.interleave = Interleave::bip;
         } else {
-            throw input_error("expected bsq, bil or bip, got " + quote_text(entry->value),
+            throw input_error("expected bsq, bil or bip, got " + quote(entry->value),
                               ErrorContext{file, entry->line, entry->key});
         }
     } else {
@@ -424,7 +417,7 @@ EnviHeader parse_envi_header(std::string_view text, const std::string& file) {
             header.byte_order = ByteOrder::big;
         } else {
             throw input_error(
-                "expected 0 (little-endian) or 1 (big-endian), got " + quote_text(value),
+                "expected 0 (little-endian) or 1 (big-endian), got " + quote(value),
                 ErrorContext{file, entry->line, entry->key});
         }
     }

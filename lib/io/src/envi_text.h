@@ -17,8 +17,6 @@ bool is_space(char c);
 std::string_view trim(std::string_view text);
 /// Lowercase, surrounding blanks removed, inner runs of blanks collapsed to one space.
 std::string normalize_key(std::string_view key);
-/// `"text"`, shortened to 60 characters, for error messages.
-std::string quote_text(std::string_view text);
 /// The text between braces (trimmed), or the whole value when it has none.
 std::string_view brace_content(std::string_view value);
 /// The comma-separated items of a brace value, each trimmed; `{}` gives none.

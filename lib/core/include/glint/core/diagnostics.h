@@ -23,6 +23,10 @@ struct Diagnostic {
     std::string text() const { return format_located(where, message); }
 };
 
+/// The one-line summary of a run stopped by its inputs: "nothing written: N error(s) in the
+/// inputs".
+std::string nothing_written_message(std::size_t errors);
+
 /// An ordered list of diagnostics. Readers add to it and go on; the caller decides when
 /// errors are fatal (throw_if_errors) and where warnings go (log_to).
 class Diagnostics {

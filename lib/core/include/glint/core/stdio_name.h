@@ -29,6 +29,21 @@ inline void refuse_stdio_name(const std::filesystem::path& path, StdioRole role,
     }
 }
 
+/// Why an image input cannot come from standard input.
+inline constexpr const char* kImageInputNeedsFile =
+    "an ENVI image is two files (data and header) read by offset";
+/// Why an image output cannot go to standard output.
+inline constexpr const char* kOutputNeedsFile =
+    "outputs are written through a temporary file and renamed when complete";
+
+/// Refuses "-" as the image input or the output of `tool` ("glint-detect").
+inline void refuse_stdio_image_files(const std::filesystem::path& input,
+                                     const std::filesystem::path& output,
+                                     const std::string& tool) {
+    refuse_stdio_name(input, StdioRole::input, "the input of " + tool, kImageInputNeedsFile);
+    refuse_stdio_name(output, StdioRole::output, "the output of " + tool, kOutputNeedsFile);
+}
+
 /// Why a simulation (or a file it is made of) cannot come from standard input.
 inline constexpr const char* kSimulationNeedsFile =
     "a simulation's files name each other relative to their own folders";
