@@ -1,5 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// read_schedule_selection: the capture indices of a glint-schedule JSON file (--schedule).
+// read_schedule_selection: the capture indices of a glint-schedule JSON file (--schedule),
+// read by a SAX handler that keeps only them.
+#include <optional>
+#include <set>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -15,8 +18,101 @@ namespace glint::sensor {
 namespace {
 
 /// The largest schedule file read (2 GiB): a glint-schedule JSON of the 10⁶ captures one
-/// render plans is about 1 GB; anything larger is not one.
+/// render plans is about 2 GB; anything larger is not one.
 constexpr std::size_t kMaxScheduleBytes = std::size_t{2} << 30;
+
+using Json = nlohmann::json;
+
+/// Reads what a selection needs — the top-level "format" and each captures[].index — as the
+/// parser goes (SAX), without building the document: a glint-schedule JSON holds some 2 kB per
+/// capture, and its document tree would take several times the text.
+class SelectionReader final : public nlohmann::json_sax<Json> {
+public:
+    std::optional<std::string> format;
+    bool has_captures = false;
+    bool captures_is_array = false;
+    std::optional<std::size_t> bad_capture;  ///< the first capture without a valid index
+    std::optional<std::string> parse_problem;
+    std::set<std::uint64_t> indices;
+
+    bool null() override { return scalar(); }
+    bool boolean(bool) override { return scalar(); }
+    bool number_integer(number_integer_t) override { return scalar(); }
+    bool number_unsigned(number_unsigned_t value) override {
+        if (in_capture() && m_key == "index") {
+            indices.insert(value);
+            m_capture_has_index = true;
+            return true;
+        }
+        return scalar();
+    }
+    bool number_float(number_float_t, const string_t&) override { return scalar(); }
+    bool string(string_t& value) override {
+        if (m_depth == 1 && m_key == "format") format = value;
+        return scalar();
+    }
+    bool binary(binary_t&) override { return scalar(); }
+    bool key(string_t& value) override {
+        m_key = value;
+        return true;
+    }
+    bool start_object(std::size_t) override { return open(true); }
+    bool end_object() override {
+        if (in_capture() && !m_capture_has_index) note_bad_capture();
+        return close();
+    }
+    bool start_array(std::size_t) override { return open(false); }
+    bool end_array() override { return close(); }
+    bool parse_error(std::size_t, const std::string&,
+                     const nlohmann::detail::exception& error) override {
+        parse_problem = error.what();
+        return false;
+    }
+
+private:
+    /// Inside a captures[] element (an object directly in the top-level "captures" array).
+    bool in_capture() const { return m_depth == 3 && m_in_captures; }
+    /// A direct element of the top-level "captures" array.
+    bool at_capture_element() const { return m_depth == 2 && m_in_captures; }
+
+    bool scalar() {
+        if (m_depth == 1 && m_key == "captures") has_captures = true;
+        if (at_capture_element()) {
+            note_bad_capture();
+            ++m_capture;
+        }
+        return true;
+    }
+    bool open(bool object) {
+        if (m_depth == 1 && m_key == "captures") {
+            has_captures = true;
+            captures_is_array = !object;
+            m_in_captures = !object;
+        } else if (at_capture_element()) {
+            if (!object) note_bad_capture();
+            m_capture_has_index = false;
+        }
+        ++m_depth;
+        m_key.clear();
+        return true;
+    }
+    bool close() {
+        --m_depth;
+        if (at_capture_element()) ++m_capture;
+        if (m_depth == 1) m_in_captures = false;
+        m_key.clear();
+        return true;
+    }
+    void note_bad_capture() {
+        if (!bad_capture) bad_capture = m_capture;
+    }
+
+    std::size_t m_depth = 0;  ///< containers open around the current value
+    std::string m_key;        ///< the current object key at this depth
+    bool m_in_captures = false;
+    std::size_t m_capture = 0;  ///< index of the current captures[] element
+    bool m_capture_has_index = false;
+};
 
 }  // namespace
 
@@ -28,34 +124,26 @@ std::set<std::uint64_t> read_schedule_selection(const std::filesystem::path& fil
         piped ? io::read_standard_input(kMaxScheduleBytes, "schedule")
               : io::read_input_file(file, file.string(), kMaxScheduleBytes, "schedule file");
     const ErrorContext where{piped ? io::kStandardInputName : file.string(), 0, {}};
-    nlohmann::json json;
-    try {
-        json = nlohmann::json::parse(text);
-    } catch (const nlohmann::json::exception& e) {  // parse_error, or out_of_range (1e999)
-        throw input_error("not JSON: " + quote(e.what()), where);
+    SelectionReader reader;
+    if (!Json::sax_parse(text, &reader) || reader.parse_problem) {
+        throw input_error("not JSON: " + quote(reader.parse_problem.value_or("parse error")),
+                          where);
     }
-    if (!json.is_object() || json.value("format", "") != "glint-schedule") {
+    if (reader.format != "glint-schedule") {
         throw input_error("not a glint-schedule file (expected \"format\": \"glint-schedule\"; "
                           "write one with glint-schedule --format json)",
                           where);
     }
-    const auto captures = json.find("captures");
-    if (captures == json.end() || !captures->is_array()) {
+    if (!reader.captures_is_array) {
         throw input_error("the schedule has no \"captures\" array", where);
     }
-    std::set<std::uint64_t> indices;
-    for (std::size_t i = 0; i < captures->size(); ++i) {
-        const nlohmann::json& capture = (*captures)[i];
-        if (!capture.is_object() || !capture.contains("index") ||
-            !capture["index"].is_number_unsigned()) {
-            throw input_error("captures[" + std::to_string(i) +
-                                  "] has no non-negative integer \"index\"",
-                              where);
-        }
-        indices.insert(capture["index"].get<std::uint64_t>());
+    if (reader.bad_capture) {
+        throw input_error("captures[" + std::to_string(*reader.bad_capture) +
+                              "] has no non-negative integer \"index\"",
+                          where);
     }
-    if (indices.empty()) throw input_error("the schedule selects no capture", where);
-    return indices;
+    if (reader.indices.empty()) throw input_error("the schedule selects no capture", where);
+    return reader.indices;
 }
 
 }  // namespace glint::sensor
