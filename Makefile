@@ -3,6 +3,7 @@
 # CMakePresets.json and scripts/; this file only strings them together.
 #   make demo   install what is missing, build, run the default example
 #   make test   install what is missing, build, run the whole test suite (ctest)
+#   make test-asan   the unit and CLI suites again under ASan + UBSan (CI runs both)
 #   make install   install the build under PREFIX (default /usr/local; docs/install.md)
 #   make package   the .deb (cpack -G DEB) in build/<preset>/
 # PRESET=debug or PRESET=asan selects another build (default: release).
@@ -11,7 +12,7 @@ PRESET ?= release
 BUILD_DIR := build/$(PRESET)
 PREFIX ?= /usr/local
 
-.PHONY: all deps configure build test demo bench clean format install package
+.PHONY: all deps configure build test test-asan demo bench clean format install package
 
 all: build
 
@@ -26,6 +27,13 @@ build: configure
 
 test: build
 	@ctest --preset $(PRESET)
+
+# The unit and CLI suites under AddressSanitizer + UndefinedBehaviorSanitizer (CI runs it
+# after `make test`; docs/testing.md).
+test-asan: deps
+	@cmake --preset asan >/dev/null
+	@cmake --build --preset asan
+	@ctest --preset asan-ci
 
 demo: build
 	@examples/demo/run.sh $(BUILD_DIR)/bin out/demo

@@ -130,6 +130,10 @@ endfunction()
 #   Every tests/cli/<tool>/<case>.toml becomes the test cli/<tool>/<case>, run by
 #   tests/cli/run_case.py against the built tools (label cli; exit 77 = skipped).
 function(glint_add_cli_tests)
+    set(sanitized "")
+    if(GLINT_SANITIZE)
+        set(sanitized "--sanitized")  # cases that limit the address space are skipped
+    endif()
     file(GLOB_RECURSE cases CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/cli/*.toml")
     foreach(case IN LISTS cases)
         file(RELATIVE_PATH name "${CMAKE_CURRENT_SOURCE_DIR}/cli" "${case}")
@@ -139,6 +143,7 @@ function(glint_add_cli_tests)
                 --bin "${CMAKE_BINARY_DIR}/bin"
                 --data "${CMAKE_CURRENT_SOURCE_DIR}/data"
                 --work "${CMAKE_CURRENT_BINARY_DIR}/cli-work/${name}"
+                ${sanitized}
                 "${case}")
         set_tests_properties("cli/${name}" PROPERTIES LABELS cli SKIP_RETURN_CODE 77 TIMEOUT 120)
     endforeach()

@@ -20,10 +20,10 @@ KNOWN_KEYS = {
     "description", "requires", "setup", "args", "stdin", "env", "exit", "timeout",
     "stdout_contains", "stdout_not_contains", "stdout_regex", "stdout_empty", "stdout_equals",
     "stderr_contains", "stderr_not_contains", "stderr_regex", "stderr_empty", "stderr_equals",
-    "files_exist", "files_absent", "check",
+    "files_exist", "files_absent", "check", "limits_address_space",
 }
 CHECK_KEYS = KNOWN_KEYS - {"description", "requires", "setup", "files_exist", "files_absent",
-                           "check"}
+                           "check", "limits_address_space"}
 
 
 class CaseFailure(Exception):
@@ -100,6 +100,8 @@ def main():
     parser.add_argument("--bin", required=True, help="folder of the built glint-* tools")
     parser.add_argument("--data", required=True, help="tests/data")
     parser.add_argument("--work", required=True, help="scratch folder, emptied first")
+    parser.add_argument("--sanitized", action="store_true",
+                        help="the tools are built with AddressSanitizer (GLINT_SANITIZE)")
     parser.add_argument("case", help="the .toml case file")
     args = parser.parse_args()
 
@@ -118,6 +120,10 @@ def main():
         print(f"{args.case}: a case needs 'args' and 'exit'", file=sys.stderr)
         return 1
 
+    if case.get("limits_address_space", False) and args.sanitized:
+        print("SKIP: the case limits the address space (ulimit -v), which AddressSanitizer's "
+              "shadow memory cannot run under")
+        return SKIP
     for program in case.get("requires", []):
         if shutil.which(program) is None:
             print(f"SKIP: {program} is not installed (scripts/install-deps.sh installs it)")
