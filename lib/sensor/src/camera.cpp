@@ -194,14 +194,15 @@ CameraModel::CameraModel(const model::InstrumentProperties& properties,
 }
 
 std::array<double, 2> CameraModel::focal_plane_point(std::size_t column, std::size_t row, double u,
-                                                     double v) const noexcept {
+                                                     double v,
+                                                     std::array<double, 2> offset_px) const noexcept {
     const double half_columns = 0.5 * static_cast<double>(m_columns);
     const double half_rows = 0.5 * static_cast<double>(m_rows);
     // Relative to the array centre, before the flips (exact zero at the centre of odd arrays).
     double x = (static_cast<double>(column) + 0.5 - half_columns) * m_pitch_m[0] +
-               (u - 0.5) * m_element_m[0];
-    double y =
-        -((static_cast<double>(row) + 0.5 - half_rows) * m_pitch_m[1] + (v - 0.5) * m_element_m[1]);
+               (u - 0.5) * m_element_m[0] + offset_px[0] * m_pitch_m[0];
+    double y = -((static_cast<double>(row) + 0.5 - half_rows) * m_pitch_m[1] +
+                 (v - 0.5) * m_element_m[1] + offset_px[1] * m_pitch_m[1]);
     if (m_x_flip) x = -x;
     if (m_y_flip) y = -y;
     return {x + m_offset_m[0], y + m_offset_m[1]};

@@ -14,7 +14,7 @@ namespace {
 /// Marks the pixels the box `b` may cover, seen from `pose`; false when part of the box is
 /// behind the camera (the caller then marks every pixel).
 bool mark_box(const scene::Bounds& b, const motion::Rigid& pose, const CameraModel& camera,
-              std::vector<std::uint8_t>& mask) {
+              double psf_reach_px, std::vector<std::uint8_t>& mask) {
     double min_c = INFINITY, max_c = -INFINITY, min_r = INFINITY, max_r = -INFINITY;
     const motion::Rigid to_instrument = motion::inverse(pose);
     for (int corner = 0; corner < 8; ++corner) {
@@ -29,13 +29,15 @@ bool mark_box(const scene::Bounds& b, const motion::Rigid& pose, const CameraMod
         min_r = std::min(min_r, (*pixel)[1]);
         max_r = std::max(max_r, (*pixel)[1]);
     }
-    // One pixel of margin: a pixel's samples reach its edges, and the box is a bound.
+    // One pixel of margin (a pixel's samples reach its edges, and the box is a bound), plus
+    // how far the PSF moves a sample.
+    const double margin = 1.0 + std::ceil(psf_reach_px);
     const auto columns = static_cast<double>(camera.columns());
     const auto rows = static_cast<double>(camera.rows());
-    const double c0 = std::max(0.0, std::floor(min_c) - 1.0);
-    const double c1 = std::min(columns - 1.0, std::floor(max_c) + 1.0);
-    const double r0 = std::max(0.0, std::floor(min_r) - 1.0);
-    const double r1 = std::min(rows - 1.0, std::floor(max_r) + 1.0);
+    const double c0 = std::max(0.0, std::floor(min_c) - margin);
+    const double c1 = std::min(columns - 1.0, std::floor(max_c) + margin);
+    const double r0 = std::max(0.0, std::floor(min_r) - margin);
+    const double r1 = std::min(rows - 1.0, std::floor(max_r) + margin);
     for (double r = r0; r <= r1; ++r) {
         for (double c = c0; c <= c1; ++c) {
             mask[static_cast<std::size_t>(r) * camera.columns() + static_cast<std::size_t>(c)] = 1;
@@ -50,7 +52,8 @@ std::vector<std::uint8_t> hypersampled_pixels(const model::Scene& scene,
                                               const scene::GeometryScene& geometry,
                                               const CameraModel& camera,
                                               const motion::PoseService& poses,
-                                              std::size_t instrument, const CaptureTiming& timing) {
+                                              std::size_t instrument, const CaptureTiming& timing,
+                                              double psf_reach_px) {
     std::vector<std::uint8_t> mask;
     const double last_s =
         timing.t1_s + timing.rolling_line_time_s * static_cast<double>(camera.rows() - 1);
@@ -62,7 +65,7 @@ std::vector<std::uint8_t> hypersampled_pixels(const model::Scene& scene,
         if (box.empty()) continue;
         if (mask.empty()) mask.assign(camera.columns() * camera.rows(), 0);
         for (const motion::Rigid& pose : ends) {
-            if (!mark_box(box, pose, camera, mask)) {
+            if (!mark_box(box, pose, camera, psf_reach_px, mask)) {
                 std::fill(mask.begin(), mask.end(), 1);
                 break;
             }

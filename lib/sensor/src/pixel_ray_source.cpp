@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // PixelRaySource: the sample rays of one capture of a focal plane. Each sample draws a point
 // of the pixel's active element and a time in the pixel's integration window (uniformly, as
-// the BasicPlatform manual's "Spatial and Temporal Sampling" describes), then asks the pose
-// service where the instrument is and how it is turned at that time.
+// the BasicPlatform manual's "Spatial and Temporal Sampling" describes), then, with a PSF, an
+// offset from it (the manual's two-step sampling), then asks the pose service where the
+// instrument is and how it is turned at that time.
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -13,8 +14,9 @@
 namespace glint::sensor {
 
 PixelRaySource::PixelRaySource(const CameraModel& camera, const motion::PoseService& poses,
-                               std::size_t instrument, CaptureTiming timing)
-    : m_camera(camera), m_poses(poses), m_instrument(instrument), m_timing(timing) {
+                               std::size_t instrument, CaptureTiming timing,
+                               const PsfSampler* psf)
+    : m_camera(camera), m_poses(poses), m_instrument(instrument), m_timing(timing), m_psf(psf) {
     if (instrument >= poses.instrument_count()) {
         throw internal_error("pixel ray source: instrument " + std::to_string(instrument) +
                              " out of range (the platform has " +
@@ -47,10 +49,16 @@ radiometry::SampleRay PixelRaySource::generate(std::uint64_t problem, std::uint6
                              std::to_string(rows) + " pixels)");
     }
     const std::uint64_t column = problem % columns;
-    // The documented draw order: u, v, then τ.
+    // The documented draw order: u, v, τ, then the PSF's two.
     const double u = rng.uniform();
     const double v = rng.uniform();
     const double tau = rng.uniform();
+    std::array<double, 2> offset_px{};
+    if (m_psf != nullptr) {
+        const double r1 = rng.uniform();
+        const double r2 = rng.uniform();
+        offset_px = m_psf->offset_px(r1, r2);
+    }
     const auto stages = static_cast<double>(m_timing.tdi_stages);
     const std::uint64_t row =
         tdi ? std::min<std::uint64_t>(static_cast<std::uint64_t>(tau * stages),
@@ -60,7 +68,7 @@ radiometry::SampleRay PixelRaySource::generate(std::uint64_t problem, std::uint6
                        tau * (m_timing.t1_s - m_timing.t0_s);
 
     const Vec3 d_instrument = m_camera.direction(m_camera.focal_plane_point(
-        static_cast<std::size_t>(column), static_cast<std::size_t>(row), u, v));
+        static_cast<std::size_t>(column), static_cast<std::size_t>(row), u, v, offset_px));
     const motion::Rigid pose = m_poses.instrument_to_scene(m_instrument, t_s);
     radiometry::SampleRay ray;
     ray.origin_m = pose.translation_m;

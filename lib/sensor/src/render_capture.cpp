@@ -86,7 +86,8 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
     const radiometry::PathTracer tracer(geometry, state.materials, environment, options.tracer);
     CaptureTiming timing{capture.t0_s, capture.t1_s, source.rolling_line_time_s().value_or(0.0),
                          source.tdi_stages};
-    const PixelRaySource rays(state.camera, *plugin.poses, source.instrument_index, timing);
+    const PixelRaySource rays(state.camera, *plugin.poses, source.instrument_index, timing,
+                              state.psf ? &*state.psf : nullptr);
     radiometry::ProblemBatch batch;
     // The capture's global schedule index: unique per focal plane and capture, so focal
     // planes imaging at the same moment draw independent numbers.
@@ -100,7 +101,8 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
     std::vector<std::uint8_t> important;
     if (multiplier > 1.0) {
         important = hypersampled_pixels(in.scene, geometry, state.camera, *plugin.poses,
-                                        source.instrument_index, timing);
+                                        source.instrument_index, timing,
+                                        state.psf ? state.psf->reach_px() : 0.0);
         batch.hypersampled = important;
         batch.hypersampling_multiplier = multiplier;
     }

@@ -63,6 +63,8 @@ struct FocalPlaneState {
     /// In-render detection (detector model or colour filter array, unless --radiance-only):
     /// the chain glint-detect applies, fed with the capture's photon product line by line.
     std::optional<detect::DetectionChain> detection;
+    /// The focal plane's <psf>, when it has one.
+    std::optional<PsfSampler> psf;
 };
 
 /// Builds the state of schedule source `source` (frame, pushbroom and TDI focal planes alike).
@@ -86,7 +88,8 @@ std::vector<std::uint8_t> hypersampled_pixels(const model::Scene& scene,
                                               const scene::GeometryScene& geometry,
                                               const CameraModel& camera,
                                               const motion::PoseService& poses,
-                                              std::size_t instrument, const CaptureTiming& timing);
+                                              std::size_t instrument, const CaptureTiming& timing,
+                                              double psf_reach_px = 0.0);
 
 /// A capture of the selection with what the loop needs about it.
 /// The most captures one glint-render run plans (the plan keeps each, ~200 bytes); more is

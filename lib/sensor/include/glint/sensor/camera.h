@@ -39,6 +39,7 @@
 #include "glint/motion/geometry.h"
 #include "glint/motion/pose_service.h"
 #include "glint/radiometry/problem.h"
+#include "glint/sensor/psf.h"
 
 namespace glint::sensor {
 
@@ -64,9 +65,12 @@ public:
     std::array<double, 2> element_size_m() const noexcept { return m_element_m; }
 
     /// Focal-plane point (m) of (u, v) ∈ [0, 1)² of the active element of (column, row),
-    /// flips applied (they mirror u, v with the pixels; see the top of this file).
+    /// moved by `offset_px` (pixels along the columns and the lines: a PSF offset), flips
+    /// applied (they mirror u, v and the offset with the pixels; see the top of this file), so
+    /// project() of its direction is the pixel position plus the offset.
     std::array<double, 2> focal_plane_point(std::size_t column, std::size_t row, double u,
-                                            double v) const noexcept;
+                                            double v,
+                                            std::array<double, 2> offset_px = {}) const noexcept;
     /// Unit direction in the instrument frame that the focal-plane point looks along.
     Vec3 direction(const std::array<double, 2>& focal_plane_m) const noexcept;
     /// The fractional pixel position (column, row; pixel centres at .5, edges at integers)
@@ -102,7 +106,8 @@ struct CaptureTiming {
 
 /// The sample rays of one capture: problem p is pixel (p % columns, p / columns) in output
 /// order (flips are the camera's business); sample n draws, in this order, u, v (element
-/// area), then τ (window), each from rng.uniform(); its time is t0 + row × line time + τ
+/// area), then τ (window), then, with a PSF, two uniforms for its offset (PsfSampler), each
+/// from rng.uniform(); its time is t0 + row × line time + τ
 /// (t1 − t0) (row = the output line), its origin the instrument's origin and its direction the
 /// camera direction turned into scene ENU, both from the pose service at that time. Weight 1.
 /// TDI (timing.tdi_stages = N > 1, the camera's rows): problem p is column p of the one
@@ -119,8 +124,10 @@ public:
     /// for an instrument index out of range, a non-finite window or one with t1 < t0, a
     /// negative or non-finite line time, or TDI stages other than 1 or the camera's rows
     /// (or with a rolling line time).
+    /// `psf` (may be null: none) must outlive it too.
     PixelRaySource(const CameraModel& camera, const motion::PoseService& poses,
-                   std::size_t instrument, CaptureTiming timing);
+                   std::size_t instrument, CaptureTiming timing,
+                   const PsfSampler* psf = nullptr);
     radiometry::SampleRay generate(std::uint64_t problem, std::uint64_t sample,
                                    RandomStream& rng) const override;
 
@@ -129,6 +136,7 @@ private:
     const motion::PoseService& m_poses;
     std::size_t m_instrument;
     CaptureTiming m_timing;
+    const PsfSampler* m_psf;
 };
 
 }  // namespace glint::sensor
