@@ -242,6 +242,28 @@ const char* sample_type_name(SampleType type) {
     return "uint8";
 }
 
+double sample_type_max(SampleType type) {
+    switch (type) {
+        case SampleType::uint8:
+            return 255.0;
+        case SampleType::int8:
+            return 127.0;
+        case SampleType::uint16:
+            return 65535.0;
+        case SampleType::int16:
+            return 32767.0;
+        case SampleType::uint32:
+            return 4294967295.0;
+        case SampleType::int32:
+            return 2147483647.0;
+        case SampleType::half:
+        case SampleType::float32:
+        case SampleType::float64:
+            return 1.0;
+    }
+    return 1.0;
+}
+
 // ---------------------------------------------------------------------------------------
 // Reading
 

@@ -15,8 +15,13 @@ namespace glint::sensor {
 
 PixelRaySource::PixelRaySource(const CameraModel& camera, const motion::PoseService& poses,
                                std::size_t instrument, CaptureTiming timing,
-                               const PsfSampler* psf)
-    : m_camera(camera), m_poses(poses), m_instrument(instrument), m_timing(timing), m_psf(psf) {
+                               const PsfSampler* psf, const ActiveArea* mask)
+    : m_camera(camera),
+      m_poses(poses),
+      m_instrument(instrument),
+      m_timing(timing),
+      m_psf(psf),
+      m_mask(mask) {
     if (instrument >= poses.instrument_count()) {
         throw internal_error("pixel ray source: instrument " + std::to_string(instrument) +
                              " out of range (the platform has " +
@@ -50,8 +55,13 @@ radiometry::SampleRay PixelRaySource::generate(std::uint64_t problem, std::uint6
     }
     const std::uint64_t column = problem % columns;
     // The documented draw order: u, v, τ, then the PSF's two.
-    const double u = rng.uniform();
-    const double v = rng.uniform();
+    double u = rng.uniform();
+    double v = rng.uniform();
+    if (m_mask != nullptr) {
+        const std::array<double, 2> point = m_mask->point(u, v);
+        u = point[0];
+        v = point[1];
+    }
     const double tau = rng.uniform();
     std::array<double, 2> offset_px{};
     if (m_psf != nullptr) {

@@ -9,37 +9,8 @@
 
 #include "glint/core/error.h"
 #include "glint/core/text.h"
-#include "glint/io/image.h"
 
 namespace glint::sensor {
-namespace {
-
-/// The largest PSF image read: a PSF is a small pattern; 4096² doubles are 128 MB.
-constexpr std::size_t kMaxPsfPixels = std::size_t{4096} * 4096;
-
-/// The index i of `cdf` (ascending, cdf.front() = 0, cdf.back() = 1) with cdf[i] <= r <
-/// cdf[i + 1], skipping empty cells, and where r falls inside it (0 … 1).
-std::pair<std::size_t, double> locate(const double* cdf, std::size_t cells, double r) {
-    const double* upper = std::upper_bound(cdf + 1, cdf + cells + 1, r);
-    std::size_t i = static_cast<std::size_t>(upper - cdf) - 1;
-    if (i >= cells) i = cells - 1;  // r at the top (rounding)
-    const double width = cdf[i + 1] - cdf[i];
-    const double inside = width > 0.0 ? std::clamp((r - cdf[i]) / width, 0.0, 1.0) : 0.5;
-    return {i, inside};
-}
-
-/// Turns `sums` (cells values >= 0) into a CDF of cells + 1 values; false when all are 0.
-bool to_cdf(const double* values, std::size_t cells, double* cdf) {
-    cdf[0] = 0.0;
-    for (std::size_t i = 0; i < cells; ++i) cdf[i + 1] = cdf[i] + values[i];
-    const double total = cdf[cells];
-    if (!(total > 0.0)) return false;
-    for (std::size_t i = 1; i <= cells; ++i) cdf[i] /= total;
-    cdf[cells] = 1.0;
-    return true;
-}
-
-}  // namespace
 
 PsfSampler PsfSampler::gaussian(double sigma_px) {
     if (!std::isfinite(sigma_px) || !(sigma_px > 0.0)) {
@@ -59,33 +30,9 @@ PsfSampler PsfSampler::table(std::vector<double> weights, std::size_t width, std
                           "> 0, got " +
                           format_shortest(extent_px));
     }
-    if (width == 0 || height == 0 || weights.size() != width * height) {
-        throw input_error("the PSF image is empty");
-    }
-    for (const double w : weights) {
-        if (!std::isfinite(w) || w < 0.0) {
-            throw input_error("the PSF image holds a negative or non-finite value (" +
-                              format_shortest(w) + ")");
-        }
-    }
     PsfSampler psf;
-    psf.m_width = width;
-    psf.m_height = height;
+    psf.m_table.emplace(weights, width, height);
     psf.m_pixel_px = extent_px / static_cast<double>(width);
-    psf.m_column_cdf.resize(height * (width + 1));
-    std::vector<double> line_sums(height, 0.0);
-    for (std::size_t y = 0; y < height; ++y) {
-        const double* line = weights.data() + y * width;
-        for (std::size_t x = 0; x < width; ++x) line_sums[y] += line[x];
-        if (!to_cdf(line, width, psf.m_column_cdf.data() + y * (width + 1))) {
-            // An empty line is never chosen (its marginal probability is 0).
-            std::fill_n(psf.m_column_cdf.data() + y * (width + 1), width + 1, 0.0);
-        }
-    }
-    psf.m_line_cdf.resize(height + 1);
-    if (!to_cdf(line_sums.data(), height, psf.m_line_cdf.data())) {
-        throw input_error("the PSF image is all zero");
-    }
     psf.m_description = std::to_string(width) + " x " + std::to_string(height) +
                         " image over " + format_shortest(extent_px) + " px";
     return psf;
@@ -94,22 +41,9 @@ PsfSampler PsfSampler::table(std::vector<double> weights, std::size_t width, std
 PsfSampler PsfSampler::from_model(const model::Psf& psf) {
     try {
         if (psf.width_px) return gaussian(*psf.width_px);
-        io::ImageReader reader(psf.image.resolved);
-        const io::ImageInfo& info = reader.info();
-        if (info.width * info.height > kMaxPsfPixels) {
-            throw input_error("the PSF image " + quote(psf.image.text) + " is " +
-                              std::to_string(info.width) + " x " + std::to_string(info.height) +
-                              " pixels; a PSF image holds at most 4096 x 4096");
-        }
-        std::vector<double> line(info.width * info.channels);
-        std::vector<double> weights(info.width * info.height);
-        for (std::size_t y = 0; y < info.height; ++y) {
-            reader.read_line(y, line);
-            for (std::size_t x = 0; x < info.width; ++x) {
-                weights[y * info.width + x] = line[x * info.channels];
-            }
-        }
-        PsfSampler sampler = table(std::move(weights), info.width, info.height, psf.scale_px);
+        GreyImage image = read_grey_image(psf.image.resolved);
+        PsfSampler sampler = table(std::move(image.values), image.width, image.height,
+                                   psf.scale_px);
         sampler.m_description = "image " + psf.image.text + " " + sampler.m_description;
         return sampler;
     } catch (const Error& e) {
@@ -126,17 +60,15 @@ std::array<double, 2> PsfSampler::offset_px(double r1, double r2) const noexcept
         const double angle = 2.0 * std::numbers::pi * r2;
         return {radius * std::cos(angle), radius * std::sin(angle)};
     }
-    const auto [line, in_line] = locate(m_line_cdf.data(), m_height, r1);
-    const auto [column, in_column] =
-        locate(m_column_cdf.data() + line * (m_width + 1), m_width, r2);
-    const double x = (static_cast<double>(column) + in_column) - 0.5 * static_cast<double>(m_width);
-    const double y = (static_cast<double>(line) + in_line) - 0.5 * static_cast<double>(m_height);
-    return {x * m_pixel_px, y * m_pixel_px};
+    const std::array<double, 2> at = m_table->sample(r1, r2);
+    return {(at[0] - 0.5 * static_cast<double>(m_table->width())) * m_pixel_px,
+            (at[1] - 0.5 * static_cast<double>(m_table->height())) * m_pixel_px};
 }
 
 double PsfSampler::reach_px() const noexcept {
     if (m_sigma_px > 0.0) return 4.0 * m_sigma_px;
-    return 0.5 * m_pixel_px * std::hypot(static_cast<double>(m_width), static_cast<double>(m_height));
+    return 0.5 * m_pixel_px *
+           std::hypot(static_cast<double>(m_table->width()), static_cast<double>(m_table->height()));
 }
 
 }  // namespace glint::sensor

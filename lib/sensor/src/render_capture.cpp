@@ -87,7 +87,8 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
     CaptureTiming timing{capture.t0_s, capture.t1_s, source.rolling_line_time_s().value_or(0.0),
                          source.tdi_stages};
     const PixelRaySource rays(state.camera, *plugin.poses, source.instrument_index, timing,
-                              state.psf ? &*state.psf : nullptr);
+                              state.psf ? &*state.psf : nullptr,
+                              state.mask ? &*state.mask : nullptr);
     radiometry::ProblemBatch batch;
     // The capture's global schedule index: unique per focal plane and capture, so focal
     // planes imaging at the same moment draw independent numbers.
@@ -115,9 +116,15 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
     stats.pixels = batch.count;
     stats.min_samples = batch.count ? solutions.samples.front() : 0;
     std::uint64_t total_samples = 0;
+    std::vector<double> masked;  // a masked element's radiance share (active_area.h)
     for (std::uint64_t i = 0; i < batch.count; ++i) {
-        state.units.apply(solutions.radiance(i),
-                          std::span<double>(image.data() + i * channels, channels));
+        std::span<const double> radiance = solutions.radiance(i);
+        if (state.mask) {
+            masked.assign(radiance.begin(), radiance.end());
+            for (double& value : masked) value *= state.mask->mean_sensitivity();
+            radiance = masked;
+        }
+        state.units.apply(radiance, std::span<double>(image.data() + i * channels, channels));
         stats.min_samples = std::min(stats.min_samples, solutions.samples[i]);
         stats.max_samples = std::max(stats.max_samples, solutions.samples[i]);
         total_samples += solutions.samples[i];

@@ -147,11 +147,6 @@ FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t s
                             "are read once per capture)");
     }
     // Read and checked, not applied yet: one warning each, at the element.
-    if (!fp.capture_method.active_area_image.empty()) {
-        context.log.warning(format_located(fp.capture_method.active_area_image.where,
-                                           "<activearea> is read, not applied yet: every pixel "
-                                           "samples its whole element uniformly"));
-    }
     if (source.instrument->properties.focus_distance_m) {
         context.log.warning(format_located(source.instrument->properties.where,
                                            "<focusdistance> is read, not applied yet: every "
@@ -175,10 +170,14 @@ FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t s
     io::EnviHeader header = header_of(source, units, convergence, options, inputs, context);
     FocalPlaneState state{std::move(grid),  reference,   std::move(materials), std::move(camera),
                           std::move(units), convergence, std::move(header),    std::nullopt,
-                          std::nullopt};
+                          std::nullopt,     std::nullopt};
     if (const std::optional<model::Psf>& psf = fp.capture_method.psf) {
         state.psf = PsfSampler::from_model(*psf);
         state.header.set_extra("glint psf", state.psf->description());
+    }
+    if (!fp.capture_method.active_area_image.empty()) {
+        state.mask = ActiveArea::from_model(fp.capture_method.active_area_image);
+        state.header.set_extra("glint active area", state.mask->description());
     }
     const bool detects = fp.capture_method.detector_model.has_value() ||
                          fp.capture_method.spectral_response.pattern.has_value() ||

@@ -65,6 +65,9 @@ struct FocalPlaneState {
     std::optional<detect::DetectionChain> detection;
     /// The focal plane's <psf>, when it has one.
     std::optional<PsfSampler> psf;
+    /// The focal plane's <activearea> mask, when it has one (each pixel's values are
+    /// multiplied by its mean sensitivity).
+    std::optional<ActiveArea> mask;
 };
 
 /// Builds the state of schedule source `source` (frame, pushbroom and TDI focal planes alike).

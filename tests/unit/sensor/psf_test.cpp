@@ -108,9 +108,9 @@ TEST(Psf, RefusesBadParameters) {
     EXPECT_EQ(message_of([] { PsfSampler::table({1, 1}, 2, 1, -3.0); }),
               "the PSF scale (the image's extent in pixels) must be a finite number > 0, got -3");
     EXPECT_EQ(message_of([] { PsfSampler::table({0, 0, 0, 0}, 2, 2, 3.0); }),
-              "the PSF image is all zero");
+              "the image is all zero");
     EXPECT_EQ(message_of([] { PsfSampler::table({1, -1}, 2, 1, 3.0); }),
-              "the PSF image holds a negative or non-finite value (-1)");
+              "the image holds a negative or non-finite value (-1)");
 }
 
 TEST(Psf, FromModelNamesTheElementAndTheImage) {
@@ -134,7 +134,7 @@ TEST(Psf, FromModelNamesTheElementAndTheImage) {
         PsfSampler::from_model(psf);
         FAIL() << "no error";
     } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("the PSF image is all zero"), std::string::npos)
+        EXPECT_NE(std::string(e.what()).find("the image is all zero"), std::string::npos)
             << e.what();
     }
     std::vector<double> grey(16, 0.0);

@@ -56,6 +56,8 @@ bool pixel_type_is_integer(PixelType type);
 /// Sample type of an image file as OIIO reports it.
 enum class SampleType { uint8, int8, uint16, int16, uint32, int32, half, float32, float64 };
 const char* sample_type_name(SampleType type);  ///< "uint8", ..., "half", "float", "double"
+/// Largest code of an integer sample type (255, 65535, ...); 1 for floating types.
+double sample_type_max(SampleType type);
 
 /// What an image file holds (first subimage, full resolution).
 struct ImageInfo {

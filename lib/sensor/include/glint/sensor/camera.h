@@ -39,6 +39,7 @@
 #include "glint/motion/geometry.h"
 #include "glint/motion/pose_service.h"
 #include "glint/radiometry/problem.h"
+#include "glint/sensor/active_area.h"
 #include "glint/sensor/psf.h"
 
 namespace glint::sensor {
@@ -124,10 +125,11 @@ public:
     /// for an instrument index out of range, a non-finite window or one with t1 < t0, a
     /// negative or non-finite line time, or TDI stages other than 1 or the camera's rows
     /// (or with a rolling line time).
-    /// `psf` (may be null: none) must outlive it too.
+    /// `psf` and `mask` (each may be null: none) must outlive it too. With a mask, u and v
+    /// come from its importance draw (the same two uniforms).
     PixelRaySource(const CameraModel& camera, const motion::PoseService& poses,
                    std::size_t instrument, CaptureTiming timing,
-                   const PsfSampler* psf = nullptr);
+                   const PsfSampler* psf = nullptr, const ActiveArea* mask = nullptr);
     radiometry::SampleRay generate(std::uint64_t problem, std::uint64_t sample,
                                    RandomStream& rng) const override;
 
@@ -137,6 +139,7 @@ private:
     std::size_t m_instrument;
     CaptureTiming m_timing;
     const PsfSampler* m_psf;
+    const ActiveArea* m_mask;
 };
 
 }  // namespace glint::sensor

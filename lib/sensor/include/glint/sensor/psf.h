@@ -10,12 +10,10 @@
 // appears in the output as drawn.
 //   Gaussian   <width> σ: dx, dy independent normals of standard deviation σ, drawn exactly
 //              (Box–Muller on two uniforms).
-//   image      a grey image (any type OpenImageIO reads; values as stored, linear), centred on
-//              the point, its width spanning <scale> pixels (square pixels: its height spans
-//              scale × height / width), normalised to unit volume. Drawn from a piecewise-
-//              constant 2-D table: a line from the marginal CDF of the line sums, a column from
-//              that line's CDF, then a uniform position inside the image pixel, each from the
-//              remainder of its uniform, so two uniforms give one offset.
+//   image      a grey image (any type OpenImageIO reads; values linear), centred on the
+//              point, its width spanning <scale> pixels (square pixels: its height spans
+//              scale × height / width), normalised to unit volume, drawn from its PixelTable
+//              (pixel_table.h).
 #pragma once
 
 #include <array>
@@ -23,7 +21,10 @@
 #include <string>
 #include <vector>
 
+#include <optional>
+
 #include "glint/model/capture.h"
+#include "glint/sensor/pixel_table.h"
 
 namespace glint::sensor {
 
@@ -33,7 +34,7 @@ public:
     static PsfSampler gaussian(double sigma_px);
     /// A tabulated PSF: `weights` row-major, `width` × `height`, line 0 at the top, all finite
     /// and >= 0 with a positive sum; its width spans `extent_px` (> 0) pixels. Throws
-    /// glint::Error (input, no context) otherwise.
+    /// glint::Error (input, no context) otherwise (PixelTable's messages).
     static PsfSampler table(std::vector<double> weights, std::size_t width, std::size_t height,
                             double extent_px);
     /// The PSF a focal plane's <psf> describes: its Gaussian, or its image read through
@@ -55,11 +56,8 @@ private:
     PsfSampler() = default;
 
     double m_sigma_px = 0.0;  ///< > 0 for a Gaussian
-    std::size_t m_width = 0;
-    std::size_t m_height = 0;
-    double m_pixel_px = 0.0;                 ///< the focal-plane size of one image pixel
-    std::vector<double> m_line_cdf;          ///< height + 1 values, 0 … 1
-    std::vector<double> m_column_cdf;        ///< per line, width + 1 values, 0 … 1
+    std::optional<PixelTable> m_table;
+    double m_pixel_px = 0.0;  ///< the focal-plane size of one image pixel
     std::string m_description;
 };
 

@@ -1,0 +1,50 @@
+// SPDX-License-Identifier: Apache-2.0
+// ActiveArea: the importance draw over a pixel mask and its mean sensitivity (active_area.h).
+#include "glint/sensor/active_area.h"
+
+#include <numeric>
+#include <utility>
+
+#include "glint/core/error.h"
+#include "glint/core/text.h"
+
+namespace glint::sensor {
+namespace {
+
+const GreyImage& checked(const GreyImage& mask) {
+    for (const double v : mask.values) {
+        if (v > 1.0) {
+            throw input_error("a mask value is above 1 (" + format_shortest(v) +
+                              "): sensitivities run from 0 to 1");
+        }
+    }
+    return mask;
+}
+
+}  // namespace
+
+ActiveArea::ActiveArea(const GreyImage& mask, std::string name)
+    : m_table(checked(mask).values, mask.width, mask.height) {
+    m_mean = std::accumulate(mask.values.begin(), mask.values.end(), 0.0) /
+             static_cast<double>(mask.values.size());
+    m_description = std::move(name) + " " + std::to_string(mask.width) + " x " +
+                    std::to_string(mask.height) + ", mean sensitivity " + format_shortest(m_mean);
+}
+
+ActiveArea ActiveArea::from_model(const model::FileRef& image) {
+    try {
+        return ActiveArea(read_grey_image(image.resolved), image.text);
+    } catch (const Error& e) {
+        if (e.category() != ErrorCategory::input && e.category() != ErrorCategory::io) throw;
+        throw input_error("<activearea><image> " + quote(image.text) + ": " + e.message(),
+                          image.where);
+    }
+}
+
+std::array<double, 2> ActiveArea::point(double r1, double r2) const noexcept {
+    const std::array<double, 2> at = m_table.sample(r1, r2);
+    return {at[0] / static_cast<double>(m_table.width()),
+            at[1] / static_cast<double>(m_table.height())};
+}
+
+}  // namespace glint::sensor
