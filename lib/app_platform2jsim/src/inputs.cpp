@@ -6,12 +6,15 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <optional>
 
 #include "glint/core/text.h"
 #include "glint/dirsig/motion_reader.h"
 #include "glint/dirsig/readers.h"
 #include "glint/dirsig/scene_reader.h"
 #include "glint/inputs/simulation_inputs.h"
+#include "glint/io/image.h"
 
 namespace glint::app_platform2jsim {
 namespace {
@@ -73,6 +76,22 @@ void check_mount_references(const model::Mount& mount, LoadedInputs& inputs) {
     for (const model::Attachment& a : mount.attachments) check_attachment_references(a, inputs);
 }
 
+/// A PSF or active-area image, read and checked as the renderer does (io::read_grey_image,
+/// io::weight_image_problem with `max_value`), so --check refuses what a render refuses; the
+/// error goes to `where` as "<element> "file": problem".
+void check_weight_image(const model::FileRef& ref, const std::string& element,
+                        const ErrorContext& where, double max_value, LoadedInputs& inputs) {
+    if (!check_exists(ref, element, inputs)) return;
+    std::optional<std::string> problem;
+    try {
+        problem = io::weight_image_problem(io::read_grey_image(ref.resolved), max_value);
+    } catch (const Error& e) {
+        if (e.category() != ErrorCategory::input && e.category() != ErrorCategory::io) throw;
+        problem = e.message();
+    }
+    if (problem) inputs.diagnostics.error(where, element + " " + quote(ref.text) + ": " + *problem);
+}
+
 /// The files a platform names: mount jitter PSD tables, PSF and active-area images,
 /// external trigger files.
 void check_platform_references(const model::Platform& platform, LoadedInputs& inputs) {
@@ -81,10 +100,12 @@ void check_platform_references(const model::Platform& platform, LoadedInputs& in
         for (const model::FocalPlane& fp : path.instrument->focal_planes) {
             const model::CaptureMethod& capture = fp.capture_method;
             if (capture.psf && !capture.psf->image.empty()) {
-                check_exists(capture.psf->image, "PSF image", inputs);
+                check_weight_image(capture.psf->image, "<psf><image>", capture.psf->where,
+                                   INFINITY, inputs);
             }
             if (!capture.active_area_image.empty()) {
-                check_exists(capture.active_area_image, "active area image", inputs);
+                check_weight_image(capture.active_area_image, "<activearea><image>",
+                                   capture.active_area_image.where, 1.0, inputs);
             }
             if (!fp.detector_array.clock.trigger_file.empty()) {
                 check_exists(fp.detector_array.clock.trigger_file, "trigger", inputs);

@@ -264,6 +264,47 @@ double sample_type_max(SampleType type) {
     return 1.0;
 }
 
+GreyImage read_grey_image(const fs::path& path) {
+    ImageReader reader(path);
+    const ImageInfo& info = reader.info();
+    if (info.width > kMaxGreyImageSide || info.height > kMaxGreyImageSide) {
+        throw input_error("the image is " + std::to_string(info.width) + " x " +
+                              std::to_string(info.height) + " pixels; glint reads at most " +
+                              std::to_string(kMaxGreyImageSide) + " x " +
+                              std::to_string(kMaxGreyImageSide),
+                          at_file(path));
+    }
+    const double scale = 1.0 / sample_type_max(info.sample_type);
+    GreyImage image{info.width, info.height, std::vector<double>(info.width * info.height)};
+    std::vector<double> line(info.width * info.channels);
+    for (std::size_t y = 0; y < info.height; ++y) {
+        reader.read_line(y, line);
+        for (std::size_t x = 0; x < info.width; ++x) {
+            image.values[y * info.width + x] = line[x * info.channels] * scale;
+        }
+    }
+    return image;
+}
+
+std::optional<std::string> weight_image_problem(std::span<const double> values,
+                                                std::size_t width, std::size_t height,
+                                                double max_value) {
+    if (width == 0 || height == 0 || values.size() != width * height) return "the image is empty";
+    bool any = false;
+    for (const double v : values) {
+        if (!std::isfinite(v) || v < 0.0) {
+            return "the image holds a negative or non-finite value (" + format_shortest(v) + ")";
+        }
+        if (v > max_value) {
+            return "a value is above " + format_shortest(max_value) + " (" + format_shortest(v) +
+                   ")";
+        }
+        any = any || v > 0.0;
+    }
+    if (!any) return "the image is all zero";
+    return std::nullopt;
+}
+
 // ---------------------------------------------------------------------------------------
 // Reading
 

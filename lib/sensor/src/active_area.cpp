@@ -12,12 +12,7 @@ namespace glint::sensor {
 namespace {
 
 const GreyImage& checked(const GreyImage& mask) {
-    for (const double v : mask.values) {
-        if (v > 1.0) {
-            throw input_error("a mask value is above 1 (" + format_shortest(v) +
-                              "): sensitivities run from 0 to 1");
-        }
-    }
+    if (const auto problem = io::weight_image_problem(mask, 1.0)) throw input_error(*problem);
     return mask;
 }
 

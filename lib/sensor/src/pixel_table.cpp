@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// PixelTable and read_grey_image (pixel_table.h).
+// PixelTable (pixel_table.h).
 #include "glint/sensor/pixel_table.h"
 
 #include <algorithm>
@@ -8,14 +8,9 @@
 #include <utility>
 
 #include "glint/core/error.h"
-#include "glint/core/text.h"
-#include "glint/io/image.h"
 
 namespace glint::sensor {
 namespace {
-
-/// The largest image read: PSFs and pixel masks are small patterns; 4096² doubles are 128 MB.
-constexpr std::size_t kMaxSide = 4096;
 
 /// The index i of `cdf` (ascending, cdf[0] = 0, cdf[cells] = 1) with cdf[i] <= r <
 /// cdf[i + 1] (empty cells are never chosen), and where r falls inside it (0 … 1).
@@ -41,36 +36,10 @@ bool to_cdf(const double* values, std::size_t cells, double* cdf) {
 
 }  // namespace
 
-GreyImage read_grey_image(const std::filesystem::path& path) {
-    io::ImageReader reader(path);
-    const io::ImageInfo& info = reader.info();
-    if (info.width > kMaxSide || info.height > kMaxSide) {
-        throw input_error("the image is " + std::to_string(info.width) + " x " +
-                          std::to_string(info.height) + " pixels; glint reads at most " +
-                          std::to_string(kMaxSide) + " x " + std::to_string(kMaxSide));
-    }
-    const double scale = 1.0 / io::sample_type_max(info.sample_type);
-    GreyImage image{info.width, info.height, std::vector<double>(info.width * info.height)};
-    std::vector<double> line(info.width * info.channels);
-    for (std::size_t y = 0; y < info.height; ++y) {
-        reader.read_line(y, line);
-        for (std::size_t x = 0; x < info.width; ++x) {
-            image.values[y * info.width + x] = line[x * info.channels] * scale;
-        }
-    }
-    return image;
-}
-
 PixelTable::PixelTable(const std::vector<double>& weights, std::size_t width, std::size_t height)
     : m_width(width), m_height(height) {
-    if (width == 0 || height == 0 || weights.size() != width * height) {
-        throw input_error("the image is empty");
-    }
-    for (const double w : weights) {
-        if (!std::isfinite(w) || w < 0.0) {
-            throw input_error("the image holds a negative or non-finite value (" +
-                              format_shortest(w) + ")");
-        }
+    if (const auto problem = io::weight_image_problem(weights, width, height)) {
+        throw input_error(*problem);
     }
     m_column_cdf.resize(height * (width + 1));
     std::vector<double> line_sums(height, 0.0);
@@ -81,9 +50,7 @@ PixelTable::PixelTable(const std::vector<double>& weights, std::size_t width, st
         (void)to_cdf(line, width, m_column_cdf.data() + y * (width + 1));
     }
     m_line_cdf.resize(height + 1);
-    if (!to_cdf(line_sums.data(), height, m_line_cdf.data())) {
-        throw input_error("the image is all zero");
-    }
+    (void)to_cdf(line_sums.data(), height, m_line_cdf.data());  // not all zero: checked above
 }
 
 std::array<double, 2> PixelTable::sample(double r1, double r2) const noexcept {

@@ -9,6 +9,7 @@
 // naming the file.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <filesystem>
 #include <memory>
@@ -103,6 +104,32 @@ struct Image {
 
 /// Reads a whole image (tests and small images; streaming code uses ImageReader).
 Image read_image(const std::filesystem::path& path);
+
+/// A grey image's values (the first channel; integer codes divided by the type's largest
+/// code, floating values as stored), line 0 at the top: PSF and pixel-mask images.
+struct GreyImage {
+    std::size_t width = 0;
+    std::size_t height = 0;
+    std::vector<double> values;  ///< width × height, row-major
+};
+
+/// The largest side of a GreyImage read (PSFs and pixel masks are small patterns).
+inline constexpr std::size_t kMaxGreyImageSide = 4096;
+
+/// Reads a GreyImage through OpenImageIO. Throws glint::Error (input or io, naming the file)
+/// when it cannot be read or a side is over kMaxGreyImageSide.
+GreyImage read_grey_image(const std::filesystem::path& path);
+
+/// What makes a GreyImage unusable as sampling weights, if anything: "the image is empty",
+/// "the image holds a negative or non-finite value (-1)", "a value is above <max_value>
+/// (1.5)", "the image is all zero". The renderer and glint-platform2jsim --check share it.
+std::optional<std::string> weight_image_problem(std::span<const double> values,
+                                                std::size_t width, std::size_t height,
+                                                double max_value = INFINITY);
+inline std::optional<std::string> weight_image_problem(const GreyImage& image,
+                                                       double max_value = INFINITY) {
+    return weight_image_problem(image.values, image.width, image.height, max_value);
+}
 
 /// How to write an image.
 struct ImageWriteOptions {

@@ -18,8 +18,8 @@ namespace glint::sensor {
 
 class ActiveArea {
 public:
-    /// From the mask's values in [0, 1]. Throws glint::Error (input, no context) for an
-    /// all-zero mask, a negative, non-finite or > 1 value.
+    /// From the mask's values in [0, 1]. Throws glint::Error (input, no context) with
+    /// io::weight_image_problem's message (maximum 1) otherwise.
     explicit ActiveArea(const GreyImage& mask, std::string name = "mask");
     /// The mask an <activearea><image> names. Throws glint::Error (input, at the element) for
     /// an image that cannot be read, is too large or is all zero.

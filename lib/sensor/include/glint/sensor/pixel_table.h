@@ -9,27 +9,19 @@
 
 #include <array>
 #include <cstddef>
-#include <filesystem>
 #include <vector>
+
+#include "glint/io/image.h"
 
 namespace glint::sensor {
 
-/// A grey image's values in [0, 1] (integer types divided by their largest code, floating
-/// types as stored), line 0 at the top.
-struct GreyImage {
-    std::size_t width = 0;
-    std::size_t height = 0;
-    std::vector<double> values;  ///< width × height, row-major
-};
-
-/// Reads the first channel of an image through OpenImageIO, at most 4096 × 4096 pixels.
-/// Throws glint::Error (input or io, naming no element) when it cannot be read or is larger.
-GreyImage read_grey_image(const std::filesystem::path& path);
+using io::GreyImage;
+using io::read_grey_image;
 
 class PixelTable {
 public:
-    /// Throws glint::Error (input, no context) for an empty image, a negative or non-finite
-    /// value ("holds a negative or non-finite value") or an all-zero one ("is all zero").
+    /// Throws glint::Error (input, no context) with io::weight_image_problem's message for an
+    /// empty image, a negative or non-finite value or an all-zero one.
     PixelTable(const std::vector<double>& weights, std::size_t width, std::size_t height);
 
     std::size_t width() const noexcept { return m_width; }
