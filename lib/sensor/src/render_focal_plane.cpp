@@ -153,10 +153,12 @@ FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t s
                                            "object is in focus (a pinhole camera)"));
     }
     if (fp.capture_method.temporal_integration.samples > 1) {
-        context.log.info("focal plane \"" + fp.name + "\": <temporalintegration><samples> " +
-                         std::to_string(fp.capture_method.temporal_integration.samples) +
-                         " is ignored: each pixel's samples are spread uniformly over the "
-                         "integration window (as DIRSIG5 does)");
+        context.log.warning(format_located(
+            fp.capture_method.temporal_integration.where,
+            "<temporalintegration><samples> " +
+                std::to_string(fp.capture_method.temporal_integration.samples) +
+                " is read, not applied: each pixel's samples are spread uniformly over the "
+                "integration window (as DIRSIG5 does)"));
     }
     SpectralGrid grid = model::bandpass_grid(fp.capture_method.spectral_response.bandpass);
     const double centre_um = 0.5 * (grid.min_um() + grid.max_um());
