@@ -191,6 +191,21 @@ CameraModel::CameraModel(const model::InstrumentProperties& properties,
     m_offset_m = {array.x_offset_m, array.y_offset_m};
     m_x_flip = array.x_flip;
     m_y_flip = array.y_flip;
+    if (properties.focus_distance_m && properties.aperture_diameter_m) {
+        if (!positive_finite(*properties.focus_distance_m) ||
+            !positive_finite(*properties.aperture_diameter_m)) {
+            throw input_error("focus distance and aperture diameter must be finite numbers > 0",
+                              properties.where);
+        }
+        m_lens = ThinLens{*properties.aperture_diameter_m, *properties.focus_distance_m};
+    }
+}
+
+double CameraModel::blur_diameter_px(double depth_m) const noexcept {
+    if (!m_lens || !(depth_m > 0.0)) return 0.0;
+    return m_focal_length_m * m_lens->aperture_diameter_m *
+           std::abs(depth_m - m_lens->focus_distance_m) /
+           (depth_m * m_lens->focus_distance_m * m_pitch_m[0]);
 }
 
 std::array<double, 2> CameraModel::focal_plane_point(std::size_t column, std::size_t row, double u,

@@ -16,12 +16,14 @@ namespace {
 bool mark_box(const scene::Bounds& b, const motion::Rigid& pose, const CameraModel& camera,
               double psf_reach_px, std::vector<std::uint8_t>& mask) {
     double min_c = INFINITY, max_c = -INFINITY, min_r = INFINITY, max_r = -INFINITY;
+    double lens_blur_px = 0.0;  // the largest defocus blur radius over the corners
     const motion::Rigid to_instrument = motion::inverse(pose);
     for (int corner = 0; corner < 8; ++corner) {
         const motion::Vec3 p{(corner & 1) ? b.upper.x : b.lower.x,
                              (corner & 2) ? b.upper.y : b.lower.y,
                              (corner & 4) ? b.upper.z : b.lower.z};
         const motion::Vec3 d = motion::apply_point(to_instrument, p);
+        lens_blur_px = std::max(lens_blur_px, 0.5 * camera.blur_diameter_px(-d.z));
         const std::optional<std::array<double, 2>> pixel = camera.project(motion::normalized(d));
         if (!pixel) return false;
         min_c = std::min(min_c, (*pixel)[0]);
@@ -31,7 +33,7 @@ bool mark_box(const scene::Bounds& b, const motion::Rigid& pose, const CameraMod
     }
     // One pixel of margin (a pixel's samples reach its edges, and the box is a bound), plus
     // how far the PSF moves a sample.
-    const double margin = 1.0 + std::ceil(psf_reach_px);
+    const double margin = 1.0 + std::ceil(psf_reach_px + lens_blur_px);
     const auto columns = static_cast<double>(camera.columns());
     const auto rows = static_cast<double>(camera.rows());
     const double c0 = std::max(0.0, std::floor(min_c) - margin);

@@ -6,6 +6,8 @@
 // instrument is and how it is turned at that time.
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <optional>
 #include <string>
 
 #include "glint/core/error.h"
@@ -77,11 +79,23 @@ radiometry::SampleRay PixelRaySource::generate(std::uint64_t problem, std::uint6
     const double t_s = m_timing.t0_s + static_cast<double>(row) * m_timing.rolling_line_time_s +
                        tau * (m_timing.t1_s - m_timing.t0_s);
 
-    const Vec3 d_instrument = m_camera.direction(m_camera.focal_plane_point(
+    Vec3 d_instrument = m_camera.direction(m_camera.focal_plane_point(
         static_cast<std::size_t>(column), static_cast<std::size_t>(row), u, v, offset_px));
+    Vec3 origin_instrument{};
+    if (const std::optional<ThinLens>& lens = m_camera.thin_lens()) {
+        // Thin lens: the chief ray's point on the plane of focus, seen from a point of the
+        // aperture disc (uniform: radius ∝ √r).
+        const double r_a = rng.uniform();
+        const double r_b = rng.uniform();
+        const double radius = 0.5 * lens->aperture_diameter_m * std::sqrt(r_a);
+        const double angle = 2.0 * std::numbers::pi * r_b;
+        origin_instrument = Vec3{radius * std::cos(angle), radius * std::sin(angle), 0.0};
+        const Vec3 focus = d_instrument * (lens->focus_distance_m / -d_instrument.z);
+        d_instrument = motion::normalized(focus - origin_instrument);
+    }
     const motion::Rigid pose = m_poses.instrument_to_scene(m_instrument, t_s);
     radiometry::SampleRay ray;
-    ray.origin_m = pose.translation_m;
+    ray.origin_m = motion::apply_point(pose, origin_instrument);
     ray.direction = motion::normalized(motion::apply_direction(pose, d_instrument));
     ray.time_s = t_s;
     ray.weight = 1.0;

@@ -147,11 +147,6 @@ FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t s
                             "are read once per capture)");
     }
     // Read and checked, not applied yet: one warning each, at the element.
-    if (source.instrument->properties.focus_distance_m) {
-        context.log.warning(format_located(source.instrument->properties.where,
-                                           "<focusdistance> is read, not applied yet: every "
-                                           "object is in focus (a pinhole camera)"));
-    }
     if (fp.capture_method.temporal_integration.samples > 1) {
         context.log.warning(format_located(
             fp.capture_method.temporal_integration.where,
@@ -176,6 +171,11 @@ FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t s
     if (const std::optional<model::Psf>& psf = fp.capture_method.psf) {
         state.psf = PsfSampler::from_model(*psf);
         state.header.set_extra("glint psf", state.psf->description());
+    }
+    if (const std::optional<ThinLens>& lens = state.camera.thin_lens()) {
+        state.header.set_extra("glint focus", "distance " + format_shortest(lens->focus_distance_m) +
+                                                  " m, aperture " +
+                                                  format_shortest(lens->aperture_diameter_m) + " m");
     }
     if (!fp.capture_method.active_area_image.empty()) {
         state.mask = ActiveArea::from_model(fp.capture_method.active_area_image);

@@ -46,6 +46,13 @@ namespace glint::sensor {
 
 using motion::Vec3;
 
+/// A finite focus (<focusdistance> with <aperturediameter>): a thin lens at the instrument
+/// origin, in the instrument's XY plane.
+struct ThinLens {
+    double aperture_diameter_m = 0.0;
+    double focus_distance_m = 0.0;  ///< along the boresight (−Z)
+};
+
 /// The camera of one focal plane.
 class CameraModel {
 public:
@@ -82,6 +89,12 @@ public:
     /// j + ½ + (v − ½) s_y/p_y).
     std::optional<std::array<double, 2>> project(const Vec3& d) const noexcept;
 
+    /// The finite focus, when the instrument has one (docs/camera.md §9).
+    const std::optional<ThinLens>& thin_lens() const noexcept { return m_lens; }
+    /// Diameter (column pixels) of the blur of a point at `depth_m` along the boresight:
+    /// f·D·|depth − focus| / (depth·focus·pitch_x); 0 without a finite focus.
+    double blur_diameter_px(double depth_m) const noexcept;
+
 private:
     std::size_t m_columns = 0;
     std::size_t m_rows = 0;
@@ -92,6 +105,7 @@ private:
     bool m_x_flip = false;
     bool m_y_flip = false;
     std::optional<model::Distortion> m_distortion;
+    std::optional<ThinLens> m_lens;
 };
 
 /// When in a capture each pixel integrates.
@@ -107,7 +121,8 @@ struct CaptureTiming {
 
 /// The sample rays of one capture: problem p is pixel (p % columns, p / columns) in output
 /// order (flips are the camera's business); sample n draws, in this order, u, v (element
-/// area), then τ (window), then, with a PSF, two uniforms for its offset (PsfSampler), each
+/// area), then τ (window), then, with a PSF, two uniforms for its offset (PsfSampler), then,
+/// with a thin lens (CameraModel::thin_lens), two uniforms for the aperture point, each
 /// from rng.uniform(); its time is t0 + row × line time + τ
 /// (t1 − t0) (row = the output line), its origin the instrument's origin and its direction the
 /// camera direction turned into scene ENU, both from the pose service at that time. Weight 1.
