@@ -36,14 +36,6 @@ GreyImage left_half_black() {
     return mask;
 }
 
-class Hover : public motion::Trajectory {
-public:
-    motion::Pose pose_at(double) const override {
-        return {{0, 0, 1000.0}, motion::euler_to_quaternion({}, motion::EulerOrder::xyz)};
-    }
-    Vec3 velocity_m_s(double) const override { return {}; }
-    std::optional<motion::TimeSpan> span() const override { return std::nullopt; }
-};
 
 TEST(ActiveArea, LeftHalfBlackMovesTheCentroidAQuarterElementAndHalvesTheResponse) {
     const ActiveArea mask(left_half_black(), "half.png");
@@ -58,7 +50,7 @@ TEST(ActiveArea, LeftHalfBlackMovesTheCentroidAQuarterElementAndHalvesTheRespons
     model::InstrumentProperties p;
     p.focal_length_m = 0.1;
     const CameraModel camera(p, a, 10, 6);
-    const motion::PoseService poses(test::one_mount_platform(), std::make_unique<Hover>(), {}, {});
+    const motion::PoseService poses(test::one_mount_platform(), std::make_unique<test::HoverTrajectory>(1000.0), {}, {});
     const motion::Rigid to_instrument = motion::inverse(poses.instrument_to_scene(0, 0.0));
     for (const bool masked : {false, true}) {
         const PixelRaySource source(camera, poses, 0, {0.0, 0.0, 0.0}, nullptr,

@@ -165,14 +165,6 @@ constexpr std::size_t kRows = 160;
 constexpr double kEdgeAngle_rad = 5.0 * kPi / 180.0;
 constexpr double kBin_px = 0.25;  // ESF oversampling ×4, as ISO 12233
 
-class Hover : public motion::Trajectory {
-public:
-    motion::Pose pose_at(double) const override {
-        return {{0, 0, kHeight_m}, motion::euler_to_quaternion({}, motion::EulerOrder::xyz)};
-    }
-    Vec3 velocity_m_s(double) const override { return {}; }
-    std::optional<motion::TimeSpan> span() const override { return std::nullopt; }
-};
 
 double sinc(double x) { return x == 0.0 ? 1.0 : std::sin(kPi * x) / (kPi * x); }
 
@@ -194,7 +186,7 @@ std::vector<double> edge_mtf(const PsfSampler* psf, const std::vector<double>& f
     model::InstrumentProperties p;
     p.focal_length_m = kFocal_m;
     const CameraModel camera(p, a, kColumns, kRows);
-    const motion::PoseService poses(test::one_mount_platform(), std::make_unique<Hover>(), {}, {});
+    const motion::PoseService poses(test::one_mount_platform(), std::make_unique<test::HoverTrajectory>(kHeight_m), {}, {});
     const PixelRaySource source(camera, poses, 0, {0.0, 0.0, 0.0}, psf);
     const motion::Rigid to_instrument = motion::inverse(poses.instrument_to_scene(0, 0.0));
 

@@ -26,14 +26,6 @@ constexpr double kFocal_m = 0.1;
 constexpr double kPitch_m = 10e-6;
 constexpr double kAperture_m = 0.2;
 
-class Hover : public motion::Trajectory {
-public:
-    motion::Pose pose_at(double) const override {
-        return {{0, 0, kHeight_m}, motion::euler_to_quaternion({}, motion::EulerOrder::xyz)};
-    }
-    Vec3 velocity_m_s(double) const override { return {}; }
-    std::optional<motion::TimeSpan> span() const override { return std::nullopt; }
-};
 
 struct Spread {
     double max_radius_px = 0.0;
@@ -53,7 +45,7 @@ Spread ground_spread(double focus_m) {
     p.aperture_diameter_m = kAperture_m;
     p.focus_distance_m = focus_m;
     const CameraModel camera(p, a, 24, 16);
-    const motion::PoseService poses(test::one_mount_platform(), std::make_unique<Hover>(), {}, {});
+    const motion::PoseService poses(test::one_mount_platform(), std::make_unique<test::HoverTrajectory>(kHeight_m), {}, {});
     const PixelRaySource source(camera, poses, 0, {0.0, 0.0, 0.0});
     const motion::Rigid pose = poses.instrument_to_scene(0, 0.0);
     const motion::Rigid to_instrument = motion::inverse(pose);

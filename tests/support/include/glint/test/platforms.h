@@ -6,6 +6,8 @@
 #include <memory>
 
 #include "glint/model/platform.h"
+#include "glint/motion/euler.h"
+#include "glint/motion/trajectory.h"
 
 namespace glint::test {
 
@@ -26,5 +28,20 @@ inline std::shared_ptr<model::Platform> one_mount_platform(
     platform->attachments.push_back(outer);
     return platform;
 }
+
+/// A vehicle hovering level at (0, 0, height_m) in scene ENU: with one_mount_platform, a
+/// nadir camera.
+class HoverTrajectory : public motion::Trajectory {
+public:
+    explicit HoverTrajectory(double height_m) : m_height_m(height_m) {}
+    motion::Pose pose_at(double) const override {
+        return {{0, 0, m_height_m}, motion::euler_to_quaternion({}, motion::EulerOrder::xyz)};
+    }
+    motion::Vec3 velocity_m_s(double) const override { return {}; }
+    std::optional<motion::TimeSpan> span() const override { return std::nullopt; }
+
+private:
+    double m_height_m;
+};
 
 }  // namespace glint::test
