@@ -82,7 +82,13 @@ io::EnviHeader header_of(const schedule::ClockedFocalPlane& source, const Output
                                          format_shortest(convergence.threshold_w_per_cm2_sr_um));
     h.set_extra("glint scale resolution", format_shortest(options.schedule.scale_resolution));
     if (source.tdi_stages > 1) h.set_extra("glint tdi stages", std::to_string(source.tdi_stages));
-    h.set_extra("glint split channels", options.split_channels ? "true" : "false");
+    // The option, or the BasicPlatform entry's split_channels (recorded; not applied yet).
+    const std::vector<model::Plugin>& plugins = inputs.simulation.plugins;
+    const bool entry_splits = plugin.plugin_index < plugins.size() &&
+                              plugins[plugin.plugin_index].basic_platform &&
+                              plugins[plugin.plugin_index].basic_platform->split_channels;
+    h.set_extra("glint split channels",
+                options.split_channels || entry_splits ? "true" : "false");
     h.set_extra("glint atmosphere", model::to_string(inputs.atmosphere.kind));
     const auto& per_channel = units.description().per_channel_units;
     if (!per_channel.empty()) {
