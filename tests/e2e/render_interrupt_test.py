@@ -25,30 +25,34 @@ def files_under(folder):
     return left
 
 
-def wait_for_folder_lock(folder, process, timeout_s=120.0):
-    """Waits until /proc/locks shows a lock on `folder` (a probe that takes no lock)."""
+def wait_for_handler(process, sig, timeout_s=300.0):
+    """Waits until the process has a handler for `sig` (its SigCgt mask in /proc), so the
+    signal cannot strike before the tool installs its handlers (a slow start under ASan)."""
     deadline = time.monotonic() + timeout_s
     while time.monotonic() < deadline and process.poll() is None:
-        if os.path.isdir(folder):
-            inode = os.stat(folder).st_ino
-            with open("/proc/locks") as locks:
-                if any(":%d " % inode in line for line in locks):
-                    return
+        try:
+            with open("/proc/%d/status" % process.pid) as status:
+                for line in status:
+                    if line.startswith("SigCgt:") and (int(line.split()[1], 16) >> (sig - 1)) & 1:
+                        return
+        except FileNotFoundError:
+            break
         time.sleep(0.02)
-    raise AssertionError("glint-render never locked %s" % folder)
+    raise AssertionError("glint-render never installed a handler for %s" % sig.name)
 
 
 def stop_with(args, sig):
     work = os.path.join(args.work, sig.name)
     out = os.path.join(work, "out")
     os.makedirs(work)
-    # 3 captures x 48 pixels x 200 000 samples: far longer than the wait for the lock.
+    # 3 captures x 48 pixels x 200 000 samples: far longer than the wait before the signal.
     command = [os.path.join(args.bin, "glint-render"), os.path.join(args.data, "render", "one.jsim"),
                "--output-folder", out, "--convergence", "200000,200000,0", "--threads", "2"]
     process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
-    # Signal once the render holds its output folder's lock (it is tracing then): a fixed
-    # delay could strike before the tool has installed its handlers on a slow start (ASan).
-    wait_for_folder_lock(out, process)
+    # Signal once the tool handles it, and a moment later (it is at work then): a fixed delay
+    # could strike before the handlers are installed on a slow start (ASan, a loaded machine).
+    wait_for_handler(process, sig)
+    time.sleep(0.5)
     assert process.poll() is None, "glint-render ended before the signal: the job is too small"
     started = time.monotonic()
     process.send_signal(sig)
