@@ -53,7 +53,7 @@ std::vector<SampleRay> primary_rays(const radiometry::RaySource& source, std::ui
     std::vector<SampleRay> rays(count * samples);
     parallel(count, 0, [&](std::size_t p) {
         for (std::uint64_t n = 0; n < samples; ++n) {
-            RandomStream rng(key.seed, {key.plugin, key.task, key.capture, p, n});
+            RandomStream rng = radiometry::sample_stream(key, p, n);
             rays[p * samples + n] = source.generate(p, n, rng);
         }
     });

@@ -103,7 +103,8 @@ TracerTiming time_trace_only(const radiometry::PathTracer& tracer,
                              std::uint64_t samples, const radiometry::StreamKey& key,
                              unsigned threads, unsigned repeats) {
     struct Workspace {
-        explicit Workspace(std::size_t bands) : scratch(bands), radiance(bands) {}
+        explicit Workspace(const radiometry::PathTracer& tracer)
+            : scratch(tracer.environment().bands()), radiance(tracer.bands()) {}
         radiometry::PathScratch scratch;
         std::vector<double> radiance;
         double checksum = 0.0;  ///< keeps the compiler from dropping the work
@@ -111,23 +112,22 @@ TracerTiming time_trace_only(const radiometry::PathTracer& tracer,
     tbb::task_arena arena(threads == 0 ? tbb::task_arena::automatic : static_cast<int>(threads));
     TracerTiming best;
     for (unsigned r = 0; r < std::max(1u, repeats); ++r) {
-        tbb::enumerable_thread_specific<Workspace> workspaces(
-            [&] { return Workspace(tracer.bands()); });
+        tbb::enumerable_thread_specific<Workspace> workspaces([&] { return Workspace(tracer); });
         const auto start = std::chrono::steady_clock::now();
         arena.execute([&] {
-            tbb::parallel_for(
-                tbb::blocked_range<std::uint64_t>(0, count, 16),
-                [&](const tbb::blocked_range<std::uint64_t>& range) {
-                    Workspace& ws = workspaces.local();
-                    for (std::uint64_t p = range.begin(); p != range.end(); ++p) {
-                        for (std::uint64_t n = 0; n < samples; ++n) {
-                            RandomStream rng(key.seed, {key.plugin, key.task, key.capture, p, n});
-                            const radiometry::SampleRay ray = source.generate(p, n, rng);
-                            tracer.trace(ray, rng, ws.scratch, ws.radiance);
-                            ws.checksum += ws.radiance[0];
-                        }
-                    }
-                });
+            tbb::parallel_for(tbb::blocked_range<std::uint64_t>(0, count, 16),
+                              [&](const tbb::blocked_range<std::uint64_t>& range) {
+                                  Workspace& ws = workspaces.local();
+                                  for (std::uint64_t p = range.begin(); p != range.end(); ++p) {
+                                      for (std::uint64_t n = 0; n < samples; ++n) {
+                                          RandomStream rng = radiometry::sample_stream(key, p, n);
+                                          const radiometry::SampleRay ray =
+                                              source.generate(p, n, rng);
+                                          tracer.trace(ray, rng, ws.scratch, ws.radiance);
+                                          ws.checksum += ws.radiance[0];
+                                      }
+                                  }
+                              });
         });
         TracerTiming t;
         t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -30,8 +30,8 @@ void RenderCli::configure(CLI::App& app) {
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
     app.add_flag("--split-channels,--split_channels", m_options.render.split_channels,
-                 "Submit each channel as its own spectral state (recorded; no dispersion is "
-                 "modelled, so the result is the same)");
+                 "Render each channel as its own spectral state (own bands, random streams "
+                 "and convergence; same expectation: no dispersion is modelled)");
     app.add_option("--schedule", m_options.schedule,
                    "Render only the captures of this glint-schedule JSON (a subset or shard)")
         ->type_name("FILE");

@@ -65,7 +65,7 @@ OrderedJson platform_inputs(const model::Plugin& plugin, const std::filesystem::
     out[kTasksFilename] = write_path(in.tasks_file, folder);
     if (in.output_folder) out[kOutputFolder] = *in.output_folder;
     if (in.output_prefix) out[kOutputPrefix] = *in.output_prefix;
-    out[kSplitChannels] = in.split_channels;
+    out[kSplitChannels] = in.split_channels.value_or(false);
     // Keys glint does not know (warned about when read) are carried over unchanged.
     const OrderedJson kept = parse_kept(plugin.inputs_json, "plugin inputs");
     if (kept.is_object()) {

@@ -48,7 +48,21 @@ double scale_throughput(std::span<double> throughput, std::span<const double> re
 
 PathTracer::PathTracer(const scene::GeometryScene& scene, const MaterialTable& materials,
                        const Environment& environment, TracerSettings settings)
-    : m_scene(scene), m_materials(materials), m_environment(environment), m_settings(settings) {
+    : PathTracer(scene, materials, environment, settings, BandRange{0, environment.bands()}) {}
+
+PathTracer::PathTracer(const scene::GeometryScene& scene, const MaterialTable& materials,
+                       const Environment& environment, TracerSettings settings, BandRange range)
+    : m_scene(scene),
+      m_materials(materials),
+      m_environment(environment),
+      m_settings(settings),
+      m_range(range) {
+    if (range.count == 0 || range.first > environment.bands() ||
+        range.count > environment.bands() - range.first) {
+        throw usage_error("band range " + std::to_string(range.first) + " + " +
+                          std::to_string(range.count) + " does not fit " +
+                          std::to_string(environment.bands()) + " bands");
+    }
     if (materials.size() > 0 && materials.bands() != environment.bands()) {
         throw input_error("the materials have " + std::to_string(materials.bands()) +
                           " bands and the environment " + std::to_string(environment.bands()));
@@ -62,16 +76,18 @@ PathTracer::PathTracer(const scene::GeometryScene& scene, const MaterialTable& m
 void PathTracer::trace(const SampleRay& ray, RandomStream& rng, PathScratch& scratch,
                        std::span<double> radiance) const {
     const Environment& env = m_environment;
+    const std::size_t first = m_range.first;
+    const std::size_t count = m_range.count;
     std::fill(radiance.begin(), radiance.end(), 0.0);
-    std::span<double> beta(scratch.throughput);
+    std::span<double> beta = std::span<double>(scratch.throughput).first(count);
     std::fill(beta.begin(), beta.end(), 1.0);
+    const std::span<const double> sky = env.sky_radiance_w_per_cm2_sr_um().subspan(first, count);
     const double time = ray.time_s;
 
     std::optional<scene::RayHit> hit = m_scene.intersect(ray.origin_m, ray.direction, time);
     ++scratch.rays;
     if (!hit) {
         if (ray.direction.z > 0.0 && !env.sky_black()) {
-            const auto sky = env.sky_radiance_w_per_cm2_sr_um();
             std::copy(sky.begin(), sky.end(), radiance.begin());
         }
         return;
@@ -83,11 +99,11 @@ void PathTracer::trace(const SampleRay& ray, RandomStream& rng, PathScratch& scr
         const Vec3 wo = -direction;
         const Vec3 normal = dot(hit->normal, wo) < 0.0 ? -hit->normal : hit->normal;
         const bool reflects = m_materials.reflects(m);
-        const auto rho = m_materials.reflectance(m);
+        const auto rho = m_materials.reflectance(m).subspan(first, count);
 
         // Emission and the sun by next-event estimation.
         const double* emission =
-            m_materials.emits(m) ? m_materials.emission_w_per_cm2_sr_um(m).data() : nullptr;
+            m_materials.emits(m) ? m_materials.emission_w_per_cm2_sr_um(m).data() + first : nullptr;
         double sun_factor = 0.0;
         const Frame frame = Frame::from_normal(normal);
         const Vec3 wo_local = frame.to_local(wo);
@@ -104,9 +120,10 @@ void PathTracer::trace(const SampleRay& ray, RandomStream& rng, PathScratch& scr
                 }
             }
         }
-        add_vertex_light(radiance, beta, emission, rho.data(),
-                         sun_factor > 0.0 ? env.sun_irradiance_w_per_cm2_um().data() : nullptr,
-                         sun_factor);
+        add_vertex_light(
+            radiance, beta, emission, rho.data(),
+            sun_factor > 0.0 ? env.sun_irradiance_w_per_cm2_um().data() + first : nullptr,
+            sun_factor);
 
         // Continue the path.
         if (!reflects || bounce >= m_settings.max_bounces) break;
@@ -130,7 +147,6 @@ void PathTracer::trace(const SampleRay& ray, RandomStream& rng, PathScratch& scr
         ++scratch.rays;
         if (!hit) {
             if (wi.z > 0.0 && !env.sky_black()) {
-                const auto sky = env.sky_radiance_w_per_cm2_sr_um();
                 for (std::size_t b = 0; b < radiance.size(); ++b) radiance[b] += beta[b] * sky[b];
             }
             break;
@@ -140,8 +156,10 @@ void PathTracer::trace(const SampleRay& ray, RandomStream& rng, PathScratch& scr
 
     if (env.has_sensor_path()) {
         env.sensor_path(-ray.direction, time, scratch.sensor_transmittance, scratch.path_radiance);
+        const double* transmittance = scratch.sensor_transmittance.data() + first;
+        const double* path = scratch.path_radiance.data() + first;
         for (std::size_t b = 0; b < radiance.size(); ++b) {
-            radiance[b] = scratch.sensor_transmittance[b] * radiance[b] + scratch.path_radiance[b];
+            radiance[b] = transmittance[b] * radiance[b] + path[b];
         }
     }
 }

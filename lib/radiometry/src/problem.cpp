@@ -22,7 +22,8 @@ namespace {
 
 /// Per-thread buffers of the convergence loop (the "arena" of one worker).
 struct Workspace {
-    explicit Workspace(std::size_t bands) : path(bands), sample(bands), sum(bands) {}
+    explicit Workspace(const PathTracer& tracer)
+        : path(tracer.environment().bands()), sample(tracer.bands()), sum(tracer.bands()) {}
     PathScratch path;
     std::vector<double> sample;  ///< one sample's radiance
     std::vector<double> sum;     ///< Σ w L per band
@@ -78,7 +79,7 @@ std::pair<std::uint64_t, double> solve_into(const PathTracer& tracer, const Prob
     double spread = 0.0;
     std::uint64_t n = 0;
     while (n < c.max_samples) {
-        RandomStream rng(k.seed, {k.plugin, k.task, k.capture, problem, n});
+        RandomStream rng = sample_stream(k, problem, n);
         const SampleRay ray = batch.source->generate(problem, n, rng);
         if (!(ray.weight > 0.0) || !std::isfinite(ray.weight)) {
             throw input_error("sample " + std::to_string(n) + " of problem " +
@@ -108,6 +109,14 @@ std::pair<std::uint64_t, double> solve_into(const PathTracer& tracer, const Prob
 
 }  // namespace
 
+RandomStream sample_stream(const StreamKey& key, std::uint64_t problem, std::uint64_t sample) {
+    if (key.spectral_state) {
+        return RandomStream(
+            key.seed, {key.plugin, key.task, key.capture, problem, sample, *key.spectral_state});
+    }
+    return RandomStream(key.seed, {key.plugin, key.task, key.capture, problem, sample});
+}
+
 std::size_t nearest_band(const SpectralGrid& grid, double wavelength_um) noexcept {
     const auto w = grid.wavelengths_um();
     std::size_t best = 0;
@@ -119,7 +128,7 @@ std::size_t nearest_band(const SpectralGrid& grid, double wavelength_um) noexcep
 
 Solution solve(const PathTracer& tracer, const ProblemBatch& batch, std::uint64_t problem) {
     check_batch(tracer, batch);
-    Workspace ws(tracer.bands());
+    Workspace ws(tracer);
     Solution solution;
     solution.radiance_w_per_cm2_sr_um.resize(tracer.bands());
     const auto [samples, error] =
@@ -140,8 +149,7 @@ Solutions solve(const PathTracer& tracer, const ProblemBatch& batch, const Conte
     const int threads =
         context.threads == 0 ? tbb::task_arena::automatic : static_cast<int>(context.threads);
     tbb::task_arena arena(threads);
-    tbb::enumerable_thread_specific<Workspace> workspaces(
-        [&] { return Workspace(tracer.bands()); });
+    tbb::enumerable_thread_specific<Workspace> workspaces([&] { return Workspace(tracer); });
     std::atomic<std::uint64_t> done{0};
     std::mutex progress_mutex;
     const std::uint64_t report_every = std::max<std::uint64_t>(1, batch.count / 100);

@@ -226,4 +226,31 @@ void OutputUnits::apply(std::span<const double> radiance_w_per_cm2_sr_um,
     }
 }
 
+BandRange OutputUnits::support(std::size_t channel) const noexcept {
+    const double* row = m_weights.data() + channel * m_bands;
+    std::size_t first = 0;
+    while (first < m_bands && row[first] == 0.0) ++first;
+    if (first == m_bands) return {0, 0};
+    std::size_t last = m_bands - 1;
+    while (row[last] == 0.0) --last;
+    return {first, last - first + 1};
+}
+
+double OutputUnits::channel_value(std::size_t channel, std::size_t first_band,
+                                  std::span<const double> radiance_w_per_cm2_sr_um) const {
+    const std::size_t count = radiance_w_per_cm2_sr_um.size();
+    const BandRange needed = channel < m_channels ? support(channel) : BandRange{};
+    if (channel >= m_channels || first_band > m_bands || count > m_bands - first_band ||
+        (needed.count > 0 &&
+         (needed.first < first_band || needed.first + needed.count > first_band + count))) {
+        throw internal_error("output units: channel " + std::to_string(channel) + " from bands " +
+                             std::to_string(first_band) + " + " + std::to_string(count) + " of " +
+                             std::to_string(m_bands));
+    }
+    const double* row = m_weights.data() + channel * m_bands + first_band;
+    double sum = 0.0;
+    for (std::size_t b = 0; b < count; ++b) sum += row[b] * radiance_w_per_cm2_sr_um[b];
+    return sum + m_bias[channel];
+}
+
 }  // namespace glint::sensor

@@ -65,6 +65,29 @@ radiometry::Environment capture_environment(const RenderInputs& in, const FocalP
     return radiometry::Environment::make(state.grid, *in.atmosphere_model, *in.sun, env, &cache);
 }
 
+/// The channel values of the pixels of one spectral state's solutions into `image` (pixel
+/// after pixel, units.channels() values each): every channel for the focal plane's one
+/// state, its own channel for a split state. A masked element's radiance is its mean
+/// sensitivity's share (active_area.h).
+void store_channels(const FocalPlaneState& state, const SpectralState& spectral,
+                    const radiometry::Solutions& solutions, std::vector<double>& image) {
+    const std::size_t channels = state.units.channels();
+    const double share = state.mask ? state.mask->mean_sensitivity() : 1.0;
+    std::vector<double> radiance(solutions.bands);
+    const std::size_t pixels = solutions.samples.size();
+    for (std::size_t i = 0; i < pixels; ++i) {
+        const std::span<const double> solved = solutions.radiance(i);
+        for (std::size_t b = 0; b < radiance.size(); ++b) radiance[b] = solved[b] * share;
+        double* out = image.data() + i * channels;
+        if (spectral.channel) {
+            out[*spectral.channel] =
+                state.units.channel_value(*spectral.channel, spectral.bands.first, radiance);
+        } else {
+            state.units.apply(radiance, std::span<double>(out, channels));
+        }
+    }
+}
+
 }  // namespace
 
 CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
@@ -83,7 +106,6 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
 
     const radiometry::Environment environment =
         capture_environment(in, state, capture, source, path_cache);
-    const radiometry::PathTracer tracer(geometry, state.materials, environment, options.tracer);
     CaptureTiming timing{capture.t0_s, capture.t1_s, source.rolling_line_time_s().value_or(0.0),
                          source.tdi_stages};
     const PixelRaySource rays(state.camera, *plugin.poses, source.instrument_index, timing,
@@ -92,10 +114,10 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
     radiometry::ProblemBatch batch;
     // The capture's global schedule index: unique per focal plane and capture, so focal
     // planes imaging at the same moment draw independent numbers.
-    batch.key = {options.schedule.seed, plugin.plugin_index, capture.task_index, capture.index};
+    batch.key = {options.schedule.seed, plugin.plugin_index, capture.task_index, capture.index,
+                 std::nullopt};
     batch.source = &rays;
     batch.convergence = state.convergence;
-    batch.reference_band = state.reference_band;
     batch.count = source.problems_per_capture;
     const double multiplier =
         source.focal_plane->capture_method.sample_strategy.hypersampling_multiplier;
@@ -107,31 +129,30 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
         batch.hypersampled = important;
         batch.hypersampling_multiplier = multiplier;
     }
-    const radiometry::Solutions solutions = radiometry::solve(tracer, batch, quiet);
-
     const std::size_t channels = state.units.channels();
     image.assign(batch.count * channels, 0.0);
+    std::vector<std::uint64_t> samples(batch.count, 0);  // per pixel, over the states
     CaptureReport stats;
+    for (const SpectralState& spectral : state.spectral_states) {
+        const radiometry::PathTracer tracer(geometry, state.materials, environment, options.tracer,
+                                            spectral.bands);
+        batch.key.spectral_state = spectral.channel;
+        batch.reference_band = spectral.reference_band - spectral.bands.first;
+        const radiometry::Solutions solutions = radiometry::solve(tracer, batch, quiet);
+        store_channels(state, spectral, solutions, image);
+        for (std::uint64_t i = 0; i < batch.count; ++i) samples[i] += solutions.samples[i];
+        stats.rays += solutions.rays;
+    }
     stats.index = capture.index;
     stats.pixels = batch.count;
-    stats.min_samples = batch.count ? solutions.samples.front() : 0;
-    std::uint64_t total_samples = 0;
-    std::vector<double> masked;  // a masked element's radiance share (active_area.h)
-    for (std::uint64_t i = 0; i < batch.count; ++i) {
-        std::span<const double> radiance = solutions.radiance(i);
-        if (state.mask) {
-            masked.assign(radiance.begin(), radiance.end());
-            for (double& value : masked) value *= state.mask->mean_sensitivity();
-            radiance = masked;
-        }
-        state.units.apply(radiance, std::span<double>(image.data() + i * channels, channels));
-        stats.min_samples = std::min(stats.min_samples, solutions.samples[i]);
-        stats.max_samples = std::max(stats.max_samples, solutions.samples[i]);
-        total_samples += solutions.samples[i];
+    if (!samples.empty()) {
+        const auto [least, most] = std::minmax_element(samples.begin(), samples.end());
+        stats.min_samples = *least;
+        stats.max_samples = *most;
+        double total = 0.0;
+        for (const std::uint64_t n : samples) total += static_cast<double>(n);
+        stats.mean_samples = total / static_cast<double>(samples.size());
     }
-    stats.mean_samples =
-        batch.count ? static_cast<double>(total_samples) / static_cast<double>(batch.count) : 0.0;
-    stats.rays = solutions.rays;
     if (state.detection) {
         // Detection line by line, keyed like glint-detect: (capture index, line in capture).
         const detect::DetectionChain& chain = *state.detection;

@@ -32,6 +32,18 @@ bool renders(const schedule::ClockedFocalPlane& source, std::string& why) {
     return true;
 }
 
+bool splits_channels(const RenderInputs& inputs, std::size_t plugin_index,
+                     const RenderOptions& options) {
+    const std::vector<model::Plugin>& plugins = inputs.simulation.plugins;
+    if (plugin_index < plugins.size() && plugins[plugin_index].basic_platform) {
+        if (const std::optional<bool> entry =
+                plugins[plugin_index].basic_platform->split_channels) {
+            return *entry;
+        }
+    }
+    return options.split_channels;
+}
+
 namespace {
 
 radiometry::Convergence convergence_of(const model::FocalPlane& fp, const RenderOptions& options) {
@@ -82,13 +94,8 @@ io::EnviHeader header_of(const schedule::ClockedFocalPlane& source, const Output
                                          format_shortest(convergence.threshold_w_per_cm2_sr_um));
     h.set_extra("glint scale resolution", format_shortest(options.schedule.scale_resolution));
     if (source.tdi_stages > 1) h.set_extra("glint tdi stages", std::to_string(source.tdi_stages));
-    // The option, or the BasicPlatform entry's split_channels (recorded; not applied yet).
-    const std::vector<model::Plugin>& plugins = inputs.simulation.plugins;
-    const bool entry_splits = plugin.plugin_index < plugins.size() &&
-                              plugins[plugin.plugin_index].basic_platform &&
-                              plugins[plugin.plugin_index].basic_platform->split_channels;
     h.set_extra("glint split channels",
-                options.split_channels || entry_splits ? "true" : "false");
+                splits_channels(inputs, plugin.plugin_index, options) ? "true" : "false");
     h.set_extra("glint atmosphere", model::to_string(inputs.atmosphere.kind));
     const auto& per_channel = units.description().per_channel_units;
     if (!per_channel.empty()) {
@@ -123,6 +130,28 @@ model::CaptureMethod units_method(const schedule::ClockedFocalPlane& source,
         }
     }
     return method;
+}
+
+/// The focal plane's spectral states: one over the whole grid, or, split, one per channel
+/// over the bands its response covers, each converging at the band nearest its centre.
+std::vector<SpectralState> spectral_states(const SpectralGrid& grid, const OutputUnits& units,
+                                           bool split) {
+    const auto centre_band = [&](BandRange r) {
+        const double lo = grid.wavelength_um(r.first);
+        const double hi = grid.wavelength_um(r.first + r.count - 1);
+        return radiometry::nearest_band(grid, 0.5 * (lo + hi));
+    };
+    const BandRange all{0, grid.size()};
+    if (!split) return {SpectralState{all, centre_band(all), std::nullopt}};
+    std::vector<SpectralState> states;
+    for (std::size_t c = 0; c < units.channels(); ++c) {
+        const BandRange bands = units.support(c);
+        // A channel that weighs no band (OutputUnits refuses one without response; a zero
+        // gain) is its bias alone: one band traced, weighed by nothing.
+        const BandRange traced = bands.count > 0 ? bands : BandRange{0, 1};
+        states.push_back(SpectralState{traced, centre_band(traced), c});
+    }
+    return states;
 }
 
 /// The header of detected output: counts (or a mosaic), glint-detect's keys.
@@ -162,26 +191,28 @@ FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t s
                 "integration window (as DIRSIG5 does)"));
     }
     SpectralGrid grid = model::bandpass_grid(fp.capture_method.spectral_response.bandpass);
-    const double centre_um = 0.5 * (grid.min_um() + grid.max_um());
-    const std::size_t reference = radiometry::nearest_band(grid, centre_um);
     radiometry::MaterialTable materials(inputs.scene.materials, grid, context.log);
     CameraModel camera(source.instrument->properties, fp.detector_array, source.x_count,
                        source.y_count);
     OutputUnits units(units_method(source, context), source.instrument->properties, grid);
+    std::vector<SpectralState> states = spectral_states(
+        grid, units,
+        splits_channels(inputs, inputs.schedule->plugins()[source.plugin].plugin_index, options));
 
     const radiometry::Convergence convergence = convergence_of(fp, options);
     io::EnviHeader header = header_of(source, units, convergence, options, inputs, context);
-    FocalPlaneState state{std::move(grid),  reference,   std::move(materials), std::move(camera),
-                          std::move(units), convergence, std::move(header),    std::nullopt,
-                          std::nullopt,     std::nullopt};
+    FocalPlaneState state{std::move(grid),   std::move(states), std::move(materials),
+                          std::move(camera), std::move(units),  convergence,
+                          std::move(header), std::nullopt,      std::nullopt,
+                          std::nullopt};
     if (const std::optional<model::Psf>& psf = fp.capture_method.psf) {
         state.psf = PsfSampler::from_model(*psf);
         state.header.set_extra("glint psf", state.psf->description());
     }
     if (const std::optional<ThinLens>& lens = state.camera.thin_lens()) {
-        state.header.set_extra("glint focus", "distance " + format_shortest(lens->focus_distance_m) +
-                                                  " m, aperture " +
-                                                  format_shortest(lens->aperture_diameter_m) + " m");
+        state.header.set_extra(
+            "glint focus", "distance " + format_shortest(lens->focus_distance_m) + " m, aperture " +
+                               format_shortest(lens->aperture_diameter_m) + " m");
     }
     if (!fp.capture_method.active_area_image.empty()) {
         state.mask = ActiveArea::from_model(fp.capture_method.active_area_image);

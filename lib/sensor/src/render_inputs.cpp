@@ -13,10 +13,6 @@ namespace glint::sensor::detail {
 
 namespace {
 
-constexpr const char* kSplitChannelsNotApplied =
-    "split_channels is read and recorded, not applied yet: the channels of a focal plane "
-    "share one spectral sampling and random stream";
-
 void build_all(RenderInputs& in, model::SimulationInputs loaded, const RenderOptions& options,
                const Context& context, Diagnostics& diagnostics) {
     in.schedule.emplace(
@@ -38,14 +34,15 @@ void build_all(RenderInputs& in, model::SimulationInputs loaded, const RenderOpt
     for (const model::Instance& instance : in.scene.instances) {
         in.dynamic_scene = in.dynamic_scene || instance.dynamic();
     }
-    // split_channels is recorded in the headers but not applied yet: one warning, where it
-    // was asked for (the option, or each BasicPlatform entry that sets it).
+    // A BasicPlatform entry's split_channels takes precedence over the option (as the DIRSIG5
+    // BasicPlatform manual says): the option overruled by an entry's false is said once.
     if (options.split_channels) {
-        diagnostics.warning(ErrorContext{{}, 0, "--split-channels"}, kSplitChannelsNotApplied);
-    }
-    for (const model::Plugin& plugin : in.simulation.plugins) {
-        if (plugin.basic_platform && plugin.basic_platform->split_channels) {
-            diagnostics.warning(plugin.where, kSplitChannelsNotApplied);
+        for (const model::Plugin& plugin : in.simulation.plugins) {
+            if (plugin.basic_platform && plugin.basic_platform->split_channels == false) {
+                diagnostics.warning(plugin.where,
+                                    "split_channels false takes precedence over "
+                                    "--split-channels: this plugin's channels are not split");
+            }
         }
     }
 }

@@ -51,10 +51,21 @@ struct RenderInputs {
 RenderInputs make_render_inputs(model::SimulationInputs loaded, const RenderOptions& options,
                                 const Context& context);
 
+/// A spectral state, as the DIRSIG5 BasicPlatform manual's "Split Channels into States" has
+/// it: the bands of the focal plane's grid that one set of sample paths follows, and the
+/// band its convergence watches. A focal plane is one state (all its bands, all channels),
+/// or, with split channels, one state per channel (the bands its response covers), each with
+/// its own random streams (docs/camera.md, "Spectral states").
+struct SpectralState {
+    BandRange bands;
+    std::size_t reference_band = 0;      ///< index into the focal plane's grid
+    std::optional<std::size_t> channel;  ///< the channel it alone renders, when split
+};
+
 /// What one focal plane needs for every capture.
 struct FocalPlaneState {
     SpectralGrid grid;
-    std::size_t reference_band = 0;
+    std::vector<SpectralState> spectral_states;  ///< one, or one per channel when split
     radiometry::MaterialTable materials;
     CameraModel camera;
     OutputUnits units;
@@ -77,6 +88,11 @@ struct FocalPlaneState {
 /// detect::resolve_detection refuses.
 FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t source,
                                        const RenderOptions& options, const Context& context);
+
+/// Whether the channels of the focal planes of plugin entry `plugin_index` are split: the
+/// BasicPlatform entry's split_channels when it has one, else the option.
+bool splits_channels(const RenderInputs& inputs, std::size_t plugin_index,
+                     const RenderOptions& options);
 
 /// Whether a schedule source produces an image glint renders (a generic instrument's
 /// enabled focal plane with an image file); `why` gets the reason when not.

@@ -6,7 +6,6 @@
 // with round trips .sim -> format_jsim -> read_jsim and .jsim -> format_jsim -> read_jsim.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-
 #include <sys/resource.h>
 
 #include <fstream>
@@ -62,7 +61,8 @@ void expect_same(const model::Simulation& a, const model::Simulation& b) {
             EXPECT_EQ(p.basic_platform->tasks_file.resolved, q.basic_platform->tasks_file.resolved);
             EXPECT_EQ(p.basic_platform->output_folder, q.basic_platform->output_folder);
             EXPECT_EQ(p.basic_platform->output_prefix, q.basic_platform->output_prefix);
-            EXPECT_EQ(p.basic_platform->split_channels, q.basic_platform->split_channels);
+            EXPECT_EQ(p.basic_platform->split_channels.value_or(false),
+                      q.basic_platform->split_channels.value_or(false));
         } else if (p.basic_atmosphere) {
             EXPECT_EQ(p.basic_atmosphere->atmosphere_file.resolved,
                       q.basic_atmosphere->atmosphere_file.resolved);
@@ -114,7 +114,7 @@ TEST(JsimReader, ReadsTheFormatNotesExample) {
     EXPECT_EQ(in.tasks_file.where.line, 8);
     EXPECT_EQ(in.output_folder, "out");
     EXPECT_EQ(in.output_prefix, "run1_");
-    EXPECT_FALSE(in.split_channels);
+    EXPECT_EQ(in.split_channels, std::optional<bool>(false));
     EXPECT_EQ(sim.medium_list_json, "[]");
 }
 
@@ -156,7 +156,7 @@ TEST(JsimReader, SingleObjectOtherPluginsAndMediumList) {
     EXPECT_EQ(in.tasks_file.resolved, std::filesystem::path("/abs/t.tasks"));
     EXPECT_EQ(in.platform_file.where.element, "plugin_list[3].inputs.platform_filename");
     EXPECT_EQ(in.platform_file.where.line, 9);
-    EXPECT_TRUE(in.split_channels);
+    EXPECT_EQ(in.split_channels, std::optional<bool>(true));
     EXPECT_FALSE(in.output_folder.has_value());
     EXPECT_EQ(sim.medium_list_json, R"([{"k":[1,2],"name":"water"}])");
 }
@@ -314,12 +314,13 @@ TEST(JsimReaderErrors, UnknownKeysAreWarnings) {
 TEST(JsimReaderErrors, OutputPrefixThatCouldLeaveTheOutputFolder) {
     TempDir dir;
     Diagnostics diagnostics;
-    const auto sims = read_text(dir,
-                                "[{\"plugin_list\": [{\"name\": \"BasicPlatform\", \"inputs\": {\n"
-                                "  \"platform_filename\": \"a.platform\",\n"
-                                "  \"motion_filename\": \"a.ppd\", \"tasks_filename\": \"a.tasks\",\n"
-                                "  \"output_prefix\": \"../../escaped_\"}}]}]\n",
-                                diagnostics);
+    const auto sims =
+        read_text(dir,
+                  "[{\"plugin_list\": [{\"name\": \"BasicPlatform\", \"inputs\": {\n"
+                  "  \"platform_filename\": \"a.platform\",\n"
+                  "  \"motion_filename\": \"a.ppd\", \"tasks_filename\": \"a.tasks\",\n"
+                  "  \"output_prefix\": \"../../escaped_\"}}]}]\n",
+                  diagnostics);
     const Diagnostic error = only_error(diagnostics);
     EXPECT_EQ(error.where.line, 4);
     EXPECT_EQ(error.where.element, "[0].plugin_list[0].inputs.output_prefix");
@@ -512,7 +513,8 @@ TEST(JsimReaderErrors, NumberTooLargeForADouble) {
     // (fuzz/crashes/jsim/crash-c2ed3b91e95ac01df2c3c5f5776b8a6aebb31779), it escaped the reader.
     TempDir dir;
     Diagnostics diagnostics;
-    EXPECT_TRUE(read_text(dir, "[{\"plugin_list\": [],\n  \"x\": 55e55555}]\n", diagnostics).empty());
+    EXPECT_TRUE(
+        read_text(dir, "[{\"plugin_list\": [],\n  \"x\": 55e55555}]\n", diagnostics).empty());
     EXPECT_EQ(only_error(diagnostics).text(),
               (dir / "a.jsim").string() +
                   ":2: malformed JSON at column 15: number overflow parsing '55e55555'");

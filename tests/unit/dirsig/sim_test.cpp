@@ -63,7 +63,7 @@ TEST(SimReader, ReadsTheFormatNotesExample) {
     EXPECT_EQ(platform.basic_platform->tasks_file.where.element, "simulation/tasklist");
     EXPECT_FALSE(platform.basic_platform->output_folder.has_value());
     EXPECT_FALSE(platform.basic_platform->output_prefix.has_value());
-    EXPECT_FALSE(platform.basic_platform->split_channels);
+    EXPECT_FALSE(platform.basic_platform->split_channels.has_value());  // a .sim has none
     EXPECT_EQ(sim.medium_list_json, "[]");
 }
 

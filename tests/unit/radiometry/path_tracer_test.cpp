@@ -11,6 +11,7 @@
 #include <numbers>
 
 #include "glint/atmosphere/atmosphere.h"
+#include "glint/core/error.h"
 #include "glint/core/spectral.h"
 #include "glint/radiometry/brdf.h"
 #include "tracer_fixture.h"
@@ -234,18 +235,23 @@ TEST(PathTracer, MovingBoxMotionBlurMatchesTheCoveredFraction) {
     EXPECT_NEAR(many.radiance(0)[1], expected, kHighCountRelative * expected);
 }
 
+/// The default parametric atmosphere on `grid`: sun at zenith 40°, azimuth 160°, a sensor at
+/// 3000 m, a made-up solar spectrum.
+Environment parametric_environment(const SpectralGrid& grid) {
+    const glint::atmosphere::ParametricAtmosphereModel atmosphere(model::ParametricAtmosphere{});
+    const glint::atmosphere::SolarSpectrum sun(SpectralCurve({0.3, 1.0, 4.0}, {0.2, 0.1, 0.001}));
+    EnvironmentInputs inputs;
+    inputs.sun_direction_begin = inputs.sun_direction_end = direction_from(40.0, 160.0);
+    inputs.sensor_altitude_m = 3000.0;
+    return Environment::make(grid, atmosphere, sun, inputs);
+}
+
 TEST(PathTracer, AtmosphereSensorPathAndSkyOnAPlate) {
     // With the parametric atmosphere the plate's at-aperture radiance is
     // T_v (ρ (E_sun cos θs / π + L_sky)) + L_p, every term taken from the environment.
     const SpectralGrid grid({0.45, 0.55, 0.65, 0.85});
     const double rho = 0.3;
-    model::ParametricAtmosphere parameters;
-    const glint::atmosphere::ParametricAtmosphereModel atmosphere(parameters);
-    const glint::atmosphere::SolarSpectrum sun(SpectralCurve({0.3, 1.0, 4.0}, {0.2, 0.1, 0.001}));
-    EnvironmentInputs inputs;
-    inputs.sun_direction_begin = inputs.sun_direction_end = direction_from(40.0, 160.0);
-    inputs.sensor_altitude_m = 3000.0;
-    const Environment env = Environment::make(grid, atmosphere, sun, inputs);
+    const Environment env = parametric_environment(grid);
     ASSERT_TRUE(env.has_sensor_path());
     Rig rig(plate_scene(rho), grid, env);
     const FixedRay source(nadir_ray());
@@ -261,6 +267,49 @@ TEST(PathTracer, AtmosphereSensorPathAndSkyOnAPlate) {
         EXPECT_NEAR(many.radiance(0)[b], expected, 1e-4 * expected) << b;
         EXPECT_LT(t_v[b], 1.0);
         EXPECT_GT(l_p[b], 0.0);
+    }
+}
+
+TEST(PathTracer, ABandRangeTracesExactlyThoseBandsOfTheWholeGrid) {
+    // Split channels trace a channel's bands alone. Without Russian roulette (the only place
+    // the bands meet) a range's radiance is the whole grid's on those bands, sample by sample,
+    // through the sun, emission, bounces between a box and the plate, the sky and the sensor
+    // path.
+    const SpectralGrid grid({0.45, 0.55, 0.65, 0.85});
+    model::Scene scene = plate_scene(0.3);
+    scene.materials.push_back(flat_material("warm box", 0.5, 330.0, 0.4));
+    test::add_primitive(scene, box({-1.0, -1.0, 0.0}, {1.0, 1.0, 1.5}), 1);
+    TracerSettings settings;
+    settings.roulette_start_bounce = 1'000;
+    Rig rig(std::move(scene), grid, parametric_environment(grid), settings);
+    const BandRange range{1, 2};
+    const PathTracer part(rig.geometry, rig.materials, rig.environment, settings, range);
+    EXPECT_EQ(part.bands(), 2u);
+
+    const test::SphereRays source({1.8, -0.4, 0.7});
+    PathScratch scratch(grid.size());
+    std::vector<double> whole(grid.size()), only(range.count);
+    double seen = 0.0;
+    for (std::uint64_t n = 0; n < 500; ++n) {
+        RandomStream a(11, {n});
+        RandomStream b(11, {n});
+        rig.tracer.trace(source.generate(0, n, a), a, scratch, whole);
+        part.trace(source.generate(0, n, b), b, scratch, only);
+        for (std::size_t i = 0; i < range.count; ++i) {
+            EXPECT_EQ(only[i], whole[range.first + i]) << "sample " << n << " band " << i;
+        }
+        seen += whole[1];
+    }
+    EXPECT_GT(seen, 0.0);
+
+    for (const BandRange bad : {BandRange{0, 0}, BandRange{3, 2}, BandRange{5, 1}}) {
+        try {
+            const PathTracer wrong(rig.geometry, rig.materials, rig.environment, settings, bad);
+            FAIL() << "expected a usage error for " << bad.first << " + " << bad.count;
+        } catch (const Error& e) {
+            EXPECT_EQ(e.category(), ErrorCategory::usage);
+            EXPECT_NE(e.message().find("does not fit 4 bands"), std::string::npos) << e.message();
+        }
     }
 }
 

@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -343,6 +344,40 @@ TEST(OutputUnitsChannels, ApplyIsTheWeightedSumPlusBias) {
         for (std::size_t b = 0; b < grid.size(); ++b) sum += units.weight(c, b) * radiance[b];
         EXPECT_NEAR(out[c], sum, 1e-12 * std::abs(sum)) << "channel " << c;
     }
+}
+
+TEST(OutputUnitsChannels, ChannelValueFromItsSupportEqualsApply) {
+    // A split channel's state traces only the bands its weights cover: support() finds them
+    // and channel_value() on them gives apply()'s value.
+    const SpectralGrid grid = fine_grid();
+    model::Channel tab = tabulated("T", {0.45, 0.5, 0.62, 0.66}, {0.0, 0.7, 1.0, 0.0});
+    tab.bias = 0.5;
+    const OutputUnits units(method({shaped(model::ChannelShape::tophat, 0.55, 0.05), tab},
+                                   FluxUnits::watts, AreaUnits::cm2, 0.0),
+                            no_aperture(), grid);
+    std::vector<double> radiance(grid.size());
+    for (std::size_t b = 0; b < radiance.size(); ++b) {
+        radiance[b] = 1.0 + std::sin(37.0 * grid.wavelengths_um()[b]);
+    }
+    std::vector<double> out(2);
+    units.apply(radiance, out);
+    for (std::size_t c = 0; c < 2; ++c) {
+        const BandRange r = units.support(c);
+        ASSERT_GT(r.count, 0u) << c;
+        EXPECT_NE(units.weight(c, r.first), 0.0);
+        EXPECT_NE(units.weight(c, r.first + r.count - 1), 0.0);
+        for (std::size_t b = 0; b < grid.size(); ++b) {
+            if (b < r.first || b >= r.first + r.count) {
+                EXPECT_EQ(units.weight(c, b), 0.0) << b;
+            }
+        }
+        EXPECT_LT(r.count, grid.size()) << "channel " << c << " covers part of the grid";
+        const std::span<const double> part(radiance.data() + r.first, r.count);
+        EXPECT_NEAR(units.channel_value(c, r.first, part), out[c], 1e-12 * std::abs(out[c]));
+        // A range that misses part of the support is refused.
+        EXPECT_THROW(units.channel_value(c, r.first + 1, part.subspan(1)), Error);
+    }
+    EXPECT_THROW(units.channel_value(2, 0, radiance), Error);
 }
 
 TEST(OutputUnitsChannels, TrapezoidWeightsReproduceIntegrateTrapezoid) {

@@ -29,26 +29,22 @@
 #include "glint/io/envi.h"
 #include "glint/motion/sun.h"
 #include "glint/test/temp_dir.h"
+#include "render_fixture.h"
 
 namespace glint::sensor {
 namespace {
 
 namespace fs = std::filesystem;
-
-const fs::path kRenderData = fs::path(GLINT_TEST_DATA_DIR) / "render";
+using test_render::kRenderData;
+using test_render::load;
+using test_render::options_into;
+using test_render::read_text;
 
 /// Bands the memory estimate counts per pixel for the test cameras: the 0.50–0.60 µm
 /// bandpass at 0.02 µm (6 samples) plus one channel.
 constexpr std::uint64_t kBandsPerPixel = 6 + 1;
 /// Bytes the memory estimate counts per triangle (render.h).
 constexpr std::uint64_t kBytesPerTriangle = 85;
-
-std::string read_text(const fs::path& path) {
-    std::ifstream in(path);
-    std::ostringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
 
 void write_text(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
 
@@ -74,17 +70,6 @@ void copy_with_camera(const fs::path& dir, const std::vector<std::string>& names
                       const std::string& from, const std::string& to) {
     copy_fixture(dir, names);
     write_text(dir / "cam.platform", replaced(read_text(kRenderData / "cam.platform"), from, to));
-}
-
-model::SimulationInputs load(const fs::path& simulation) {
-    return inputs::load_logged(simulation, inputs::LoadOptions{}, Log{});
-}
-
-RenderOptions options_into(const fs::path& out) {
-    RenderOptions options;
-    options.schedule.output_folder = out.string();
-    options.data_dir = fs::path(GLINT_SOURCE_DIR) / "data";
-    return options;
 }
 
 std::uint64_t triangles_of(const model::SimulationInputs& in) {
@@ -309,8 +294,14 @@ TEST(Render, FocalPlaneStateOfAFrameCamera) {
     ASSERT_EQ(state.grid.size(), 6u);               // 0.50–0.60 µm at 0.02 µm
     EXPECT_NEAR(state.grid.min_um(), 0.50, 1e-12);  // µm; exact up to rounding
     EXPECT_NEAR(state.grid.max_um(), 0.60, 1e-12);
-    // The reference band is the one nearest the bandpass centre (0.55 µm lies between two).
-    EXPECT_LE(std::fabs(state.grid.wavelength_um(state.reference_band) - 0.55), 0.01 + 1e-12);
+    // One spectral state over every band; its reference band is the one nearest the bandpass
+    // centre (0.55 µm lies between two).
+    ASSERT_EQ(state.spectral_states.size(), 1u);
+    const detail::SpectralState& spectral = state.spectral_states[0];
+    EXPECT_EQ(spectral.bands.first, 0u);
+    EXPECT_EQ(spectral.bands.count, 6u);
+    EXPECT_FALSE(spectral.channel.has_value());
+    EXPECT_LE(std::fabs(state.grid.wavelength_um(spectral.reference_band) - 0.55), 0.01 + 1e-12);
     EXPECT_EQ(state.camera.columns(), 8u);
     EXPECT_EQ(state.camera.rows(), 6u);
     EXPECT_EQ(state.units.channels(), 1u);

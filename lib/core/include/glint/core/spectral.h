@@ -46,6 +46,12 @@ private:
     std::vector<double> m_wavelengths_um;
 };
 
+/// A contiguous range of a grid's samples (bands): first, first + 1, …, first + count − 1.
+struct BandRange {
+    std::size_t first = 0;
+    std::size_t count = 0;
+};
+
 /// A spectral quantity known at increasing wavelengths (µm) and linearly interpolated
 /// between them (e.g. a reflectance, a filter transmission, a solar spectrum).
 class SpectralCurve {

@@ -25,7 +25,8 @@ struct BasicPlatformInputs {
     FileRef tasks_file;     ///< tasks_filename
     std::optional<std::string> output_folder;  ///< output_folder (overrides the CLI's)
     std::optional<std::string> output_prefix;  ///< output_prefix (overrides the CLI's)
-    bool split_channels = false;               ///< split_channels
+    /// split_channels when the entry has it (it takes precedence over --split_channels)
+    std::optional<bool> split_channels;
 };
 
 /// Inputs of a `BasicAtmosphere` plugin entry.

@@ -11,6 +11,10 @@
 // bounces a path survives with probability min(1, max_λ β(λ)) (β the throughput), and it
 // stops after `max_bounces`. docs/physics.md ("Path tracer") states the estimator.
 //
+// A tracer follows all of the environment's bands, or a contiguous range of them (a
+// BandRange: one channel's spectral state when channels are split, docs/camera.md); its
+// roulette then watches the range's throughput only.
+//
 // trace() allocates nothing: scratch vectors live in a PathScratch the caller keeps per
 // thread.
 #pragma once
@@ -40,7 +44,7 @@ struct TracerSettings {
     unsigned roulette_start_bounce = 3;  ///< Russian roulette from this bounce on
 };
 
-/// Per-thread scratch space for trace().
+/// Per-thread scratch space for trace(), sized for the environment's bands.
 class PathScratch {
 public:
     explicit PathScratch(std::size_t bands)
@@ -60,14 +64,21 @@ public:
     PathTracer(const scene::GeometryScene& scene, const MaterialTable& materials,
                const Environment& environment, TracerSettings settings = {});
 
-    /// Number of bands of the radiance trace() writes.
-    std::size_t bands() const noexcept { return m_environment.bands(); }
+    /// The same tracer for the bands `range` of the environment only. Throws what the
+    /// constructor above throws, and glint::Error (usage) for an empty range or one beyond
+    /// the environment's bands.
+    PathTracer(const scene::GeometryScene& scene, const MaterialTable& materials,
+               const Environment& environment, TracerSettings settings, BandRange range);
+    /// Number of bands of the radiance trace() writes (the range's).
+    std::size_t bands() const noexcept { return m_range.count; }
+    /// The bands of the environment it follows.
+    BandRange range() const noexcept { return m_range; }
     /// The environment.
     const Environment& environment() const noexcept { return m_environment; }
 
     /// Traces one path for `ray` and writes its at-aperture radiance, W/(cm² sr µm), to
-    /// `radiance` (bands() values; overwritten). Draws from `rng` only. `scratch` must have
-    /// been made for bands().
+    /// `radiance` (bands() values: the range's; overwritten). Draws from `rng` only.
+    /// `scratch` must have been made for environment().bands().
     void trace(const SampleRay& ray, RandomStream& rng, PathScratch& scratch,
                std::span<double> radiance) const;
 
@@ -76,6 +87,7 @@ private:
     const MaterialTable& m_materials;
     const Environment& m_environment;
     TracerSettings m_settings;
+    BandRange m_range;
 };
 
 }  // namespace glint::radiometry

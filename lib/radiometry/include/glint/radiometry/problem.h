@@ -12,12 +12,15 @@
 // variance and Kish's effective sample size (Σw)²/Σw².
 //
 // Determinism: sample n of problem p draws every random number (the RaySource's first, then
-// the tracer's) from RandomStream(seed, {plugin, task, capture, p, n}). A problem is solved
-// by one thread in sample order, so the results are bit-identical for any thread count.
+// the tracer's) from RandomStream(seed, {plugin, task, capture, p, n}), or, for a spectral
+// state s of a focal plane whose channels are split, RandomStream(seed, {plugin, task,
+// capture, p, n, s}). A problem is solved by one thread in sample order, so the results are
+// bit-identical for any thread count.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -33,7 +36,13 @@ struct StreamKey {
     std::uint64_t plugin = 0;
     std::uint64_t task = 0;
     std::uint64_t capture = 0;
+    /// The spectral state when a focal plane's channels are split (one state per channel);
+    /// none when the focal plane is one state.
+    std::optional<std::uint64_t> spectral_state;
 };
+
+/// The random stream of sample `sample` of problem `problem` (the Determinism rule above).
+RandomStream sample_stream(const StreamKey& key, std::uint64_t problem, std::uint64_t sample);
 
 /// The convergence rule of a problem.
 struct Convergence {

@@ -100,6 +100,14 @@ public:
     double weight(std::size_t channel, std::size_t band) const noexcept {
         return m_weights[channel * m_bands + band];
     }
+    /// The bands channel c weighs: from its first to its last band with a non-zero weight
+    /// (count 0 when it weighs none).
+    BandRange support(std::size_t channel) const noexcept;
+    /// Channel c's value from the radiance of bands first_band, first_band + 1, … (a range
+    /// that holds support(c); the value equals apply()'s for the same radiance on those
+    /// bands). Allocates nothing; throws glint::Error (internal) for a range that does not.
+    double channel_value(std::size_t channel, std::size_t first_band,
+                         std::span<const double> radiance_w_per_cm2_sr_um) const;
     /// The bias of channel c, in the output units.
     double bias(std::size_t channel) const noexcept { return m_bias[channel]; }
     /// What the values are.

@@ -36,7 +36,8 @@ struct RenderOptions {
     schedule::ScheduleOptions schedule;  ///< folder, prefix, scale_resolution, seed
     /// --convergence; a focal plane's <convergence> overrides it.
     std::optional<radiometry::Convergence> convergence;
-    bool split_channels = false;  ///< accepted and recorded; no dispersion is modelled
+    bool split_channels =
+        false;  ///< one spectral state per channel (a .jsim entry's split_channels wins)
     /// --radiance-only: stop at the radiometric product even where a detector model is
     /// configured (for those focal planes it is the photon product glint-detect reads).
     bool radiance_only = false;
