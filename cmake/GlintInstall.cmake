@@ -3,7 +3,7 @@
 # (GlintHelpers.cmake) install every component and tool themselves; this file adds the rest:
 #   <prefix>/bin/glint-*                       the tools
 #   <prefix>/share/glint/                      data/ (found next to the executable at run time)
-#   <prefix>/share/glint/examples/{demo,plugin}
+#   <prefix>/share/glint/examples/{demo,optics,plugin}
 #   <prefix>/share/doc/glint/                  README.md, docs/
 #   <prefix>/share/man/man1/glint-*.1          man pages (help2man, when installed)
 #   <prefix>/include/glint/<component>/*.h, <prefix>/lib/libglint_<component>.a
@@ -37,7 +37,8 @@ install(FILES "${CMAKE_CURRENT_BINARY_DIR}/glintConfig.cmake"
 # Data: glint-render looks for <exe dir>/../share/glint/solar/astm_g173.csv
 # (glint::data_dir_lookup, lib/core/include/glint/core/install_paths.h).
 install(DIRECTORY "${PROJECT_SOURCE_DIR}/data/" DESTINATION "${CMAKE_INSTALL_DATADIR}/glint")
-install(DIRECTORY "${PROJECT_SOURCE_DIR}/examples/demo" "${PROJECT_SOURCE_DIR}/examples/plugin"
+install(DIRECTORY "${PROJECT_SOURCE_DIR}/examples/demo" "${PROJECT_SOURCE_DIR}/examples/optics"
+    "${PROJECT_SOURCE_DIR}/examples/plugin"
     DESTINATION "${CMAKE_INSTALL_DATADIR}/glint/examples" USE_SOURCE_PERMISSIONS
     PATTERN "build" EXCLUDE)
 install(FILES "${PROJECT_SOURCE_DIR}/README.md" DESTINATION "${CMAKE_INSTALL_DOCDIR}")
