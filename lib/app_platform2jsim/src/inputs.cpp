@@ -15,6 +15,7 @@
 #include "glint/dirsig/scene_reader.h"
 #include "glint/inputs/simulation_inputs.h"
 #include "glint/io/image.h"
+#include "glint/model/derived.h"
 
 namespace glint::app_platform2jsim {
 namespace {
@@ -110,6 +111,7 @@ void check_platform_references(const model::Platform& platform, LoadedInputs& in
             if (!fp.detector_array.clock.trigger_file.empty()) {
                 check_exists(fp.detector_array.clock.trigger_file, "trigger", inputs);
             }
+
         }
     }
 }
@@ -363,6 +365,20 @@ void check_output_names(const model::Simulation& simulation, Diagnostics& diagno
 std::string summary_text(std::size_t errors, std::size_t warnings, std::size_t files) {
     return plural(errors, "error") + ", " + plural(warnings, "warning") + " in " +
            plural(files, "file");
+}
+
+void warn_not_rendered(LoadedInputs& inputs) {
+    for (const auto& [file, platform] : inputs.platforms) {
+        for (const model::InstrumentPath& path : model::list_instruments(platform)) {
+            for (const model::FocalPlane& fp : path.instrument->focal_planes) {
+                for (const model::TruthCollection& truth : fp.truth_collections) {
+                    if (const auto warning = model::truth_not_written(truth)) {
+                        inputs.diagnostics.warning(truth.where, *warning);
+                    }
+                }
+            }
+        }
+    }
 }
 
 }  // namespace glint::app_platform2jsim

@@ -89,6 +89,12 @@ model::SampleStrategy read_sample_strategy(const io::XmlNode& node, Diagnostics&
     node.warn_unknown_children({"hypersamplingmultiplier"}, diagnostics);
     const std::string type = trim(node.attribute("type").value_or("central"));
     if (!type.empty()) strategy.type = type;
+    if (!type.empty() && type != "central") {
+        diagnostics.warning(node.where_attribute("type"),
+                            "samplestrategy type \"" + type +
+                                "\" is read, not applied: glint spreads each pixel's samples "
+                                "uniformly over its area (as for central)");
+    }
     strategy.hypersampling_multiplier =
         node.optional_double("hypersamplingmultiplier", diagnostics, io::NumberRule{1.0, {}})
             .value_or(1.0);
@@ -276,6 +282,11 @@ std::vector<model::ProcessingTask> read_processing(const io::XmlNode& node,
     for (const auto& task : node.children("task")) {
         tasks.push_back(read_processing_task(task, diagnostics));
     }
+    if (!tasks.empty()) {
+        diagnostics.warning(node.where(),
+                            "<processing> is read and checked, not applied: glint runs no "
+                            "processing tasks (run them after glint-render)");
+    }
     return tasks;
 }
 
@@ -401,6 +412,12 @@ model::CaptureMethod read_capture_method(const io::XmlNode& node, const ReadCont
     if (type == "raw") capture.type = model::CaptureMethodType::raw;
     if (type == "lidar") capture.type = model::CaptureMethodType::lidar;
     capture.name = trim(node.attribute("name").value_or(""));
+    if (capture.type == model::CaptureMethodType::lidar) {
+        diagnostics.warning(node.where_attribute("type"),
+                            "capturemethod type lidar is read, not applied: glint models no "
+                            "lidar capture (a generic instrument's lidar focal plane is "
+                            "rendered as a passive image)");
+    }
     const bool passive = capture.type != model::CaptureMethodType::lidar;
 
     if (const auto strategy = single_child(node, "samplestrategy", diagnostics)) {
@@ -457,6 +474,22 @@ void check_focal_plane(const model::FocalPlane& focal_plane, Diagnostics& diagno
                                       "expected no <detectormodel> in a ") +
                               (capture.type == model::CaptureMethodType::raw ? "raw" : "lidar") +
                               " capture");
+    }
+    if (integration.tdi && focal_plane.detector_array.y_count > 1 &&
+        focal_plane.detector_array.rolling_line_time_s) {
+        diagnostics.warning(focal_plane.detector_array.where,
+                            "rollingreadout is read, not applied on a TDI array: its stages are "
+                            "read once per capture");
+    }
+    if (capture.detector_model && capture.type == model::CaptureMethodType::simple) {
+        for (const model::Channel& channel : capture.spectral_response.channels) {
+            if (channel.normalize) {
+                diagnostics.warning(channel.where,
+                                    "normalize of channel \"" + channel.name +
+                                        "\" is ignored with a detector model (detection counts "
+                                        "photons through the channel's response)");
+            }
+        }
     }
     const auto& file = capture.image_file;
     if (capture.detector_model &&

@@ -194,8 +194,16 @@ model::Instrument read_instrument(const io::XmlNode& node, const ReadContext& co
             instrument.type = model::InstrumentType::generic;
         } else if (type == "lidar") {
             instrument.type = model::InstrumentType::lidar;
+            diagnostics.warning(node.where_attribute("type"),
+                                "instrument type lidar is read, not applied: glint renders "
+                                "generic (passive camera) instruments only, so this one "
+                                "captures nothing");
         } else if (type == "datarecorder") {
             instrument.type = model::InstrumentType::data_recorder;
+            diagnostics.warning(node.where_attribute("type"),
+                                "instrument type datarecorder is read, not applied: glint "
+                                "records no telemetry file (glint-schedule's JSON holds every "
+                                "capture's pose)");
         } else {
             known_type = false;
             diagnostics.error(node.where_attribute("type"),

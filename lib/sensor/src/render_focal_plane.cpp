@@ -112,8 +112,7 @@ io::EnviHeader header_of(const schedule::ClockedFocalPlane& source, const Output
 /// fluxunits and areaunits are ignored (as the DIRSIG5 BasicPlatform manual says) for the
 /// photon product at the focal plane, per cm², channels integrated and not normalized, that
 /// detection needs. A TDI pixel's integration time is that of all its stages.
-model::CaptureMethod units_method(const schedule::ClockedFocalPlane& source,
-                                  const Context& context) {
+model::CaptureMethod units_method(const schedule::ClockedFocalPlane& source) {
     const model::FocalPlane& fp = *source.focal_plane;
     model::CaptureMethod method = fp.capture_method;
     // A TDI pixel integrates over all its stages: stages × the stage time.
@@ -121,14 +120,8 @@ model::CaptureMethod units_method(const schedule::ClockedFocalPlane& source,
     if (!method.detector_model) return method;
     method.image_file.flux_units = model::FluxUnits::photons_per_second;
     method.image_file.area_units = model::AreaUnits::cm2;
-    for (model::Channel& channel : method.spectral_response.channels) {
-        if (channel.normalize) {
-            context.log.warning("channel \"" + channel.name + "\" of focal plane \"" + fp.name +
-                                "\": normalize is ignored with a detector model (detection "
-                                "counts photons through the channel's response)");
-            channel.normalize = false;
-        }
-    }
+    // normalize does not apply (the reader warned at the channel).
+    for (model::Channel& channel : method.spectral_response.channels) channel.normalize = false;
     return method;
 }
 
@@ -176,25 +169,19 @@ FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t s
                                        const RenderOptions& options, const Context& context) {
     const schedule::ClockedFocalPlane& source = inputs.schedule->sources()[source_index];
     const model::FocalPlane& fp = *source.focal_plane;
-    if (source.tdi_stages > 1 && fp.detector_array.rolling_line_time_s) {
-        context.log.warning("focal plane \"" + fp.name +
-                            "\": the rolling readout is ignored on a TDI array (its stages "
-                            "are read once per capture)");
-    }
-    // Read and checked, not applied yet: one warning each, at the element.
-    if (fp.capture_method.temporal_integration.samples > 1) {
-        context.log.warning(format_located(
-            fp.capture_method.temporal_integration.where,
-            "<temporalintegration><samples> " +
-                std::to_string(fp.capture_method.temporal_integration.samples) +
-                " is read, not applied: each pixel's samples are spread uniformly over the "
-                "integration window (as DIRSIG5 does)"));
+    // What the focal plane's elements ask for and glint does not apply (a rolling readout on
+    // a TDI array, <temporalintegration><samples>, normalize with a detector model) was
+    // warned about once by the reader, at the element, for --check and the render alike.
+    for (const model::TruthCollection& truth : fp.truth_collections) {
+        if (const auto warning = model::truth_not_written(truth)) {
+            context.log.warning(format_located(truth.where, *warning));
+        }
     }
     SpectralGrid grid = model::bandpass_grid(fp.capture_method.spectral_response.bandpass);
     radiometry::MaterialTable materials(inputs.scene.materials, grid, context.log);
     CameraModel camera(source.instrument->properties, fp.detector_array, source.x_count,
                        source.y_count);
-    OutputUnits units(units_method(source, context), source.instrument->properties, grid);
+    OutputUnits units(units_method(source), source.instrument->properties, grid);
     std::vector<SpectralState> states = spectral_states(
         grid, units,
         splits_channels(inputs, inputs.schedule->plugins()[source.plugin].plugin_index, options));

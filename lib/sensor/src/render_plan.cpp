@@ -26,7 +26,11 @@ std::vector<PlannedCapture> select_captures(const RenderInputs& in, const Render
         std::string why;
         if (!renders(sources[s], why)) {
             skip[s] = true;
-            context.log.warning(why + ": not rendered");
+            // A lidar or data-recorder instrument was warned about by the reader.
+            if (sources[s].instrument->type == model::InstrumentType::generic) {
+                context.log.warning(
+                    format_located(sources[s].focal_plane->where, why + ": not rendered"));
+            }
         }
     }
     // The plan holds every selected capture: refuse a run too long to plan before building

@@ -2,6 +2,7 @@
 // Tests of the capture-method reader (lib/dirsig/src/capture_reader.cpp): every child of
 // <capturemethod> field by field with its defaults, the extras written in <focalplane>, the
 // focal-plane checks, and every bad input with its message, line and element path.
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -61,9 +62,14 @@ TEST(CaptureReader, TypeAndName) {
     EXPECT_EQ(read.capture.type, CaptureMethodType::raw);
     EXPECT_EQ(read.capture.name, "Raw one");
     // A lidar capture writes a BIN file: no image file or spectral response is required.
+    // glint models no lidar capture: one warning at the type.
     read = read_capture("<capturemethod type=\"lidar\"/>");
-    EXPECT_TRUE(clean(read));
     EXPECT_EQ(read.capture.type, CaptureMethodType::lidar);
+    EXPECT_EQ(read.diagnostics.error_count(), 0u) << list_diagnostics(read.diagnostics);
+    ASSERT_EQ(read.diagnostics.warning_count(), 1u) << list_diagnostics(read.diagnostics);
+    EXPECT_THAT(read.diagnostics.items()[0].message,
+                ::testing::HasSubstr("capturemethod type lidar is read, not applied"));
+    EXPECT_EQ(read.diagnostics.items()[0].where.element, "capturemethod@type");
 }
 
 TEST(CaptureReader, RawNeedsNoChannels) {
@@ -282,7 +288,12 @@ TEST(CaptureReader, ProcessingTasksEverySchedule) {
         "<argument>--input_filename=$$IMG_BASENAME$$.img</argument>"
         "<removefile>true</removefile></task>\n</processing>";
     const auto read = read_capture(capture_xml(tasks));
-    EXPECT_TRUE(clean(read));
+    // Read and checked, not run: one warning at <processing>.
+    EXPECT_EQ(read.diagnostics.error_count(), 0u) << list_diagnostics(read.diagnostics);
+    EXPECT_EQ(read.diagnostics.warning_count(), 1u) << list_diagnostics(read.diagnostics);
+    EXPECT_TRUE(has_diagnostic(read, Diagnostic::Severity::warning,
+                               "<processing> is read and checked, not applied", "<processing>",
+                               "capturemethod[C]/processing"));
     const auto& p = read.capture.processing;
     ASSERT_EQ(p.size(), 7u);
     for (std::size_t i = 0; i < 6; ++i) {
@@ -312,7 +323,11 @@ TEST(CaptureReader, ExtrasDirectlyInTheFocalPlane) {
         "<detectormodel><quantumefficiency>0.5</quantumefficiency><minelectrons>0"
         "</minelectrons><maxelectrons>1000</maxelectrons><bitdepth>10</bitdepth>"
         "</detectormodel>\n</focalplane>");
-    EXPECT_TRUE(clean(read));
+    EXPECT_EQ(read.diagnostics.error_count(), 0u) << list_diagnostics(read.diagnostics);
+    EXPECT_EQ(read.diagnostics.warning_count(), 1u) << list_diagnostics(read.diagnostics);
+    EXPECT_TRUE(has_diagnostic(read, Diagnostic::Severity::warning,
+                               "<processing> is read and checked, not applied", "<processing>",
+                               "focalplane[F]/processing"));
     const auto& c = read.capture;
     ASSERT_TRUE(c.psf.has_value());
     EXPECT_EQ(c.psf->image.resolved, std::filesystem::path("/data/platforms/airy.png"));
@@ -663,8 +678,27 @@ TEST(CaptureFullPlatform, EveryChildFieldByField) {
     const auto read = read_platform_fixture("capture_full.platform");
     const auto dir = std::filesystem::path(GLINT_TEST_DATA_DIR) / "platform";
     EXPECT_EQ(read.diagnostics.error_count(), 0u) << list_diagnostics(read.diagnostics);
-    // The only warning: the DIRSIG4 spatial response is ignored.
-    ASSERT_EQ(read.diagnostics.warning_count(), 1u) << list_diagnostics(read.diagnostics);
+    // The warnings: the DIRSIG4 spatial response is ignored, and the two <processing> blocks
+    // (Bayer's and TrueSense's) are read and checked but not run.
+    ASSERT_EQ(read.diagnostics.warning_count(), 3u) << list_diagnostics(read.diagnostics);
+    const std::string text = fixture_text("capture_full.platform");
+    int processing_warnings = 0;
+    for (const auto& item : read.diagnostics.items()) {
+        if (item.message.find("<processing> is read and checked, not applied") ==
+            std::string::npos) {
+            continue;
+        }
+        ++processing_warnings;
+        const std::size_t second = text.find("<processing>", text.find("<processing>") + 1);
+        EXPECT_TRUE(item.where.line == line_of(text, "<processing>") ||
+                    item.where.line == line_of(text.substr(0, second + 1), "<processing>\n") ||
+                    item.where.line == 1 + static_cast<int>(std::count(
+                                               text.begin(),
+                                               text.begin() + static_cast<std::ptrdiff_t>(second),
+                                               '\n')))
+            << item.text();
+    }
+    EXPECT_EQ(processing_warnings, 2) << list_diagnostics(read.diagnostics);
     const auto& warning = read.diagnostics.items().front();
     EXPECT_EQ(warning.where.line,
               line_of(fixture_text("capture_full.platform"), "<spatialresponse"));
