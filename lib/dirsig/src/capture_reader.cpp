@@ -64,8 +64,8 @@ std::string output_name_part(const io::XmlNode& node, std::string_view name,
                              std::string_view expected, Diagnostics& diagnostics) {
     std::string text = non_empty_text(node, name, expected, diagnostics).value_or("");
     if (const auto problem = model::output_name_problem(text)) {
-        diagnostics.error(node.child(name)->where(), "<" + std::string(name) + "> " +
-                                                         quote(text) + " " + *problem);
+        diagnostics.error(node.child(name)->where(),
+                          "<" + std::string(name) + "> " + quote(text) + " " + *problem);
         return "";
     }
     return text;
@@ -412,6 +412,12 @@ model::CaptureMethod read_capture_method(const io::XmlNode& node, const ReadCont
     if (type == "raw") capture.type = model::CaptureMethodType::raw;
     if (type == "lidar") capture.type = model::CaptureMethodType::lidar;
     capture.name = trim(node.attribute("name").value_or(""));
+    if (capture.type == model::CaptureMethodType::raw) {
+        diagnostics.warning(node.where_attribute("type"),
+                            "capturemethod type raw is read, not applied: glint renders it as a "
+                            "simple capture through its <channel>s (the bandpass-sampled raw "
+                            "cube is not written yet; without channels nothing is rendered)");
+    }
     if (capture.type == model::CaptureMethodType::lidar) {
         diagnostics.warning(node.where_attribute("type"),
                             "capturemethod type lidar is read, not applied: glint models no "

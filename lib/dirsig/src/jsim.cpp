@@ -347,6 +347,11 @@ model::Simulation JsimReader::read_simulation(const Json& value, const std::stri
     if (const auto it = value.find("medium_list"); it != value.end()) {
         if (it->is_array()) {
             simulation.medium_list_json = it->dump();
+            if (!it->empty()) {
+                m_diagnostics.warning(at(key_path(path, "medium_list")),
+                                      "medium_list is read, not applied: glint models no "
+                                      "participating media (kept when the .jsim is rewritten)");
+            }
         } else {
             wrong_type(key_path(path, "medium_list"), "an array", *it);
         }
@@ -403,6 +408,11 @@ model::Plugin JsimReader::read_plugin(const Json& value, const std::string& path
         warn_unknown_keys(inputs, inputs_path, {kAtmosphereFilename}, " in BasicAtmosphere inputs");
         plugin.basic_atmosphere =
             model::BasicAtmosphereInputs{file_at(inputs, inputs_path, kAtmosphereFilename)};
+    } else if (!plugin.name.empty()) {
+        m_diagnostics.warning(plugin.where, "plugin \"" + plugin.name +
+                                                "\" is read, not applied: glint runs "
+                                                "BasicPlatform and BasicAtmosphere only (kept "
+                                                "when the .jsim is rewritten)");
     }
     return plugin;
 }

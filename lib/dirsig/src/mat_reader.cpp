@@ -241,6 +241,15 @@ struct MatReader {
         if (!prop) return std::nullopt;
         const std::string pp = path + "/" + prefix + "_PROP";
         warn_unknown(*prop, pp, {"TXT_FILENAME", "FILENAME", "SPECULAR_FRACTION"}, {});
+        if (const MatEntry* fraction = prop->find("SPECULAR_FRACTION")) {
+            const auto value = parse_double(fraction->value);
+            if (!value || *value != 0.0) {
+                diagnostics.warning(at(fraction->line, pp + "/SPECULAR_FRACTION"),
+                                    "SPECULAR_FRACTION " + fraction->value +
+                                        " is read, not applied: the .mat surface is Lambertian "
+                                        "(a glint YAML material's specular lobe models it)");
+            }
+        }
         const MatEntry* entry = prop->find("TXT_FILENAME");
         if (!entry) entry = prop->find("FILENAME");
         if (!entry || entry->value.empty()) {
@@ -278,10 +287,25 @@ struct MatReader {
                                         m.name + "\" is not supported; treated as Lambertian");
             }
         }
+        if (const MatEntry* sides = block.find("DOUBLE_SIDED");
+            sides && to_upper(sides->value) == "FALSE") {
+            diagnostics.warning(at(sides->line, path + "/DOUBLE_SIDED"),
+                                "DOUBLE_SIDED FALSE is read, not applied: glint's surfaces are "
+                                "two-sided");
+        }
         // Temperature: TEMPERATURE in the entry or in its TEMP_SOLVER block.
         const MatEntry* temperature = block.find("TEMPERATURE");
-        if (const MatBlock* ts = block.find_block("TEMP_SOLVER"); ts && !temperature) {
-            temperature = ts->find("TEMPERATURE");
+        if (const MatBlock* ts = block.find_block("TEMP_SOLVER")) {
+            warn_unknown(*ts, path + "/TEMP_SOLVER", {"TEMPERATURE"}, {});
+            const MatEntry* inner = ts->find("TEMPERATURE");
+            if (inner && temperature) {
+                diagnostics.warning(at(inner->line, path + "/TEMP_SOLVER/TEMPERATURE"),
+                                    "TEMP_SOLVER's TEMPERATURE is not used: the entry's "
+                                    "TEMPERATURE " +
+                                        temperature->value + " is");
+            } else if (inner) {
+                temperature = inner;
+            }
         }
         if (const MatEntry* solver = block.find("TEMP_SOLVER_NAME")) {
             const std::string s = to_upper(solver->value);
