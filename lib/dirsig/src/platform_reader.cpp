@@ -297,6 +297,7 @@ model::Platform read_platform(const std::filesystem::path& file, const ReadOptio
             diagnostics.warning(root.where(), "platform has no <attachment>: no instruments");
         }
         detail::check_masters(platform, diagnostics);
+        document.warn_unread_attributes(diagnostics);
     } catch (const Error& error) {
         diagnostics.add(error);
     }

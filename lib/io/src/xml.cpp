@@ -12,7 +12,10 @@
 #include <cerrno>
 #include <fstream>
 #include <iterator>
+#include <string>
+#include <unordered_set>
 #include <utility>
+#include <vector>
 
 #include "glint/io/input_files.h"
 
@@ -82,7 +85,14 @@ std::string path_step(const tinyxml2::XMLElement* element) {
 
 }  // namespace
 
-XmlDocument::XmlDocument() : m_doc(std::make_unique<tinyxml2::XMLDocument>()) {}
+/// What the readers of a document looked into and read.
+struct XmlReadLog {
+    std::unordered_set<const tinyxml2::XMLElement*> visited;
+    std::unordered_set<const tinyxml2::XMLAttribute*> read;
+};
+
+XmlDocument::XmlDocument()
+    : m_doc(std::make_unique<tinyxml2::XMLDocument>()), m_read(std::make_unique<XmlReadLog>()) {}
 XmlDocument::XmlDocument(XmlDocument&&) noexcept = default;
 XmlDocument& XmlDocument::operator=(XmlDocument&&) noexcept = default;
 XmlDocument::~XmlDocument() = default;
@@ -132,17 +142,60 @@ XmlNode XmlDocument::root(std::string_view expected_name) const {
                               root->Name() + ">",
                           ErrorContext{m_display_name, root->GetLineNum(), {}});
     }
-    return XmlNode(root, m_display_name, path_step(root));
+    return XmlNode(root, m_display_name, path_step(root), m_read.get());
 }
 
-XmlNode::XmlNode(const tinyxml2::XMLElement* element, std::string file, std::string path)
+void XmlDocument::warn_unread_attributes(Diagnostics& diagnostics) const {
+    const tinyxml2::XMLElement* root = m_doc->RootElement();
+    if (root == nullptr) return;
+    // Depth first in document order (the nesting is bounded by kMaxXmlDepth), each element
+    // with its path; the walk itself marks nothing.
+    std::vector<std::pair<const tinyxml2::XMLElement*, std::string>> stack{{root, path_step(root)}};
+    while (!stack.empty()) {
+        const auto [element, path] = stack.back();
+        stack.pop_back();
+        std::vector<std::pair<const tinyxml2::XMLElement*, std::string>> children;
+        for (const tinyxml2::XMLElement* c = element->FirstChildElement(); c;
+             c = c->NextSiblingElement()) {
+            children.emplace_back(c, path + "/" + path_step(c));
+        }
+        stack.insert(stack.end(), children.rbegin(), children.rend());
+        if (m_read->visited.count(element) == 0) continue;
+        for (const tinyxml2::XMLAttribute* a = element->FirstAttribute(); a; a = a->Next()) {
+            const std::string_view name = a->Name();
+            if (name == "name" || name.substr(0, 5) == "xmlns" || name.substr(0, 4) == "xsi:") {
+                continue;
+            }
+            if (m_read->read.count(a) != 0) continue;
+            diagnostics.warning(
+                ErrorContext{m_display_name, element->GetLineNum(), path + "@" + std::string(name)},
+                "attribute \"" + std::string(name) + "\" is not read by glint here (ignored)");
+        }
+    }
+}
+
+XmlNode::XmlNode(const tinyxml2::XMLElement* element, std::string file, std::string path,
+                 XmlReadLog* read)
     : m_element(element),
+      m_read(read),
       m_file(std::move(file)),
       m_path(std::move(path)),
       m_name(element->Name()) {}
 
 XmlNode XmlNode::make_child(const tinyxml2::XMLElement* element) const {
-    return XmlNode(element, m_file, m_path + "/" + path_step(element));
+    return XmlNode(element, m_file, m_path + "/" + path_step(element), m_read);
+}
+
+void XmlNode::mark_visited() const {
+    if (m_read != nullptr) m_read->visited.insert(m_element);
+}
+
+void XmlNode::mark_read(const char* attribute) const {
+    if (m_read == nullptr) return;
+    m_read->visited.insert(m_element);
+    if (const tinyxml2::XMLAttribute* a = m_element->FindAttribute(attribute)) {
+        m_read->read.insert(a);
+    }
 }
 
 int XmlNode::line() const { return m_element->GetLineNum(); }
@@ -150,10 +203,12 @@ int XmlNode::line() const { return m_element->GetLineNum(); }
 ErrorContext XmlNode::where() const { return ErrorContext{m_file, line(), m_path}; }
 
 ErrorContext XmlNode::where_attribute(std::string_view attribute) const {
+    mark_read(std::string(attribute).c_str());
     return ErrorContext{m_file, line(), m_path + "@" + std::string(attribute)};
 }
 
 std::string XmlNode::text() const {
+    mark_visited();
     std::string out;
     for (const tinyxml2::XMLNode* node = m_element->FirstChild(); node;
          node = node->NextSibling()) {
@@ -172,24 +227,30 @@ std::string XmlNode::text() const {
 }
 
 std::optional<XmlNode> XmlNode::child(std::string_view name) const {
+    mark_visited();
     const std::string key(name);
     if (const tinyxml2::XMLElement* element = m_element->FirstChildElement(key.c_str())) {
-        return make_child(element);
+        XmlNode node = make_child(element);
+        node.mark_visited();
+        return node;
     }
     return std::nullopt;
 }
 
 std::vector<XmlNode> XmlNode::children(std::string_view name) const {
+    mark_visited();
     const std::string key(name);
     std::vector<XmlNode> out;
     for (const tinyxml2::XMLElement* element = m_element->FirstChildElement(key.c_str()); element;
          element = element->NextSiblingElement(key.c_str())) {
         out.push_back(make_child(element));
+        out.back().mark_visited();
     }
     return out;
 }
 
 std::vector<XmlNode> XmlNode::children() const {
+    mark_visited();
     std::vector<XmlNode> out;
     for (const tinyxml2::XMLElement* element = m_element->FirstChildElement(); element;
          element = element->NextSiblingElement()) {
@@ -200,6 +261,7 @@ std::vector<XmlNode> XmlNode::children() const {
 
 std::optional<std::string> XmlNode::attribute(std::string_view name) const {
     const std::string key(name);
+    mark_read(key.c_str());
     if (const char* value = m_element->Attribute(key.c_str())) return std::string(value);
     return std::nullopt;
 }

@@ -34,7 +34,14 @@ model::PlatformMotion read_inline_motion(Reader& r, const YAML::Node& node,
         const io::XmlDocument document = io::XmlDocument::parse(text, r.file);
         const io::XmlNode root = document.root("motion");
         const MotionReadContext context{r.options, r.base_dir, text};
+        // As in a .motion file, the type is optional here but must be flexible when given.
+        if (const auto type = root.attribute("type");
+            type && to_lower(trim(*type)) != "flexible") {
+            local.error(root.where_attribute("type"),
+                        "motion type \"" + *type + "\" is not supported, expected flexible");
+        }
         motion.flexible = read_flex_motion(root, context, local);
+        document.warn_unread_attributes(local);
     } catch (const Error& error) {
         local.add(error);
     }

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "glint/core/diagnostics.h"
 #include "glint/core/error.h"
@@ -365,6 +366,42 @@ TEST(XmlParsers, NumberRules) {
     EXPECT_FALSE(NumberRule::positive().accepts(0.0));
     EXPECT_TRUE(NumberRule::non_negative().accepts(0.0));
     EXPECT_FALSE(NumberRule::any().accepts(std::nan("")));
+}
+
+TEST(XmlDocument, UnreadAttributesOfElementsAReaderLookedIntoAreWarnedOnce) {
+    // A reader reads <camera rate> and <lens>'s text; "colour" on <camera>, "units" on
+    // <lens> (asked for by name) and the misspelt "rolingreadout" are never read: one warning
+    // each at the attribute. "name" labels paths and the namespace attributes are XML's own;
+    // <notes> was never looked into (unknown elements have their own warning).
+    const XmlDocument doc = XmlDocument::parse(
+        "<camera name=\"C\" rate=\"10\" colour=\"red\" rolingreadout=\"true\"\n"
+        "        xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\" xsi:type=\"x\">\n"
+        "  <lens units=\"mm\">50</lens>\n"
+        "  <notes author=\"me\"/>\n"
+        "</camera>\n",
+        "cam.xml");
+    Diagnostics diagnostics;
+    const XmlNode root = doc.root("camera");
+    EXPECT_EQ(root.attribute_double("rate", diagnostics), 10.0);
+    EXPECT_EQ(root.optional_double("lens", diagnostics), 50.0);
+    doc.warn_unread_attributes(diagnostics);
+    std::vector<std::string> warned;
+    for (const Diagnostic& item : diagnostics.items()) {
+        EXPECT_EQ(item.severity, Diagnostic::Severity::warning);
+        EXPECT_THAT(item.message, HasSubstr("is not read by glint here (ignored)"));
+        warned.push_back(item.where.file + ":" + std::to_string(item.where.line) + ": " +
+                         item.where.element);
+    }
+    EXPECT_EQ(warned, (std::vector<std::string>{"cam.xml:1: camera[C]@colour",
+                                                "cam.xml:1: camera[C]@rolingreadout",
+                                                "cam.xml:3: camera[C]/lens@units"}));
+    // Reading an attribute, or reporting a problem at it, counts as reading it.
+    Diagnostics again;
+    (void)root.attribute("colour");
+    (void)root.where_attribute("rolingreadout");
+    (void)root.child("lens")->attribute("units");
+    doc.warn_unread_attributes(again);
+    EXPECT_TRUE(again.items().empty()) << again.items().front().text();
 }
 
 }  // namespace

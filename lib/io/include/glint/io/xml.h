@@ -9,7 +9,10 @@
 // junk, no NaN or infinity; a leading '+' is accepted); booleans are true/false/1/0/yes/no
 // (any case). A missing optional child is not a problem; a missing required one is an
 // error "missing required element <name>". Unknown children are reported once each as a
-// warning by warn_unknown_children().
+// warning by warn_unknown_children(). A document remembers which elements a reader looked
+// into and which of their attributes it read; warn_unread_attributes() then reports each
+// attribute nobody read (a misspelt `rolingreadout="true"` would otherwise just take the
+// default).
 #pragma once
 
 #include <cstdint>
@@ -32,6 +35,7 @@ class XMLElement;
 namespace glint::io {
 
 class XmlNode;
+struct XmlReadLog;
 
 /// A parsed XML file. Malformed XML throws glint::Error(input) with the file and line; no
 /// prolog is required. Nesting deeper than kMaxXmlDepth is refused.
@@ -51,9 +55,18 @@ public:
     XmlNode root(std::string_view expected_name = {}) const;
     const std::string& display_name() const { return m_display_name; }
 
+    /// One warning per attribute that no reader read, on the elements a reader looked into
+    /// (asked for by name, or whose text, children or attributes it read):
+    /// "attribute "x" is not read by glint here (ignored)". `name` (it labels element paths)
+    /// and XML namespace attributes (`xmlns…`, `xsi:…`) are never reported; elements no
+    /// reader looked into (unknown ones, reported by warn_unknown_children, and those ignored
+    /// whole) are not either. Call it once, after reading the whole document.
+    void warn_unread_attributes(Diagnostics& diagnostics) const;
+
 private:
     XmlDocument();
     std::unique_ptr<tinyxml2::XMLDocument> m_doc;
+    std::unique_ptr<XmlReadLog> m_read;
     std::string m_display_name;
 };
 
@@ -144,10 +157,15 @@ public:
 
 private:
     friend class XmlDocument;
-    XmlNode(const tinyxml2::XMLElement* element, std::string file, std::string path);
+    XmlNode(const tinyxml2::XMLElement* element, std::string file, std::string path,
+            XmlReadLog* read);
     XmlNode make_child(const tinyxml2::XMLElement* element) const;
+    /// Records that a reader looked into this element (and read attribute `attribute`).
+    void mark_visited() const;
+    void mark_read(const char* attribute) const;
 
     const tinyxml2::XMLElement* m_element;
+    XmlReadLog* m_read = nullptr;  ///< the document's (it outlives the node)
     std::string m_file;
     std::string m_path;
     std::string m_name;
