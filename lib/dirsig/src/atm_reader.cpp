@@ -46,7 +46,7 @@ model::Atmosphere parse_atm(std::string_view text, const std::string& file,
         diagnostics.error(root.where(),
                           "missing a radiative-transfer block (<simpleradiativetransfer>)");
     }
-    doc.warn_unread_attributes(diagnostics);
+    doc.warn_unread(diagnostics);
     return atmosphere;
 }
 

@@ -267,7 +267,7 @@ void read_glist_file(const std::filesystem::path& path, const ReadOptions& optio
             name, std::filesystem::absolute(path).parent_path(), text, options, diagnostics, scene,
             chain, cache};
         for (const io::XmlNode& object : root.children("object")) reader.read_object(object);
-        document.warn_unread_attributes(diagnostics);
+        document.warn_unread(diagnostics);
     } catch (const Error& error) {
         diagnostics.add(error);
     }

@@ -454,7 +454,7 @@ model::PlatformMotion read_motion(const std::filesystem::path& file, const ReadO
                               ".ppd) or <motion> (FlexMotion .motion), got <" +
                                   root.name() + ">");
         }
-        document.warn_unread_attributes(diagnostics);
+        document.warn_unread(diagnostics);
     } catch (const Error& error) {
         diagnostics.add(error);
     }

@@ -297,7 +297,7 @@ model::Platform read_platform(const std::filesystem::path& file, const ReadOptio
             diagnostics.warning(root.where(), "platform has no <attachment>: no instruments");
         }
         detail::check_masters(platform, diagnostics);
-        document.warn_unread_attributes(diagnostics);
+        document.warn_unread(diagnostics);
     } catch (const Error& error) {
         diagnostics.add(error);
     }

@@ -112,7 +112,7 @@ model::Scene read_dirsig_scene(const std::filesystem::path& file, const ReadOpti
                 }
             }
         }
-        document.warn_unread_attributes(diagnostics);
+        document.warn_unread(diagnostics);
     } catch (const Error& error) {
         diagnostics.add(error);
     }

@@ -125,7 +125,7 @@ model::Simulation read_sim(const std::filesystem::path& file, const ReadOptions&
             plugin.basic_platform = std::move(inputs);
             simulation.plugins.push_back(std::move(plugin));
         }
-        document.warn_unread_attributes(diagnostics);
+        document.warn_unread(diagnostics);
     } catch (const Error& error) {
         diagnostics.add(error);
     }

@@ -132,7 +132,7 @@ model::TaskList read_tasks(const std::filesystem::path& file, const ReadOptions&
         for (const io::XmlNode& node : tasks) {
             list.tasks.push_back(read_task(node, reference, diagnostics));
         }
-        document.warn_unread_attributes(diagnostics);
+        document.warn_unread(diagnostics);
     } catch (const Error& error) {
         diagnostics.add(error);
     }

@@ -145,7 +145,7 @@ XmlNode XmlDocument::root(std::string_view expected_name) const {
     return XmlNode(root, m_display_name, path_step(root), m_read.get());
 }
 
-void XmlDocument::warn_unread_attributes(Diagnostics& diagnostics) const {
+void XmlDocument::warn_unread(Diagnostics& diagnostics) const {
     const tinyxml2::XMLElement* root = m_doc->RootElement();
     if (root == nullptr) return;
     // Depth first in document order (the nesting is bounded by kMaxXmlDepth), each element
@@ -160,7 +160,22 @@ void XmlDocument::warn_unread_attributes(Diagnostics& diagnostics) const {
             children.emplace_back(c, path + "/" + path_step(c));
         }
         stack.insert(stack.end(), children.rbegin(), children.rend());
-        if (m_read->visited.count(element) == 0) continue;
+        if (m_read->visited.count(element) == 0) {
+            // A repeat of an element the reader took: the first of its name that it read.
+            const tinyxml2::XMLElement* parent = element->Parent()->ToElement();
+            if (parent == nullptr || m_read->visited.count(parent) == 0) continue;
+            for (const tinyxml2::XMLElement* before =
+                     element->PreviousSiblingElement(element->Name());
+                 before; before = before->PreviousSiblingElement(element->Name())) {
+                if (m_read->visited.count(before) == 0) continue;
+                diagnostics.warning(
+                    ErrorContext{m_display_name, element->GetLineNum(), path},
+                    "<" + std::string(element->Name()) + "> given again (first at line " +
+                        std::to_string(before->GetLineNum()) + "): this one is ignored");
+                break;
+            }
+            continue;
+        }
         for (const tinyxml2::XMLAttribute* a = element->FirstAttribute(); a; a = a->Next()) {
             const std::string_view name = a->Name();
             if (name == "name" || name.substr(0, 5) == "xmlns" || name.substr(0, 4) == "xsi:") {

@@ -41,7 +41,7 @@ model::PlatformMotion read_inline_motion(Reader& r, const YAML::Node& node,
                         "motion type \"" + *type + "\" is not supported, expected flexible");
         }
         motion.flexible = read_flex_motion(root, context, local);
-        document.warn_unread_attributes(local);
+        document.warn_unread(local);
     } catch (const Error& error) {
         local.add(error);
     }

@@ -384,7 +384,7 @@ TEST(XmlDocument, UnreadAttributesOfElementsAReaderLookedIntoAreWarnedOnce) {
     const XmlNode root = doc.root("camera");
     EXPECT_EQ(root.attribute_double("rate", diagnostics), 10.0);
     EXPECT_EQ(root.optional_double("lens", diagnostics), 50.0);
-    doc.warn_unread_attributes(diagnostics);
+    doc.warn_unread(diagnostics);
     std::vector<std::string> warned;
     for (const Diagnostic& item : diagnostics.items()) {
         EXPECT_EQ(item.severity, Diagnostic::Severity::warning);
@@ -400,8 +400,29 @@ TEST(XmlDocument, UnreadAttributesOfElementsAReaderLookedIntoAreWarnedOnce) {
     (void)root.attribute("colour");
     (void)root.where_attribute("rolingreadout");
     (void)root.child("lens")->attribute("units");
-    doc.warn_unread_attributes(again);
+    doc.warn_unread(again);
     EXPECT_TRUE(again.items().empty()) << again.items().front().text();
+}
+
+TEST(XmlDocument, ASingularElementGivenAgainIsWarnedAtTheRepeat) {
+    // The reader takes the first <rate> (child()) and every <entry> (children()); the second
+    // <rate> is never looked into: one warning there naming the first's line. The two
+    // <notes>, never looked into, and the entries, all read, give none.
+    const XmlDocument doc = XmlDocument::parse(
+        "<clock>\n  <rate>10</rate>\n  <notes/>\n  <rate>20</rate>\n  <notes/>\n"
+        "  <entry>1</entry>\n  <entry>2</entry>\n</clock>\n",
+        "clock.xml");
+    Diagnostics diagnostics;
+    const XmlNode root = doc.root("clock");
+    EXPECT_EQ(root.optional_double("rate", diagnostics), 10.0);
+    EXPECT_EQ(root.children("entry").size(), 2u);
+    doc.warn_unread(diagnostics);
+    ASSERT_EQ(diagnostics.items().size(), 1u);
+    const Diagnostic& item = diagnostics.items().front();
+    EXPECT_EQ(item.severity, Diagnostic::Severity::warning);
+    EXPECT_EQ(item.where.line, 4);
+    EXPECT_EQ(item.where.element, "clock/rate");
+    EXPECT_EQ(item.message, "<rate> given again (first at line 2): this one is ignored");
 }
 
 }  // namespace

@@ -10,7 +10,7 @@
 // (any case). A missing optional child is not a problem; a missing required one is an
 // error "missing required element <name>". Unknown children are reported once each as a
 // warning by warn_unknown_children(). A document remembers which elements a reader looked
-// into and which of their attributes it read; warn_unread_attributes() then reports each
+// into and which of their attributes it read; warn_unread() then reports each
 // attribute nobody read (a misspelt `rolingreadout="true"` would otherwise just take the
 // default).
 #pragma once
@@ -55,13 +55,16 @@ public:
     XmlNode root(std::string_view expected_name = {}) const;
     const std::string& display_name() const { return m_display_name; }
 
-    /// One warning per attribute that no reader read, on the elements a reader looked into
-    /// (asked for by name, or whose text, children or attributes it read):
-    /// "attribute "x" is not read by glint here (ignored)". `name` (it labels element paths)
-    /// and XML namespace attributes (`xmlns…`, `xsi:…`) are never reported; elements no
-    /// reader looked into (unknown ones, reported by warn_unknown_children, and those ignored
-    /// whole) are not either. Call it once, after reading the whole document.
-    void warn_unread_attributes(Diagnostics& diagnostics) const;
+    /// What the readers skipped, one warning each. An attribute that no reader read, on the
+    /// elements a reader looked into (asked for by name, or whose text, children or
+    /// attributes it read): "attribute "x" is not read by glint here (ignored)"; `name` (it
+    /// labels element paths) and XML namespace attributes (`xmlns…`, `xsi:…`) are never
+    /// reported. And an element no reader looked into while one before it of the same name
+    /// under the same parent was (a singular element given twice, the reader taking the
+    /// first): "<x> given again (first at line N): this one is ignored". Elements no reader
+    /// looked into otherwise (unknown ones, reported by warn_unknown_children, and those
+    /// ignored whole) are not reported. Call it once, after reading the whole document.
+    void warn_unread(Diagnostics& diagnostics) const;
 
 private:
     XmlDocument();
