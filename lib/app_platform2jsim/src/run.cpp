@@ -160,7 +160,7 @@ int run_parts(const Options& options, Context& ctx, std::ostream& out) {
     simulation.file = options.output;
     if (options.scene) {
         simulation.scenes.push_back(
-            model::SceneEntry{command_line_ref(*options.scene, "--scene"), {}});
+            model::SceneEntry{command_line_ref(*options.scene, "--scene"), {}, {}});
     }
     if (options.atmosphere) {
         model::Plugin plugin;

@@ -376,6 +376,7 @@ void JsimReader::read_scenes(const Json& list, const std::string& path,
         model::SceneEntry scene;
         scene.file = file_at(entry, entry_path, "inputs");
         scene.offset = string_at(entry, entry_path, "offset", false).value_or("");
+        if (entry.contains("offset")) scene.offset_where = at(key_path(entry_path, "offset"));
         out.scenes.push_back(std::move(scene));
     }
 }

@@ -63,7 +63,7 @@ model::Simulation read_sim(const std::filesystem::path& file, const ReadOptions&
             const std::string& name = node.name();
             if (name == "scene") {
                 if (auto ref = read_reference(node, base_dir, options, diagnostics)) {
-                    simulation.scenes.push_back(model::SceneEntry{std::move(*ref), {}});
+                    simulation.scenes.push_back(model::SceneEntry{std::move(*ref), {}, {}});
                 }
             } else if (name == "options") {
                 diagnostics.warning(node.where(),

@@ -171,8 +171,9 @@ void merge_scene(model::Scene& scene, model::Scene part, Diagnostics& diagnostic
 
 void check_scene_offset(const model::SceneEntry& entry, Diagnostics& diagnostics) {
     if (entry.offset.empty() || zero_offset(entry.offset)) return;
-    diagnostics.warning(entry.file.where,
-                        "scene offset \"" + entry.offset + "\" is not supported (not applied)");
+    diagnostics.warning(entry.offset_where.file.empty() ? entry.file.where : entry.offset_where,
+                        "scene offset \"" + entry.offset + "\" is read, not applied: the scene "
+                        "is placed at its own origin");
 }
 
 model::Scene read_simulation_scene(const model::Simulation& simulation, const ReadOptions& options,

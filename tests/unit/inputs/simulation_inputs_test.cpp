@@ -52,7 +52,7 @@ model::Simulation with_scenes(const std::vector<fs::path>& files) {
     simulation.file = "sim.jsim";
     for (std::size_t i = 0; i < files.size(); ++i) {
         simulation.scenes.push_back(model::SceneEntry{
-            ref_to(files[i], "scene_list[" + std::to_string(i) + "].inputs"), {}});
+            ref_to(files[i], "scene_list[" + std::to_string(i) + "].inputs"), {}, {}});
     }
     return simulation;
 }
@@ -265,8 +265,17 @@ TEST(SimulationScene, MissingFilesOffsetsAndEmptyList) {
     Diagnostics d2;
     read_simulation_scene(simulation, {}, d2);
     ASSERT_EQ(d2.warning_count(), 1u) << diagnostics_text(d2);
-    EXPECT_EQ(d2.items().front().message, "scene offset \"10,0,0\" is not supported (not applied)");
-    EXPECT_EQ(d2.items().front().where.element, "scene_list[1].inputs");
+    EXPECT_EQ(d2.items().front().message,
+              "scene offset \"10,0,0\" is read, not applied: the scene is placed at its own "
+              "origin");
+    EXPECT_EQ(d2.items().front().where.element, "scene_list[1].inputs");  // no key position
+    // Read from a .jsim, the warning is at the offset's own key.
+    simulation.scenes[1].offset_where = ErrorContext{"sim.jsim", 3, "[0].scene_list[1].offset"};
+    Diagnostics d2b;
+    read_simulation_scene(simulation, {}, d2b);
+    ASSERT_EQ(d2b.warning_count(), 1u) << diagnostics_text(d2b);
+    EXPECT_EQ(d2b.items().front().where.element, "[0].scene_list[1].offset");
+    EXPECT_EQ(d2b.items().front().where.line, 3);
     EXPECT_EQ(d2.error_count(), 0u);  // material "a" twice: the same definition
 
     Diagnostics d3;

@@ -16,6 +16,7 @@ namespace glint::model {
 struct SceneEntry {
     FileRef file;        ///< "inputs": the .scene (or glint YAML scene)
     std::string offset;  ///< optional "offset" text as written (e.g. "0,0,0"), else ""
+    ErrorContext offset_where;  ///< where the offset is written (its key), when it is
 };
 
 /// Inputs of a `BasicPlatform` plugin entry.
