@@ -53,8 +53,14 @@ def expected_warnings(items):
             out.append((e["line"], "<spatialresponse> is a DIRSIG4 setting"))
         elif tag == "processing" and child(e, "task"):
             out.append((e["line"], "<processing> is read and checked, not applied"))
-        elif tag == "capturemethod" and kind in ("raw", "lidar"):
-            out.append((e["line"], f"capturemethod type {kind} is read, not applied"))
+        elif tag == "capturemethod" and kind == "lidar":
+            out.append((e["line"], "capturemethod type lidar is read, not applied"))
+        elif tag == "capturemethod" and kind == "raw":
+            response = child(e, "spectralresponse")
+            channels = response and child(response, "channellist")
+            first = channels and child(channels, "channel")
+            if first:
+                out.append((first["line"], "the <channel>s of a raw capture are read"))
         elif tag == "samplestrategy" and kind not in ("", "central"):
             out.append((e["line"], "samplestrategy type"))
         elif tag == "instrument" and kind in ("lidar", "datarecorder"):

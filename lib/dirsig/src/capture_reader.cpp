@@ -412,12 +412,6 @@ model::CaptureMethod read_capture_method(const io::XmlNode& node, const ReadCont
     if (type == "raw") capture.type = model::CaptureMethodType::raw;
     if (type == "lidar") capture.type = model::CaptureMethodType::lidar;
     capture.name = trim(node.attribute("name").value_or(""));
-    if (capture.type == model::CaptureMethodType::raw) {
-        diagnostics.warning(node.where_attribute("type"),
-                            "capturemethod type raw is read, not applied: glint renders it as a "
-                            "simple capture through its <channel>s (the bandpass-sampled raw "
-                            "cube is not written yet; without channels nothing is rendered)");
-    }
     if (capture.type == model::CaptureMethodType::lidar) {
         diagnostics.warning(node.where_attribute("type"),
                             "capturemethod type lidar is read, not applied: glint models no "
@@ -480,6 +474,12 @@ void check_focal_plane(const model::FocalPlane& focal_plane, Diagnostics& diagno
                                       "expected no <detectormodel> in a ") +
                               (capture.type == model::CaptureMethodType::raw ? "raw" : "lidar") +
                               " capture");
+    }
+    if (capture.type == model::CaptureMethodType::raw &&
+        !capture.spectral_response.channels.empty()) {
+        diagnostics.warning(capture.spectral_response.channels.front().where,
+                            "the <channel>s of a raw capture are read, not applied: raw writes "
+                            "one band per bandpass sample");
     }
     if (integration.tdi && focal_plane.detector_array.y_count > 1 &&
         focal_plane.detector_array.rolling_line_time_s) {

@@ -165,6 +165,10 @@ OutputUnits::OutputUnits(const model::CaptureMethod& method,
     const double k_time = m_description.temporal_integration ? time_s : 1.0;
     const double k_common = k_area * k_aperture * k_time;
 
+    if (method.type == model::CaptureMethodType::raw) {
+        make_raw(file, grid, k_common);
+        return;
+    }
     // Δ_b · k_flux(λ_b): the part of the weight shared by every channel.
     std::vector<double> band_factor = trapezoid_weights_um(grid);
     for (std::size_t b = 0; b < m_bands; ++b) {
@@ -194,6 +198,7 @@ OutputUnits::OutputUnits(const model::CaptureMethod& method,
         for (std::size_t b = 0; b < m_bands; ++b) row[b] = scale * response[b] * band_factor[b];
         m_bias[c] = channel.bias;
         set_center_and_fwhm(channel, m_centers_um[c], m_fwhm_um[c]);
+        m_band_names.push_back(channel.name);
         m_description.per_channel_units.push_back(
             data_units_string(file.flux_units, file.area_units, m_description.aperture,
                               m_description.temporal_integration, channel.normalize));
@@ -251,6 +256,31 @@ double OutputUnits::channel_value(std::size_t channel, std::size_t first_band,
     double sum = 0.0;
     for (std::size_t b = 0; b < count; ++b) sum += row[b] * radiance_w_per_cm2_sr_um[b];
     return sum + m_bias[channel];
+}
+
+void OutputUnits::make_raw(const model::ImageFile& file, const SpectralGrid& grid,
+                           double k_common) {
+    const std::span<const double> wl = grid.wavelengths_um();
+    m_channels = m_bands;
+    m_weights.assign(m_channels * m_bands, 0.0);
+    m_bias.assign(m_channels, 0.0);
+    for (std::size_t b = 0; b < m_bands; ++b) {
+        m_weights[b * m_bands + b] = k_common * flux_factor(file.flux_units, wl[b]);
+        m_centers_um.push_back(wl[b]);
+        // The spacing around the sample: half the distance between its neighbours (one-sided
+        // at the ends; 0 for a one-sample grid).
+        const double lo = wl[b > 0 ? b - 1 : b];
+        const double hi = wl[b + 1 < m_bands ? b + 1 : b];
+        const double span = (b > 0 && b + 1 < m_bands) ? 0.5 * (hi - lo) : hi - lo;
+        m_fwhm_um.push_back(span);
+        char name[32];
+        std::snprintf(name, sizeof name, "%.4f um", wl[b]);
+        m_band_names.emplace_back(name);
+    }
+    m_description.normalized = true;
+    m_description.data_units =
+        data_units_string(file.flux_units, file.area_units, m_description.aperture,
+                          m_description.temporal_integration, true);
 }
 
 }  // namespace glint::sensor

@@ -75,9 +75,7 @@ io::EnviHeader header_of(const schedule::ClockedFocalPlane& source, const Output
     h.wavelength_units = "Micrometers";
     h.wavelength = units.centers_um();
     h.fwhm = units.fwhm_um();
-    for (const model::Channel& channel : method.spectral_response.channels) {
-        h.band_names.push_back(channel.name);
-    }
+    h.band_names = units.band_names();
     h.data_units = units.description().data_units;
     h.set_extra("glint version", options.version);
     h.set_extra("glint command line", context.command_line());

@@ -380,6 +380,32 @@ TEST(OutputUnitsChannels, ChannelValueFromItsSupportEqualsApply) {
     EXPECT_THROW(units.channel_value(2, 0, radiance), Error);
 }
 
+TEST(OutputUnitsRaw, OneBandPerGridSampleInTheFluxAndAreaUnits) {
+    // Raw: S_b = k_area k_aperture k_time k_flux(λ_b) L(λ_b), per µm; here photons per
+    // second per m² with an aperture and no integration time, the channel unused.
+    const SpectralGrid grid({0.5, 0.6, 0.8});
+    model::CaptureMethod raw =
+        method({gaussian("unused", 0.6, 0.1)}, FluxUnits::photons_per_second, AreaUnits::m2);
+    raw.type = model::CaptureMethodType::raw;
+    const OutputUnits units(raw, with_aperture(), grid);
+    ASSERT_EQ(units.channels(), 3u);
+    const std::vector<double> radiance{1.0, 2.0, 4.0};
+    std::vector<double> out(3);
+    units.apply(radiance, out);
+    for (std::size_t b = 0; b < 3; ++b) {
+        const double expected =
+            1e4 * photons_per_j(grid.wavelengths_um()[b]) * radiance[b] / expected_g_number();
+        EXPECT_NEAR(out[b], expected, kRelTol * expected) << b;
+        EXPECT_EQ(units.centers_um()[b], grid.wavelengths_um()[b]);
+    }
+    EXPECT_NEAR(units.fwhm_um()[0], 0.1, 1e-15);   // one-sided at the ends
+    EXPECT_NEAR(units.fwhm_um()[1], 0.15, 1e-15);  // half the neighbours' distance
+    EXPECT_NEAR(units.fwhm_um()[2], 0.2, 1e-15);
+    EXPECT_EQ(units.band_names(),
+              (std::vector<std::string>{"0.5000 um", "0.6000 um", "0.8000 um"}));
+    EXPECT_EQ(units.description().data_units, "Photons/s/(m2 um)");
+}
+
 TEST(OutputUnitsChannels, TrapezoidWeightsReproduceIntegrateTrapezoid) {
     // An irregular grid and a response of 1 everywhere on it: weight(0, b) is Δ_b itself.
     const SpectralGrid grid({0.41, 0.415, 0.43, 0.47, 0.471, 0.52, 0.6, 0.61, 0.69});

@@ -21,6 +21,11 @@
 // The bias is added in the output units. docs/units.md reproduces Table 1 with these strings
 // (section "Output units (Table 1)", all 80 combinations; output_units_docs_test.cpp checks it).
 //
+// Raw capture ("Raw Capture Method" in the manual): no spectral integration — one output band
+// per bandpass sample b, S_b = k_area · k_aperture · k_time · k_flux(λ_b) L(λ_b), per µm like a
+// normalized channel ("Watts/(cm2 sr um)"), the channels (if any) unused; ENVI wavelength the
+// sample's, fwhm the grid spacing around it, band names its wavelength ("0.5500 um").
+//
 // Data units grammar: <flux>/<denominator>, with <flux> Watts, Milliwatts, Microwatts,
 // Photons/s, Electrons/s (Joules, Millijoules, Microjoules, Photons, Electrons with temporal
 // integration) and <denominator> the area (cm2 or m2), then "sr" without an aperture, then "um"
@@ -118,6 +123,8 @@ public:
     /// the ENVI `wavelength` and `fwhm` keys.
     const std::vector<double>& centers_um() const noexcept { return m_centers_um; }
     const std::vector<double>& fwhm_um() const noexcept { return m_fwhm_um; }
+    /// Each output band's name: the channel's, or a raw band's wavelength ("0.5500 um").
+    const std::vector<std::string>& band_names() const noexcept { return m_band_names; }
 
 private:
     std::size_t m_channels = 0;
@@ -126,7 +133,11 @@ private:
     std::vector<double> m_bias;
     std::vector<double> m_centers_um;
     std::vector<double> m_fwhm_um;
+    std::vector<std::string> m_band_names;
     UnitsDescription m_description;
+
+    /// The raw capture's map (one band per grid sample).
+    void make_raw(const model::ImageFile& file, const SpectralGrid& grid, double k_common);
 };
 
 }  // namespace glint::sensor
