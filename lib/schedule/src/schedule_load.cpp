@@ -177,7 +177,9 @@ void Loader::check_output_names() {
         const std::string plane = focal_plane_name(source);
         claim(source, source.focal_plane->capture_method.image_file, plane);
         for (const model::TruthCollection& truth : source.focal_plane->truth_collections) {
-            if (!truth.enabled) continue;
+            // One without collectors writes nothing: it claims no name (GUI files leave
+            // several empty collections, all named "truth").
+            if (!truth.enabled || truth.collectors.empty()) continue;
             claim(source, truth.image_file,
                   "truth collection " + quote(truth.name) + " of " + plane);
         }

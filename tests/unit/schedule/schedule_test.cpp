@@ -315,6 +315,48 @@ TEST(Schedule, FocalPlanesOfOneEntryWritingTheSameFileAreAnError) {
     }
 }
 
+TEST(Schedule, EmptyTruthCollectionsClaimNoFile) {
+    // frames.platform's Fast focal plane with the collections a GUI leaves: two named "truth"
+    // writing truth.img, one with an empty <collectorlist/>, one without a list. They collect
+    // nothing, so they name no file and do not clash (they were refused as writing the same
+    // file); the collection with a collector still names its own.
+    const test::TempDir dir;
+    std::ifstream in(kData + "/frames.platform");
+    std::string platform((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string off_start = "<truthcollection>\n              <enabled>false</enabled>";
+    ASSERT_NE(platform.find(off_start), std::string::npos);
+    const std::string empty =
+        "<truthcollection><enabled>true</enabled><name>truth</name>"
+        "<imagefile><basename>truth</basename></imagefile><collectorlist/></truthcollection>\n"
+        "            <truthcollection><enabled>true</enabled><name>truth</name>"
+        "<imagefile><basename>truth</basename></imagefile></truthcollection>\n            ";
+    platform.insert(platform.find(off_start), empty);
+    std::ofstream(dir / "gui.platform") << platform;
+    std::ofstream(dir / "gui.jsim")
+        << R"([{"plugin_list": [{"name": "BasicPlatform", "inputs": {)"
+        << R"("platform_filename": "gui.platform", "motion_filename": ")" << kData
+        << R"(/hover.ppd", "tasks_filename": ")" << kData << R"(/one.tasks"}}]}])";
+    Diagnostics diagnostics;
+    const Schedule schedule = test::load_schedule(dir / "gui.jsim", {}, diagnostics);
+    EXPECT_FALSE(diagnostics.has_errors());
+    // The reader says of each that it collects nothing.
+    int nothing = 0;
+    for (const Diagnostic& item : diagnostics.items()) {
+        if (item.message.find("nothing to collect") != std::string::npos) ++nothing;
+    }
+    EXPECT_EQ(nothing, 2);
+    const std::vector<Capture> captures = all_captures(schedule);
+    bool fast_seen = false;
+    for (const Capture& capture : captures) {
+        if (schedule.sources()[capture.source].focal_plane->name != "Fast") continue;
+        fast_seen = true;
+        const std::vector<std::filesystem::path> files = schedule.truth_files(capture);
+        ASSERT_EQ(files.size(), 1u);
+        EXPECT_EQ(files[0].filename().string().rfind("fast_truth", 0), 0u) << files[0];
+    }
+    EXPECT_TRUE(fast_seen);
+}
+
 TEST(Schedule, SynchronousAndTriggeredClocks) {
     const Schedule schedule = load("clocks.jsim");
     ASSERT_EQ(schedule.sources().size(), 4u);  // Div4, Every, Seconds, External

@@ -128,7 +128,7 @@ public:
     /// `<folder>/<prefix><basename>[-tTTTT[-cCCCC]].<ext>`, 4-digit zero-based indices);
     /// empty when the capture method has no image file (a lidar without `<imagefile>`).
     std::filesystem::path image_file(const Capture& capture) const;
-    /// Output files of the capture's enabled truth collections, in order.
+    /// Output files of the capture's enabled truth collections that have collectors, in order.
     std::vector<std::filesystem::path> truth_files(const Capture& capture) const;
 
     /// Streams the captures in schedule order: start time, then plugin, instrument, focal
