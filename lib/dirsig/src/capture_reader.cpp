@@ -475,6 +475,19 @@ void check_focal_plane(const model::FocalPlane& focal_plane, Diagnostics& diagno
                               (capture.type == model::CaptureMethodType::raw ? "raw" : "lidar") +
                               " capture");
     }
+    // A raw capture is the bandpass-sampled radiance for an external detection model: the
+    // in-render detection a TDI array or a colour filter array needs is not for it.
+    if (capture.type == model::CaptureMethodType::raw && integration.tdi) {
+        diagnostics.error(integration.where,
+                          "tdi=\"true\" needs capturemethod type simple (TDI stages are "
+                          "accumulated by detection, which a raw capture leaves to an external "
+                          "model)");
+    }
+    if (capture.type == model::CaptureMethodType::raw && capture.spectral_response.pattern) {
+        diagnostics.error(capture.spectral_response.pattern->where,
+                          "<channelpattern> needs capturemethod type simple (a raw capture "
+                          "writes the bandpass samples, not a mosaic)");
+    }
     if (capture.type == model::CaptureMethodType::raw &&
         !capture.spectral_response.channels.empty()) {
         diagnostics.warning(capture.spectral_response.channels.front().where,

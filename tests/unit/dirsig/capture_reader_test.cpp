@@ -79,6 +79,31 @@ TEST(CaptureReader, RawNeedsNoChannels) {
     EXPECT_EQ(read.capture.spectral_response.bandpass.count, 31u);
 }
 
+TEST(CaptureReader, RawRefusesTdiAndAChannelPattern) {
+    // A raw capture is for an external detection model: TDI accumulation and colour filter
+    // arrays, which glint applies in its detection, need a simple capture.
+    const std::string raw = "type=\"raw\" name=\"R\"";
+    auto read = read_focal_plane(
+        "<focalplane name=\"F\">\n" +
+        capture_xml("<temporalintegration tdi=\"true\"><time>0.01</time></temporalintegration>",
+                    kBandpass, raw) +
+        "</focalplane>");
+    EXPECT_TRUE(has_error(read, "tdi=\"true\" needs capturemethod type simple",
+                          "<temporalintegration",
+                          "focalplane[F]/capturemethod[R]/temporalintegration"));
+    read = read_focal_plane(
+        "<focalplane name=\"F\">\n" +
+        capture_xml("",
+                    std::string(kBandpass) + "\n" + kOneChannel +
+                        "\n<channelpattern name=\"bayer\"><mapping filtername=\"red\" "
+                        "channelname=\"G\"/></channelpattern>",
+                    raw) +
+        "</focalplane>");
+    EXPECT_TRUE(has_error(read, "<channelpattern> needs capturemethod type simple",
+                          "<channelpattern",
+                          "focalplane[F]/capturemethod[R]/spectralresponse/channelpattern[bayer]"));
+}
+
 TEST(CaptureReader, SampleStrategy) {
     const auto read =
         read_capture(capture_xml("<samplestrategy type=\"central\"><hypersamplingmultiplier>50000"
