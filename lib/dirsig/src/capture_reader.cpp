@@ -476,17 +476,13 @@ void check_focal_plane(const model::FocalPlane& focal_plane, Diagnostics& diagno
                               " capture");
     }
     // A raw capture is the bandpass-sampled radiance for an external detection model: the
-    // in-render detection a TDI array or a colour filter array needs is not for it.
+    // TDI accumulation of the in-render detection is not for it (a <channelpattern> on it is
+    // refused by check_spectral_response).
     if (capture.type == model::CaptureMethodType::raw && integration.tdi) {
         diagnostics.error(integration.where,
                           "tdi=\"true\" needs capturemethod type simple (TDI stages are "
                           "accumulated by detection, which a raw capture leaves to an external "
                           "model)");
-    }
-    if (capture.type == model::CaptureMethodType::raw && capture.spectral_response.pattern) {
-        diagnostics.error(capture.spectral_response.pattern->where,
-                          "<channelpattern> needs capturemethod type simple (a raw capture "
-                          "writes the bandpass samples, not a mosaic)");
     }
     if (capture.type == model::CaptureMethodType::raw &&
         !capture.spectral_response.channels.empty()) {

@@ -79,11 +79,11 @@ TEST(CaptureReader, RawNeedsNoChannels) {
     EXPECT_EQ(read.capture.spectral_response.bandpass.count, 31u);
 }
 
-TEST(CaptureReader, RawRefusesTdiAndAChannelPattern) {
-    // A raw capture is for an external detection model: TDI accumulation and colour filter
-    // arrays, which glint applies in its detection, need a simple capture.
+TEST(CaptureReader, RawRefusesTdi) {
+    // A raw capture is for an external detection model: TDI accumulation, which glint applies
+    // in its detection, needs a simple capture (a pattern: SpectralReaderBadInput).
     const std::string raw = "type=\"raw\" name=\"R\"";
-    auto read = read_focal_plane(
+    const auto read = read_focal_plane(
         "<focalplane name=\"F\">\n" +
         capture_xml("<temporalintegration tdi=\"true\"><time>0.01</time></temporalintegration>",
                     kBandpass, raw) +
@@ -91,17 +91,6 @@ TEST(CaptureReader, RawRefusesTdiAndAChannelPattern) {
     EXPECT_TRUE(has_error(read, "tdi=\"true\" needs capturemethod type simple",
                           "<temporalintegration",
                           "focalplane[F]/capturemethod[R]/temporalintegration"));
-    read = read_focal_plane(
-        "<focalplane name=\"F\">\n" +
-        capture_xml("",
-                    std::string(kBandpass) + "\n" + kOneChannel +
-                        "\n<channelpattern name=\"bayer\"><mapping filtername=\"red\" "
-                        "channelname=\"G\"/></channelpattern>",
-                    raw) +
-        "</focalplane>");
-    EXPECT_TRUE(has_error(read, "<channelpattern> needs capturemethod type simple",
-                          "<channelpattern",
-                          "focalplane[F]/capturemethod[R]/spectralresponse/channelpattern[bayer]"));
 }
 
 TEST(CaptureReader, SampleStrategy) {
