@@ -167,6 +167,7 @@ OutputUnits::OutputUnits(const model::CaptureMethod& method,
 
     if (method.type == model::CaptureMethodType::raw) {
         make_raw(file, grid, k_common);
+        find_supports();
         return;
     }
     // Δ_b · k_flux(λ_b): the part of the weight shared by every channel.
@@ -213,6 +214,7 @@ OutputUnits::OutputUnits(const model::CaptureMethod& method,
                        : data_units_string(file.flux_units, file.area_units, m_description.aperture,
                                            m_description.temporal_integration, false);
     if (!mixed) m_description.per_channel_units.clear();
+    find_supports();
 }
 
 void OutputUnits::apply(std::span<const double> radiance_w_per_cm2_sr_um,
@@ -231,14 +233,17 @@ void OutputUnits::apply(std::span<const double> radiance_w_per_cm2_sr_um,
     }
 }
 
-BandRange OutputUnits::support(std::size_t channel) const noexcept {
-    const double* row = m_weights.data() + channel * m_bands;
-    std::size_t first = 0;
-    while (first < m_bands && row[first] == 0.0) ++first;
-    if (first == m_bands) return {0, 0};
-    std::size_t last = m_bands - 1;
-    while (row[last] == 0.0) --last;
-    return {first, last - first + 1};
+void OutputUnits::find_supports() {
+    m_support.assign(m_channels, BandRange{});
+    for (std::size_t c = 0; c < m_channels; ++c) {
+        const double* row = m_weights.data() + c * m_bands;
+        std::size_t first = 0;
+        while (first < m_bands && row[first] == 0.0) ++first;
+        if (first == m_bands) continue;
+        std::size_t last = m_bands - 1;
+        while (row[last] == 0.0) --last;
+        m_support[c] = {first, last - first + 1};
+    }
 }
 
 double OutputUnits::channel_value(std::size_t channel, std::size_t first_band,

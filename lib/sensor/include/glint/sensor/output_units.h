@@ -107,7 +107,7 @@ public:
     }
     /// The bands channel c weighs: from its first to its last band with a non-zero weight
     /// (count 0 when it weighs none).
-    BandRange support(std::size_t channel) const noexcept;
+    BandRange support(std::size_t channel) const noexcept { return m_support[channel]; }
     /// Channel c's value from the radiance of bands first_band, first_band + 1, … (a range
     /// that holds support(c); the value equals apply()'s for the same radiance on those
     /// bands). Allocates nothing; throws glint::Error (internal) for a range that does not.
@@ -134,7 +134,11 @@ private:
     std::vector<double> m_centers_um;
     std::vector<double> m_fwhm_um;
     std::vector<std::string> m_band_names;
+    std::vector<BandRange> m_support;  ///< per channel, found once when the map is built
     UnitsDescription m_description;
+
+    /// Fills m_support from the weights.
+    void find_supports();
 
     /// The raw capture's map (one band per grid sample).
     void make_raw(const model::ImageFile& file, const SpectralGrid& grid, double k_common);
