@@ -283,6 +283,17 @@ TEST(Schedule, EntriesWritingTheSameFilesAreAnError) {
     EXPECT_THAT(errors[1], HasSubstr("\"sat_fast_truth-t0000.img\""));
 }
 
+/// Writes `platform` as <name>.platform in `dir` and <name>.jsim flying it with hover.ppd
+/// over one.tasks.
+void write_hover_simulation(const std::filesystem::path& dir, const std::string& name,
+                            const std::string& platform) {
+    std::ofstream(dir / (name + ".platform")) << platform;
+    std::ofstream(dir / (name + ".jsim"))
+        << R"([{"plugin_list": [{"name": "BasicPlatform", "inputs": {)"
+        << R"("platform_filename": ")" << name << R"(.platform", "motion_filename": ")" << kData
+        << R"(/hover.ppd", "tasks_filename": ")" << kData << R"(/one.tasks"}}]}])";
+}
+
 TEST(Schedule, FocalPlanesOfOneEntryWritingTheSameFileAreAnError) {
     // frames.platform with Slow writing Fast's files.
     const test::TempDir dir;
@@ -295,11 +306,7 @@ TEST(Schedule, FocalPlanesOfOneEntryWritingTheSameFileAreAnError) {
     platform.replace(platform.find(slow), slow.size(),
                      "<basename>fast</basename><extension>img</extension>\n"
                      "                <schedule>capture</schedule>");
-    std::ofstream(dir / "same.platform") << platform;
-    std::ofstream(dir / "same.jsim")
-        << R"([{"plugin_list": [{"name": "BasicPlatform", "inputs": {)"
-        << R"("platform_filename": "same.platform", "motion_filename": ")" << kData
-        << R"(/hover.ppd", "tasks_filename": ")" << kData << R"(/one.tasks"}}]}])";
+    write_hover_simulation(dir.path(), "same", platform);
     Diagnostics diagnostics;
     try {
         test::load_schedule(dir / "same.jsim", {}, diagnostics);
@@ -331,11 +338,7 @@ TEST(Schedule, EmptyTruthCollectionsClaimNoFile) {
         "            <truthcollection><enabled>true</enabled><name>truth</name>"
         "<imagefile><basename>truth</basename></imagefile></truthcollection>\n            ";
     platform.insert(platform.find(off_start), empty);
-    std::ofstream(dir / "gui.platform") << platform;
-    std::ofstream(dir / "gui.jsim")
-        << R"([{"plugin_list": [{"name": "BasicPlatform", "inputs": {)"
-        << R"("platform_filename": "gui.platform", "motion_filename": ")" << kData
-        << R"(/hover.ppd", "tasks_filename": ")" << kData << R"(/one.tasks"}}]}])";
+    write_hover_simulation(dir.path(), "gui", platform);
     Diagnostics diagnostics;
     const Schedule schedule = test::load_schedule(dir / "gui.jsim", {}, diagnostics);
     EXPECT_FALSE(diagnostics.has_errors());
