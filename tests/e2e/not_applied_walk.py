@@ -71,12 +71,6 @@ def expected_warnings(items):
             samples = child(e, "samples")
             if int(samples["text"].strip() or "1") > 1:
                 out.append((samples["line"], "DIRSIG5-style sampling ignores"))
-        elif tag == "truthcollection" and e["children"]:
-            enabled = child(e, "enabled")
-            on = enabled is None or enabled["text"].strip().lower() in ("true", "1", "yes")
-            collectors = child(e, "collectorlist")
-            if on and collectors is not None and child(collectors, "collector") is not None:
-                out.append((e["line"], "glint writes no truth image yet"))
     return out
 
 

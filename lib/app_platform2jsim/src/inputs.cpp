@@ -16,6 +16,7 @@
 #include "glint/inputs/simulation_inputs.h"
 #include "glint/io/image.h"
 #include "glint/model/derived.h"
+#include "glint/model/truth.h"
 
 namespace glint::app_platform2jsim {
 namespace {
@@ -367,15 +368,50 @@ std::string summary_text(std::size_t errors, std::size_t warnings, std::size_t f
            plural(files, "file");
 }
 
-void warn_not_rendered(LoadedInputs& inputs) {
-    for (const auto& [file, platform] : inputs.platforms) {
-        for (const model::InstrumentPath& path : model::list_instruments(platform)) {
-            for (const model::FocalPlane& fp : path.instrument->focal_planes) {
-                for (const model::TruthCollection& truth : fp.truth_collections) {
-                    if (const auto warning = model::truth_not_written(truth)) {
-                        inputs.diagnostics.warning(truth.where, *warning);
+void check_truth_targets(LoadedInputs& inputs) {
+    for (const model::Simulation& simulation : inputs.simulations) {
+        std::vector<const model::TruthCollector*> abundance;
+        for (std::size_t index : simulation.basic_platform_indices()) {
+            const model::Platform* platform =
+                inputs.platform_of(*simulation.plugins[index].basic_platform);
+            if (platform == nullptr) continue;
+            for (const model::InstrumentPath& path : model::list_instruments(*platform)) {
+                for (const model::FocalPlane& fp : path.instrument->focal_planes) {
+                    for (const model::TruthCollection& truth : fp.truth_collections) {
+                        if (!model::writes_truth(truth)) continue;
+                        for (const model::TruthCollector& collector : truth.collectors) {
+                            if (!collector.materials.empty() || !collector.tags.empty()) {
+                                abundance.push_back(&collector);
+                            }
+                        }
                     }
                 }
+            }
+        }
+        if (abundance.empty() || simulation.scenes.empty()) continue;
+        // The simulation's scene as the render sees it (several merge into one; load_scenes
+        // reported what merging finds).
+        model::Scene scene;
+        Diagnostics merge_problems;
+        bool complete = true;
+        for (const model::SceneEntry& entry : simulation.scenes) {
+            const auto it = inputs.scenes.find(key_of(entry.file.resolved));
+            if (it == inputs.scenes.end()) {
+                complete = false;
+                break;
+            }
+            inputs::merge_scene(scene, it->second, merge_problems);
+        }
+        if (!complete) continue;
+        for (const model::TruthCollector* collector : abundance) {
+            std::vector<std::string> warnings;
+            try {
+                model::resolve_abundance(*collector, scene, warnings);
+            } catch (const Error& error) {
+                inputs.diagnostics.add(error);
+            }
+            for (const std::string& warning : warnings) {
+                inputs.diagnostics.warning(collector->where, warning);
             }
         }
     }

@@ -239,7 +239,7 @@ int run_check(const Options& options, Context& ctx, std::ostream& out) {
     if (options.check_files.empty()) throw usage_error("--check needs at least one FILE");
     LoadedInputs inputs;
     for (const fs::path& file : options.check_files) check_file(file, inputs, options.read_options);
-    warn_not_rendered(inputs);
+    check_truth_targets(inputs);
     report(inputs, ctx, false);
     for (const std::string& line : inputs.contents) out << line << '\n';
     out << "check: "

@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "glint/core/text.h"
+#include "glint/model/truth.h"
 #include "platform_tree.h"
 
 namespace glint::dirsig::detail {
@@ -90,6 +91,11 @@ model::TruthCollector read_collector(const io::XmlNode& node, Diagnostics& diagn
     model::TruthCollector collector;
     collector.where = node.where();
     collector.name = node.required_text("name", diagnostics);
+    if (!collector.name.empty() && !model::expand_truth_collector(collector.name)) {
+        diagnostics.error(node.child("name")->where(), "unknown truth collector " +
+                                                           quote(collector.name) + " (" +
+                                                           model::known_truth_collectors() + ")");
+    }
     const std::optional<std::string> materials = node.optional_text("materials");
     const std::optional<std::string> tags = node.optional_text("tags");
     if (materials) collector.materials = split_list(*materials);
@@ -129,8 +135,19 @@ model::TruthCollection read_truth_collection(const io::XmlNode& node, Diagnostic
     }
     truth.enabled = node.optional_bool("enabled", diagnostics).value_or(true);
     truth.name = node.optional_text("name").value_or("");
+    if (!truth.enabled) {
+        diagnostics.warning(node.child("enabled")->where(),
+                            "truth collection " + quote(truth.name) +
+                                " is disabled: no truth image is written for it");
+    }
     if (const std::optional<io::XmlNode> image = node.child("imagefile")) {
         truth.image_file = read_image_file(*image, false, diagnostics);
+        if (image->child("datatype") && truth.image_file.datatype != 4 &&
+            truth.image_file.datatype != 5) {
+            diagnostics.error(image->child("datatype")->where(),
+                              "a truth image is float32 (<datatype>4) or float64 (5, the "
+                              "default): its no-data value is NaN");
+        }
     } else if (truth.enabled) {
         diagnostics.error(node.where(), "missing required element <imagefile>");
     }

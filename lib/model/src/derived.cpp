@@ -133,11 +133,4 @@ double channel_integral_um(const Channel& channel, const SpectralGrid& grid) {
     return integrate_trapezoid(grid, channel_response(channel, grid));
 }
 
-std::optional<std::string> truth_not_written(const TruthCollection& truth) {
-    if (!truth.enabled || truth.collectors.empty()) return std::nullopt;
-    return "truth collection \"" + truth.name +
-           "\" is read, not applied: glint writes no truth image yet (its file name is "
-           "still planned and listed)";
-}
-
 }  // namespace glint::model

@@ -74,7 +74,7 @@ PathTracer::PathTracer(const scene::GeometryScene& scene, const MaterialTable& m
 }
 
 void PathTracer::trace(const SampleRay& ray, RandomStream& rng, PathScratch& scratch,
-                       std::span<double> radiance) const {
+                       std::span<double> radiance, FirstHit* first_hit) const {
     const Environment& env = m_environment;
     const std::size_t first = m_range.first;
     const std::size_t count = m_range.count;
@@ -86,6 +86,7 @@ void PathTracer::trace(const SampleRay& ray, RandomStream& rng, PathScratch& scr
 
     std::optional<scene::RayHit> hit = m_scene.intersect(ray.origin_m, ray.direction, time);
     ++scratch.rays;
+    if (first_hit != nullptr) first_hit->hit = hit.has_value();
     if (!hit) {
         if (ray.direction.z > 0.0 && !env.sky_black()) {
             std::copy(sky.begin(), sky.end(), radiance.begin());
@@ -107,7 +108,11 @@ void PathTracer::trace(const SampleRay& ray, RandomStream& rng, PathScratch& scr
         double sun_factor = 0.0;
         const Frame frame = Frame::from_normal(normal);
         const Vec3 wo_local = frame.to_local(wo);
-        if (reflects && env.sun_visible()) {
+        // The first hit's record: its shadow ray is traced even on a black material (whose
+        // path ends here, so the numbers drawn for it change nothing after).
+        FirstHit* record = bounce == 0 ? first_hit : nullptr;
+        bool sun_blocked = true;
+        if ((reflects || record != nullptr) && env.sun_visible()) {
             const Vec3 sun = env.sun_direction(time);
             const Vec3 local =
                 sample_uniform_cone(rng.uniform(), rng.uniform(), env.sun_half_angle_rad());
@@ -115,10 +120,19 @@ void PathTracer::trace(const SampleRay& ray, RandomStream& rng, PathScratch& scr
             const double cos_i = dot(normal, wi);
             if (cos_i > 0.0 && wo_local.z > 0.0) {
                 ++scratch.rays;
-                if (!m_scene.occluded(m_scene.spawn_origin(*hit, wi), wi, time)) {
+                sun_blocked = m_scene.occluded(m_scene.spawn_origin(*hit, wi), wi, time);
+                if (!sun_blocked && reflects) {
                     sun_factor = m_materials.shape(m).eval(wo_local, frame.to_local(wi)) * cos_i;
                 }
             }
+        }
+        if (record != nullptr) {
+            record->position_m = hit->position_m;
+            record->normal = normal;
+            record->distance_m = hit->distance_m;
+            record->material = hit->material;
+            record->instance = hit->instance;
+            record->sun_blocked = sun_blocked;
         }
         add_vertex_light(
             radiance, beta, emission, rho.data(),

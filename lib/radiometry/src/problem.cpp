@@ -22,11 +22,18 @@ namespace {
 
 /// Per-thread buffers of the convergence loop (the "arena" of one worker).
 struct Workspace {
-    explicit Workspace(const PathTracer& tracer)
-        : path(tracer.environment().bands()), sample(tracer.bands()), sum(tracer.bands()) {}
+    Workspace(const PathTracer& tracer, const ProblemBatch& batch)
+        : path(tracer.environment().bands()),
+          sample(tracer.bands()),
+          sum(tracer.bands()),
+          recorder(batch.observer != nullptr ? batch.observer->make_recorder() : nullptr),
+          wants_first_hit(batch.observer != nullptr && batch.observer->wants_first_hit()) {}
     PathScratch path;
     std::vector<double> sample;  ///< one sample's radiance
     std::vector<double> sum;     ///< Σ w L per band
+    std::unique_ptr<SampleRecorder> recorder;
+    bool wants_first_hit = false;
+    FirstHit first_hit;
 };
 
 void check_batch(const PathTracer& tracer, const ProblemBatch& batch) {
@@ -75,9 +82,9 @@ std::pair<std::uint64_t, double> solve_into(const PathTracer& tracer, const Prob
     std::fill(ws.sum.begin(), ws.sum.end(), 0.0);
     double weight_sum = 0.0;
     double weight_sq_sum = 0.0;
-    double mean = 0.0;  // weighted mean at the reference band (West 1979)
-    double spread = 0.0;
+    WeightedMoments reference;  // at the reference band
     std::uint64_t n = 0;
+    if (ws.recorder) ws.recorder->begin(problem);
     while (n < c.max_samples) {
         RandomStream rng = sample_stream(k, problem, n);
         const SampleRay ray = batch.source->generate(problem, n, rng);
@@ -86,28 +93,33 @@ std::pair<std::uint64_t, double> solve_into(const PathTracer& tracer, const Prob
                               std::to_string(problem) + " has weight " +
                               format_shortest(ray.weight) + "; weights must be finite and > 0");
         }
-        tracer.trace(ray, rng, ws.path, ws.sample);
+        tracer.trace(ray, rng, ws.path, ws.sample, ws.wants_first_hit ? &ws.first_hit : nullptr);
+        if (ws.recorder) {
+            ws.recorder->add(ray, ws.sample, ws.wants_first_hit ? &ws.first_hit : nullptr);
+        }
         for (std::size_t b = 0; b < ws.sum.size(); ++b) ws.sum[b] += ray.weight * ws.sample[b];
         ++n;
-        const double x = ws.sample[batch.reference_band];
-        const double previous = mean;
+        const double previous = reference.mean;
         weight_sum += ray.weight;
         weight_sq_sum += ray.weight * ray.weight;
-        mean += (ray.weight / weight_sum) * (x - previous);
-        spread += ray.weight * (x - previous) * (x - mean);
+        reference.add(ws.sample[batch.reference_band], ray.weight, weight_sum);
         if (n >= 2 && n >= c.min_samples && c.threshold_w_per_cm2_sr_um > 0.0 &&
-            std::fabs(mean - previous) < c.threshold_w_per_cm2_sr_um) {
+            std::fabs(reference.mean - previous) < c.threshold_w_per_cm2_sr_um) {
             break;
         }
     }
+    if (ws.recorder) ws.recorder->end(problem, n);
     for (std::size_t b = 0; b < radiance.size(); ++b) radiance[b] = ws.sum[b] / weight_sum;
-    const double effective = weight_sum * weight_sum / weight_sq_sum;
-    const double error =
-        effective > 1.0 ? std::sqrt(std::max(0.0, spread / weight_sum) / (effective - 1.0)) : 0.0;
-    return {n, error};
+    return {n, reference.standard_error(weight_sum, weight_sq_sum)};
 }
 
 }  // namespace
+
+double WeightedMoments::standard_error(double weight_sum, double weight_sq_sum) const noexcept {
+    const double effective = weight_sum * weight_sum / weight_sq_sum;
+    return effective > 1.0 ? std::sqrt(std::max(0.0, spread / weight_sum) / (effective - 1.0))
+                           : 0.0;
+}
 
 RandomStream sample_stream(const StreamKey& key, std::uint64_t problem, std::uint64_t sample) {
     if (key.spectral_state) {
@@ -128,7 +140,7 @@ std::size_t nearest_band(const SpectralGrid& grid, double wavelength_um) noexcep
 
 Solution solve(const PathTracer& tracer, const ProblemBatch& batch, std::uint64_t problem) {
     check_batch(tracer, batch);
-    Workspace ws(tracer);
+    Workspace ws(tracer, batch);
     Solution solution;
     solution.radiance_w_per_cm2_sr_um.resize(tracer.bands());
     const auto [samples, error] =
@@ -149,7 +161,7 @@ Solutions solve(const PathTracer& tracer, const ProblemBatch& batch, const Conte
     const int threads =
         context.threads == 0 ? tbb::task_arena::automatic : static_cast<int>(context.threads);
     tbb::task_arena arena(threads);
-    tbb::enumerable_thread_specific<Workspace> workspaces([&] { return Workspace(tracer); });
+    tbb::enumerable_thread_specific<Workspace> workspaces([&] { return Workspace(tracer, batch); });
     std::atomic<std::uint64_t> done{0};
     std::mutex progress_mutex;
     const std::uint64_t report_every = std::max<std::uint64_t>(1, batch.count / 100);

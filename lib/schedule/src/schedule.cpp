@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "glint/core/error.h"
+#include "glint/model/truth.h"
 #include "schedule_impl.h"
 
 namespace glint::schedule {
@@ -88,10 +89,8 @@ std::vector<std::filesystem::path> Schedule::truth_files(const Capture& capture)
     const PluginSchedule& plugin = m_impl->plugins[source.plugin];
     std::vector<std::filesystem::path> files;
     for (const model::TruthCollection& truth : source.focal_plane->truth_collections) {
-        // A collection without collectors writes nothing (the reader warned about it).
-        if (!truth.enabled || truth.collectors.empty() || truth.image_file.basename.empty()) {
-            continue;
-        }
+        // A disabled collection or one without collectors writes nothing (the reader warned).
+        if (!model::writes_truth(truth)) continue;
         files.push_back(output_file(truth.image_file, plugin.output_folder, plugin.output_prefix,
                                     capture.task_index, capture.capture_index));
     }

@@ -13,6 +13,7 @@
 #include "glint/core/text.h"
 #include "glint/model/output_name.h"
 #include "glint/model/platform.h"
+#include "glint/model/truth.h"
 #include "glint/schedule/schedule.h"
 #include "schedule_impl.h"
 
@@ -179,7 +180,7 @@ void Loader::check_output_names() {
         for (const model::TruthCollection& truth : source.focal_plane->truth_collections) {
             // One without collectors writes nothing: it claims no name (GUI files leave
             // several empty collections, all named "truth").
-            if (!truth.enabled || truth.collectors.empty()) continue;
+            if (!model::writes_truth(truth)) continue;
             claim(source, truth.image_file,
                   "truth collection " + quote(truth.name) + " of " + plane);
         }

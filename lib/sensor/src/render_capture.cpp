@@ -132,12 +132,25 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
     const std::size_t channels = state.units.channels();
     image.assign(batch.count * channels, 0.0);
     std::vector<std::uint64_t> samples(batch.count, 0);  // per pixel, over the states
+    // Truth, from the same samples: the first state's first hits, each state's errors.
+    std::vector<double> truth(state.truth.empty() ? 0 : batch.count * state.truth.bands.size(),
+                              0.0);
+    const TruthContext truth_context{
+        &in.scene,    &state.materials,     &in.frame,
+        &state.units, state.reference_band, state.mask ? state.mask->mean_sensitivity() : 1.0};
     CaptureReport stats;
     for (const SpectralState& spectral : state.spectral_states) {
         const radiometry::PathTracer tracer(geometry, state.materials, environment, options.tracer,
                                             spectral.bands);
         batch.key.spectral_state = spectral.channel;
         batch.reference_band = spectral.reference_band - spectral.bands.first;
+        std::optional<TruthObserver> observer;
+        if (!state.truth.empty()) {
+            observer.emplace(state.truth, truth_context, spectral.bands, spectral.channel,
+                             &spectral == &state.spectral_states.front(), batch.first_problem,
+                             truth);
+        }
+        batch.observer = observer ? &*observer : nullptr;
         const radiometry::Solutions solutions = radiometry::solve(tracer, batch, quiet);
         store_channels(state, spectral, solutions, image);
         for (std::uint64_t i = 0; i < batch.count; ++i) samples[i] += solutions.samples[i];
@@ -175,6 +188,10 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
                        format_iso8601_utc(add_seconds(plugin.tasks.reference, capture.t0_s)),
                        capture.index};
     prepared.outputs.write_capture(p.file, image, stamp);
+    for (std::size_t t = 0; t < p.truth_files.size(); ++t) {
+        prepared.outputs.write_capture(
+            p.truth_files[t], truth_file_values(state.truth, state.truth.files[t], truth), stamp);
+    }
     stats.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     context.log.info("    Samples per pixel (min/mean/max) = " + std::to_string(stats.min_samples) +

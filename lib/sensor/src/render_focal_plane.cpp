@@ -170,11 +170,6 @@ FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t s
     // What the focal plane's elements ask for and glint does not apply (a rolling readout on
     // a TDI array, <temporalintegration><samples>, normalize with a detector model) was
     // warned about once by the reader, at the element, for --check and the render alike.
-    for (const model::TruthCollection& truth : fp.truth_collections) {
-        if (const auto warning = model::truth_not_written(truth)) {
-            context.log.warning(format_located(truth.where, *warning));
-        }
-    }
     SpectralGrid grid = model::bandpass_grid(fp.capture_method.spectral_response.bandpass);
     radiometry::MaterialTable materials(inputs.scene.materials, grid, context.log);
     CameraModel camera(source.instrument->properties, fp.detector_array, source.x_count,
@@ -189,7 +184,10 @@ FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t s
     FocalPlaneState state{std::move(grid),   std::move(states), std::move(materials),
                           std::move(camera), std::move(units),  convergence,
                           std::move(header), std::nullopt,      std::nullopt,
-                          std::nullopt};
+                          std::nullopt,      TruthLayout{},     0};
+    state.reference_band =
+        radiometry::nearest_band(state.grid, 0.5 * (state.grid.min_um() + state.grid.max_um()));
+    state.truth = make_truth_layout(fp, inputs.scene, state.units, context.log);
     if (const std::optional<model::Psf>& psf = fp.capture_method.psf) {
         state.psf = PsfSampler::from_model(*psf);
         state.header.set_extra("glint psf", state.psf->description());

@@ -28,6 +28,7 @@
 #include "glint/sensor/image_outputs.h"
 #include "glint/sensor/output_units.h"
 #include "glint/sensor/render.h"
+#include "glint/sensor/truth.h"
 
 namespace glint::sensor::detail {
 
@@ -79,6 +80,11 @@ struct FocalPlaneState {
     /// The focal plane's <activearea> mask, when it has one (each pixel's values are
     /// multiplied by its mean sensitivity).
     std::optional<ActiveArea> mask;
+    /// Its truth collections that write a file (empty: none).
+    TruthLayout truth;
+    /// The band of `grid` nearest its centre: the reference wavelength of the convergence of
+    /// an unsplit focal plane and of the Reflectance truth.
+    std::size_t reference_band = 0;
 };
 
 /// Builds the state of schedule source `source` (frame, pushbroom and TDI focal planes alike).
@@ -118,6 +124,8 @@ inline constexpr std::uint64_t kMaxCapturesPerRender = 1'000'000;
 struct PlannedCapture {
     schedule::Capture capture;
     std::filesystem::path file;
+    /// The files of its focal plane's truth collections, as FocalPlaneState::truth.files.
+    std::vector<std::filesystem::path> truth_files;
     std::uint64_t event_number = 0;  ///< DIRSIG's "Event #N of M" within its plugin's task
     std::uint64_t event_count = 0;
 };

@@ -74,7 +74,8 @@ std::vector<PlannedCapture> select_captures(const RenderInputs& in, const Render
         if (!options.only_captures.empty() && !options.only_captures.contains(capture->index)) {
             continue;
         }
-        out.push_back({*capture, schedule.image_file(*capture), event, event_counts[key]});
+        out.push_back({*capture, schedule.image_file(*capture), schedule.truth_files(*capture),
+                       event, event_counts[key]});
     }
     if (!options.only_captures.empty()) {
         std::set<std::uint64_t> found;
@@ -94,19 +95,42 @@ std::vector<PlannedCapture> select_captures(const RenderInputs& in, const Render
 void plan_outputs(const RenderInputs& in, const std::vector<PlannedCapture>& captures,
                   std::map<std::size_t, FocalPlaneState>& states, const RenderOptions& options,
                   const Context& context, ImageOutputs& outputs) {
-    std::map<std::filesystem::path, std::pair<std::size_t, std::uint64_t>> files;
+    // (source, truth file index or none for the radiometric image) → captures
+    struct Entry {
+        std::size_t source = 0;
+        std::optional<std::size_t> truth;
+        std::uint64_t captures = 0;
+    };
+    std::map<std::filesystem::path, Entry> files;
     for (const PlannedCapture& p : captures) {
-        auto& entry = files[p.file];
-        entry.first = p.capture.source;
-        ++entry.second;
+        Entry& entry = files[p.file];
+        entry.source = p.capture.source;
+        ++entry.captures;
+        for (std::size_t t = 0; t < p.truth_files.size(); ++t) {
+            Entry& truth = files[p.truth_files[t]];
+            truth = {p.capture.source, t, truth.captures + 1};
+        }
     }
     for (const auto& [path, entry] : files) {
-        const std::size_t source = entry.first;
-        if (!states.contains(source)) {
-            states.emplace(source, detail::make_focal_plane_state(in, source, options, context));
+        if (!states.contains(entry.source)) {
+            states.emplace(entry.source,
+                           detail::make_focal_plane_state(in, entry.source, options, context));
         }
-        const schedule::ClockedFocalPlane& s = in.schedule->sources()[source];
-        outputs.plan(path, states.at(source).header, s.lines_per_capture(), entry.second);
+    }
+    for (const auto& [path, entry] : files) {
+        const FocalPlaneState& state = states.at(entry.source);
+        const schedule::ClockedFocalPlane& s = in.schedule->sources()[entry.source];
+        if (!entry.truth) {
+            outputs.plan(path, state.header, s.lines_per_capture(), entry.captures);
+            continue;
+        }
+        if (*entry.truth >= state.truth.files.size()) {
+            throw internal_error("truth file " + path.string() + " has no collection");
+        }
+        outputs.plan(path,
+                     truth_header(state.header, *s.focal_plane, state.truth,
+                                  state.truth.files[*entry.truth], in.scene),
+                     s.lines_per_capture(), entry.captures);
     }
 }
 

@@ -24,12 +24,16 @@ std::string with_truth(const std::string& truth) {
 TEST(TruthReader, TruthFixtureFieldByField) {
     const Read read = read_fixture("truth.platform");
     ASSERT_FALSE(read.diagnostics.has_errors()) << dump(read.diagnostics);
-    // Only the empty <truthcollection/> is worth a warning.
-    ASSERT_EQ(read.diagnostics.warning_count(), 1u) << dump(read.diagnostics);
+    // The empty <truthcollection/> and the disabled one are each worth a warning.
+    ASSERT_EQ(read.diagnostics.warning_count(), 2u) << dump(read.diagnostics);
     const std::string plane =
         "platform/attachment/mount[Belly]/attachment/instrument[Cam]/focalplane[RGB]";
     expect_diagnostic(read, "empty <truthcollection>: nothing to collect", 88,
                       plane + "/truthcollection", Severity::warning);
+    expect_diagnostic(read,
+                      "truth collection \"Geometry\" is disabled: no truth image is written "
+                      "for it",
+                      90, plane + "/truthcollection/enabled", Severity::warning);
     EXPECT_EQ(read.platform.metadata.find("name").value_or(""), "Truth");
 
     const auto& truths = model::list_instruments(read.platform)

@@ -502,8 +502,7 @@ TEST(Schedule, LegacySimFileTakesTheCommandLineFolderAndPrefix) {
     EXPECT_EQ(captures.front().t0_s, 1.0);
     EXPECT_EQ(captures.back().t0_s, 3.0);
     EXPECT_EQ(schedule.image_file(captures[20]), "out/p_rgb-t0000-c0020.img");
-    // The fixture's truth collection is disabled: no truth file is planned.
-    EXPECT_TRUE(schedule.truth_files(captures[20]).empty());
+    EXPECT_THAT(schedule.truth_files(captures[20]), ElementsAre("out/p_rgb_truth-t0000-c0020.img"));
 }
 
 TEST(Schedule, MissingSimulationIsAnError) {

@@ -73,9 +73,10 @@ const model::Platform* load_platform_file(const std::filesystem::path& file, Loa
                                           const dirsig::ReadOptions& options,
                                           bool check_references = true);
 
-/// What --check adds about the platforms read: one warning, at the element, for each thing
-/// they ask for that glint-render reads but does not produce (a truth collection).
-void warn_not_rendered(LoadedInputs& inputs);
+/// What --check adds about the truth collections of the platforms of each simulation read
+/// with its scenes (LoadDepth::contents): the errors and warnings glint-render gives for
+/// their Abundance targets (a material the scene does not have, a tag no instance carries).
+void check_truth_targets(LoadedInputs& inputs);
 
 /// What --check does with one file: by extension, `.platform` or `.tasks` alone, anything
 /// else as a simulation with load_references(contents).

@@ -35,9 +35,4 @@ std::vector<double> channel_response(const Channel& channel, const SpectralGrid&
 /// ∫ R(λ) dλ over the grid (trapezoid), in µm.
 double channel_integral_um(const Channel& channel, const SpectralGrid& grid);
 
-/// The warning for a truth collection that asks for truth (enabled, with collectors), which
-/// glint reads and checks but does not write yet; none for one that asks for nothing. Given at
-/// the collection's file:line by `glint-platform2jsim --check` and `glint-render`.
-std::optional<std::string> truth_not_written(const TruthCollection& truth);
-
 }  // namespace glint::model

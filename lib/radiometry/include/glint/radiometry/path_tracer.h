@@ -38,6 +38,23 @@ struct SampleRay {
     double weight = 1;  ///< relative weight of the sample in the pixel (e.g. a PSF weight), > 0
 };
 
+/// What a sample's first surface hit was, for truth (docs/truth.md). Filled by trace() when
+/// asked; recording it traces no extra ray except the sun shadow ray of a first hit on a
+/// material that reflects nothing (the radiance, and the random numbers it draws, are the
+/// same either way).
+struct FirstHit {
+    bool hit = false;            ///< the primary ray hit a surface (else the rest is unset)
+    Vec3 position_m;             ///< scene ENU
+    Vec3 normal;                 ///< unit geometric normal, facing the ray's origin
+    double distance_m = 0.0;     ///< from the ray's origin
+    std::uint32_t material = 0;  ///< index into the scene's materials
+    std::uint32_t instance = 0;  ///< index into the scene's instances
+    /// The sun does not light the point: the sun is below the horizon (or switched off), it
+    /// is behind the surface, or the shadow ray towards the point drawn in its disc is
+    /// blocked.
+    bool sun_blocked = false;
+};
+
 /// Path tracer settings.
 struct TracerSettings {
     unsigned max_bounces = 8;            ///< surface scatterings after the first hit
@@ -78,9 +95,10 @@ public:
 
     /// Traces one path for `ray` and writes its at-aperture radiance, W/(cm² sr µm), to
     /// `radiance` (bands() values: the range's; overwritten). Draws from `rng` only.
-    /// `scratch` must have been made for environment().bands().
+    /// `scratch` must have been made for environment().bands(). With `first_hit`, records
+    /// the first surface hit there.
     void trace(const SampleRay& ray, RandomStream& rng, PathScratch& scratch,
-               std::span<double> radiance) const;
+               std::span<double> radiance, FirstHit* first_hit = nullptr) const;
 
 private:
     const scene::GeometryScene& m_scene;

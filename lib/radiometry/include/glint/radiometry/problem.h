@@ -20,6 +20,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -81,6 +82,48 @@ struct Solutions {
     }
 };
 
+/// The running weighted mean and spread of one value over a problem's samples (West 1979),
+/// the statistic the convergence rule and the standard error use.
+struct WeightedMoments {
+    double mean = 0.0;
+    double spread = 0.0;  ///< Σ w (x − mean)² so far
+    /// Adds `x` of weight `weight`; `weight_sum` is Σ w including it.
+    void add(double x, double weight, double weight_sum) noexcept {
+        const double previous = mean;
+        mean += (weight / weight_sum) * (x - previous);
+        spread += weight * (x - previous) * (x - mean);
+    }
+    /// The standard error of the weighted mean, √(spread / Σw / (n_eff − 1)) with Kish's
+    /// effective sample size n_eff = (Σw)² / Σw²; 0 when n_eff ≤ 1.
+    double standard_error(double weight_sum, double weight_sq_sum) const noexcept;
+};
+
+/// Sees every sample of the problems of one thread, in sample order (truth collection,
+/// docs/truth.md). A recorder is used by one thread at a time.
+class SampleRecorder {
+public:
+    virtual ~SampleRecorder() = default;
+    /// A problem starts.
+    virtual void begin(std::uint64_t problem) = 0;
+    /// One sample: its ray (and weight), its radiance (the tracer's bands), its first hit
+    /// when the observer wants it (else null).
+    virtual void add(const SampleRay& ray, std::span<const double> radiance,
+                     const FirstHit* first_hit) = 0;
+    /// The problem took `samples` samples.
+    virtual void end(std::uint64_t problem, std::uint64_t samples) = 0;
+};
+
+/// Makes the recorders of a batch's threads; recorders of different threads run at once on
+/// different problems.
+class SampleObserver {
+public:
+    virtual ~SampleObserver() = default;
+    /// Whether the recorders need each sample's first hit.
+    virtual bool wants_first_hit() const noexcept = 0;
+    /// A recorder for one thread.
+    virtual std::unique_ptr<SampleRecorder> make_recorder() const = 0;
+};
+
 /// A batch of problems that share a ray source and a convergence rule.
 struct ProblemBatch {
     StreamKey key;
@@ -95,6 +138,9 @@ struct ProblemBatch {
     /// (rounded up), the threshold unchanged.
     std::span<const std::uint8_t> hypersampled;
     double hypersampling_multiplier = 1.0;
+    /// Sees every sample (truth collection); none: nothing is recorded. It does not change
+    /// the radiance or the random numbers.
+    const SampleObserver* observer = nullptr;
 };
 
 /// Index of the band nearest to `wavelength_um` (the lower one on a tie).
