@@ -45,7 +45,8 @@ std::string out_of_memory(const detail::Prepared& prepared, const detail::Planne
     const schedule::ClockedFocalPlane& source =
         prepared.inputs.schedule->sources()[p.capture.source];
     const detail::FocalPlaneState& state = prepared.states.at(p.capture.source);
-    const std::uint64_t values = state.grid.size() + state.units.channels();
+    const std::uint64_t values =
+        state.grid.size() + state.units.channels() + state.truth.bands.size();
     const double capture_bytes = static_cast<double>(source.problems_per_capture) *
                                  static_cast<double>(values) * sizeof(double);
     return "out of memory in capture " + std::to_string(p.capture.index) + " of focal plane \"" +

@@ -154,7 +154,8 @@ std::unique_ptr<Prepared> prepare(model::SimulationInputs loaded, const RenderOp
         const schedule::ClockedFocalPlane& s = in.schedule->sources()[planned.capture.source];
         report.pixels += s.problems_per_capture;
         const FocalPlaneState& state = p->states.at(planned.capture.source);
-        const std::uint64_t bands = state.grid.size() + state.units.channels();
+        const std::uint64_t bands =
+            state.grid.size() + state.units.channels() + state.truth.bands.size();
         largest = std::max<std::uint64_t>(largest, s.problems_per_capture * bands * 8);
     }
     report.memory_estimate_bytes = triangles * 85 + largest;
