@@ -90,6 +90,11 @@ void EnviCli::configure(CLI::App& app) {
                  "ENVI output type: uint8, int16, uint16, int32, uint32, int64, uint64, "
                  "float32, float64 (or the ENVI code)")
         ->type_name("TYPE");
+    c.add_option("--colormap", m_colormap,
+                 "One band of labels: index (a colour per value), none (a grey stretch) or "
+                 "auto (index for an index band in an 8/16-bit image)")
+        ->check(CLI::IsMember({"auto", "index", "none"}))
+        ->capture_default_str();
 
     m_encode = app.add_subcommand("encode", "Encode image frames into a video with ffmpeg");
     CLI::App& e = *m_encode;
@@ -137,6 +142,7 @@ void EnviCli::finish_convert() {
     if (c.count("--min") > 0) o.min = m_min;
     if (c.count("--max") > 0) o.max = m_max;
     if (c.count("--bit-depth") > 0) o.bit_depth = m_bit_depth;
+    o.colormap = *app_envi::colormap_from_name(m_colormap);
     if (c.count("--data-type") > 0) {
         o.data_type = io::envi_type_from_string(m_data_type);
         if (!o.data_type) throw usage_error("unknown ENVI data type '" + m_data_type + "'");

@@ -36,6 +36,7 @@ private:
     std::string m_output;
     std::string m_bands;
     std::string m_data_type;
+    std::string m_colormap = "auto";
     double m_gamma = 1.0;
     double m_percent = 0.0;
     double m_min = 0.0;

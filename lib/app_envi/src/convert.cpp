@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "glint/core/error.h"
@@ -26,12 +27,28 @@ using io::StretchLimits;
 
 enum class StretchMode { none, minmax, percent, fixed };
 
+/// Whether a stretch option other than --raw is given.
+bool asks_for_stretch(const ConvertOptions& o) {
+    return o.percent || o.min || o.per_band || (o.gamma && *o.gamma != 1.0);
+}
+
 void check_options(const ConvertOptions& o, OutputKind kind) {
     if (o.input.empty()) throw usage_error("no input file named");
     if (o.output.empty()) throw usage_error("no output file named");
     if (o.band && !o.bands.empty()) throw usage_error("give --band or --bands, not both");
     io::check_stretch_request({o.gamma, o.percent, o.min, o.max});
-    const bool stretch_asked = o.percent || o.min || o.per_band || (o.gamma && *o.gamma != 1.0);
+    const bool stretch_asked = asks_for_stretch(o);
+    if (o.colormap == Colormap::index) {
+        if (kind == OutputKind::envi) {
+            throw usage_error(
+                "--colormap index applies to image outputs; ENVI outputs keep the values");
+        }
+        if (o.raw || stretch_asked) {
+            throw usage_error(
+                "--colormap index gives each value its own colour; it excludes --percent, "
+                "--min/--max, --per-band, --gamma and --raw");
+        }
+    }
     if (o.raw && stretch_asked) {
         throw usage_error(
             "--raw writes values unchanged; it excludes --percent, --min/--max, "
@@ -104,7 +121,31 @@ std::vector<std::size_t> select_bands(const ConvertOptions& o, const RasterSourc
     return bands;
 }
 
-/// Reads every line, handing the selected values of each pixel to `visit(channel, value)`.
+/// Whether one band of labels is drawn with the index colour map (see convert.h).
+bool use_index_colours(const ConvertOptions& o, const RasterSource& source,
+                       const std::vector<std::size_t>& bands, bool integer_output) {
+    if (o.colormap != Colormap::automatic) return o.colormap == Colormap::index;
+    if (!integer_output || bands.size() != 1 || o.raw || asks_for_stretch(o)) return false;
+    const std::size_t b = bands.front();
+    const auto& names = source.band_names();
+    const auto& units = source.band_units();
+    return is_index_band(b < names.size() ? names[b] : std::string(),
+                         b < units.size() ? units[b] : std::string());
+}
+
+/// The stretch of an image output (see convert.h); none for index colours.
+StretchMode stretch_mode(const ConvertOptions& o, bool integer_output, bool index_colours) {
+    if (index_colours) return StretchMode::none;
+    if (o.min) return StretchMode::fixed;
+    if (o.percent) return StretchMode::percent;
+    if (!o.raw && (integer_output || o.per_band || o.gamma.value_or(1.0) != 1.0)) {
+        return StretchMode::minmax;
+    }
+    return StretchMode::none;
+}
+
+/// Reads every line, handing the selected values of each pixel to `visit(channel, value)`;
+/// no data (NaN, the data ignore value) comes as NaN.
 template <typename Visit>
 void scan(RasterSource& source, const std::vector<std::size_t>& bands, Context& ctx,
           const std::string& label, Visit&& visit) {
@@ -114,7 +155,10 @@ void scan(RasterSource& source, const std::vector<std::size_t>& bands, Context& 
         source.read_line(y, line);
         for (std::size_t x = 0; x < source.width(); ++x) {
             const double* pixel = line.data() + x * source.bands();
-            for (std::size_t c = 0; c < bands.size(); ++c) visit(c, pixel[bands[c]]);
+            for (std::size_t c = 0; c < bands.size(); ++c) {
+                const double v = pixel[bands[c]];
+                visit(c, source.is_no_data(v) ? std::numeric_limits<double>::quiet_NaN() : v);
+            }
         }
         ctx.progress.update(label, y + 1, source.height());
     }
@@ -163,19 +207,20 @@ ConvertResult to_image(const ConvertOptions& o, OutputKind kind, RasterSource& s
     const io::PixelType type = io::output_pixel_type(format, o.bit_depth, o.output);
     const bool integer = io::pixel_type_is_integer(type);
     const double gamma = o.gamma.value_or(1.0);
-    StretchMode mode = StretchMode::none;
-    if (o.min) {
-        mode = StretchMode::fixed;
-    } else if (o.percent) {
-        mode = StretchMode::percent;
-    } else if (!o.raw && (integer || o.per_band || gamma != 1.0)) {
-        mode = StretchMode::minmax;
-    }
+    const bool index_colours = use_index_colours(o, source, bands, integer);
+    const StretchMode mode = stretch_mode(o, integer, index_colours);
 
     ConvertResult result;
     result.kind = kind;
     result.bands = bands;
     result.stored_type = io::pixel_type_name(type);
+    result.index_colours = index_colours;
+    if (index_colours) {
+        const auto& names = source.band_names();
+        ctx.log.info("band " + std::to_string(bands[0]) +
+                     (bands[0] < names.size() ? " (" + names[bands[0]] + ")" : std::string()) +
+                     ": index colour map, one colour per value");
+    }
     if (mode == StretchMode::fixed) {
         result.limits.assign(bands.size(), StretchLimits{*o.min, *o.max});
     } else if (mode != StretchMode::none) {
@@ -192,24 +237,34 @@ ConvertResult to_image(const ConvertOptions& o, OutputKind kind, RasterSource& s
     io::ImageWriteOptions write;
     write.format = format;
     write.pixel_type = type;
-    write.channel_names = channel_names(source, bands);
+    if (!index_colours) write.channel_names = channel_names(source, bands);
     write.software = std::string("glint-envi ") + version();
     write.date_time_s = ctx.source_date_epoch_s;
     const double scale = integer ? io::pixel_type_max(type) : 1.0;
-    io::ImageWriter writer(o.output, source.width(), source.height(), bands.size(), write);
+    const std::size_t channels = index_colours ? 3 : bands.size();
+    const double no_data = std::numeric_limits<double>::quiet_NaN();
+    io::ImageWriter writer(o.output, source.width(), source.height(), channels, write);
     std::vector<double> line(source.width() * source.bands());
-    std::vector<double> out(source.width() * bands.size());
+    std::vector<double> out(source.width() * channels);
     for (std::size_t y = 0; y < source.height(); ++y) {
         ctx.cancel.throw_if_cancelled();
         source.read_line(y, line);
         for (std::size_t x = 0; x < source.width(); ++x) {
             const double* pixel = line.data() + x * source.bands();
-            double* dst = out.data() + x * bands.size();
+            double* dst = out.data() + x * channels;
+            if (index_colours) {
+                const double v = pixel[bands[0]];
+                const auto rgb = index_colour(source.is_no_data(v) ? no_data : v);
+                for (std::size_t c = 0; c < 3; ++c) dst[c] = scale * rgb[c];
+                continue;
+            }
             for (std::size_t c = 0; c < bands.size(); ++c) {
-                const double v = pixel[bands[c]];
-                dst[c] = result.limits.empty()
-                             ? v
-                             : scale * io::stretch_value(v, result.limits[c], gamma);
+                double v = pixel[bands[c]];
+                if (!result.limits.empty()) {
+                    if (source.is_no_data(v)) v = no_data;
+                    v = scale * io::stretch_value(v, result.limits[c], gamma);
+                }
+                dst[c] = v;
             }
         }
         writer.write_line(out);
@@ -335,7 +390,14 @@ ConvertResult convert_file(const ConvertOptions& o, Context& ctx) {
         header += ".hdr";
         ensure_not_an_input(header, source->files());
     }
+    for (const std::string& warning : source->warnings()) {
+        ctx.log.warning(o.input.string() + ": " + warning);
+    }
     const std::vector<std::size_t> bands = select_bands(o, *source, kind);
+    if (o.colormap == Colormap::index && bands.size() != 1) {
+        throw usage_error("--colormap index colours one band; " + std::to_string(bands.size()) +
+                          " are selected (choose one with --band N)");
+    }
     ctx.log.info("converting " + o.input.string() + " (" + std::to_string(source->width()) + " x " +
                  std::to_string(source->height()) + " x " + std::to_string(source->bands()) + ", " +
                  source->type_name() + ") to " + o.output.string());

@@ -4,15 +4,27 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <system_error>
 
 #include "glint/core/error.h"
+#include "glint/core/text.h"
 
 namespace glint::app_envi::internal {
 namespace {
 
 namespace fs = std::filesystem;
+
+/// `{a, b}` → {"a", "b"}.
+std::vector<std::string> brace_items(std::string_view value) {
+    value = trim(value);
+    if (value.size() >= 2 && value.front() == '{' && value.back() == '}') {
+        value = value.substr(1, value.size() - 2);
+    }
+    return split_list(value);
+}
 
 class EnviSource final : public RasterSource {
 public:
@@ -26,10 +38,36 @@ public:
         m_band_names = m_envi->band_names;
         m_type_name = io::envi_type_name(m_envi->data_type);
         m_files = {m_reader.data_path(), m_reader.header_path()};
+        read_ignore_value();
+        if (const auto units = m_envi->find_extra("glint band units")) {
+            m_band_units = brace_items(*units);
+            if (m_band_units.size() != m_bands) {
+                m_warnings.push_back("glint band units lists " +
+                                     std::to_string(m_band_units.size()) + " units for " +
+                                     std::to_string(m_bands) + " bands; units not used");
+                m_band_units.clear();
+            }
+        }
     }
     void read_line(std::size_t y, std::span<double> out) override { m_reader.read_line(y, out); }
 
 private:
+    void read_ignore_value() {
+        const auto text = m_envi->find_extra("data ignore value");
+        if (!text) return;
+        if (iequals(trim(*text), "nan")) {
+            m_ignore_value = std::numeric_limits<double>::quiet_NaN();
+        } else if (const auto value = parse_double(*text)) {
+            // What a float32 file stores for it, so that 0.1 matches its float32 pixels.
+            const bool as_float = m_envi->data_type == io::EnviDataType::float32 &&
+                                  std::fabs(*value) <= std::numeric_limits<float>::max();
+            m_ignore_value = as_float ? static_cast<double>(static_cast<float>(*value)) : *value;
+        } else {
+            m_warnings.push_back("data ignore value " + quote(*text) +
+                                 " is not a number; no value is taken as no data");
+        }
+    }
+
     io::EnviReader m_reader;
 };
 

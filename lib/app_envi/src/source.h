@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 // Internal: a raster read line by line, whether an ENVI file (through io::EnviReader) or any
 // image OpenImageIO reads (through io::ImageReader), so that stats and convert treat both
-// alike. Values come as doubles in BIP order (for each sample, all bands).
+// alike. Values come as doubles in BIP order (for each sample, all bands). An ENVI source
+// also gives its no-data value (`data ignore value`) and band units (`glint band units`).
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <filesystem>
 #include <memory>
@@ -44,6 +46,19 @@ public:
     const std::vector<std::filesystem::path>& files() const { return m_files; }
     /// The path as the user named it.
     const std::filesystem::path& path() const { return m_path; }
+    /// The ENVI `data ignore value` as the stored type holds it (NaN for "NaN"); nullopt
+    /// when the file has none, or one that is not a number (see warnings()).
+    std::optional<double> ignore_value() const { return m_ignore_value; }
+    /// Whether `value` is no data: NaN, or equal to ignore_value().
+    bool is_no_data(double value) const {
+        return std::isnan(value) || (m_ignore_value && value == *m_ignore_value);
+    }
+    /// The unit of each band (`glint band units`); empty when the file gives no such list
+    /// with one entry per band.
+    const std::vector<std::string>& band_units() const { return m_band_units; }
+    /// What was found odd when opening (a header value that cannot be honoured), for the
+    /// caller to log.
+    const std::vector<std::string>& warnings() const { return m_warnings; }
 
     /// Line `y`, width × bands values.
     virtual void read_line(std::size_t y, std::span<double> out) = 0;
@@ -58,6 +73,9 @@ protected:
     std::optional<io::ImageInfo> m_image;
     std::string m_type_name;
     std::vector<std::filesystem::path> m_files;
+    std::optional<double> m_ignore_value;
+    std::vector<std::string> m_band_units;
+    std::vector<std::string> m_warnings;
 };
 
 /// "%.*g" formatting (no <format> in g++ 12).

@@ -34,19 +34,24 @@ struct Accumulator {
     std::uint64_t count = 0;
     std::uint64_t nan = 0;
     std::uint64_t infinite = 0;
+    std::uint64_t ignored = 0;
     double min = 0;
     double max = 0;
     double shift = 0;
     CompensatedSum sum;
     CompensatedSum sum_squares;
 
-    void add(double v) {
+    void add(double v, const internal::RasterSource& source) {
         if (std::isnan(v)) {
             ++nan;
             return;
         }
         if (std::isinf(v)) {
             ++infinite;
+            return;
+        }
+        if (source.is_no_data(v)) {
+            ++ignored;
             return;
         }
         if (count == 0) {
@@ -66,6 +71,7 @@ struct Accumulator {
         s.count = count;
         s.nan = nan;
         s.infinite = infinite;
+        s.ignored = ignored;
         if (count > 0) {
             const double n = static_cast<double>(count);
             const double s1 = sum.value();
@@ -98,7 +104,11 @@ StatsReport compute_stats(const fs::path& file, Context& ctx) {
         report.samples = source->width();
         report.lines = source->height();
         report.data_type = source->type_name();
+        report.ignore_value = source->ignore_value();
         report.band_names = source->band_names();
+        for (const std::string& warning : source->warnings()) {
+            ctx.log.warning(file.string() + ": " + warning);
+        }
         const std::size_t bands = source->bands();
         std::vector<Accumulator> acc(bands);
         std::vector<double> line(source->width() * bands);
@@ -107,7 +117,7 @@ StatsReport compute_stats(const fs::path& file, Context& ctx) {
             source->read_line(y, line);
             for (std::size_t x = 0; x < source->width(); ++x) {
                 const double* pixel = line.data() + x * bands;
-                for (std::size_t b = 0; b < bands; ++b) acc[b].add(pixel[b]);
+                for (std::size_t b = 0; b < bands; ++b) acc[b].add(pixel[b], *source);
             }
             ctx.progress.update("stats", y + 1, source->height());
         }
@@ -127,6 +137,11 @@ void write_stats(const StatsReport& report, ReportFormat format, std::ostream& o
         j["lines"] = report.lines;
         j["bands"] = report.bands.size();
         j["data_type"] = report.data_type;
+        if (report.ignore_value) {
+            j["data_ignore_value"] = std::isnan(*report.ignore_value)
+                                         ? nlohmann::ordered_json("NaN")
+                                         : nlohmann::ordered_json(*report.ignore_value);
+        }
         nlohmann::ordered_json bands = nlohmann::ordered_json::array();
         for (std::size_t b = 0; b < report.bands.size(); ++b) {
             const BandStatistics& s = report.bands[b];
@@ -136,6 +151,7 @@ void write_stats(const StatsReport& report, ReportFormat format, std::ostream& o
             band["count"] = s.count;
             band["nan"] = s.nan;
             band["inf"] = s.infinite;
+            band["ignored"] = s.ignored;
             band["min"] = number_or_null(s.min);
             band["max"] = number_or_null(s.max);
             band["mean"] = number_or_null(s.mean);
@@ -146,15 +162,23 @@ void write_stats(const StatsReport& report, ReportFormat format, std::ostream& o
         out << json_text(j, 2) << '\n';
         return;
     }
+    // An ignored column only for a finite data ignore value (NaN ones are the nan column).
+    const bool ignored = report.ignore_value && !std::isnan(*report.ignore_value);
     out << report.file.string() << ": " << report.samples << " samples x " << report.lines
-        << " lines x " << report.bands.size() << " bands, " << report.data_type << '\n';
-    out << cell("band", 5) << cell("count", 11) << cell("nan", 8) << cell("inf", 8)
-        << cell("min", 16) << cell("max", 16) << cell("mean", 16) << cell("std", 16) << "  name\n";
+        << " lines x " << report.bands.size() << " bands, " << report.data_type;
+    if (report.ignore_value) {
+        out << ", data ignore value "
+            << (ignored ? format_number(*report.ignore_value, 17) : std::string("NaN"));
+    }
+    out << '\n' << cell("band", 5) << cell("count", 11) << cell("nan", 8) << cell("inf", 8);
+    if (ignored) out << cell("ignored", 11);
+    out << cell("min", 16) << cell("max", 16) << cell("mean", 16) << cell("std", 16) << "  name\n";
     for (std::size_t b = 0; b < report.bands.size(); ++b) {
         const BandStatistics& s = report.bands[b];
         out << cell(std::to_string(b), 5) << cell(std::to_string(s.count), 11)
-            << cell(std::to_string(s.nan), 8) << cell(std::to_string(s.infinite), 8)
-            << cell(stat_text(s.min), 16) << cell(stat_text(s.max), 16)
+            << cell(std::to_string(s.nan), 8) << cell(std::to_string(s.infinite), 8);
+        if (ignored) out << cell(std::to_string(s.ignored), 11);
+        out << cell(stat_text(s.min), 16) << cell(stat_text(s.max), 16)
             << cell(stat_text(s.mean), 16) << cell(stat_text(s.std_dev), 16) << "  "
             << (b < report.band_names.size() ? report.band_names[b] : std::string("-")) << '\n';
     }

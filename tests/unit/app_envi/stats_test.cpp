@@ -99,6 +99,55 @@ TEST_F(StatsTest, JsonAndTextReports) {
     EXPECT_NE(text.str().find("uint16"), std::string::npos);
 }
 
+TEST_F(StatsTest, DataIgnoreValueIsCountedApart) {
+    // float32 with data ignore value -0.1 (matched as float32 stores it): two of six values.
+    io::EnviHeader header;
+    header.band_names = {"Temperature"};
+    header.set_extra("data ignore value", "-0.1");
+    const auto file = write_cube(
+        "ig.img", 3, 2, 1, io::EnviDataType::float32,
+        [](std::size_t x, std::size_t, std::size_t) { return x == 1 ? -0.1 : double(x); }, header);
+    const StatsReport r = compute_stats(file, m_ctx);
+    ASSERT_TRUE(r.ignore_value);
+    EXPECT_EQ(r.bands[0].ignored, 2u);
+    EXPECT_EQ(r.bands[0].count, 4u);
+    EXPECT_EQ(r.bands[0].min, 0.0);
+    EXPECT_EQ(r.bands[0].mean, 1.0);
+    std::ostringstream json;
+    write_stats(r, ReportFormat::json, json);
+    const auto j = nlohmann::json::parse(json.str());
+    EXPECT_NEAR(j["data_ignore_value"].get<double>(), -0.1, 1e-7);
+    EXPECT_EQ(j["band_stats"][0]["ignored"], 2);
+    std::ostringstream text;
+    write_stats(r, ReportFormat::text, text);
+    EXPECT_NE(text.str().find("data ignore value -0.1"), std::string::npos) << text.str();
+    EXPECT_NE(text.str().find("ignored"), std::string::npos) << text.str();
+
+    // NaN as the ignore value: the NaN column; no ignored column in the text.
+    header.set_extra("data ignore value", "NaN");
+    const auto nan_file = write_cube(
+        "nan.img", 2, 1, 1, io::EnviDataType::float64,
+        [](std::size_t x, std::size_t, std::size_t) { return x == 0 ? std::nan("") : 5.0; },
+        header);
+    const StatsReport n = compute_stats(nan_file, m_ctx);
+    EXPECT_EQ(n.bands[0].nan, 1u);
+    EXPECT_EQ(n.bands[0].ignored, 0u);
+    std::ostringstream nan_json;
+    write_stats(n, ReportFormat::json, nan_json);
+    EXPECT_EQ(nlohmann::json::parse(nan_json.str())["data_ignore_value"], "NaN");
+    std::ostringstream nan_text;
+    write_stats(n, ReportFormat::text, nan_text);
+    EXPECT_NE(nan_text.str().find("data ignore value NaN"), std::string::npos);
+    EXPECT_EQ(nan_text.str().find("ignored"), std::string::npos);
+
+    // Not a number: not honoured, with a warning.
+    header.set_extra("data ignore value", "none");
+    const auto odd = write_cube(
+        "odd.img", 1, 1, 1, io::EnviDataType::uint8,
+        [](std::size_t, std::size_t, std::size_t) { return 0.0; }, header);
+    EXPECT_FALSE(compute_stats(odd, m_ctx).ignore_value);
+}
+
 TEST_F(StatsTest, MissingFileNamesIt) {
     try {
         compute_stats(path("missing.img"), m_ctx);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "glint/core/context.h"
+#include "glint/core/error.h"
 #include "glint/io/envi.h"
 #include "glint/test/temp_dir.h"
 
@@ -55,5 +56,16 @@ protected:
     glint::test::TempDir m_temp;
     Context m_ctx;
 };
+
+/// Expects `run` to throw a usage error whose message contains `needle`.
+inline void expect_usage_error(const std::function<void()>& run, const std::string& needle) {
+    try {
+        run();
+        ADD_FAILURE() << "expected an error: " << needle;
+    } catch (const Error& e) {
+        EXPECT_EQ(e.category(), ErrorCategory::usage) << e.what();
+        EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+    }
+}
 
 }  // namespace glint::app_envi::testing

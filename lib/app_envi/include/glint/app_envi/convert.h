@@ -17,7 +17,15 @@
 // then s^(1/gamma), times 255 or 65535 and rounded for 8/16-bit outputs. Without a stretch,
 // integer outputs get v rounded and clamped to the type's range. Limits are found over all
 // output channels together (a band selected twice counts twice) unless per_band. NaN
-// becomes 0 in integer outputs.
+// becomes 0 in integer outputs. With a stretch, values equal to an ENVI source's
+// `data ignore value` count as NaN (left out of the limits, 0 in integer outputs).
+//
+// Index colour map (glint/app_envi/colormap.h): one selected band of labels becomes three
+// channels, index_colour of each value (no data black) times the output's full scale. It
+// applies with colormap index, or with automatic when the output is 8- or 16-bit, the one
+// band is an index band and no stretch option (--percent, --min/--max, --per-band, --gamma,
+// --raw) is given. Colormap index with several bands, an ENVI output or a stretch option is
+// a usage error.
 //
 // ENVI outputs receive the values unchanged (no stretch options allowed), in `data_type`,
 // else the type `--bit-depth` names (8 uint8, 16 uint16, 32 float32, 64 float64), else the
@@ -34,6 +42,7 @@
 #include <string>
 #include <vector>
 
+#include "glint/app_envi/colormap.h"
 #include "glint/core/context.h"
 #include "glint/io/envi.h"
 #include "glint/io/image.h"
@@ -59,6 +68,7 @@ struct ConvertOptions {
     bool raw = false;                           ///< no stretch
     std::optional<int> bit_depth;               ///< 8, 16, 32 (64 for ENVI)
     std::optional<io::EnviDataType> data_type;  ///< ENVI output type
+    Colormap colormap = Colormap::automatic;    ///< how one band of labels is drawn
 };
 
 /// What convert did.
@@ -67,6 +77,7 @@ struct ConvertResult {
     std::vector<std::size_t> bands;         ///< source bands written, in order
     std::vector<io::StretchLimits> limits;  ///< per output channel; empty without a stretch
     std::string stored_type;                ///< "uint8", "float", "float32" (ENVI), ...
+    bool index_colours = false;             ///< the index colour map was applied
 };
 
 /// Converts. Throws glint::Error: usage for contradictory options, an out-of-range band or

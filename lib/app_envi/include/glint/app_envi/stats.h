@@ -5,16 +5,21 @@
 // (the shift keeps the variance free of cancellation for data far from zero; the
 // compensation removes the rounding error that grows with the count; integer data give
 // exact results). The standard deviation is the population one (divides by the count).
-// NaN and ±infinity are not part of the statistics and are counted separately.
+// NaN and ±infinity are not part of the statistics and are counted separately; so are
+// values equal to a number the ENVI header gives as `data ignore value` (no data; a NaN
+// ignore value, as glint's truth cubes have, is the NaN count).
 //
 // JSON: {"file", "samples", "lines", "bands", "data_type",
-//        "band_stats": [{"index", "name", "count", "nan", "inf", "min", "max", "mean",
-//                        "std"}]}   (min..std are null for a band without finite values)
+//        "data_ignore_value" (a number, "NaN", or absent),
+//        "band_stats": [{"index", "name", "count", "nan", "inf", "ignored", "min", "max",
+//                        "mean", "std"}]}   (min..std are null for a band without finite
+//                                            values)
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -35,6 +40,7 @@ struct BandStatistics {
     std::uint64_t count = 0;     ///< finite values
     std::uint64_t nan = 0;       ///< NaN values
     std::uint64_t infinite = 0;  ///< ±infinity
+    std::uint64_t ignored = 0;   ///< equal to a finite data ignore value
     double min = std::numeric_limits<double>::quiet_NaN();
     double max = std::numeric_limits<double>::quiet_NaN();
     double mean = std::numeric_limits<double>::quiet_NaN();
@@ -47,6 +53,7 @@ struct StatsReport {
     std::size_t samples = 0;
     std::size_t lines = 0;
     std::string data_type;
+    std::optional<double> ignore_value;   ///< the header's data ignore value (may be NaN)
     std::vector<std::string> band_names;  ///< empty when the file names no bands
     std::vector<BandStatistics> bands;
 };
