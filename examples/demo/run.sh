@@ -96,6 +96,14 @@ for img in "$out"/render/bayer-t0000-c*.img; do
     run "$bin/glint-demosaic" --method mhc --percent 0.5 --gamma 2.2 "$img" "${img%.img}.png"
 done
 
+step "8. truth: the RGB camera's material map (glint-envi convert, index colour map)"
+# The RGB focal plane's truth collection writes a cube per frame beside the radiance: the
+# material index, the car abundance, the sample count and each channel's standard error
+# (docs/truth.md). An index band converts to PNG with one colour per material.
+run "$envi" info "$out/render/rgb_truth-t0000-c0010.img" | sed -n '/band list:/,/glint provenance:/p' >&2
+run "$envi" convert --bands 0 "$out/render/rgb_truth-t0000-c0010.img" \
+    "$out/render/rgb_truth-t0000-c0010-material.png"
+
 cat >&2 <<MSG
 
 glint demo finished. Outputs in $out/:
@@ -108,6 +116,9 @@ glint demo finished. Outputs in $out/:
   render/msi-false-colour.png        NIR, red, green composite (first line, south, on top)
   render/bayer-t0000-cNNNN.img (.hdr) 2 Bayer mosaics, 160 x 120, 12-bit counts (uint16, DN)
   render/bayer-t0000-cNNNN.png       the same, demosaiced (Malvar-He-Cutler) to colour
+  render/rgb_truth-t0000-cNNNN.img   25 truth cubes: material index, car abundance, sample
+                                     count, standard error per channel (docs/truth.md)
+  render/rgb_truth-t0000-c0010-material.png  frame 10's material map
   render/render.log, files.txt       glint-render's log (-v) and the files it wrote
   render/*.stats.*, msi.info.txt     glint-envi stats and info reports
   demo.mp4                           the RGB frames as a ${fps} fps video

@@ -25,6 +25,12 @@
    panels' mean counts increase with reflectance and are linear in it (r² ≥ 0.999: counts are
    linear in electrons below full well; shot and read noise average out over a panel); the
    demosaiced PNGs are 160 x 120 RGB and vary.
+6. Truth (docs/truth.md): 25 truth cubes beside the RGB frames with the bands the platform's
+   collection asks for; in frame 0 every pixel well inside a calibration panel has that
+   panel's material index (the header's `glint material ids`) and no car abundance; the
+   parked cars' centres are fully car (abundance 1); sample counts are whole numbers within
+   the convergence settings (8 to 64) and above the minimum somewhere (edges); the standard
+   errors are finite and >= 0; the material map PNG of frame 10 varies.
 
 Usage: check_demo.py --out OUT --scene examples/demo/sim/demo_scene.yaml
 Exit status: 0 pass, 1 fail, 77 skipped (numpy, GDAL or Spectral Python missing).
@@ -55,6 +61,10 @@ MIN_PANEL_PIXELS = 16
 MIN_R2 = 0.999
 MIN_NIR_OVER_RED = 2.0
 GRASS_BOX_M = (-30.0, -25.0, -16.0, -20.0)  # x0, y0, x1, y1: grass only (demo_scene.yaml)
+
+TRUTH_BANDS = ["Material Index", "Tag Abundance 'car'", "Sample Count",
+               "Standard Error 'Red'", "Standard Error 'Green'", "Standard Error 'Blue'"]
+TRUTH_MAP_PNG = "rgb_truth-t0000-c0010-material.png"
 
 failures = []
 
@@ -172,6 +182,9 @@ def main():
     bayers = [os.path.join(render, f"bayer-t0000-c{c:04d}") for c in range(BAYER_FRAMES)]
     expected += [os.path.relpath(f + ext, out) for f in bayers
                  for ext in (".img", ".img.hdr", ".png")]
+    truths = [os.path.join(render, f"rgb_truth-t0000-c{c:04d}") for c in range(FRAMES)]
+    expected += [os.path.relpath(f + ext, out) for f in truths for ext in (".img", ".img.hdr")]
+    expected += ["render/" + TRUTH_MAP_PNG]
     missing = [e for e in expected
                if not os.path.isfile(os.path.join(out, e)) or
                os.path.getsize(os.path.join(out, e)) == 0]
@@ -244,8 +257,51 @@ def main():
     # 5. the Bayer camera's digital counts
     check_bayer(out, render, instruments, captures, panels, top_m)
 
+    # 6. truth
+    check_truth(render, [t + ".img" for t in truths], points, panels, instruments["Camera"],
+                rgb)
+
     print(f"{len(failures)} failure(s)")
     return 1 if failures else 0
+
+
+def check_truth(render, paths, points, panels, camera, rgb):
+    path = paths[0]
+    header = envi.open(path + ".hdr", path).metadata
+    check(header["band names"] == TRUTH_BANDS,
+          f"truth band names {header['band names']} (expected {TRUTH_BANDS})")
+    truth = read_envi(path)
+    check(truth.shape == (120, 160, len(TRUTH_BANDS)), f"truth cube shape {truth.shape}")
+    material, car, samples, errors = truth[..., 0], truth[..., 1], truth[..., 2], truth[..., 3:]
+    ids = [i.strip() for i in header["glint material ids"]]
+    for reflectance, lower, upper in panels:
+        box = (lower[0] + PANEL_MARGIN_M, lower[1] + PANEL_MARGIN_M,
+               upper[0] - PANEL_MARGIN_M, upper[1] - PANEL_MARGIN_M)
+        mask = inside(points, *box)
+        name = f"panel_{round(reflectance * 100):02d}"
+        check(mask.sum() >= MIN_PANEL_PIXELS and bool(np.all(material[mask] == ids.index(name)))
+              and bool(np.all(car[mask] == 0)),
+              f"truth: {int(mask.sum())} pixels inside {name} have its material index "
+              f"{ids.index(name)} and no car")
+    # The first frame that sees parked_1 (centre -11, 16; roof about 1.4 m up).
+    for path, capture in zip(paths, sorted(rgb, key=lambda c: c["capture_index"])):
+        centres = inside(ground_points(camera, capture["pose"]["instrument"], 1.4),
+                         -11.2, 15.8, -10.8, 16.2)
+        if centres.any():
+            cars = read_envi(path)[..., 1][centres]
+            break
+    check(centres.any() and bool(np.all(cars == 1.0)),
+          f"truth: the pixels at parked_1's centre are fully car "
+          f"({os.path.basename(path)}: {cars if centres.any() else 'not seen'})")
+    check(bool(np.all(samples == np.round(samples))) and samples.min() >= 8 and
+          samples.max() <= 64 and samples.max() > 8,
+          f"truth: sample counts whole, within 8..64, above 8 somewhere "
+          f"({samples.min():.0f}..{samples.max():.0f})")
+    check(bool(np.all(np.isfinite(errors))) and errors.min() >= 0,
+          "truth: standard errors finite and >= 0")
+    png = gdal.Open(os.path.join(render, TRUTH_MAP_PNG)).ReadAsArray()
+    check(png is not None and png.shape == (3, 120, 160) and png.std() > 0,
+          f"{TRUTH_MAP_PNG}: a 160 x 120 colour map that varies")
 
 
 def check_bayer(out, render, instruments, captures, panels, top_m):
