@@ -18,8 +18,6 @@ constexpr const char* kRenamed[][2] = {
     {"glint tool", "glint input tool"},
 };
 
-/// "{a, b}".
-std::string braced(const std::vector<std::string>& items) { return "{" + join(items, ", ") + "}"; }
 
 }  // namespace
 
@@ -63,7 +61,7 @@ io::EnviHeader output_header(const detect::DetectionSettings& s, const HeaderSou
         h.set_extra("glint lines per capture", std::to_string(src.captures->lines_per_capture));
         std::vector<std::string> indices;
         for (std::uint64_t i : src.captures->indices) indices.push_back(std::to_string(i));
-        h.set_extra("glint capture indices", braced(indices));
+        h.set_extra("glint capture indices", io::envi_brace_list(indices));
     }
     for (const auto& [key, value] : detect::detection_header_keys(s)) h.set_extra(key, value);
     return h;

@@ -43,15 +43,13 @@ std::vector<std::pair<std::string, std::string>> detection_header_keys(const Det
     if (const auto& cfa = s.cfa) {
         add("glint cfa pattern", cfa_pattern_name(cfa->pattern));
         if (cfa->pattern == CfaPattern::bayer) add("glint cfa phase", bayer_phase_name(cfa->phase));
-        std::string filters = "{";
-        bool first = true;
+        std::vector<std::string> filters;
         for (CfaFilter f : cfa_filters(cfa->pattern)) {
             const int channel = cfa->channel_of_filter[static_cast<std::size_t>(f)];
-            filters += (first ? "" : ", ") + std::string(cfa_filter_name(f)) + " " +
-                       io::sanitize_band_name(s.channel_names[static_cast<std::size_t>(channel)]);
-            first = false;
+            filters.push_back(std::string(cfa_filter_name(f)) + " " +
+                              s.channel_names[static_cast<std::size_t>(channel)]);
         }
-        add("glint cfa filters", filters + "}");
+        add("glint cfa filters", io::envi_brace_list(filters));
     }
     return keys;
 }

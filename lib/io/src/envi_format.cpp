@@ -133,6 +133,14 @@ std::string format_envi_header(const EnviHeader& header) {
     return out;
 }
 
+std::string envi_brace_list(const std::vector<std::string>& items) {
+    std::string out = "{";
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        out += (i > 0 ? ", " : "") + sanitize_band_name(items[i]);
+    }
+    return out + "}";
+}
+
 std::string sanitize_band_name(std::string_view name) {
     std::string out(name);
     for (char& c : out) {

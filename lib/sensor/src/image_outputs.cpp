@@ -22,15 +22,6 @@ struct ImageOutputs::File {
 
 namespace {
 
-std::string brace_list(const std::vector<std::string>& items) {
-    std::string out = "{";
-    for (std::size_t i = 0; i < items.size(); ++i) {
-        if (i > 0) out += ", ";
-        out += items[i];
-    }
-    return out + "}";
-}
-
 }  // namespace
 
 ImageOutputs::ImageOutputs() = default;
@@ -108,10 +99,10 @@ void ImageOutputs::write_capture(const std::filesystem::path& path, std::span<co
     }
     f.writer->set_extra("glint captures", std::to_string(f.stamps.size()));
     f.writer->set_extra("glint lines per capture", std::to_string(f.lines_per_capture));
-    f.writer->set_extra("glint capture ids", brace_list(ids));
-    f.writer->set_extra("glint capture indices", brace_list(indices));
-    f.writer->set_extra("glint capture windows s", brace_list(times));
-    f.writer->set_extra("glint capture datetimes utc", brace_list(datetimes));
+    f.writer->set_extra("glint capture ids", io::envi_brace_list(ids));
+    f.writer->set_extra("glint capture indices", io::envi_brace_list(indices));
+    f.writer->set_extra("glint capture windows s", io::envi_brace_list(times));
+    f.writer->set_extra("glint capture datetimes utc", io::envi_brace_list(datetimes));
     f.writer->commit();
     f.writer.reset();
     m_published.push_back(path);

@@ -96,13 +96,7 @@ io::EnviHeader header_of(const schedule::ClockedFocalPlane& source, const Output
                 splits_channels(inputs, plugin.plugin_index, options) ? "true" : "false");
     h.set_extra("glint atmosphere", model::to_string(inputs.atmosphere.kind));
     const auto& per_channel = units.description().per_channel_units;
-    if (!per_channel.empty()) {
-        std::string list = "{";
-        for (std::size_t i = 0; i < per_channel.size(); ++i) {
-            list += (i ? ", " : "") + per_channel[i];
-        }
-        h.set_extra("glint channel units", list + "}");
-    }
+    if (!per_channel.empty()) h.set_extra("glint channel units", io::envi_brace_list(per_channel));
     return h;
 }
 

@@ -16,14 +16,6 @@ using Q = model::TruthQuantity;
 /// make a header of megabytes).
 constexpr std::size_t kMaxHeaderNames = 100'000;
 
-std::string brace_list(const std::vector<std::string>& items) {
-    std::string out = "{";
-    for (std::size_t i = 0; i < items.size(); ++i) {
-        out += (i > 0 ? ", " : "") + io::sanitize_band_name(items[i]);
-    }
-    return out + "}";
-}
-
 /// The index of the band equal to `band` in `layout`, appended when new.
 std::size_t band_index(TruthLayout& layout, TruthBand band) {
     for (std::size_t i = 0; i < layout.bands.size(); ++i) {
@@ -152,7 +144,7 @@ io::EnviHeader truth_header(const io::EnviHeader& base, const model::FocalPlane&
     }
     h.set_extra("data ignore value", "NaN");
     h.set_extra("glint truth collection", io::sanitize_band_name(truth.name));
-    h.set_extra("glint band units", brace_list(units));
+    h.set_extra("glint band units", io::envi_brace_list(units));
     if (has[0]) {
         std::vector<std::string> ids;
         std::vector<std::string> names;
@@ -160,18 +152,18 @@ io::EnviHeader truth_header(const io::EnviHeader& base, const model::FocalPlane&
             ids.push_back(m.id);
             names.push_back(m.name);
         }
-        h.set_extra("glint material ids", brace_list(ids));
-        h.set_extra("glint material names", brace_list(names));
+        h.set_extra("glint material ids", io::envi_brace_list(ids));
+        h.set_extra("glint material names", io::envi_brace_list(names));
     }
     if (has[1] && scene.instances.size() <= kMaxHeaderNames) {
         std::vector<std::string> names;
         for (const model::Instance& i : scene.instances) names.push_back(i.name);
-        h.set_extra("glint instance names", brace_list(names));
+        h.set_extra("glint instance names", io::envi_brace_list(names));
     }
     if (has[2] && scene.objects.size() <= kMaxHeaderNames) {
         std::vector<std::string> names;
         for (const model::GeometryObject& o : scene.objects) names.push_back(o.name);
-        h.set_extra("glint object names", brace_list(names));
+        h.set_extra("glint object names", io::envi_brace_list(names));
     }
     return h;
 }

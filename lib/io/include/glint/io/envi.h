@@ -106,6 +106,8 @@ inline constexpr std::size_t kMaxEnviHeaderBytes = std::size_t{16} << 20;
 std::string format_envi_header(const EnviHeader& header);
 /// Makes a band name safe for a brace list: `,` `{` `}` become `;` `(` `)`, newlines spaces.
 std::string sanitize_band_name(std::string_view name);
+/// A brace list for a header value, "{a, b, c}", each item made safe by sanitize_band_name.
+std::string envi_brace_list(const std::vector<std::string>& items);
 
 /// Header path for a data file: `<name>.hdr` beside it if that exists and `<data>.hdr`
 /// does not, otherwise `<data>.hdr` (the glint and DIRSIG naming `x.img.hdr`).
