@@ -3,6 +3,7 @@
 #include "glint/radiometry/path_tracer.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "glint/core/error.h"
@@ -47,16 +48,24 @@ double scale_throughput(std::span<double> throughput, std::span<const double> re
 }  // namespace
 
 PathTracer::PathTracer(const scene::GeometryScene& scene, const MaterialTable& materials,
-                       const Environment& environment, TracerSettings settings)
-    : PathTracer(scene, materials, environment, settings, BandRange{0, environment.bands()}) {}
+                       const Environment& environment, TracerSettings settings,
+                       const PointLights* lights)
+    : PathTracer(scene, materials, environment, settings, BandRange{0, environment.bands()},
+                 lights) {}
 
 PathTracer::PathTracer(const scene::GeometryScene& scene, const MaterialTable& materials,
-                       const Environment& environment, TracerSettings settings, BandRange range)
+                       const Environment& environment, TracerSettings settings, BandRange range,
+                       const PointLights* lights)
     : m_scene(scene),
       m_materials(materials),
       m_environment(environment),
       m_settings(settings),
-      m_range(range) {
+      m_range(range),
+      m_lights(lights != nullptr && !lights->empty() ? lights : nullptr) {
+    if (m_lights != nullptr && m_lights->bands() != environment.bands()) {
+        throw input_error("the point sources have " + std::to_string(m_lights->bands()) +
+                          " bands and the environment " + std::to_string(environment.bands()));
+    }
     if (range.count == 0 || range.first > environment.bands() ||
         range.count > environment.bands() - range.first) {
         throw usage_error("band range " + std::to_string(range.first) + " + " +
@@ -70,6 +79,34 @@ PathTracer::PathTracer(const scene::GeometryScene& scene, const MaterialTable& m
     if (settings.max_bounces > kMaxBouncesLimit) {
         throw usage_error("max bounces " + std::to_string(settings.max_bounces) +
                           " exceeds the limit of " + std::to_string(kMaxBouncesLimit));
+    }
+}
+
+void PathTracer::add_point_lights(const scene::RayHit& hit, const Vec3& normal,
+                                  const Vec3& wo_local, const Frame& frame, std::size_t material,
+                                  double time_s, std::span<const double> beta,
+                                  std::span<double> radiance, PathScratch& scratch) const {
+    const std::size_t first = m_range.first;
+    const auto rho = m_materials.reflectance(material).subspan(first, m_range.count);
+    for (std::size_t l = 0; l < m_lights->size(); ++l) {
+        const Vec3 to_light = m_lights->position_m(l) - hit.position_m;
+        const double r2_m2 = dot(to_light, to_light);
+        if (!(r2_m2 > 0.0)) continue;
+        const Vec3 wi = (1.0 / std::sqrt(r2_m2)) * to_light;
+        const double cos_i = dot(normal, wi);
+        if (cos_i <= 0.0) continue;
+        const Vec3 origin = m_scene.spawn_origin(hit, wi);
+        ++scratch.rays;
+        if (m_scene.occluded(origin, wi, time_s, 0.0, norm(m_lights->position_m(l) - origin))) {
+            continue;
+        }
+        // I cos θ / r², m² → cm² (10⁴), times the lobe's BRDF.
+        const double factor = m_materials.shape(material).eval(wo_local, frame.to_local(wi)) *
+                              cos_i / (r2_m2 * 1e4);
+        const auto intensity = m_lights->intensity_w_per_sr_um(l).subspan(first, m_range.count);
+        for (std::size_t b = 0; b < radiance.size(); ++b) {
+            radiance[b] += beta[b] * rho[b] * intensity[b] * factor;
+        }
     }
 }
 
@@ -138,6 +175,9 @@ void PathTracer::trace(const SampleRay& ray, RandomStream& rng, PathScratch& scr
             radiance, beta, emission, rho.data(),
             sun_factor > 0.0 ? env.sun_irradiance_w_per_cm2_um().data() + first : nullptr,
             sun_factor);
+        if (m_lights != nullptr && reflects && wo_local.z > 0.0) {
+            add_point_lights(*hit, normal, wo_local, frame, m, time, beta, radiance, scratch);
+        }
 
         // Continue the path.
         if (!reflects || bounce >= m_settings.max_bounces) break;

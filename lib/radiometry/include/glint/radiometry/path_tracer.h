@@ -26,6 +26,8 @@
 #include "glint/core/rng.h"
 #include "glint/radiometry/environment.h"
 #include "glint/radiometry/materials.h"
+#include "glint/radiometry/point_lights.h"
+#include "glint/radiometry/sampling.h"
 #include "glint/scene/geometry_scene.h"
 
 namespace glint::radiometry {
@@ -78,14 +80,18 @@ public:
     /// The tracer keeps references: the scene, materials and environment must outlive it.
     /// Throws glint::Error (input) when the materials and environment have different band
     /// counts, or (usage) for max_bounces > 10000.
+    /// `lights`, when given, are the scene's point sources on the environment's grid (kept by
+    /// reference too); every surface vertex is lit by each of them as by the sun.
     PathTracer(const scene::GeometryScene& scene, const MaterialTable& materials,
-               const Environment& environment, TracerSettings settings = {});
+               const Environment& environment, TracerSettings settings = {},
+               const PointLights* lights = nullptr);
 
     /// The same tracer for the bands `range` of the environment only. Throws what the
     /// constructor above throws, and glint::Error (usage) for an empty range or one beyond
-    /// the environment's bands.
+    /// the environment's bands, (input) for lights on another band count.
     PathTracer(const scene::GeometryScene& scene, const MaterialTable& materials,
-               const Environment& environment, TracerSettings settings, BandRange range);
+               const Environment& environment, TracerSettings settings, BandRange range,
+               const PointLights* lights = nullptr);
     /// Number of bands of the radiance trace() writes (the range's).
     std::size_t bands() const noexcept { return m_range.count; }
     /// The bands of the environment it follows.
@@ -106,6 +112,13 @@ private:
     const Environment& m_environment;
     TracerSettings m_settings;
     BandRange m_range;
+    const PointLights* m_lights = nullptr;  ///< none or empty: no point source
+
+    /// Adds the point sources' light reflected at a vertex (next-event estimation).
+    void add_point_lights(const scene::RayHit& hit, const Vec3& normal, const Vec3& wo_local,
+                          const Frame& frame, std::size_t material, double time_s,
+                          std::span<const double> beta, std::span<double> radiance,
+                          PathScratch& scratch) const;
 };
 
 }  // namespace glint::radiometry
