@@ -2,81 +2,25 @@
 // Reader of DIRSIG `.glist` geometry lists into model::Scene: `object` elements with one
 // `basegeometry` (obj, glist, box, sphere, groundplane, disk, cylinder), static instances
 // (translation, rotation, scale or a 16-value matrix), dynamic instances (generic motion
-// from a .ppd/.motion file or inline flexible motion) and tags. Nested glists are flattened
-// by composing their static instances with the including one. GDB/ODB geometry is an error.
+// from a .ppd/.motion file or inline flexible motion), tags, `search_paths`, and the
+// `localmaterials`/`assign` material scopes (glist_materials.cpp). Nested glists are
+// flattened by glist_nested.cpp. GDB/ODB geometry is an error.
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <map>
 #include <numbers>
 
 #include "glint/core/text.h"
 #include "glint/dirsig/motion_reader.h"
 #include "glint/dirsig/scene_reader.h"
 #include "glint/io/xml.h"
+#include "glist_parts.h"
 
 namespace glint::dirsig {
+namespace detail {
 namespace {
 
 constexpr double kDegToRad = std::numbers::pi / 180.0;
-/// Deepest nesting of glist base geometry accepted.
-constexpr int kMaxGlistDepth = 16;
-
-using Matrix4 = std::array<double, 16>;
-
-/// A nested glist as read once per read_glist: its objects were appended to the scene at
-/// `object_offset`, and `instances` (object indices relative to those objects) are placed
-/// again for every instance that includes it — a glist named by ten objects is parsed once
-/// and its meshes are stored once.
-struct NestedGlist {
-    std::size_t object_offset = 0;
-    std::vector<model::Instance> instances;
-};
-
-/// The nested glists read so far, by absolute normalised path.
-using GlistCache = std::map<std::filesystem::path, NestedGlist>;
-
-Matrix4 multiply(const Matrix4& a, const Matrix4& b) {
-    Matrix4 c{};
-    for (int i = 0; i < 4; ++i) {
-        for (int j = 0; j < 4; ++j) {
-            for (int k = 0; k < 4; ++k) c[i * 4 + j] += a[i * 4 + k] * b[k * 4 + j];
-        }
-    }
-    return c;
-}
-
-/// The 4×4 of a static transform (scene.h: p' = t + R · (s ∘ p)).
-Matrix4 to_matrix(const model::StaticTransform& t) {
-    if (t.matrix) return *t.matrix;
-    Matrix4 r{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-    for (const char axis : t.rotation_order) {
-        const int k = axis - 'x';
-        const double c = std::cos(t.rotation_rad[k]);
-        const double s = std::sin(t.rotation_rad[k]);
-        Matrix4 step{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-        const int a = (k + 1) % 3;
-        const int b = (k + 2) % 3;
-        step[a * 4 + a] = c;
-        step[a * 4 + b] = -s;
-        step[b * 4 + a] = s;
-        step[b * 4 + b] = c;
-        r = multiply(step, r);  // first letter applied first
-    }
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) r[i * 4 + j] *= t.scale[j];
-        r[i * 4 + 3] = t.translation_m[i];
-    }
-    return r;
-}
-
-bool is_identity(const model::StaticTransform& t) {
-    const Matrix4 m = to_matrix(t);
-    for (int i = 0; i < 16; ++i) {
-        if (m[i] != (i % 5 == 0 ? 1.0 : 0.0)) return false;
-    }
-    return true;
-}
 
 bool starts_important(const std::string& s) { return s.rfind(model::kImportantLabel, 0) == 0; }
 
@@ -88,8 +32,8 @@ struct GlistReader {
     const ReadOptions& options;
     Diagnostics& diagnostics;
     model::Scene& scene;
-    std::vector<std::filesystem::path>& chain;  ///< glists being read, outermost first
-    GlistCache& cache;                          ///< nested glists already read
+    SceneLoad& load;
+    std::vector<MaterialScope> scopes;  ///< material scopes in force, outermost first
 
     /// x, y, z of `parent/name/inner` (or `parent/name/x..z` without the inner element).
     std::optional<std::array<double, 3>> triple(const io::XmlNode& parent, std::string_view name,
@@ -107,13 +51,13 @@ struct GlistReader {
         return v;
     }
 
-    /// The material index of `matid` (required); an error when unknown.
-    std::optional<std::uint32_t> material(const io::XmlNode& node, std::string& id) {
+    /// The material index of `matid` (required) in `within` (local materials, then the
+    /// scene's); an error when unknown.
+    std::optional<std::uint32_t> material(const io::XmlNode& node, std::string& id,
+                                          const std::vector<MaterialScope>& within) {
         id = node.required_text("matid", diagnostics);
         if (id.empty()) return std::nullopt;
-        for (std::size_t i = 0; i < scene.materials.size(); ++i) {
-            if (scene.materials[i].id == id) return static_cast<std::uint32_t>(i);
-        }
+        if (const auto index = material_by_id(id, scene, load, within)) return index;
         diagnostics.error(node.child("matid")->where(), "unknown material id \"" + id + "\"");
         return std::nullopt;
     }
@@ -235,8 +179,8 @@ struct GlistReader {
         motion->warn_unknown_children({"filename"}, diagnostics);
         const std::string text = motion->required_text("filename", diagnostics);
         if (text.empty()) return in;
-        in.motion_file =
-            options.paths.resolve(text, base_dir, motion->child("filename")->where(), diagnostics);
+        in.motion_file = find_file(text, base_dir, true, FileKind::plain, "motion file",
+                                   motion->child("filename")->where(), options, load, diagnostics);
         if (!in.motion_file.resolved.empty()) {
             in.motion = std::make_shared<const model::PlatformMotion>(
                 read_motion(in.motion_file.resolved, options, diagnostics));
@@ -244,119 +188,65 @@ struct GlistReader {
         return in;
     }
 
-    /// Reads a nested glist and places its instances with each of `outer`.
-    void place_nested(const model::FileRef& ref, const std::vector<model::Instance>& outer);
-
     void read_object(const io::XmlNode& node);
+    void read_obj(const io::XmlNode& g, const model::FileRef& ref,
+                  const std::vector<MaterialScope>& within, model::GeometryObject& object);
 };
 
-/// Reads one glist file into `scene` (the recursive step behind read_glist).
+}  // namespace
+
 void read_glist_file(const std::filesystem::path& path, const ReadOptions& options,
-                     model::Scene& scene, Diagnostics& diagnostics,
-                     std::vector<std::filesystem::path>& chain, GlistCache& cache) {
+                     model::Scene& scene, Diagnostics& diagnostics, SceneLoad& load,
+                     const std::vector<MaterialScope>& scopes) {
     const std::string name = path.string();
-    const std::size_t depth = chain.size();
+    const std::size_t depth = load.chain.size();
     try {
         const std::string text = options.read_text(path, name);
         const io::XmlDocument document = io::XmlDocument::parse(text, name);
         const io::XmlNode root = document.root("geometrylist");
         if (root.attribute_bool("enabled", diagnostics) == false) return;
         root.warn_unknown_children({"object"}, diagnostics);
-        chain.push_back(std::filesystem::absolute(path).lexically_normal());
-        GlistReader reader{
-            name, std::filesystem::absolute(path).parent_path(), text, options, diagnostics, scene,
-            chain, cache};
+        load.chain.push_back(std::filesystem::absolute(path).lexically_normal());
+        GlistReader reader{name,        std::filesystem::absolute(path).parent_path(),
+                           text,        options,
+                           diagnostics, scene,
+                           load,        scopes};
         for (const io::XmlNode& object : root.children("object")) reader.read_object(object);
         document.warn_unread(diagnostics);
     } catch (const Error& error) {
         diagnostics.add(error);
     }
-    chain.resize(depth);
+    load.chain.resize(depth);
 }
 
-void GlistReader::place_nested(const model::FileRef& ref,
-                               const std::vector<model::Instance>& outer) {
-    const auto key = ref.resolved.lexically_normal();
-    if (std::find(chain.begin(), chain.end(), key) != chain.end()) {
-        diagnostics.error(ref.where, "glist " + ref.text + " includes itself");
+void GlistReader::read_obj(const io::XmlNode& g, const model::FileRef& ref,
+                           const std::vector<MaterialScope>& within,
+                           model::GeometryObject& object) {
+    std::optional<std::uint32_t> fallback;
+    if (g.child("matid")) fallback = material(g, object.material_id, within);
+    const auto lookup = [this, &within](const std::string& name) {
+        return material_for_usemtl(name, scene, load, within);
+    };
+    object.obj_file = ref;
+    std::string text;
+    try {
+        text = options.read_text(ref.resolved, ref.resolved.string());
+    } catch (const Error& error) {
+        // At the element that names the file, which a bare "cannot open" would not say.
+        diagnostics.error(ref.where, "obj file " + ref.text + ": " + error.message() + " (" +
+                                         ref.resolved.string() + ")");
         return;
     }
-    if (static_cast<int>(chain.size()) >= kMaxGlistDepth) {
-        diagnostics.error(
-            ref.where, "glist nesting deeper than " + std::to_string(kMaxGlistDepth) + " levels");
-        return;
-    }
-    auto cached = cache.find(key);
-    if (cached == cache.end()) {
-        std::error_code ec;
-        if (!std::filesystem::is_regular_file(ref.resolved, ec)) {
-            diagnostics.error(ref.where,
-                              "glist " + ref.text + " not found (" + ref.resolved.string() + ")");
-            return;
-        }
-        model::Scene sub;
-        sub.materials = scene.materials;
-        read_glist_file(ref.resolved, options, sub, diagnostics, chain, cache);
-        NestedGlist nested;
-        nested.object_offset = scene.objects.size();
-        nested.instances = std::move(sub.instances);
-        for (model::GeometryObject& object : sub.objects) {
-            scene.objects.push_back(std::move(object));
-        }
-        cached = cache.emplace(key, std::move(nested)).first;
-    }
-    const NestedGlist& sub = cached->second;
-    // Count before building: every including instance places every instance of the glist.
-    const std::uint64_t adding =
-        static_cast<std::uint64_t>(outer.size()) * static_cast<std::uint64_t>(sub.instances.size());
-    const std::uint64_t total = static_cast<std::uint64_t>(scene.instances.size()) + adding;
-    if (total > options.max_instances) {
-        diagnostics.error(ref.where,
-                          "glist " + ref.text + " (" + std::to_string(sub.instances.size()) +
-                              " instances) placed by " + std::to_string(outer.size()) +
-                              " instances would bring this glist to " + std::to_string(total) +
-                              " instances, more than the " +
-                              std::to_string(options.max_instances) +
-                              " allowed (--max-instances raises the limit)");
-        return;
-    }
-    for (const model::Instance& o : outer) {
-        if (o.dynamic()) {
-            diagnostics.error(o.where, "a dynamicinstance of glist base geometry (" + ref.text +
-                                           ") is not supported");
-            continue;
-        }
-        const bool identity = is_identity(o.transform);
-        for (const model::Instance& inner : sub.instances) {
-            model::Instance in = inner;
-            in.object_index += sub.object_offset;
-            in.tags.insert(in.tags.begin(), o.tags.begin(), o.tags.end());
-            in.important = in.important || o.important;
-            if (!identity) {
-                if (inner.dynamic()) {
-                    diagnostics.error(inner.where,
-                                      "a dynamic instance in a nested glist cannot be placed by "
-                                      "a non-identity static instance (" +
-                                          o.where.element + ")");
-                    continue;
-                }
-                in.transform = model::StaticTransform{};
-                in.transform.matrix = multiply(to_matrix(o.transform), to_matrix(inner.transform));
-            }
-            scene.instances.push_back(std::move(in));
-        }
-    }
+    object.mesh = mesh::parse_obj_mesh(text, ref.resolved.string(), lookup, fallback,
+                                       scene.materials.size(), diagnostics);
 }
 
 void GlistReader::read_object(const io::XmlNode& node) {
     if (node.attribute_bool("enabled", diagnostics) == false) return;
-    node.warn_unknown_children(
-        {"basegeometry", "staticinstance", "dynamicinstance", "tags", "localmaterials", "name"},
-        diagnostics);
-    if (node.child("localmaterials")) {
-        diagnostics.warning(node.child("localmaterials")->where(),
-                            "localmaterials are not supported (ignored)");
-    }
+    node.warn_unknown_children({"basegeometry", "staticinstance", "dynamicinstance", "tags",
+                                "localmaterials", "assign", "name"},
+                               diagnostics);
+    const bool local = search_paths_local(node, diagnostics);
     model::GeometryObject object;
     object.where = node.where();
     object.name = node.attribute("name").value_or(
@@ -372,6 +262,14 @@ void GlistReader::read_object(const io::XmlNode& node) {
         diagnostics.warning(node.where(), "object \"" + object.name + "\" has no instances");
     }
     const auto base = node.child("basegeometry");
+    std::optional<io::XmlNode> obj;
+    if (base) obj = base->child("obj");
+    // The object's localmaterials and assign entries hold for its base geometry.
+    std::vector<MaterialScope> within = scopes;
+    if (auto scope = read_material_scope(node, obj, base_dir, local, options, scene, load, scopes,
+                                         diagnostics)) {
+        within.push_back(std::move(*scope));
+    }
     if (!base) {
         diagnostics.error(node.where(), "missing required element <basegeometry>");
         return;
@@ -391,31 +289,19 @@ void GlistReader::read_object(const io::XmlNode& node) {
         return;
     }
     if (kind == "obj" || kind == "glist") {
-        g.warn_unknown_children({"filename", "matid"}, diagnostics);
+        g.warn_unknown_children({"filename", "matid", "assign"}, diagnostics);
         const std::string text = g.required_text("filename", diagnostics);
         if (text.empty()) return;
-        model::FileRef ref =
-            options.paths.resolve(text, base_dir, g.child("filename")->where(), diagnostics);
+        const model::FileRef ref =
+            find_file(text, base_dir, local, kind == "glist" ? FileKind::glist : FileKind::geometry,
+                      kind == "glist" ? "glist" : "obj file", g.child("filename")->where(), options,
+                      load, diagnostics);
         if (ref.resolved.empty()) return;
         if (kind == "glist") {
-            place_nested(ref, instances);
+            place_nested(ref, instances, options, scene, load, within, diagnostics);
             return;
         }
-        std::optional<std::uint32_t> fallback;
-        if (g.child("matid")) fallback = material(g, object.material_id);
-        const auto by_name = [this](const std::string& name) {
-            std::optional<std::uint32_t> found;
-            for (std::size_t i = 0; i < scene.materials.size() && !found; ++i) {
-                if (scene.materials[i].id == name) found = static_cast<std::uint32_t>(i);
-            }
-            for (std::size_t i = 0; i < scene.materials.size() && !found; ++i) {
-                if (scene.materials[i].name == name) found = static_cast<std::uint32_t>(i);
-            }
-            return found;
-        };
-        object.obj_file = ref;
-        object.mesh = load_obj_mesh(ref.resolved, ref.resolved.string(), options, by_name, fallback,
-                                    scene.materials.size(), diagnostics);
+        read_obj(g, ref, within, object);
     } else {
         using K = model::PrimitiveKind;
         model::Primitive p;
@@ -437,7 +323,7 @@ void GlistReader::read_object(const io::XmlNode& node) {
             return;
         }
         const std::size_t errors = diagnostics.error_count();
-        const auto mat = material(g, object.material_id);
+        const auto mat = material(g, object.material_id, within);
         if (p.kind == K::box) {
             if (!g.child("lowerextent")) diagnostics.error(g.where(), "missing <lowerextent>");
             if (!g.child("upperextent")) diagnostics.error(g.where(), "missing <upperextent>");
@@ -479,13 +365,13 @@ void GlistReader::read_object(const io::XmlNode& node) {
     scene.objects.push_back(std::move(object));
 }
 
-}  // namespace
+}  // namespace detail
 
 void read_glist(const std::filesystem::path& file, const ReadOptions& options, model::Scene& scene,
                 Diagnostics& diagnostics) {
-    std::vector<std::filesystem::path> chain;
-    GlistCache cache;
-    read_glist_file(file, options, scene, diagnostics, chain, cache);
+    detail::SceneLoad load;
+    load.global_materials = scene.materials.size();
+    detail::read_glist_file(file, options, scene, diagnostics, load, {});
 }
 
 }  // namespace glint::dirsig

@@ -34,15 +34,12 @@ bool is_windows_absolute(const std::string& path) {
     return path.size() >= 3 && path[0] == '\\' && path[1] == '\\' && path[2] != '\\';
 }
 
-model::FileRef PathResolver::resolve(const std::string& text, const std::filesystem::path& base_dir,
-                                     const ErrorContext& where, Diagnostics& diagnostics) const {
-    model::FileRef ref;
-    ref.text = text;
-    ref.where = where;
+std::optional<std::string> PathResolver::expand(const std::string& text, const ErrorContext& where,
+                                                Diagnostics& diagnostics) const {
     const std::string written = trim(text);
     if (written.empty()) {
         diagnostics.error(where, "expected a file path, got an empty one");
-        return ref;
+        return std::nullopt;
     }
 
     // Expand variables; "$$" is not one (it appears in processing arguments) and stays.
@@ -72,7 +69,7 @@ model::FileRef PathResolver::resolve(const std::string& text, const std::filesys
                 diagnostics.error(where, "malformed variable reference in path " + quote(written) +
                                              ": expected ${NAME} with NAME made of letters, "
                                              "digits and '_'");
-                return ref;
+                return std::nullopt;
             }
             next = close + 1;
         } else if (is_name_start(written[next])) {
@@ -111,23 +108,33 @@ model::FileRef PathResolver::resolve(const std::string& text, const std::filesys
         }
         i = next;
     }
-    if (!ok) return ref;
+    if (!ok) return std::nullopt;
     if (expanded.empty()) {
         diagnostics.error(where, "path " + quote(written) + " expands to an empty path");
-        return ref;
+        return std::nullopt;
     }
+    return expanded;
+}
 
-    // Paths written on Windows use '\'; glint writes '/' everywhere.
-    const bool windows = is_windows_absolute(expanded);
-    for (char& c : expanded) {
+model::FileRef PathResolver::resolve(const std::string& text, const std::filesystem::path& base_dir,
+                                     const ErrorContext& where, Diagnostics& diagnostics) const {
+    model::FileRef ref;
+    ref.text = text;
+    ref.where = where;
+    std::optional<std::string> expanded = expand(text, where, diagnostics);
+    if (!expanded) return ref;
+
+    // Paths written on Windows use '\\'; glint writes '/' everywhere.
+    const bool windows = is_windows_absolute(*expanded);
+    for (char& c : *expanded) {
         if (c == '\\') c = '/';
     }
     if (windows) {
-        ref.resolved = std::filesystem::path(expanded);
+        ref.resolved = std::filesystem::path(*expanded);
         return ref;
     }
 
-    std::filesystem::path path(expanded);
+    std::filesystem::path path(*expanded);
     if (path.is_relative()) path = base_dir / path;
     if (path.is_relative()) {
         std::error_code ec;

@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
 // Reader of DIRSIG `<classicscene>` `.scene` files: the geodetic scene origin, the material
-// database (`matfilename`, read first so geometry can bind to it) and every enabled
-// `geometrylistinclude`; and the OBJ files of glists and YAML scenes.
+// database (`matfilename`, read first so geometry can bind to it), the geometry and object
+// database directories and every enabled `geometrylistinclude`; and the OBJ files of YAML
+// scenes.
 #include "glint/dirsig/scene_reader.h"
 
 #include "glint/core/text.h"
 #include "glint/io/xml.h"
+#include "glist_parts.h"
 
 namespace glint::dirsig {
 namespace {
@@ -89,6 +91,9 @@ model::Scene read_dirsig_scene(const std::filesystem::path& file, const ReadOpti
                                               "material file", diagnostics)) {
             scene.materials = read_dirsig_materials(*path, local, diagnostics);
         }
+        detail::SceneLoad load;
+        load.global_materials = scene.materials.size();
+        detail::read_database_dirs(root, base_dir, local, load, diagnostics);
         for (const io::XmlNode& list : root.children("geometrylist")) {
             if (list.attribute_bool("enabled", diagnostics) == false) continue;
             list.warn_unknown_children({"geometrylistinclude"}, diagnostics);
@@ -106,9 +111,12 @@ model::Scene read_dirsig_scene(const std::filesystem::path& file, const ReadOpti
                                                            "a .glist of OBJ geometry");
                     continue;
                 }
-                if (const auto path =
-                        existing(include, text, base_dir, local, "geometry list", diagnostics)) {
-                    read_glist(*path, local, scene, diagnostics);
+                const model::FileRef ref = detail::find_file(
+                    text, base_dir, detail::search_paths_local(include, diagnostics),
+                    detail::FileKind::glist, "geometry list", include.where(), local, load,
+                    diagnostics);
+                if (!ref.resolved.empty()) {
+                    detail::read_glist_file(ref.resolved, local, scene, diagnostics, load, {});
                 }
             }
         }

@@ -35,6 +35,11 @@ struct PathResolver {
     /// (unset variable, empty path) go to `diagnostics` and give an empty `resolved`.
     model::FileRef resolve(const std::string& text, const std::filesystem::path& base_dir,
                            const ErrorContext& where, Diagnostics& diagnostics) const;
+
+    /// `text` trimmed, with its variables expanded (separators left as written); nullopt
+    /// after reporting an empty path or an unset or malformed variable. resolve() starts here.
+    std::optional<std::string> expand(const std::string& text, const ErrorContext& where,
+                                      Diagnostics& diagnostics) const;
 };
 
 /// Default ReadOptions::max_instances: 10⁶ instances (about 0.6 GB while a glist expands).
