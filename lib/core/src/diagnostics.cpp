@@ -3,6 +3,7 @@
 #include "glint/core/diagnostics.h"
 
 #include <algorithm>
+#include <map>
 
 namespace glint {
 
@@ -17,6 +18,42 @@ void Diagnostics::warning(ErrorContext where, std::string message) {
 }
 
 void Diagnostics::add(const Error& error) { this->error(error.context(), error.message()); }
+
+void Diagnostics::append_capped(const Diagnostics& other, std::size_t per_file) {
+    struct Count {
+        std::size_t kept = 0;
+        std::size_t errors = 0;    ///< left off
+        std::size_t warnings = 0;  ///< left off
+    };
+    std::map<std::string, Count> counts;
+    std::vector<std::string> order;  // files with diagnostics left off, as first met
+    for (const Diagnostic& d : other.m_items) {
+        Count& count = counts[d.where.file];
+        const bool is_error = d.severity == Diagnostic::Severity::error;
+        if (count.kept < per_file) {
+            ++count.kept;
+            m_items.push_back(d);
+            if (is_error) ++m_errors;
+            continue;
+        }
+        if (count.errors + count.warnings == 0) order.push_back(d.where.file);
+        ++(is_error ? count.errors : count.warnings);
+    }
+    const auto plural = [](std::size_t n, const char* word) {
+        return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
+    };
+    for (const std::string& file : order) {
+        const Count& count = counts[file];
+        const std::string message = "… and " + std::to_string(count.errors + count.warnings) +
+                                    " more (" + plural(count.errors, "error") + ", " +
+                                    plural(count.warnings, "warning") + ") not shown";
+        if (count.errors > 0) {
+            error(ErrorContext{file, 0, {}}, message);
+        } else {
+            warning(ErrorContext{file, 0, {}}, message);
+        }
+    }
+}
 
 void Diagnostics::log_to(const Log& log) const {
     for (const Diagnostic& d : m_items) {

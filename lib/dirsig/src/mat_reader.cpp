@@ -11,7 +11,7 @@
 
 #include "glint/core/text.h"
 #include "glint/dirsig/scene_reader.h"
-#include "glint/io/xml.h"
+#include "mat_curves.h"
 
 namespace glint::dirsig {
 namespace {
@@ -74,8 +74,9 @@ MatBlock parse_blocks(const std::string& text, const std::string& file, Diagnost
     };
     while (std::getline(lines, raw)) {
         ++number;
-        const std::size_t hash = raw.find('#');
-        const std::string content = hash == std::string::npos ? raw : raw.substr(0, hash);
+        // A comment is a line whose first non-blank character is '#'; elsewhere '#' is text
+        // ("NAME = Class #2").
+        const std::string content = trim(raw).starts_with('#') ? std::string() : raw;
         // One-line blocks ("NAME { KEY = value }") are split into "NAME {", "KEY = value", "}".
         std::vector<std::string> pieces;
         std::string piece;
@@ -169,7 +170,7 @@ struct MatReader {
         }
     }
 
-    /// Reads a two-column curve file (wavelength µm, value in [0, 1]).
+    /// Reads a curve file: two columns (wavelength µm, value in [0, 1]) or a classic .ems.
     model::SpectralTable read_curve(const MatEntry& entry, const std::string& path,
                                     const std::string& quantity) {
         model::SpectralTable table;
@@ -184,52 +185,8 @@ struct MatReader {
             diagnostics.add(error.with_file(file, entry.line));
             return table;
         }
-        std::istringstream lines(text);
-        std::string line;
-        int number = 0;
-        const std::size_t errors = diagnostics.error_count();
-        while (std::getline(lines, line)) {
-            ++number;
-            const std::size_t hash = line.find('#');
-            if (hash != std::string::npos) line.resize(hash);
-            for (char& c : line) {
-                if (c == ',' || c == '\t' || c == ';' || c == '\r') c = ' ';
-            }
-            std::istringstream fields(line);
-            std::vector<std::string> columns;
-            for (std::string word; fields >> word;) columns.push_back(word);
-            if (columns.empty()) continue;
-            if (columns.size() != 2) {
-                diagnostics.error({name, number, path},
-                                  "expected 2 columns (wavelength_um value), got " +
-                                      std::to_string(columns.size()));
-                continue;
-            }
-            const auto w = parse_double(columns[0]);
-            const auto v = parse_double(columns[1]);
-            if (!w || !v) {
-                diagnostics.error(
-                    {name, number, path},
-                    "expected two numbers, got \"" + columns[0] + "\" and \"" + columns[1] + "\"");
-                continue;
-            }
-            if (!(*w > 0.0) || (!table.empty() && !(*w > table.wavelengths_um.back()))) {
-                diagnostics.error({name, number, path},
-                                  "wavelength " + format_shortest(*w) +
-                                      " um is not positive and strictly increasing");
-                continue;
-            }
-            if (!(*v >= 0.0 && *v <= 1.0)) {
-                diagnostics.error({name, number, path},
-                                  quantity + " " + format_shortest(*v) + " is outside [0, 1]");
-                continue;
-            }
-            table.wavelengths_um.push_back(*w);
-            table.values.push_back(*v);
-        }
-        if (table.empty() && diagnostics.error_count() == errors) {
-            diagnostics.error({name, 0, path}, quantity + " curve file has no samples");
-        }
+        detail::parse_curve_text(text, detail::CurveSource{name, path, quantity}, table,
+                                 diagnostics);
         return table;
     }
 
@@ -253,10 +210,25 @@ struct MatReader {
         const MatEntry* entry = prop->find("TXT_FILENAME");
         if (!entry) entry = prop->find("FILENAME");
         if (!entry || entry->value.empty()) {
-            diagnostics.error(at(prop->line, pp), "missing TXT_FILENAME (a two-column curve file)");
+            diagnostics.error(at(prop->line, pp),
+                              "missing TXT_FILENAME or FILENAME (a curve file)");
             return std::nullopt;
         }
         return read_curve(*entry, pp + "/" + entry->key, quantity);
+    }
+
+    /// A `RAD_SOLVER_NAME = Null` material: neither reflects nor emits (ρ = 0, ε = 0).
+    void read_null(const MatEntry& solver, const std::string& path, model::Material& m) {
+        diagnostics.warning(at(solver.line, path + "/RAD_SOLVER_NAME"),
+                            "radiometry solver \"" + solver.value + "\" of material \"" + m.name +
+                                "\": glint renders it black and non-emitting (reflectance 0, "
+                                "emissivity 0); its SURFACE_PROPERTIES are not read");
+        for (model::SpectralTable* table : {&m.reflectance, &m.emissivity}) {
+            table->wavelengths_um = {0.1, 100.0};
+            table->values = {0.0, 0.0};
+            table->where = at(solver.line, path + "/RAD_SOLVER_NAME");
+        }
+        m.emissivity_is_default = false;
     }
 
     model::Material read_entry(const MatBlock& block, std::size_t index) {
@@ -279,9 +251,12 @@ struct MatReader {
                                   ") are not supported; give SURFACE_PROPERTIES curve files");
             return m;
         }
+        const MatEntry* null_solver = nullptr;
         if (const MatEntry* solver = block.find("RAD_SOLVER_NAME")) {
             const std::string s = to_upper(solver->value);
-            if (s != "GENERIC" && s != "LAMBERTIAN") {
+            if (s == "NULL") {
+                null_solver = solver;
+            } else if (s != "GENERIC" && s != "LAMBERTIAN") {
                 diagnostics.warning(at(solver->line, path + "/RAD_SOLVER_NAME"),
                                     "radiometry solver \"" + solver->value + "\" of material \"" +
                                         m.name + "\" is not supported; treated as Lambertian");
@@ -327,36 +302,52 @@ struct MatReader {
                     "temperature \"" + temperature->value + "\" K is not a number > 0");
             }
         }
+        if (null_solver) {
+            read_null(*null_solver, path, m);
+            return m;
+        }
         const MatBlock* surface = block.find_block("SURFACE_PROPERTIES");
         if (!surface) {
-            diagnostics.error(m.where, "missing SURFACE_PROPERTIES (reflectance curve)");
+            diagnostics.error(m.where,
+                              "missing SURFACE_PROPERTIES (reflectance or emissivity curve)");
             return m;
         }
         const std::string sp = path + "/SURFACE_PROPERTIES";
         warn_unknown(*surface, sp, {"REFLECTANCE_PROP_NAME", "EMISSIVITY_PROP_NAME"},
                      {"REFLECTANCE_PROP", "EMISSIVITY_PROP"});
+        const bool has_reflectance = surface->find_block("REFLECTANCE_PROP") != nullptr;
+        const bool has_emissivity = surface->find_block("EMISSIVITY_PROP") != nullptr;
+        if (!has_reflectance && !has_emissivity) {
+            diagnostics.error(at(surface->line, sp),
+                              "missing REFLECTANCE_PROP and EMISSIVITY_PROP");
+            return m;
+        }
         if (auto r = read_prop(*surface, sp, "REFLECTANCE", "reflectance")) {
             m.reflectance = std::move(*r);
-        } else if (!surface->find_block("REFLECTANCE_PROP")) {
-            diagnostics.error(at(surface->line, sp), "missing REFLECTANCE_PROP");
         }
         if (auto e = read_prop(*surface, sp, "EMISSIVITY", "emissivity")) {
             m.emissivity = std::move(*e);
             m.emissivity_is_default = false;
-        } else {
+        }
+        if (!has_reflectance) {
+            // DIRSIG's opaque surface: an emissivity alone gives reflectance 1 − ε.
+            m.reflectance.wavelengths_um = m.emissivity.wavelengths_um;
+            for (const double e : m.emissivity.values) m.reflectance.values.push_back(1.0 - e);
+            m.reflectance.where = m.emissivity.where;
+        } else if (!has_emissivity) {
             m.emissivity.wavelengths_um = m.reflectance.wavelengths_um;
             for (const double rho : m.reflectance.values) m.emissivity.values.push_back(1.0 - rho);
             m.emissivity.where = m.reflectance.where;
+        } else if (!m.reflectance.empty() && !m.emissivity.empty()) {
+            detail::limit_reflectance(m, diagnostics);
         }
         return m;
     }
 };
 
-}  // namespace
-
-std::vector<model::Material> read_dirsig_materials(const std::filesystem::path& file,
-                                                   const ReadOptions& options,
-                                                   Diagnostics& diagnostics) {
+/// Reads the .mat `file` (every diagnostic, uncapped).
+std::vector<model::Material> read_materials(const std::filesystem::path& file,
+                                            const ReadOptions& options, Diagnostics& diagnostics) {
     std::vector<model::Material> materials;
     const std::string name = file.string();
     std::string text;
@@ -384,6 +375,18 @@ std::vector<model::Material> read_dirsig_materials(const std::filesystem::path& 
         materials.push_back(std::move(m));
     }
     if (root.blocks.empty()) diagnostics.error({name, 0, {}}, "no MATERIAL_ENTRY blocks");
+    return materials;
+}
+
+}  // namespace
+
+std::vector<model::Material> read_dirsig_materials(const std::filesystem::path& file,
+                                                   const ReadOptions& options,
+                                                   Diagnostics& capped) {
+    // At most kMaxDiagnosticsPerFile of each file (the .mat, each curve file) are reported.
+    Diagnostics diagnostics;
+    std::vector<model::Material> materials = read_materials(file, options, diagnostics);
+    capped.append_capped(diagnostics);
     return materials;
 }
 

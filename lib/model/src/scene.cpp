@@ -49,7 +49,7 @@ std::pair<double, double> measured_range_um(const Material& material) {
 }
 
 void check_material(const Material& material, Diagnostics& diagnostics) {
-    // Rounding slack of interpolated sums; the renderer allows the same.
+    // Rounding slack of the [0, 1] ranges; the renderer allows the same.
     constexpr double kSlack = 1e-9;
     const std::string name = "material '" + material.id + "'";
     if (material.reflectance.empty()) {
@@ -83,7 +83,8 @@ void check_material(const Material& material, Diagnostics& diagnostics) {
                                                   " lies outside [0, 1]");
             return;
         }
-        if (eps + rho > 1.0 + kSlack && w >= measured.first && w <= measured.second) {
+        if (eps + rho > 1.0 + kEmissivityReflectanceSlack && w >= measured.first &&
+            w <= measured.second) {
             diagnostics.error(material.where,
                               name + ": emissivity " + format_shortest(eps) + " + reflectance " +
                                   format_shortest(rho) + " exceed 1" + at +

@@ -74,24 +74,29 @@ MaterialTable::MaterialTable(std::span<const model::Material> materials, const S
         bool emits = false;
         bool reflects = false;
         // Where both curves are measured, model::check_material (every loader) has refused
-        // ε + ρ > 1; beyond that, both are held end values — a guess — and ε is lowered to
-        // 1 − ρ there, with one warning.
+        // ε + ρ > 1 + kEmissivityReflectanceSlack, and a sum within that slack (rounding) lowers
+        // ρ to 1 − ε silently; beyond that, both are held end values — a guess — and ε is
+        // lowered to 1 − ρ there, with one warning.
         const auto [measured_lo_um, measured_hi_um] = model::measured_range_um(material);
         std::optional<double> lowered_at_um;
         for (std::size_t i = 0; i < m_bands; ++i) {
-            if (eps[i] + rho[i] > 1.0 + kRangeSlack) {
+            if (eps[i] + rho[i] > 1.0) {
                 const double w = grid.wavelength_um(i);
                 if (w >= measured_lo_um && w <= measured_hi_um) {
-                    throw input_error("material '" + material.id + "': emissivity " +
-                                          format_shortest(eps[i]) + " + reflectance " +
-                                          format_shortest(rho[i]) + " exceed 1 at " +
-                                          format_shortest(w) +
-                                          " um (an opaque surface cannot emit and reflect more "
-                                          "than a blackbody)",
-                                      material.where);
+                    if (eps[i] + rho[i] > 1.0 + model::kEmissivityReflectanceSlack) {
+                        throw input_error("material '" + material.id + "': emissivity " +
+                                              format_shortest(eps[i]) + " + reflectance " +
+                                              format_shortest(rho[i]) + " exceed 1 at " +
+                                              format_shortest(w) +
+                                              " um (an opaque surface cannot emit and reflect "
+                                              "more than a blackbody)",
+                                          material.where);
+                    }
+                    rho[i] = 1.0 - eps[i];
+                } else if (eps[i] + rho[i] > 1.0 + kRangeSlack) {
+                    eps[i] = 1.0 - rho[i];
+                    if (!lowered_at_um) lowered_at_um = w;
                 }
-                eps[i] = 1.0 - rho[i];
-                if (!lowered_at_um) lowered_at_um = w;
             }
             rho[i] = std::clamp(rho[i], 0.0, 1.0);
             const double e =

@@ -112,5 +112,31 @@ TEST(Diagnostics, LogAndRethrowKeepsOtherErrorsAsTheyAre) {
     EXPECT_EQ(io.lines, (std::vector<std::string>{"error f:2: e"}));
 }
 
+TEST(Diagnostics, AppendCappedKeepsTwentyPerFileAndCountsTheRest) {
+    Diagnostics one_file;
+    for (int line = 1; line <= 25; ++line) {
+        one_file.error(ErrorContext{"x.ems", line, {}}, "bad row");
+    }
+    one_file.warning(ErrorContext{"x.ems", 26, {}}, "odd row");
+    one_file.warning(ErrorContext{"m.mat", 3, {}}, "unknown key");
+    Diagnostics all;
+    all.append_capped(one_file);
+    ASSERT_EQ(all.items().size(), 22u);  // 20 of x.ems, m.mat's one, the summary
+    EXPECT_EQ(all.items()[19].where.line, 20);
+    EXPECT_EQ(all.items()[20].text(), "m.mat:3: unknown key");
+    EXPECT_EQ(all.items()[21].text(), "x.ems: … and 6 more (5 errors, 1 warning) not shown");
+    EXPECT_EQ(all.items()[21].severity, Diagnostic::Severity::error);
+    EXPECT_EQ(all.error_count(), 21u);
+
+    Diagnostics warnings_only;
+    for (int line = 1; line <= 22; ++line) {
+        warnings_only.warning(ErrorContext{"w.mat", line, {}}, "unknown key");
+    }
+    Diagnostics capped;
+    capped.append_capped(warnings_only);
+    EXPECT_FALSE(capped.has_errors());
+    EXPECT_EQ(capped.items().back().text(), "w.mat: … and 2 more (0 errors, 2 warnings) not shown");
+}
+
 }  // namespace
 }  // namespace glint

@@ -60,6 +60,20 @@ TEST(CheckMaterial, SumAboveOneWhereBothAreMeasured) {
         "blackbody)");
 }
 
+TEST(CheckMaterial, SumWithinRoundingOfOnePasses) {
+    // 0.1000005 + 0.9: 5e-7 above 1, within kEmissivityReflectanceSlack (1e-6).
+    Diagnostics diagnostics;
+    check_material(
+        material(table({0.4, 2.5}, {0.1000005, 0.1000005}), table({0.4, 2.5}, {0.9, 0.9})),
+        diagnostics);
+    EXPECT_EQ(diagnostics.items().size(), 0u)
+        << (diagnostics.items().empty() ? "" : diagnostics.items()[0].text());
+    EXPECT_EQ(
+        only_error(material(table({0.4, 2.5}, {0.100002, 0.100002}), table({0.4, 2.5}, {0.9, 0.9})))
+            .substr(0, 60),
+        "s.yaml:7: materials[0]: material 'm': emissivity 0.9 + refle");
+}
+
 TEST(CheckMaterial, SumAboveOneOnlyBeyondTheMeasuredCurvesPasses) {
     // ρ measured 0.4–1 µm (held at 0.5 beyond), ε 0.3 at 1 µm rising to 0.9 at 14 µm: the
     // sum exceeds 1 only where ρ is a held guess; the renderer lowers ε there.

@@ -285,6 +285,18 @@ TEST(MaterialTable, RefusesMoreThanABlackbody) {
     }
 }
 
+TEST(MaterialTable, SumWithinRoundingOfOneLowersTheReflectanceSilently) {
+    // ε + ρ = 1 + 5e-7 (decimals rounded on writing): accepted, ρ lowered to 1 − ε; 2e-6
+    // above 1 is refused (model::check_material refused it first).
+    model::Material m = flat_material("rounded", 0.1000005, 300.0, 0.9);
+    const MaterialTable table(std::span<const model::Material>(&m, 1), kGrid);
+    for (std::size_t b = 0; b < kGrid.size(); ++b) {
+        EXPECT_DOUBLE_EQ(table.reflectance(0)[b], 1.0 - 0.9);
+    }
+    model::Material over = flat_material("over", 0.100002, 300.0, 0.9);
+    EXPECT_THROW(MaterialTable(std::span<const model::Material>(&over, 1), kGrid), Error);
+}
+
 // ---- Environment ---------------------------------------------------------------------------
 
 TEST(Environment, NoAtmosphereIsTheExoAtmosphericSunAndABlackSky) {

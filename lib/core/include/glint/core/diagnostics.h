@@ -27,6 +27,9 @@ struct Diagnostic {
 /// inputs".
 std::string nothing_written_message(std::size_t errors);
 
+/// The most diagnostics a reader reports for one file (append_capped); the rest are counted.
+inline constexpr std::size_t kMaxDiagnosticsPerFile = 20;
+
 /// An ordered list of diagnostics. Readers add to it and go on; the caller decides when
 /// errors are fatal (throw_if_errors) and where warnings go (log_to).
 class Diagnostics {
@@ -35,6 +38,10 @@ public:
     void warning(ErrorContext where, std::string message);
     /// Records a glint::Error raised by a nested reader as an error diagnostic.
     void add(const Error& error);
+    /// Appends the diagnostics of `other` in order, keeping at most `per_file` of each file
+    /// (Diagnostic::where.file); those left off become one diagnostic per file at its end,
+    /// "… and N more (E errors, W warnings)", an error when any left off is one.
+    void append_capped(const Diagnostics& other, std::size_t per_file = kMaxDiagnosticsPerFile);
 
     const std::vector<Diagnostic>& items() const { return m_items; }
     std::size_t error_count() const { return m_errors; }

@@ -74,6 +74,9 @@ inline constexpr int kDefaultSegments = 32;
 inline constexpr int kDefaultRings = 16;
 /// Default material temperature.
 inline constexpr double kDefaultTemperature_k = 300.0;
+/// How far emissivity + reflectance may exceed 1 unnoticed: rounding in curves written as
+/// decimals (0.90 + 0.10); the renderer lowers ρ to 1 − ε within it.
+inline constexpr double kEmissivityReflectanceSlack = 1e-6;
 
 /// The geodetic origin of the scene's ENU frame (WGS84).
 struct SceneOrigin {
@@ -207,9 +210,10 @@ std::pair<double, double> measured_range_um(const Material& material);
 /// The physical checks of a material every tool applies alike (glint-platform2jsim --check
 /// as glint-render): reflectance given, temperature finite and > 0, reflectance and
 /// emissivity within [0, 1] at every point of either curve, and emissivity + reflectance ≤ 1
-/// at every such point inside measured_range_um (both are linear between their points, so a
-/// sum within 1 there is within 1 on any grid; beyond it the renderer lowers the held
-/// emissivity, see physics.md). Problems go to `diagnostics` at the material's `where`.
+/// + kEmissivityReflectanceSlack at every such point inside measured_range_um (both are linear
+/// between their points, so a sum within 1 there is within 1 on any grid; beyond it the renderer
+/// lowers the held emissivity, see physics.md). Problems go to `diagnostics` at the material's
+/// `where`.
 void check_material(const Material& material, Diagnostics& diagnostics);
 
 }  // namespace glint::model

@@ -23,7 +23,8 @@ class MaterialTable {
 public:
     /// Samples every material of `materials` on `grid`. Throws glint::Error (input, at the
     /// material) for a reflectance or emissivity outside [0, 1] after interpolation, ε + ρ > 1
-    /// + 1e-9 at any band, or a non-positive temperature.
+    /// + model::kEmissivityReflectanceSlack at a band inside both curves' range (within the
+    /// slack ρ is lowered to 1 − ε), or a non-positive temperature.
     MaterialTable(std::span<const model::Material> materials, const SpectralGrid& grid,
                   Log log = {});
 

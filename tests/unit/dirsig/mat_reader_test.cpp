@@ -1,0 +1,221 @@
+// SPDX-License-Identifier: Apache-2.0
+// Tests of the `.mat` reader on materials as real DIRSIG databases write them (the
+// tests/data/materials fixture): emissivity-only entries (ρ = 1 − ε), `RAD_SOLVER_NAME =
+// Null`, `#` inside a value, classic `.ems` curve files in both curve layouts and with
+// several texture classes, ε + ρ just above 1 (rounding) and well above it, and each bad
+// `.ems` with its one message at file:line; a file's diagnostics are capped.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+#include <string_view>
+
+#include "glint/dirsig/scene_reader.h"
+#include "glint/test/diagnostics.h"
+#include "glint/test/temp_dir.h"
+
+namespace glint::dirsig {
+namespace {
+
+using glint::test::diagnostics_text;
+using glint::test::only_error;
+using glint::test::TempDir;
+using ::testing::ElementsAre;
+using ::testing::HasSubstr;
+
+const std::filesystem::path kData = std::filesystem::path(GLINT_TEST_DATA_DIR) / "materials";
+
+/// The warnings of `diagnostics`, one "file:line: element: message" per line.
+std::string warnings_text(const Diagnostics& diagnostics) {
+    std::string out;
+    for (const Diagnostic& d : diagnostics.items()) {
+        if (d.severity == Diagnostic::Severity::warning) out += d.text() + "\n";
+    }
+    return out;
+}
+
+/// Writes `text` to the new file `path` in a TempDir.
+void write_file(const std::filesystem::path& path, std::string_view text) {
+    std::ofstream out(path, std::ios::binary);
+    out.write(text.data(), static_cast<std::streamsize>(text.size()));
+}
+
+void expect_values(const std::vector<double>& actual, const std::vector<double>& expected) {
+    ASSERT_EQ(actual.size(), expected.size());
+    for (std::size_t i = 0; i < actual.size(); ++i) {
+        EXPECT_NEAR(actual[i], expected[i], 1e-12) << "sample " << i;
+    }
+}
+
+TEST(MatReader, ReadsRealDirsigMaterials) {
+    Diagnostics diagnostics;
+    const auto materials = read_dirsig_materials(kData / "real.mat", {}, diagnostics);
+    const std::string all = warnings_text(diagnostics);
+    EXPECT_FALSE(diagnostics.has_errors()) << diagnostics_text(diagnostics);
+    ASSERT_EQ(materials.size(), 4u) << all;
+
+    // Emissivity only, from a classic .ems in the CURVE_BEGIN layout: ρ = 1 − ε.
+    const model::Material& paint = materials[0];
+    EXPECT_EQ(paint.name, "Class #2");
+    EXPECT_FALSE(paint.emissivity_is_default);
+    EXPECT_THAT(paint.emissivity.wavelengths_um, ElementsAre(0.4, 0.7, 14.0));
+    expect_values(paint.emissivity.values, {0.90, 0.60, 0.95});
+    EXPECT_THAT(paint.reflectance.wavelengths_um, ElementsAre(0.4, 0.7, 14.0));
+    expect_values(paint.reflectance.values, {0.10, 0.40, 0.05});
+
+    // Null solver: black, no emission, one warning naming the material at its file:line.
+    const model::Material& void_material = materials[1];
+    expect_values(void_material.reflectance.values, {0.0, 0.0});
+    expect_values(void_material.emissivity.values, {0.0, 0.0});
+    EXPECT_THAT(all, HasSubstr((kData / "real.mat").string() +
+                               ":18: MATERIAL_ENTRY[11]/RAD_SOLVER_NAME: radiometry solver "
+                               "\"Null\" of material \"Void\": glint renders it black and "
+                               "non-emitting"));
+
+    // Three texture classes in descending wavenumber: the first, converted to µm.
+    const model::Material& soil = materials[2];
+    ASSERT_EQ(soil.emissivity.wavelengths_um.size(), 3u);
+    expect_values(soil.emissivity.wavelengths_um, {4.0, 10.0, 14.0});
+    expect_values(soil.emissivity.values, {0.80, 0.90, 0.95});
+    expect_values(soil.reflectance.values, {0.20, 0.10, 0.05});
+    const std::string soil_ems = (kData / "emissivity/soil.ems").string();
+    EXPECT_THAT(
+        all,
+        HasSubstr(soil_ems + ":1: MATERIAL_ENTRY[12]/SURFACE_PROPERTIES/EMISSIVITY_PROP/FILENAME: "
+                             "classic .ems with 3 curves (texture classes): glint uses the first "
+                             "(line 94); texture classes are not applied"));
+    EXPECT_THAT(
+        all,
+        HasSubstr(soil_ems + ":2: MATERIAL_ENTRY[12]/SURFACE_PROPERTIES/EMISSIVITY_PROP/FILENAME: "
+                             "the angular emissivity table (lines 2-92) is read, not applied"));
+
+    // 0.1 + 0.9000004: 4e-7 above 1 is rounding, accepted silently and left as written.
+    const model::Material& rounded = materials[3];
+    expect_values(rounded.reflectance.values, {0.10, 0.10});
+    expect_values(rounded.emissivity.values, {0.9000004, 0.9000004});
+
+    EXPECT_EQ(diagnostics.warning_count(), 3u) << all;
+}
+
+TEST(MatReader, HashIsACommentOnlyAtTheStartOfALine) {
+    TempDir dir;
+    write_file(dir / "r.txt", "0.4 0.1\n");
+    write_file(dir / "m.mat",
+               "# a comment\n  # an indented comment { not a block\nMATERIAL_ENTRY {\n  ID = #7\n"
+               "  NAME = Class #2 # not a comment either\n"
+               "  SURFACE_PROPERTIES { REFLECTANCE_PROP { TXT_FILENAME = r.txt } }\n}\n");
+    Diagnostics diagnostics;
+    const auto materials = read_dirsig_materials(dir / "m.mat", {}, diagnostics);
+    EXPECT_TRUE(diagnostics.items().empty()) << diagnostics_text(diagnostics);
+    ASSERT_EQ(materials.size(), 1u);
+    EXPECT_EQ(materials[0].id, "#7");
+    EXPECT_EQ(materials[0].name, "Class #2 # not a comment either");
+}
+
+TEST(MatReader, EmissivityPlusReflectanceAboveOneLowersTheReflectanceWithOneWarning) {
+    TempDir dir;
+    write_file(dir / "r.txt", "0.4 0.2\n10.0 0.2\n");
+    write_file(dir / "e.txt", "0.4 0.9\n5.0 0.9\n10.0 0.7\n");
+    write_file(dir / "m.mat",
+               "MATERIAL_ENTRY {\n  ID = 4\n  SURFACE_PROPERTIES {\n"
+               "    REFLECTANCE_PROP { TXT_FILENAME = r.txt }\n"
+               "    EMISSIVITY_PROP { FILENAME = e.txt }\n  }\n}\n");
+    Diagnostics diagnostics;
+    const auto materials = read_dirsig_materials(dir / "m.mat", {}, diagnostics);
+    ASSERT_EQ(diagnostics.items().size(), 1u) << diagnostics_text(diagnostics);
+    const Diagnostic& w = diagnostics.items()[0];
+    EXPECT_EQ(w.severity, Diagnostic::Severity::warning);
+    EXPECT_EQ(w.text(), (dir / "m.mat").string() +
+                            ":1: MATERIAL_ENTRY[4]: material '4': emissivity + reflectance "
+                            "exceed 1 by up to 0.1 (at 0.4 um); the reflectance is lowered to 1 - "
+                            "emissivity there");
+    ASSERT_EQ(materials.size(), 1u);
+    // On the union of both curves' wavelengths: ρ = min(0.2, 1 − ε).
+    EXPECT_THAT(materials[0].reflectance.wavelengths_um, ElementsAre(0.4, 5.0, 10.0));
+    expect_values(materials[0].reflectance.values, {0.1, 0.1, 0.2});
+}
+
+TEST(MatReader, SurfaceWithNeitherCurveIsAnError) {
+    TempDir dir;
+    write_file(dir / "m.mat",
+               "MATERIAL_ENTRY {\n  ID = 1\n  SURFACE_PROPERTIES {\n"
+               "    EMISSIVITY_PROP_NAME = ClassicEmissivity\n  }\n}\n");
+    Diagnostics diagnostics;
+    read_dirsig_materials(dir / "m.mat", {}, diagnostics);
+    const Diagnostic e = only_error(diagnostics);
+    EXPECT_EQ(e.text(), (dir / "m.mat").string() +
+                            ":3: MATERIAL_ENTRY[1]/SURFACE_PROPERTIES: missing REFLECTANCE_PROP "
+                            "and EMISSIVITY_PROP");
+}
+
+// ---- a bad classic .ems: one error at its line ---------------------------------------------
+
+/// A .mat whose one material takes its emissivity from x.ems beside it.
+constexpr std::string_view kEmsMaterial =
+    "MATERIAL_ENTRY {\n  ID = 1\n  SURFACE_PROPERTIES {\n"
+    "    EMISSIVITY_PROP { FILENAME = x.ems }\n  }\n}\n";
+
+struct EmsCase {
+    const char* name;
+    std::string_view text;
+    int line;
+    const char* message;
+};
+
+class ClassicEmsErrors : public ::testing::TestWithParam<EmsCase> {};
+
+TEST_P(ClassicEmsErrors, OneErrorAtItsLine) {
+    const EmsCase& c = GetParam();
+    TempDir dir;
+    write_file(dir / "x.ems", c.text);
+    write_file(dir / "m.mat", kEmsMaterial);
+    Diagnostics diagnostics;
+    read_dirsig_materials(dir / "m.mat", {}, diagnostics);
+    const Diagnostic e = only_error(diagnostics);
+    EXPECT_EQ(e.where.file, (dir / "x.ems").string());
+    EXPECT_EQ(e.where.line, c.line);
+    EXPECT_EQ(e.where.element, "MATERIAL_ENTRY[1]/SURFACE_PROPERTIES/EMISSIVITY_PROP/FILENAME");
+    EXPECT_THAT(e.message, HasSubstr(c.message));
+}
+
+const EmsCase kEmsErrors[] = {
+    {"FewerCurvesThanCounted", "2\n1.0\nCURVE_BEGIN\n0.4 0.9\n1.0 0.9\n", 1,
+     "classic .ems: the first line gives 2 curve(s), the file holds 1"},
+    {"AscendingWavenumbers", "1\n1.0\n700 0.9\n1000 0.9\n", 1,
+     "the first line gives 1 curve(s), the file holds 2 (without CURVE_BEGIN the rows are read "
+     "as wavenumbers in cm-1"},
+    {"EmissivityAboveOne", "1\nCURVE_BEGIN\n0.4 0.9\n0.5 1.5\n", 4,
+     "emissivity 1.5 is outside [0, 1]"},
+    {"DecreasingWavelength", "1\nCURVE_BEGIN\n0.5 0.9\n0.4 0.9\n", 4,
+     "wavelength 0.4 um is not positive and strictly increasing"},
+    {"TextBeforeCurveBegin", "1\nCURVE_BEGIN\n0.4 0.9\nCURVE_END\nfoo\n", 5,
+     "expected CURVE_BEGIN, got \"foo\""},
+    {"NeitherLayout", "# header\nEMISSIVITY\n0.4 0.9\n", 2,
+     "\"EMISSIVITY\" is not a curve file's first line: expected \"wavelength_um value\" (a "
+     "two-column curve) or a curve count (a classic DIRSIG .ems)"},
+    {"Binary", std::string_view("1\n\0\x01\x02", 5), 0, "binary data (a NUL byte)"},
+};
+
+INSTANTIATE_TEST_SUITE_P(MatReader, ClassicEmsErrors, ::testing::ValuesIn(kEmsErrors),
+                         [](const ::testing::TestParamInfo<EmsCase>& test_case) {
+                             return std::string(test_case.param.name);
+                         });
+
+TEST(MatReader, AFilesDiagnosticsAreCappedAtTwenty) {
+    TempDir dir;
+    std::string rows = "1\nCURVE_BEGIN\n";
+    for (int i = 0; i < 50; ++i) rows += "0.4 x\n";
+    write_file(dir / "x.ems", rows);
+    write_file(dir / "m.mat", kEmsMaterial);
+    Diagnostics diagnostics;
+    read_dirsig_materials(dir / "m.mat", {}, diagnostics);
+    ASSERT_EQ(diagnostics.items().size(), 21u) << diagnostics_text(diagnostics);
+    EXPECT_EQ(diagnostics.items()[19].where.line, 22);
+    EXPECT_EQ(diagnostics.items()[20].text(),
+              (dir / "x.ems").string() + ": … and 30 more (30 errors, 0 warnings) not shown");
+    EXPECT_EQ(diagnostics.error_count(), 21u);
+}
+
+}  // namespace
+}  // namespace glint::dirsig
