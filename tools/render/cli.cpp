@@ -32,6 +32,10 @@ void RenderCli::configure(CLI::App& app) {
     app.add_flag("--split-channels,--split_channels", m_options.render.split_channels,
                  "Render each channel as its own spectral state (own bands, random streams "
                  "and convergence; same expectation: no dispersion is modelled)");
+    app.add_option("--atmosphere", m_options.atmosphere,
+                   "Use this atmosphere in place of the simulation's: none, parametric (the "
+                   "default parametric model) or a glint YAML atmosphere or DIRSIG .atm file")
+        ->type_name("none|parametric|FILE");
     app.add_option("--schedule", m_options.schedule,
                    "Render only the captures of this glint-schedule JSON (a subset or shard)")
         ->type_name("FILE");

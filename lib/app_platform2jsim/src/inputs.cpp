@@ -13,6 +13,7 @@
 #include "glint/dirsig/motion_reader.h"
 #include "glint/dirsig/readers.h"
 #include "glint/dirsig/scene_reader.h"
+#include "glint/inputs/load.h"
 #include "glint/inputs/simulation_inputs.h"
 #include "glint/io/image.h"
 #include "glint/model/derived.h"
@@ -246,8 +247,9 @@ void load_one_simulation(std::size_t index, LoadedInputs& inputs,
     const model::Plugin* used_atmosphere =
         contents ? inputs::used_atmosphere_plugin(simulation, inputs.diagnostics) : nullptr;
     if (contents && used_atmosphere == nullptr) {
-        inputs.contents.push_back("atmosphere (default: " + simulation.file +
-                                  " names none): " + describe(inputs::default_atmosphere()));
+        inputs.contents.push_back(
+            "atmosphere (default: " + inputs::default_atmosphere_reason(simulation) +
+            "): " + describe(inputs::default_atmosphere()));
     }
     for (const model::Plugin& plugin : simulation.plugins) {
         if (plugin.basic_platform) {
@@ -327,6 +329,46 @@ void check_file(const fs::path& file, LoadedInputs& inputs, const dirsig::ReadOp
         if (inputs.task_lists.count(key) == 0) {
             inputs.task_lists.emplace(key, dirsig::read_tasks(file, options, inputs.diagnostics));
         }
+        return;
+    }
+    if (extension == ".ppd" || extension == ".motion") {
+        // Read as a render reads a BasicPlatform's motion file, with its PSD tables.
+        const fs::path key = key_of(file);
+        inputs.files.insert(key);
+        if (inputs.motions.count(key) == 0) {
+            model::PlatformMotion motion;
+            try {
+                motion = dirsig::read_motion(file, options, inputs.diagnostics);
+                inputs::read_psd_tables(motion, options, inputs.diagnostics);
+            } catch (const Error& error) {
+                inputs.diagnostics.add(error);
+            }
+            inputs.motions.emplace(key, std::move(motion));
+        }
+        return;
+    }
+    // A file given on the command line is named by itself in messages.
+    const model::FileRef ref{file.string(), file, ErrorContext{file.string(), 0, {}}};
+    if (extension == ".scene") {
+        load_scene_ref(ref, inputs, options);
+        return;
+    }
+    if (extension == ".atm") {
+        load_atmosphere_ref(ref, inputs, options);
+        return;
+    }
+    if (extension == ".mat") {
+        inputs.files.insert(key_of(file));
+        const std::size_t errors = inputs.diagnostics.error_count();
+        std::vector<model::Material> materials;
+        try {
+            materials = dirsig::read_dirsig_materials(file, options, inputs.diagnostics);
+        } catch (const Error& error) {
+            inputs.diagnostics.add(error);
+        }
+        inputs.contents.push_back(contents_line("materials", file,
+                                                inputs.diagnostics.error_count() - errors,
+                                                plural(materials.size(), "material")));
         return;
     }
     const std::size_t first = inputs.simulations.size();

@@ -78,6 +78,9 @@ int run(const Options& options, Context& ctx, std::ostream& out) {
     }
     inputs::LoadOptions load_options;
     load_options.read = options.read;
+    if (!options.atmosphere.empty()) {
+        load_options.atmosphere_override = inputs::parse_atmosphere_override(options.atmosphere);
+    }
     model::SimulationInputs loaded = inputs::load_logged(options.input, load_options, ctx.log);
     if (options.dry_run) {
         const sensor::RenderReport plan = sensor::plan(std::move(loaded), render, ctx);

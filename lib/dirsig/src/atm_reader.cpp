@@ -6,6 +6,14 @@
 #include "glint/io/xml.h"
 
 namespace glint::dirsig {
+namespace {
+
+/// How to run a simulation whose atmosphere glint cannot read.
+constexpr const char* kAtmosphereOverrideHint =
+    "to render without it, give glint-render --atmosphere none|parametric|FILE (FILE: a glint "
+    "YAML atmosphere, e.g. model tabulated with a MODTRAN table)";
+
+}  // namespace
 
 model::Atmosphere parse_atm(std::string_view text, const std::string& file,
                             Diagnostics& diagnostics) {
@@ -32,10 +40,14 @@ model::Atmosphere parse_atm(std::string_view text, const std::string& file,
             child.warn_unknown_children({"apparentskytemperature"}, diagnostics);
         } else if (name == "uniformradiativetransfer" || name == "classicradiativetransfer") {
             found = true;
-            diagnostics.error(child.where(),
-                              "<" + name +
-                                  "> is not supported; use <simpleradiativetransfer> or a glint "
-                                  "YAML atmosphere (model parametric or tabulated)");
+            const char* built_by = name == "classicradiativetransfer"
+                                       ? " (a MODTRAN-built atmosphere)"
+                                       : " (a uniform atmosphere)";
+            diagnostics.error(child.where(), "atmosphere kind <" + name + ">" + built_by +
+                                                 " is not supported: glint reads "
+                                                 "<simpleradiativetransfer> or a glint YAML "
+                                                 "atmosphere; " +
+                                                 kAtmosphereOverrideHint);
         } else if (name == "uniformweather" || name == "weather" || name == "classicweather") {
             diagnostics.warning(child.where(), "<" + name + "> ignored (weather is not modelled)");
         } else {
@@ -43,8 +55,9 @@ model::Atmosphere parse_atm(std::string_view text, const std::string& file,
         }
     }
     if (!found) {
-        diagnostics.error(root.where(),
-                          "missing a radiative-transfer block (<simpleradiativetransfer>)");
+        diagnostics.error(root.where(), std::string("missing a radiative-transfer block "
+                                                    "(<simpleradiativetransfer>); ") +
+                                            kAtmosphereOverrideHint);
     }
     doc.warn_unread(diagnostics);
     return atmosphere;

@@ -343,6 +343,18 @@ model::Simulation JsimReader::read_simulation(const Json& value, const std::stri
             simulation.plugins.push_back(read_plugin((*it)[i], index_path(plugins_path, i)));
         }
     }
+    // One warning per plugin glint does not run, saying what it does instead (known once
+    // every plugin is read: an atmosphere plugin beside a BasicAtmosphere changes nothing).
+    const bool has_basic_atmosphere = simulation.atmosphere() != nullptr;
+    for (const model::Plugin& plugin : simulation.plugins) {
+        if (plugin.basic_platform || plugin.basic_atmosphere || plugin.name.empty()) continue;
+        m_diagnostics.warning(plugin.where,
+                              "plugin \"" + plugin.name +
+                                  "\" is read, not applied: glint runs BasicPlatform and "
+                                  "BasicAtmosphere only; instead " +
+                                  unsupported_plugin_fallback(plugin.name, has_basic_atmosphere) +
+                                  " (the plugin is kept when the .jsim is rewritten)");
+    }
 
     if (const auto it = value.find("medium_list"); it != value.end()) {
         if (it->is_array()) {
@@ -409,11 +421,6 @@ model::Plugin JsimReader::read_plugin(const Json& value, const std::string& path
         warn_unknown_keys(inputs, inputs_path, {kAtmosphereFilename}, " in BasicAtmosphere inputs");
         plugin.basic_atmosphere =
             model::BasicAtmosphereInputs{file_at(inputs, inputs_path, kAtmosphereFilename)};
-    } else if (!plugin.name.empty()) {
-        m_diagnostics.warning(plugin.where, "plugin \"" + plugin.name +
-                                                "\" is read, not applied: glint runs "
-                                                "BasicPlatform and BasicAtmosphere only (kept "
-                                                "when the .jsim is rewritten)");
     }
     return plugin;
 }
@@ -457,6 +464,38 @@ model::BasicPlatformInputs JsimReader::read_basic_platform(const Json& inputs,
 }
 
 }  // namespace
+
+PluginKind plugin_kind(std::string_view name) {
+    if (name == kBasicPlatform) return PluginKind::basic_platform;
+    if (name == kBasicAtmosphere) return PluginKind::basic_atmosphere;
+    const std::string lower = to_lower(std::string(name));
+    const auto has = [&](std::string_view word) { return lower.find(word) != std::string::npos; };
+    if (has("atmosphere")) return PluginKind::atmosphere;
+    if (has("ephemeris")) return PluginKind::ephemeris;
+    if (has("weather") || has("therm") || has("temperature")) return PluginKind::thermal;
+    return PluginKind::other;
+}
+
+std::string unsupported_plugin_fallback(std::string_view name, bool has_basic_atmosphere) {
+    switch (plugin_kind(name)) {
+        case PluginKind::atmosphere:
+            return has_basic_atmosphere
+                       ? std::string("glint uses the BasicAtmosphere entry's atmosphere")
+                       : std::string(
+                             "glint uses its default parametric atmosphere (glint-render "
+                             "--atmosphere none|parametric|FILE picks another)");
+        case PluginKind::ephemeris:
+            return "glint computes the sun and moon positions itself from the tasks' times and "
+                   "the scene origin (NREL SPA, ELP 2000)";
+        case PluginKind::thermal:
+            return "glint uses each material's own temperature (no weather, no thermal model)";
+        case PluginKind::basic_platform:
+        case PluginKind::basic_atmosphere:
+        case PluginKind::other:
+            break;
+    }
+    return "it has no effect on the run";
+}
 
 std::vector<model::Simulation> read_jsim(const std::filesystem::path& file,
                                          const ReadOptions& options, Diagnostics& diagnostics) {

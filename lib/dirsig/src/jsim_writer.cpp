@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // The `.jsim` writer: simulations as DIRSIG5 JSON, with file paths rewritten relative to the
 // folder the .jsim will be written to (so that reading it back resolves them to the same
-// files), Windows paths and unresolved paths kept as written, other plugins verbatim.
+// files), Windows paths and unresolved paths kept as written. Other plugins are kept as read
+// but for their relative paths, rewritten the same way (relativize_paths says which).
 #include <nlohmann/json.hpp>
 
 #include "glint/core/json_text.h"
@@ -88,6 +89,66 @@ OrderedJson atmosphere_inputs(const model::Plugin& plugin, const std::filesystem
     return out;
 }
 
+/// Whether a key of another plugin's inputs names files: it ends in "filename", "filenames",
+/// "_file" or "_files" (any case), as DIRSIG's own keys do ("atmosphere_filename").
+bool is_path_key(const std::string& key) {
+    const std::string lower = to_lower(key);
+    for (const std::string_view ending : {"filename", "filenames", "_file", "_files"}) {
+        if (lower.size() >= ending.size() &&
+            lower.compare(lower.size() - ending.size(), ending.size(), ending) == 0) {
+            return true;
+        }
+    }
+    return false;
+}
+
+/// A path as written that is relative to the file naming it: not empty, not absolute (POSIX
+/// or Windows), no variable (`$`), one line.
+bool is_plain_relative(const std::string& text) {
+    return !text.empty() && text.size() < 4096 && text.find('$') == std::string::npos &&
+           text.find('\n') == std::string::npos && !is_windows_absolute(text) &&
+           std::filesystem::path(text).is_relative();
+}
+
+/// Rewrites, in another plugin's inputs, every relative path (is_plain_relative) that is the
+/// value of a path key (is_path_key; in an array under one too) or names an existing file
+/// from `base` (the folder of the .jsim read), relative to `folder` (relative_or_absolute).
+/// Absolute paths, variables and other values are kept as written.
+void relativize_paths(OrderedJson& value, bool path_key, const std::filesystem::path& base,
+                      const std::filesystem::path& folder) {
+    if (value.is_object()) {
+        for (auto& [key, member] : value.items()) {
+            relativize_paths(member, is_path_key(key), base, folder);
+        }
+    } else if (value.is_array()) {
+        for (OrderedJson& element : value) relativize_paths(element, path_key, base, folder);
+    } else if (value.is_string()) {
+        const std::string text = value.get<std::string>();
+        if (!is_plain_relative(text)) return;
+        const std::filesystem::path resolved = (base / text).lexically_normal();
+        std::error_code ec;
+        if (!path_key && !std::filesystem::is_regular_file(resolved, ec)) return;
+        value = relative_or_absolute(resolved, folder);
+    }
+}
+
+/// The absolute folder of the file a simulation was read from (its relative paths count from
+/// there); empty when the simulation names no file.
+std::filesystem::path base_folder(const model::Simulation& simulation) {
+    if (simulation.file.empty()) return {};
+    std::error_code ec;
+    const std::filesystem::path file = std::filesystem::absolute(simulation.file, ec);
+    if (ec) return {};
+    return file.lexically_normal().parent_path();
+}
+
+OrderedJson other_inputs(const model::Plugin& plugin, const std::filesystem::path& base,
+                         const std::filesystem::path& folder) {
+    OrderedJson out = parse_kept(plugin.inputs_json, "plugin inputs");
+    if (!base.empty()) relativize_paths(out, false, base, folder);
+    return out;
+}
+
 }  // namespace
 
 std::string format_jsim(const std::vector<model::Simulation>& simulations,
@@ -109,6 +170,7 @@ std::string format_jsim(const std::vector<model::Simulation>& simulations,
             if (!scene.offset.empty()) entry["offset"] = scene.offset;
             scenes.push_back(std::move(entry));
         }
+        const std::filesystem::path base = base_folder(simulation);
         OrderedJson plugins = OrderedJson::array();
         for (const model::Plugin& plugin : simulation.plugins) {
             OrderedJson entry = OrderedJson::object();
@@ -118,7 +180,7 @@ std::string format_jsim(const std::vector<model::Simulation>& simulations,
             } else if (plugin.basic_atmosphere) {
                 entry["inputs"] = atmosphere_inputs(plugin, folder);
             } else {
-                entry["inputs"] = parse_kept(plugin.inputs_json, "plugin inputs");
+                entry["inputs"] = other_inputs(plugin, base, folder);
             }
             plugins.push_back(std::move(entry));
         }

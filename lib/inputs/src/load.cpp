@@ -204,7 +204,15 @@ model::SimulationInputs load(const std::filesystem::path& simulation_file,
     model::SimulationInputs inputs;
     inputs.simulation = std::move(simulations.front());
     inputs.scene = read_simulation_scene(inputs.simulation, read, diagnostics);
-    if (options.atmosphere) {
+    if (options.atmosphere && options.atmosphere_override) {
+        inputs.atmosphere =
+            read_atmosphere_override(*options.atmosphere_override, read, diagnostics);
+        log.info("Atmosphere: --atmosphere " +
+                 (options.atmosphere_override->kind == AtmosphereOverride::Kind::file
+                      ? options.atmosphere_override->file.string()
+                      : std::string(model::to_string(inputs.atmosphere.kind))) +
+                 " (in place of the simulation's)");
+    } else if (options.atmosphere) {
         inputs.atmosphere = read_simulation_atmosphere(inputs.simulation, read, diagnostics, log);
     } else {
         inputs.atmosphere = default_atmosphere();

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "glint/core/text.h"
+#include "glint/dirsig/readers.h"
 #include "glint/dirsig/scene_reader.h"
 #include "glint/io/xml.h"
 #include "glint/yaml/atmosphere_reader.h"
@@ -79,6 +80,54 @@ model::Atmosphere default_atmosphere() {
     return atmosphere;
 }
 
+const model::Plugin* unsupported_atmosphere_plugin(const model::Simulation& simulation) {
+    for (const model::Plugin& plugin : simulation.plugins) {
+        if (dirsig::plugin_kind(plugin.name) == dirsig::PluginKind::atmosphere) return &plugin;
+    }
+    return nullptr;
+}
+
+std::string default_atmosphere_reason(const model::Simulation& simulation) {
+    if (const model::Plugin* plugin = unsupported_atmosphere_plugin(simulation)) {
+        return simulation.file + "'s " + plugin->name + " plugin is not supported";
+    }
+    return simulation.file + " names none";
+}
+
+AtmosphereOverride parse_atmosphere_override(const std::string& text) {
+    if (text.empty() || text == "-") {
+        throw usage_error("--atmosphere: expected none, parametric or an atmosphere file, got " +
+                          quote(text) + (text == "-" ? " (stdin cannot be an atmosphere)" : ""));
+    }
+    if (text == "none") return {AtmosphereOverride::Kind::none, {}};
+    if (text == "parametric") return {AtmosphereOverride::Kind::parametric, {}};
+    return {AtmosphereOverride::Kind::file, text};
+}
+
+model::Atmosphere read_atmosphere_override(const AtmosphereOverride& choice,
+                                           const ReadOptions& options, Diagnostics& diagnostics) {
+    model::Atmosphere atmosphere = default_atmosphere();
+    atmosphere.where = ErrorContext{"--atmosphere", 0, {}};
+    if (choice.kind == AtmosphereOverride::Kind::none) {
+        atmosphere.kind = model::AtmosphereKind::none;
+        return atmosphere;
+    }
+    if (choice.kind == AtmosphereOverride::Kind::parametric) return atmosphere;
+    model::FileRef ref;
+    ref.text = choice.file.string();
+    std::error_code ec;
+    ref.resolved = fs::absolute(choice.file, ec).lexically_normal();
+    if (ec) ref.resolved = choice.file;
+    ref.where = atmosphere.where;
+    if (!existing_file(ref, "atmosphere", diagnostics)) return atmosphere;
+    try {
+        return read_atmosphere(ref.resolved, options, diagnostics, ref.text);
+    } catch (const Error& error) {
+        diagnostics.add(error);
+    }
+    return atmosphere;
+}
+
 const model::Plugin* used_atmosphere_plugin(const model::Simulation& simulation,
                                             Diagnostics& diagnostics) {
     const model::Plugin* first = nullptr;
@@ -103,8 +152,11 @@ model::Atmosphere read_simulation_atmosphere(const model::Simulation& simulation
     fallback.where = ErrorContext{simulation.file, 0, {}};
     const model::Plugin* first = used_atmosphere_plugin(simulation, diagnostics);
     if (first == nullptr) {
-        log.debug(simulation.file + ": no BasicAtmosphere plugin: using the default atmosphere " +
-                  "(parametric, default parameters)");
+        const model::Plugin* unsupported = unsupported_atmosphere_plugin(simulation);
+        log.debug(simulation.file + ": no BasicAtmosphere plugin" +
+                  (unsupported ? " (its " + unsupported->name + " plugin is not supported)"
+                               : std::string()) +
+                  ": using the default atmosphere (parametric, default parameters)");
         return fallback;
     }
     const model::FileRef& ref = first->basic_atmosphere->atmosphere_file;

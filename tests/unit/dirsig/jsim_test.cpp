@@ -9,6 +9,7 @@
 #include <sys/resource.h>
 
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "glint/dirsig/readers.h"
@@ -466,6 +467,60 @@ TEST(FormatJsim, UnresolvedPathsAndOtherPluginsVerbatim) {
     bad.inputs_json = "{not json";
     broken.plugins.push_back(bad);
     EXPECT_THROW(format_jsim({broken}, "/tmp"), Error);
+}
+
+TEST(FormatJsim, OtherPluginsRelativePathsAreRewritten) {
+    TempDir dir;
+    std::filesystem::create_directories(dir / "in/sub");
+    std::filesystem::create_directories(dir / "out");
+    std::ofstream(dir / "in/sub/k.tls") << "kernel\n";
+    Diagnostics diagnostics;
+    std::vector<model::Simulation> sims = read_text(dir,
+                                                    R"([{"plugin_list": [
+  {"name": "SpiceEphemeris", "inputs": {"kernels": ["sub/k.tls", "absent.tls"],
+    "Weather_Filename": "w.wth", "table_files": ["a.txt", 3], "mode": "sub",
+    "abs_file": "/x/y.txt", "var_file": "$DATA/v.txt", "nested": {"lut_file": "l.bin"}}}
+]}])",
+                                                    diagnostics, "in/a.jsim");
+    ASSERT_EQ(sims.size(), 1u);
+    sims[0].file = (dir / "in/a.jsim").string();
+    const std::string text = format_jsim(sims, dir / "out");
+    const nlohmann::json inputs = nlohmann::json::parse(text)[0]["plugin_list"][0]["inputs"];
+    // An existing file, and the values of path keys (any case, arrays, nested objects).
+    EXPECT_EQ(inputs["kernels"][0], "../in/sub/k.tls");
+    EXPECT_EQ(inputs["kernels"][1], "absent.tls");  // not a path key, names no file
+    EXPECT_EQ(inputs["Weather_Filename"], "../in/w.wth");
+    EXPECT_EQ(inputs["table_files"][0], "../in/a.txt");
+    EXPECT_EQ(inputs["table_files"][1], 3);
+    EXPECT_EQ(inputs["nested"]["lut_file"], "../in/l.bin");
+    // Kept: other values, absolute paths, variables.
+    EXPECT_EQ(inputs["mode"], "sub");
+    EXPECT_EQ(inputs["abs_file"], "/x/y.txt");
+    EXPECT_EQ(inputs["var_file"], "$DATA/v.txt");
+
+    // Written back into the .jsim's own folder, the paths are as they were.
+    const nlohmann::json same =
+        nlohmann::json::parse(format_jsim(sims, dir / "in"))[0]["plugin_list"][0]["inputs"];
+    EXPECT_EQ(same["kernels"][0], "sub/k.tls");
+    EXPECT_EQ(same["Weather_Filename"], "w.wth");
+}
+
+TEST(JsimPlugins, KindsByNameAndWhatGlintDoesInstead) {
+    EXPECT_EQ(plugin_kind("BasicPlatform"), PluginKind::basic_platform);
+    EXPECT_EQ(plugin_kind("BasicAtmosphere"), PluginKind::basic_atmosphere);
+    EXPECT_EQ(plugin_kind("NewAtmosphere"), PluginKind::atmosphere);
+    EXPECT_EQ(plugin_kind("SpiceEphemeris"), PluginKind::ephemeris);
+    EXPECT_EQ(plugin_kind("ThermWeather"), PluginKind::thermal);
+    EXPECT_EQ(plugin_kind("TemperatureSolver"), PluginKind::thermal);
+    EXPECT_EQ(plugin_kind("Clouds"), PluginKind::other);
+    EXPECT_THAT(unsupported_plugin_fallback("NewAtmosphere", false),
+                HasSubstr("default parametric atmosphere"));
+    EXPECT_THAT(unsupported_plugin_fallback("NewAtmosphere", true),
+                HasSubstr("the BasicAtmosphere entry's atmosphere"));
+    EXPECT_THAT(unsupported_plugin_fallback("SpiceEphemeris", false), HasSubstr("sun and moon"));
+    EXPECT_THAT(unsupported_plugin_fallback("ThermWeather", false),
+                HasSubstr("material's own temperature"));
+    EXPECT_EQ(unsupported_plugin_fallback("Clouds", false), "it has no effect on the run");
 }
 
 /// Peak resident memory of this process so far, in MiB.

@@ -87,7 +87,13 @@ TEST(AtmosphereReader, UnsupportedAtmBlockIsAnErrorNamingIt) {
     (void)read_atmosphere(kDir / "classic.atm", {}, diagnostics, "classic.atm");
     const std::string text = first_error(diagnostics);
     EXPECT_NE(text.find("classic.atm:5:"), std::string::npos) << text;
-    EXPECT_NE(text.find("<classicradiativetransfer> is not supported"), std::string::npos) << text;
+    EXPECT_NE(text.find("atmosphere kind <classicradiativetransfer> (a MODTRAN-built "
+                        "atmosphere) is not supported"),
+              std::string::npos)
+        << text;
+    // The way forward: the render option that replaces the atmosphere.
+    EXPECT_NE(text.find("glint-render --atmosphere none|parametric|FILE"), std::string::npos)
+        << text;
 }
 
 TEST(AtmosphereReader, YamlSyntaxErrorHasLine) {

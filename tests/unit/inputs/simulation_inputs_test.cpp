@@ -122,6 +122,78 @@ TEST(SimulationAtmosphere, DefaultsToParametricWithADebugMessageOnly) {
     EXPECT_EQ(d.parametric.angstrom_exponent, defaults.angstrom_exponent);
 }
 
+TEST(SimulationAtmosphere, AnAtmospherePluginGlintDoesNotRunIsNamedAsTheReason) {
+    model::Simulation simulation;
+    simulation.file = "plain.jsim";
+    EXPECT_EQ(default_atmosphere_reason(simulation), "plain.jsim names none");
+    EXPECT_EQ(unsupported_atmosphere_plugin(simulation), nullptr);
+    model::Plugin ephemeris;
+    ephemeris.name = "SpiceEphemeris";
+    model::Plugin atmosphere;
+    atmosphere.name = "NewAtmosphere";
+    simulation.plugins = {ephemeris, atmosphere};
+    EXPECT_EQ(unsupported_atmosphere_plugin(simulation), &simulation.plugins[1]);
+    EXPECT_EQ(default_atmosphere_reason(simulation),
+              "plain.jsim's NewAtmosphere plugin is not supported");
+
+    std::vector<std::string> messages;
+    const Log log(
+        [&messages](LogLevel, const std::string& message) { messages.push_back(message); },
+        LogLevel::debug);
+    Diagnostics diagnostics;
+    EXPECT_EQ(read_simulation_atmosphere(simulation, {}, diagnostics, log).kind,
+              model::AtmosphereKind::parametric);
+    ASSERT_EQ(messages.size(), 1u);
+    EXPECT_THAT(messages[0], HasSubstr("plain.jsim: no BasicAtmosphere plugin (its NewAtmosphere "
+                                       "plugin is not supported): using the default atmosphere"));
+}
+
+TEST(AtmosphereOverride, ParsesNoneParametricAndFiles) {
+    EXPECT_EQ(parse_atmosphere_override("none").kind, AtmosphereOverride::Kind::none);
+    EXPECT_EQ(parse_atmosphere_override("parametric").kind, AtmosphereOverride::Kind::parametric);
+    const AtmosphereOverride file = parse_atmosphere_override("./none");
+    EXPECT_EQ(file.kind, AtmosphereOverride::Kind::file);
+    EXPECT_EQ(file.file, fs::path("./none"));
+    for (const char* bad : {"", "-"}) {
+        try {
+            (void)parse_atmosphere_override(bad);
+            ADD_FAILURE() << "accepted " << bad;
+        } catch (const Error& error) {
+            EXPECT_EQ(error.category(), ErrorCategory::usage);
+            EXPECT_THAT(error.message(), HasSubstr("--atmosphere: expected none, parametric or an "
+                                                   "atmosphere file"));
+        }
+    }
+}
+
+TEST(AtmosphereOverride, GivesNoneTheDefaultOrTheFile) {
+    Diagnostics diagnostics;
+    const model::Atmosphere none =
+        read_atmosphere_override({AtmosphereOverride::Kind::none, {}}, {}, diagnostics);
+    EXPECT_EQ(none.kind, model::AtmosphereKind::none);
+    const model::Atmosphere parametric =
+        read_atmosphere_override({AtmosphereOverride::Kind::parametric, {}}, {}, diagnostics);
+    EXPECT_EQ(parametric.kind, model::AtmosphereKind::parametric);
+    EXPECT_EQ(parametric.parametric.aerosol_optical_depth_550,
+              model::ParametricAtmosphere{}.aerosol_optical_depth_550);
+    EXPECT_TRUE(diagnostics.items().empty()) << diagnostics_text(diagnostics);
+
+    TempDir dir;
+    write(dir / "clear.yaml", "model: parametric\naerosol_optical_depth_550: 0.3\n");
+    const model::Atmosphere file = read_atmosphere_override(
+        {AtmosphereOverride::Kind::file, dir / "clear.yaml"}, {}, diagnostics);
+    EXPECT_TRUE(diagnostics.items().empty()) << diagnostics_text(diagnostics);
+    EXPECT_EQ(file.kind, model::AtmosphereKind::parametric);
+    EXPECT_EQ(file.parametric.aerosol_optical_depth_550, 0.3);
+
+    (void)read_atmosphere_override({AtmosphereOverride::Kind::file, dir / "nothere.yaml"}, {},
+                                   diagnostics);
+    const Diagnostic missing = only_error(diagnostics);
+    EXPECT_EQ(missing.where.file, "--atmosphere");
+    EXPECT_EQ(missing.message,
+              "atmosphere file does not exist: " + (dir / "nothere.yaml").string());
+}
+
 TEST(SimulationAtmosphere, MissingFileIsAnErrorAtItsKey) {
     TempDir dir;
     model::Simulation simulation;

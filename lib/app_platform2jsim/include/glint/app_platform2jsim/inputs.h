@@ -78,8 +78,10 @@ const model::Platform* load_platform_file(const std::filesystem::path& file, Loa
 /// their Abundance targets (a material the scene does not have, a tag no instance carries).
 void check_truth_targets(LoadedInputs& inputs);
 
-/// What --check does with one file: by extension, `.platform` or `.tasks` alone, anything
-/// else as a simulation with load_references(contents).
+/// What --check does with one file, by extension (any case): alone, as a render reads it —
+/// `.platform` (and the files it names), `.tasks`, `.ppd`/`.motion` (and their PSD tables),
+/// `.scene` (with its `.mat`, `.glist`s, OBJ and curve files), `.atm`, `.mat` (with its curve
+/// files); anything else as a simulation with load_references(contents).
 void check_file(const std::filesystem::path& file, LoadedInputs& inputs,
                 const dirsig::ReadOptions& options);
 

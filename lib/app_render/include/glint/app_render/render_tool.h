@@ -24,6 +24,9 @@ struct Options {
     bool radiance_only = false;      ///< stop at radiance (the detector stage is [G]'s)
     sensor::RenderOptions render;    ///< everything else
     dirsig::ReadOptions read;        ///< how the input files are resolved
+    /// --atmosphere none|parametric|FILE: replaces the simulation's atmosphere (whose file is
+    /// then not read); empty: the simulation's
+    std::string atmosphere;
 };
 
 /// Parses --convergence's "min,max,threshold" (threshold in W/(cm² sr µm)). Throws

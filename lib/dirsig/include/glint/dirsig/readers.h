@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "glint/core/diagnostics.h"
@@ -36,10 +37,24 @@ std::vector<model::Simulation> read_simulation(const std::filesystem::path& file
                                                const ReadOptions& options,
                                                Diagnostics& diagnostics);
 
-/// Formats simulations as `.jsim` JSON (2-space indent, DIRSIG5 key names, plugin order kept,
-/// other plugins verbatim). File paths are written relative to `output_folder` when they
-/// resolve inside or beside it (relative with `..`), absolute otherwise; Windows paths as
-/// written.
+/// What a `.jsim` plugin is, told by its name: the two glint runs, and for the others
+/// (kept, not run) the kind their name says ("NewAtmosphere", "SpiceEphemeris",
+/// "ThermWeather": "atmosphere", "ephemeris", "weather"/"therm"/"temperature", any case).
+enum class PluginKind { basic_platform, basic_atmosphere, atmosphere, ephemeris, thermal, other };
+PluginKind plugin_kind(std::string_view name);
+
+/// What glint does in place of the plugin `name` it does not run, as a clause for a message
+/// ("glint uses its default parametric atmosphere (...)"); `has_basic_atmosphere`: the
+/// simulation has a BasicAtmosphere entry, whose atmosphere is used.
+std::string unsupported_plugin_fallback(std::string_view name, bool has_basic_atmosphere);
+
+/// Formats simulations as `.jsim` JSON (2-space indent, DIRSIG5 key names, plugin order kept).
+/// File paths are written relative to `output_folder` when they resolve inside or beside it
+/// (relative with `..`), absolute otherwise; Windows paths as written. Other plugins' inputs
+/// are written as read except their relative paths, rewritten likewise from the folder of
+/// Simulation::file: the values of keys ending in "filename", "filenames", "_file" or
+/// "_files" (any case, at any depth, array elements too) and any other string naming an
+/// existing file from that folder. Absolute paths and paths with variables are kept.
 std::string format_jsim(const std::vector<model::Simulation>& simulations,
                         const std::filesystem::path& output_folder);
 

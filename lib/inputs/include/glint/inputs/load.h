@@ -14,6 +14,7 @@
 #include "glint/core/diagnostics.h"
 #include "glint/core/log.h"
 #include "glint/dirsig/read_options.h"
+#include "glint/inputs/simulation_inputs.h"
 #include "glint/model/inputs.h"
 
 namespace glint::inputs {
@@ -26,6 +27,9 @@ struct LoadOptions {
     /// False: the atmosphere file is not read and the default atmosphere is returned (tools
     /// that need no radiometry, such as glint-schedule).
     bool atmosphere = true;
+    /// Set: this atmosphere replaces the simulation's, whose BasicAtmosphere file is then
+    /// not read (glint-render --atmosphere).
+    std::optional<AtmosphereOverride> atmosphere_override;
 };
 
 /// Reads `simulation_file` (a `.jsim` holding one simulation, or a `.sim`) and everything it

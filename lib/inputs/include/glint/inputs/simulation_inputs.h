@@ -48,6 +48,36 @@ model::Atmosphere read_atmosphere(const std::filesystem::path& path, const ReadO
 /// (glint/model/atmosphere.h), used when a simulation names no atmosphere.
 model::Atmosphere default_atmosphere();
 
+/// The first plugin of `simulation` that glint does not run and whose name says atmosphere
+/// (dirsig::plugin_kind: "NewAtmosphere"); nullptr when there is none.
+const model::Plugin* unsupported_atmosphere_plugin(const model::Simulation& simulation);
+
+/// Why `simulation` gets the default atmosphere, for a message: "demo.jsim names none", or,
+/// when it has a plugin glint does not run whose name says atmosphere, "demo.jsim's
+/// NewAtmosphere plugin is not supported".
+std::string default_atmosphere_reason(const model::Simulation& simulation);
+
+/// An atmosphere given in place of the simulation's (glint-render --atmosphere).
+struct AtmosphereOverride {
+    enum class Kind {
+        none,        ///< model none: exo-atmospheric sun, black sky
+        parametric,  ///< default_atmosphere()
+        file,        ///< an atmosphere file (read_atmosphere), relative to the working folder
+    };
+    Kind kind = Kind::parametric;
+    std::filesystem::path file;  ///< Kind::file
+};
+
+/// Parses --atmosphere's value: "none", "parametric" or an atmosphere file (a file named
+/// "none" or "parametric" is written "./none"). Throws glint::Error (usage) for "" and "-".
+AtmosphereOverride parse_atmosphere_override(const std::string& text);
+
+/// The atmosphere `choice` gives: model none, the default, or its file read with
+/// read_atmosphere. A file that does not exist or is a folder is an error at "--atmosphere";
+/// its problems go to `diagnostics` at their file:line; on error the default is returned.
+model::Atmosphere read_atmosphere_override(const AtmosphereOverride& choice,
+                                           const ReadOptions& options, Diagnostics& diagnostics);
+
 /// The BasicAtmosphere plugin whose file `simulation` uses: the first one; each further one
 /// is a warning at its plugin entry (it is ignored). nullptr when there is none.
 const model::Plugin* used_atmosphere_plugin(const model::Simulation& simulation,
