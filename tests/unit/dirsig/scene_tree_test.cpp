@@ -183,6 +183,55 @@ TEST(DirsigSceneTree, GlistIncludeFoundThroughObjectDirectory) {
     EXPECT_EQ(f.scene.objects.size(), 1u);
 }
 
+TEST(DirsigSceneTree, LocalIncludeIsBesideTheScene) {
+    Folder f;
+    write(f.dir / "lists/a.glist",
+          "<geometrylist><object><basegeometry><groundplane><matid>terrain</matid>"
+          "</groundplane></basegeometry><staticinstance/></object></geometrylist>\n");
+    // geometry/lists/a.glist (empty) is what the default finds; local takes lists/a.glist.
+    TempDir& dir = f.dir;
+    write(dir / "s.scene",
+          "<classicscene>\n<gdbdirectory>$SCENE_DIR/geometry</gdbdirectory>\n<geometrylist>\n"
+          "<geometrylistinclude search_paths=\"local\">lists/a.glist</geometrylistinclude>\n"
+          "</geometrylist>\n<matfilename>" +
+              (kTree / "materials/tree.mat").string() + "</matfilename>\n</classicscene>\n");
+    write(dir / "geometry/lists/a.glist", "<geometrylist/>\n");
+    const model::Scene scene = read_dirsig_scene(dir / "s.scene", {}, f.diagnostics);
+    EXPECT_FALSE(f.diagnostics.has_errors()) << diagnostics_text(f.diagnostics);
+    EXPECT_EQ(scene.objects.size(), 1u);
+}
+
+TEST(DirsigSceneTree, MirroredPartOfAMovingGlistKeepsItsFrontOutside) {
+    Folder f;
+    write(f.dir / "geometry/lists/m.obj", kTriangle);
+    write(f.dir / "geometry/lists/inner.glist",
+          "<geometrylist><object search_paths=\"local\"><basegeometry><obj>"
+          "<filename>m.obj</filename><matid>terrain</matid></obj></basegeometry>"
+          "<staticinstance name=\"part\"><scale><cartesiantriple><x>-1</x><y>1</y><z>1</z>"
+          "</cartesiantriple></scale></staticinstance></object></geometrylist>\n");
+    f.run(
+        "<geometrylist>\n<object search_paths=\"local\">\n<basegeometry><glist>"
+        "<filename>inner.glist</filename></glist></basegeometry>\n"
+        "<dynamicinstance><motion type=\"flexible\"><locationengine type=\"fixed\">"
+        "<location frame=\"scene\"><x>0</x><y>0</y><z>0</z></location></locationengine>"
+        "<orientationengine type=\"velocity\"/></motion></dynamicinstance>\n</object>\n"
+        "</geometrylist>\n");
+    ASSERT_FALSE(f.diagnostics.has_errors()) << diagnostics_text(f.diagnostics);
+    ASSERT_EQ(f.scene.instances.size(), 1u);
+    const model::Instance& part = f.scene.instances[0];
+    EXPECT_TRUE(part.dynamic());
+    ASSERT_EQ(part.object_index, 1u);  // the baked copy of object 0
+    const model::Mesh& mesh = f.scene.objects[1].mesh;
+    EXPECT_FLOAT_EQ(mesh.vertices_m[1][0], -1.0f);
+    // (v1 - v0) × (v2 - v0) still points +z, as the unmirrored triangle's does.
+    const auto& t = mesh.triangles[0];
+    const auto& a = mesh.vertices_m[t[0]];
+    const auto& b = mesh.vertices_m[t[1]];
+    const auto& c = mesh.vertices_m[t[2]];
+    const float nz = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    EXPECT_GT(nz, 0.0f);
+}
+
 TEST(DirsigSceneTreeErrors, MissingObjNamesTheElementAndLine) {
     Folder f;
     f.run(
