@@ -117,16 +117,19 @@ void place_nested(const model::FileRef& ref, const std::vector<model::Instance>&
         read_glist_file(ref.resolved, options, sub, diagnostics, load, scopes);
         scene.materials = std::move(sub.materials);
         scene.objects = std::move(sub.objects);
-        cached =
-            load.nested
-                .emplace(std::make_pair(path, scope_key), NestedGlist{std::move(sub.instances)})
-                .first;
+        cached = load.nested
+                     .emplace(std::make_pair(path, scope_key),
+                              NestedGlist{std::move(sub.instances), std::move(sub.point_sources)})
+                     .first;
     }
     const std::vector<model::Instance>& inner_instances = cached->second.instances;
-    // Count before building: every including instance places every instance of the glist.
-    const std::uint64_t adding = static_cast<std::uint64_t>(outer.size()) *
-                                 static_cast<std::uint64_t>(inner_instances.size());
-    const std::uint64_t total = static_cast<std::uint64_t>(scene.instances.size()) + adding;
+    // Count before building: every including instance places every instance (and point
+    // source) of the glist.
+    const std::uint64_t adding =
+        static_cast<std::uint64_t>(outer.size()) *
+        static_cast<std::uint64_t>(inner_instances.size() + cached->second.sources.size());
+    const std::uint64_t total = static_cast<std::uint64_t>(scene.instances.size()) +
+                                static_cast<std::uint64_t>(scene.point_sources.size()) + adding;
     if (total > options.max_instances) {
         diagnostics.error(ref.where,
                           "glist " + ref.text + " (" + std::to_string(inner_instances.size()) +
@@ -175,6 +178,7 @@ void place_nested(const model::FileRef& ref, const std::vector<model::Instance>&
             scene.instances.push_back(std::move(in));
         }
     }
+    place_nested_sources(cached->second.sources, outer, scene, diagnostics);
 }
 
 }  // namespace glint::dirsig::detail

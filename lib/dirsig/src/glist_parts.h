@@ -3,7 +3,8 @@
 // glists (geometry database directories, nested glists and local material files read once,
 // warnings given once), path search through the database directories (scene_search.cpp),
 // the material scopes of `localmaterials` and `assign` (glist_materials.cpp), nested glist
-// placement (glist_nested.cpp) and the per-file element reader (glist_reader.cpp).
+// placement (glist_nested.cpp), point sources (glist_sources.cpp) and the per-file element
+// reader (glist_reader.cpp).
 #pragma once
 
 #include <array>
@@ -32,6 +33,7 @@ using Matrix4 = std::array<double, 16>;
 /// instance that includes it, so a glist named by ten objects is parsed once.
 struct NestedGlist {
     std::vector<model::Instance> instances;
+    std::vector<model::PointSource> sources;  ///< positions in the glist's frame
 };
 
 /// A material of a `localmaterials` file: its id and name as written (the copy appended to
@@ -138,5 +140,19 @@ bool is_identity(const Matrix4& m);
 void place_nested(const model::FileRef& ref, const std::vector<model::Instance>& outer,
                   const ReadOptions& options, model::Scene& scene, SceneLoad& load,
                   const std::vector<MaterialScope>& scopes, Diagnostics& diagnostics);
+
+/// Reads an object's `<basesource>` (one `<pointsource matid="…">`, its material a point
+/// source within `within`): one model::PointSource per instance of `instances`, appended to
+/// scene.point_sources.
+void read_base_source(const io::XmlNode& base, const std::string& object_name,
+                      const std::vector<model::Instance>& instances,
+                      const std::vector<MaterialScope>& within, model::Scene& scene,
+                      const SceneLoad& load, Diagnostics& diagnostics);
+
+/// Places a nested glist's point sources `inner` once per instance of `outer`, as
+/// place_nested places its instances.
+void place_nested_sources(const std::vector<model::PointSource>& inner,
+                          const std::vector<model::Instance>& outer, model::Scene& scene,
+                          Diagnostics& diagnostics);
 
 }  // namespace glint::dirsig::detail

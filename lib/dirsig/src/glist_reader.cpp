@@ -3,12 +3,14 @@
 // `basegeometry` (obj, glist, box, sphere, groundplane, disk, cylinder), static instances
 // (translation, rotation, scale or a 16-value matrix), dynamic instances (generic motion
 // from a .ppd/.motion file or inline flexible motion), tags, `search_paths`, and the
-// `localmaterials`/`assign` material scopes (glist_materials.cpp). Nested glists are
-// flattened by glist_nested.cpp. GDB/ODB geometry is an error.
+// `localmaterials`/`assign` material scopes (glist_materials.cpp) and `basesource` point
+// sources (glist_sources.cpp). Nested glists are flattened by glist_nested.cpp. GDB/ODB
+// geometry is an error.
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <numbers>
+#include <set>
 
 #include "glint/core/text.h"
 #include "glint/dirsig/motion_reader.h"
@@ -188,6 +190,21 @@ struct GlistReader {
         return in;
     }
 
+    /// An error for each point-source material `object`'s surfaces use: a source has no
+    /// surface to render.
+    void refuse_source_surfaces(const model::GeometryObject& object) {
+        std::set<std::uint32_t> seen;
+        for (const std::uint32_t m : object.mesh.triangle_materials) {
+            if (m >= scene.materials.size() || !scene.materials[m].point_source) continue;
+            if (!seen.insert(m).second) continue;
+            diagnostics.error(object.where, "object \"" + object.name +
+                                                "\" uses point-source material \"" +
+                                                scene.materials[m].id +
+                                                "\" on a surface; only a <pointsource> may "
+                                                "name it");
+        }
+    }
+
     void read_object(const io::XmlNode& node);
     void read_obj(const io::XmlNode& g, const model::FileRef& ref,
                   const std::vector<MaterialScope>& within, model::GeometryObject& object);
@@ -243,8 +260,8 @@ void GlistReader::read_obj(const io::XmlNode& g, const model::FileRef& ref,
 
 void GlistReader::read_object(const io::XmlNode& node) {
     if (node.attribute_bool("enabled", diagnostics) == false) return;
-    node.warn_unknown_children({"basegeometry", "staticinstance", "dynamicinstance", "tags",
-                                "localmaterials", "assign", "name"},
+    node.warn_unknown_children({"basegeometry", "basesource", "staticinstance",
+                                "dynamicinstance", "tags", "localmaterials", "assign", "name"},
                                diagnostics);
     const bool local = search_paths_local(node, diagnostics);
     model::GeometryObject object;
@@ -270,8 +287,17 @@ void GlistReader::read_object(const io::XmlNode& node) {
                                          diagnostics)) {
         within.push_back(std::move(*scope));
     }
+    if (const auto source = node.child("basesource")) {
+        if (base) {
+            diagnostics.error(source->where(), "give either <basegeometry> or <basesource>");
+            return;
+        }
+        read_base_source(*source, object.name, instances, within, scene, load, diagnostics);
+        return;
+    }
     if (!base) {
-        diagnostics.error(node.where(), "missing required element <basegeometry>");
+        diagnostics.error(node.where(), "missing required element <basegeometry> (or "
+                                        "<basesource>)");
         return;
     }
     const auto kids = base->children();
@@ -357,6 +383,7 @@ void GlistReader::read_object(const io::XmlNode& node) {
             mesh::validate_mesh(object.mesh, scene.materials.size(), g.where(), diagnostics);
         }
     }
+    refuse_source_surfaces(object);
     const std::size_t object_index = scene.objects.size();
     for (model::Instance& in : instances) {
         in.object_index = object_index;

@@ -6,6 +6,7 @@
 #include "mat_curves.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdio>
 #include <optional>
@@ -80,7 +81,7 @@ struct Parser {
     ErrorContext at(int line) const { return {source.file, line, source.element}; }
 
     /// The two numbers of `row`; an error (and nothing) when it is not two numbers, or when
-    /// the value lies outside [0, 1].
+    /// the value lies outside [0, source.max_value].
     std::optional<std::pair<double, double>> numbers(const Row& row, const char* x_name) {
         if (row.columns.size() != 2) {
             diagnostics.error(at(row.line), "expected 2 columns (" + std::string(x_name) +
@@ -95,9 +96,13 @@ struct Parser {
                                                 "\" and \"" + row.columns[1] + "\"");
             return std::nullopt;
         }
-        if (!(*v >= 0.0 && *v <= 1.0)) {
+        if (!(*v >= 0.0 && *v <= source.max_value && std::isfinite(*v))) {
+            const bool bounded = std::isfinite(source.max_value);
             diagnostics.error(at(row.line),
-                              source.quantity + " " + format_shortest(*v) + " is outside [0, 1]");
+                              source.quantity + " " + format_shortest(*v) +
+                                  (bounded ? " is outside [0, " + format_shortest(source.max_value) +
+                                                 "]"
+                                           : " is not a finite number >= 0"));
             return std::nullopt;
         }
         return std::make_pair(*x, *v);

@@ -17,10 +17,14 @@ namespace glint::dirsig::detail {
 struct CurveSource {
     std::string file;      ///< display name of the curve file
     std::string element;   ///< the `.mat` key path naming it
-    std::string quantity;  ///< "reflectance" or "emissivity"
+    std::string quantity;  ///< "reflectance", "emissivity" or "intensity"
+    /// The largest value accepted: 1 for reflectance and emissivity, infinity for a source's
+    /// intensity (W/(sr µm)). Values below 0 are always refused.
+    double max_value = 1.0;
 };
 
-/// Parses `text` into `table`'s wavelengths and values (increasing µm, values in [0, 1]).
+/// Parses `text` into `table`'s wavelengths and values (increasing µm, values in
+/// [0, source.max_value]).
 /// Each problem goes to `diagnostics` at the curve file's line; a text in neither layout is
 /// one error. An empty table on return means nothing usable was read (always reported).
 void parse_curve_text(const std::string& text, const CurveSource& source,

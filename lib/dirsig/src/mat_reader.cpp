@@ -6,6 +6,7 @@
 // the exact layout.
 #include <algorithm>
 #include <cctype>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -170,9 +171,10 @@ struct MatReader {
         }
     }
 
-    /// Reads a curve file: two columns (wavelength µm, value in [0, 1]) or a classic .ems.
+    /// Reads a curve file: two columns (wavelength µm, value in [0, max_value]) or a classic
+    /// .ems.
     model::SpectralTable read_curve(const MatEntry& entry, const std::string& path,
-                                    const std::string& quantity) {
+                                    const std::string& quantity, double max_value = 1.0) {
         model::SpectralTable table;
         table.where = at(entry.line, path);
         table.file = options.paths.resolve(entry.value, base_dir, table.where, diagnostics);
@@ -185,8 +187,8 @@ struct MatReader {
             diagnostics.add(error.with_file(file, entry.line));
             return table;
         }
-        detail::parse_curve_text(text, detail::CurveSource{name, path, quantity}, table,
-                                 diagnostics);
+        detail::parse_curve_text(text, detail::CurveSource{name, path, quantity, max_value},
+                                 table, diagnostics);
         return table;
     }
 
@@ -231,6 +233,40 @@ struct MatReader {
         m.emissivity_is_default = false;
     }
 
+    /// An `OPTICAL_DESCRIPTION = SOURCE` material: the spectral radiant intensity of the
+    /// `INTENSITY_FILENAME` file (wavelength µm, W/(sr µm)) for the point sources naming it;
+    /// black surfaces, since no surface may use it.
+    void read_source(const MatBlock& block, const std::string& path, model::Material& m) {
+        m.point_source = true;
+        for (model::SpectralTable* table : {&m.reflectance, &m.emissivity}) {
+            table->wavelengths_um = {0.1, 100.0};
+            table->values = {0.0, 0.0};
+            table->where = m.where;
+        }
+        m.emissivity_is_default = false;
+        if (const MatBlock* surface = block.find_block("SURFACE_PROPERTIES")) {
+            diagnostics.warning(at(surface->line, path + "/SURFACE_PROPERTIES"),
+                                "SURFACE_PROPERTIES of point-source material \"" + m.name +
+                                    "\" are not read: a source has no surface");
+        }
+        const MatEntry* file = block.find("INTENSITY_FILENAME");
+        if (!file || file->value.empty()) {
+            diagnostics.error(m.where, "point-source material \"" + m.name +
+                                           "\" (OPTICAL_DESCRIPTION = SOURCE) needs "
+                                           "INTENSITY_FILENAME (wavelength um, W/(sr um))");
+            return;
+        }
+        // DIRSIG does not document the file's units; glint reads it as its curve files.
+        diagnostics.warning(at(file->line, path + "/INTENSITY_FILENAME"),
+                            "point-source material \"" + m.name +
+                                "\": INTENSITY_FILENAME read as wavelength (um) and spectral "
+                                "intensity (W/(sr um)) columns, an isotropic source "
+                                "(glint's reading)");
+        m.intensity_w_per_sr_um =
+            read_curve(*file, path + "/INTENSITY_FILENAME", "intensity",
+                       std::numeric_limits<double>::infinity());
+    }
+
     model::Material read_entry(const MatBlock& block, std::size_t index) {
         model::Material m;
         const MatEntry* id = block.find("ID");
@@ -243,13 +279,28 @@ struct MatReader {
         m.name = name && !name->value.empty() ? name->value : m.id;
         warn_unknown(block, path,
                      {"ID", "NAME", "EDITOR_COLOR", "DOUBLE_SIDED", "RAD_SOLVER_NAME",
-                      "TEMP_SOLVER_NAME", "TEMPERATURE", "BUNDLE_FILENAME"},
+                      "TEMP_SOLVER_NAME", "TEMPERATURE", "BUNDLE_FILENAME", "OPTICAL_DESCRIPTION",
+                      "INTENSITY_FILENAME"},
                      {"SURFACE_PROPERTIES", "RAD_SOLVER", "TEMP_SOLVER"});
         if (const MatEntry* bundle = block.find("BUNDLE_FILENAME")) {
             diagnostics.error(at(bundle->line, path + "/BUNDLE_FILENAME"),
                               "material bundles (" + bundle->value +
                                   ") are not supported; give SURFACE_PROPERTIES curve files");
             return m;
+        }
+        if (const MatEntry* optical = block.find("OPTICAL_DESCRIPTION")) {
+            if (to_upper(optical->value) == "SOURCE") {
+                read_source(block, path, m);
+                return m;
+            }
+            diagnostics.warning(at(optical->line, path + "/OPTICAL_DESCRIPTION"),
+                                "OPTICAL_DESCRIPTION \"" + optical->value + "\" of material \"" +
+                                    m.name + "\" is not SOURCE: read as a surface material");
+        }
+        if (const MatEntry* file = block.find("INTENSITY_FILENAME")) {
+            diagnostics.warning(at(file->line, path + "/INTENSITY_FILENAME"),
+                                "INTENSITY_FILENAME is read only with OPTICAL_DESCRIPTION = "
+                                "SOURCE; ignored");
         }
         const MatEntry* null_solver = nullptr;
         if (const MatEntry* solver = block.find("RAD_SOLVER_NAME")) {

@@ -219,6 +219,10 @@ void merge_scene(model::Scene& scene, model::Scene part, Diagnostics& diagnostic
         instance.object_index += object_offset;
         scene.instances.push_back(std::move(instance));
     }
+    for (model::PointSource& source : part.point_sources) {
+        if (source.material < index_of.size()) source.material = index_of[source.material];
+        scene.point_sources.push_back(std::move(source));
+    }
 }
 
 void check_scene_offset(const model::SceneEntry& entry, Diagnostics& diagnostics) {

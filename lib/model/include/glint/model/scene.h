@@ -115,6 +115,11 @@ struct Material {
     SpectralTable emissivity;
     bool emissivity_is_default = true;
     double temperature_k = kDefaultTemperature_k;
+    /// A point-source material (a DIRSIG `.mat` entry with `OPTICAL_DESCRIPTION = SOURCE`):
+    /// only a PointSource may name it; its surface curves are black (ρ = 0, ε = 0).
+    bool point_source = false;
+    /// A point-source material's spectral radiant intensity, W/(sr µm); 0 beyond its ends.
+    SpectralTable intensity_w_per_sr_um;
     ErrorContext where;
 };
 
@@ -182,6 +187,20 @@ struct Instance {
     bool dynamic() const { return motion != nullptr; }
 };
 
+/// A point source (a DIRSIG glist `<basesource><pointsource>`): an isotropic emitter of its
+/// material's spectral intensity. A static source sits at `position_m` in scene coordinates;
+/// a moving one at `position_m` in the frame its `motion` moves (vehicle coordinates).
+struct PointSource {
+    std::string name;
+    std::uint32_t material = 0;  ///< into Scene::materials, a point_source material
+    std::array<double, 3> position_m{};
+    std::shared_ptr<const PlatformMotion> motion;  ///< none: static
+    FileRef motion_file;                           ///< empty for static and inline motion
+    ErrorContext where;
+
+    bool dynamic() const { return motion != nullptr; }
+};
+
 /// A whole scene.
 struct Scene {
     std::string file;  ///< as named to the reader
@@ -189,6 +208,7 @@ struct Scene {
     std::vector<Material> materials;
     std::vector<GeometryObject> objects;
     std::vector<Instance> instances;
+    std::vector<PointSource> point_sources;
 };
 
 /// A grey material of constant `reflectance` over 0.1–100 µm, at `temperature_k`, with
