@@ -18,6 +18,22 @@ Vec3 static_origin(const model::StaticTransform& transform) {
     return to_vec3(transform.translation_m);
 }
 
+/// The trajectory of a scene element's motion, nullptr when it has none; a motion error
+/// without a place is placed at the element.
+template <class Element>
+std::unique_ptr<Trajectory> trajectory_of(const Element& element, const char* kind,
+                                          const SceneFrame& frame, const DateTime& reference_utc,
+                                          Log log) {
+    if (!element.dynamic()) return nullptr;
+    try {
+        return make_trajectory(*element.motion, frame, reference_utc, log);
+    } catch (const Error& e) {
+        if (!e.context().file.empty() || e.category() != ErrorCategory::input) throw;
+        throw input_error(std::string(kind) + " \"" + element.name + "\": " + e.message(),
+                          element.where);
+    }
+}
+
 }  // namespace
 
 std::vector<std::unique_ptr<Trajectory>> make_instance_trajectories(const model::Scene& scene,
@@ -27,18 +43,27 @@ std::vector<std::unique_ptr<Trajectory>> make_instance_trajectories(const model:
     std::vector<std::unique_ptr<Trajectory>> out;
     out.reserve(scene.instances.size());
     for (const model::Instance& instance : scene.instances) {
-        if (!instance.dynamic()) {
-            out.emplace_back();
-            continue;
-        }
-        try {
-            out.push_back(make_trajectory(*instance.motion, frame, reference_utc, log));
-        } catch (const Error& e) {
-            if (!e.context().file.empty() || e.category() != ErrorCategory::input) throw;
-            throw input_error("instance \"" + instance.name + "\": " + e.message(), instance.where);
-        }
+        out.push_back(trajectory_of(instance, "instance", frame, reference_utc, log));
     }
     return out;
+}
+
+std::vector<std::unique_ptr<Trajectory>> make_point_source_trajectories(
+    const model::Scene& scene, const SceneFrame& frame, const DateTime& reference_utc, Log log) {
+    std::vector<std::unique_ptr<Trajectory>> out;
+    out.reserve(scene.point_sources.size());
+    for (const model::PointSource& source : scene.point_sources) {
+        out.push_back(trajectory_of(source, "point source", frame, reference_utc, log));
+    }
+    return out;
+}
+
+Vec3 point_source_position_m(const model::PointSource& source, const Trajectory* trajectory,
+                             double t_s) {
+    const Vec3 local = to_vec3(source.position_m);
+    if (trajectory == nullptr) return local;
+    const Pose pose = trajectory->pose_at(t_s);
+    return pose.position_m + rotate(normalized(pose.orientation), local);
 }
 
 SceneTargets::SceneTargets(const model::Scene& scene, const SceneFrame& frame,

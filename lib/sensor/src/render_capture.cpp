@@ -138,10 +138,13 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
     const TruthContext truth_context{
         &in.scene,    &state.materials,     &in.frame,
         &state.units, state.reference_band, state.mask ? state.mask->mean_sensitivity() : 1.0};
+    // Point sources sit where they are at mid-window (docs/physics.md, "Point sources").
+    const radiometry::PointLights lights =
+        point_lights_at(in, state.grid, 0.5 * (capture.t0_s + capture.t1_s));
     CaptureReport stats;
     for (const SpectralState& spectral : state.spectral_states) {
         const radiometry::PathTracer tracer(geometry, state.materials, environment, options.tracer,
-                                            spectral.bands);
+                                            spectral.bands, lights.empty() ? nullptr : &lights);
         batch.key.spectral_state = spectral.channel;
         batch.reference_band = spectral.reference_band - spectral.bands.first;
         std::optional<TruthObserver> observer;

@@ -6,6 +6,7 @@
 
 #include "glint/core/diagnostics.h"
 #include "glint/core/error.h"
+#include "glint/motion/scene_instances.h"
 #include "glint/scene/geometry_scene.h"
 #include "render_parts.h"
 
@@ -31,6 +32,12 @@ void build_all(RenderInputs& in, model::SimulationInputs loaded, const RenderOpt
                                    : in.schedule->plugins().front().tasks.reference;
     in.trajectories =
         motion::make_instance_trajectories(in.scene, in.frame, reference, context.log);
+    in.source_trajectories =
+        motion::make_point_source_trajectories(in.scene, in.frame, reference, context.log);
+    if (const std::size_t n = in.scene.point_sources.size(); n > 0) {
+        context.log.info("Point sources = " + std::to_string(n) +
+                         " (lit by next-event estimation, at mid-window in each capture)");
+    }
     for (const model::Instance& instance : in.scene.instances) {
         in.dynamic_scene = in.dynamic_scene || instance.dynamic();
     }

@@ -23,6 +23,7 @@
 #include "glint/motion/trajectory.h"
 #include "glint/radiometry/environment.h"
 #include "glint/radiometry/materials.h"
+#include "glint/radiometry/point_lights.h"
 #include "glint/scene/geometry_scene.h"
 #include "glint/sensor/camera.h"
 #include "glint/sensor/image_outputs.h"
@@ -42,6 +43,9 @@ struct RenderInputs {
     motion::SceneFrame frame;
     std::optional<schedule::Schedule> schedule;
     std::vector<std::unique_ptr<motion::Trajectory>> trajectories;
+    /// The scene's moving point sources' trajectories (nullptr for static ones), indexed like
+    /// scene.point_sources.
+    std::vector<std::unique_ptr<motion::Trajectory>> source_trajectories;
     bool dynamic_scene = false;  ///< some instance moves: the Embree scene is per capture
 };
 
@@ -115,6 +119,12 @@ std::vector<std::uint8_t> hypersampled_pixels(const model::Scene& scene,
                                               const motion::PoseService& poses,
                                               std::size_t instrument, const CaptureTiming& timing,
                                               double psf_reach_px = 0.0);
+
+/// The scene's point sources on `grid` at `t_s` (a capture's mid-window time): each one's
+/// material intensity resampled on the grid, its position at that time. Throws
+/// glint::Error (input, at the source) for a non-finite position.
+radiometry::PointLights point_lights_at(const RenderInputs& inputs, const SpectralGrid& grid,
+                                        double t_s);
 
 /// A capture of the selection with what the loop needs about it.
 /// The most captures one glint-render run plans (the plan keeps each, ~200 bytes); more is

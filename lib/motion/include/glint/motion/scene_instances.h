@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// The motion side of a scene's instances: the trajectories of its dynamic instances, and the
+// The motion side of a scene's instances: the trajectories of its dynamic instances (and of
+// its moving point sources), and the
 // named targets tracking mounts point at (a TargetResolver over the instances: a static
 // instance's target is where its transform puts the object's origin, a dynamic instance's
 // the position of its trajectory at the time asked).
@@ -28,6 +29,17 @@ std::vector<std::unique_ptr<Trajectory>> make_instance_trajectories(const model:
                                                                     const SceneFrame& frame,
                                                                     const DateTime& reference_utc,
                                                                     Log log = {});
+
+/// The trajectories of a scene's moving point sources, indexed like
+/// model::Scene::point_sources (nullptr for static ones); as make_instance_trajectories.
+std::vector<std::unique_ptr<Trajectory>> make_point_source_trajectories(
+    const model::Scene& scene, const SceneFrame& frame, const DateTime& reference_utc,
+    Log log = {});
+
+/// Where point source `source` of a scene is at `t_s`: its static position, or its position
+/// in the vehicle frame carried by `trajectory` (its entry of make_point_source_trajectories).
+Vec3 point_source_position_m(const model::PointSource& source, const Trajectory* trajectory,
+                             double t_s);
 
 /// Named targets of a scene for tracking mounts: an instance is found by its name (the first
 /// instance of that name, in scene order). Keeps its own copy of what it needs, so the scene

@@ -1,0 +1,204 @@
+// SPDX-License-Identifier: Apache-2.0
+// Point sources through glint-render's capture loop: the street fixture at night
+// (tests/data/dirsig_scene/lights: a lamp post, a parked car's headlight placed through its
+// bundle, a driving car's headlight riding its motion) gives the sources their positions at
+// the capture's time and their material's intensity on the focal plane's grid; and a grey
+// plate under one lamp at night renders, pixel by pixel, the analytic radiance
+// ρ I cos θ / (π r²) averaged over the pixel's footprint.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "../../../lib/sensor/src/render_parts.h"
+#include "glint/core/error.h"
+#include "glint/io/envi.h"
+#include "glint/motion/rigid.h"
+#include "glint/sensor/render.h"
+#include "glint/test/temp_dir.h"
+#include "render_fixture.h"
+
+namespace glint::sensor {
+namespace {
+
+namespace fs = std::filesystem;
+using test_render::kRenderData;
+using test_render::load;
+using test_render::options_into;
+
+const fs::path kLights = fs::path(GLINT_TEST_DATA_DIR) / "dirsig_scene" / "lights";
+
+void write_text(const fs::path& path, const std::string& text) {
+    fs::create_directories(path.parent_path());
+    std::ofstream(path) << text;
+}
+
+void expect_at(const radiometry::PointLights& lights, std::size_t i, motion::Vec3 expected_m) {
+    // Positions come from a few exact products and sums of short decimals: 1e-12 m.
+    EXPECT_NEAR(lights.position_m(i).x, expected_m.x, 1e-12) << "source " << i;
+    EXPECT_NEAR(lights.position_m(i).y, expected_m.y, 1e-12) << "source " << i;
+    EXPECT_NEAR(lights.position_m(i).z, expected_m.z, 1e-12) << "source " << i;
+}
+
+TEST(PointSources, StreetSourcesArePlacedAtTheCaptureTimeWithTheirMaterialsIntensity) {
+    const auto prepared =
+        detail::prepare(load(kLights / "lights.jsim"), options_into(fs::path("unused")), {});
+    const detail::RenderInputs& in = prepared->inputs;
+    ASSERT_EQ(in.scene.point_sources.size(), 3u);
+    EXPECT_EQ(in.scene.point_sources[0].name, "lamp");
+    EXPECT_EQ(in.scene.point_sources[1].name, "headlight");
+    EXPECT_FALSE(in.scene.point_sources[1].dynamic());
+    EXPECT_TRUE(in.scene.point_sources[2].dynamic());
+    const SpectralGrid& grid = prepared->states.at(0).grid;  // 0.50–0.60 µm at 0.02 µm
+
+    const radiometry::PointLights at0 = detail::point_lights_at(in, grid, 0.0);
+    ASSERT_EQ(at0.size(), 3u);
+    expect_at(at0, 0, {0.4, 0.3, 0.5});
+    // The parked car: headlight (0, 0.2, 0.05) in the bundle, turned 90° about z, moved to
+    // (−0.4, −0.3, 0).
+    expect_at(at0, 1, {-0.6, -0.3, 0.05});
+    // The driving car starts at (−0.6, 0.3, 0) heading east at 2 m/s; its +y (forward) is
+    // along the velocity.
+    expect_at(at0, 2, {-0.4, 0.3, 0.05});
+    expect_at(detail::point_lights_at(in, grid, 0.5), 2, {0.6, 0.3, 0.05});
+
+    // The lamp's flat 2 W/(sr µm); the headlamp's curve interpolated (0.45 → 0.015,
+    // 0.55 → 0.025, 0.70 → 0.03).
+    for (std::size_t b = 0; b < grid.size(); ++b) {
+        const double wavelength_um = grid.wavelength_um(b);
+        EXPECT_DOUBLE_EQ(at0.intensity_w_per_sr_um(0)[b], 2.0) << wavelength_um;
+        const double headlamp = wavelength_um <= 0.55
+                                    ? 0.015 + 0.1 * (wavelength_um - 0.45)
+                                    : 0.025 + (wavelength_um - 0.55) * 0.005 / 0.15;
+        EXPECT_NEAR(at0.intensity_w_per_sr_um(1)[b], headlamp, 1e-12) << wavelength_um;
+        EXPECT_NEAR(at0.intensity_w_per_sr_um(2)[b], headlamp, 1e-12) << wavelength_um;
+    }
+}
+
+/// A DIRSIG scene folder in `dir`: a grey ground plane ρ = `rho` and one lamp of constant
+/// intensity `intensity` at `lamp_m`, rendered by the render fixture's camera 1000 m up at
+/// night (the sun well below the horizon) with no atmosphere.
+void write_lamp_scene(const fs::path& dir, double rho, double intensity, motion::Vec3 lamp_m) {
+    write_text(dir / "plate.scene",
+               "<classicscene>\n"
+               "  <sceneorigin><location frame=\"geodetic\"><latitude>43.0</latitude>"
+               "<longitude>-77.6</longitude><altitude>150.0</altitude></location></sceneorigin>\n"
+               "  <geometrylist><geometrylistinclude>plate.glist</geometrylistinclude>"
+               "</geometrylist>\n"
+               "  <matfilename>plate.mat</matfilename>\n"
+               "</classicscene>\n");
+    write_text(dir / "plate.mat", "MATERIAL_ENTRY {\n ID = grey\n SURFACE_PROPERTIES {\n"
+                                  "  REFLECTANCE_PROP { TXT_FILENAME = grey.txt }\n }\n}\n"
+                                  "MATERIAL_ENTRY {\n ID = lamp\n OPTICAL_DESCRIPTION = SOURCE\n"
+                                  " INTENSITY_FILENAME = lamp.txt\n}\n");
+    write_text(dir / "grey.txt", "0.3 " + std::to_string(rho) + "\n1.0 " + std::to_string(rho) + "\n");
+    write_text(dir / "lamp.txt",
+               "0.3 " + std::to_string(intensity) + "\n1.0 " + std::to_string(intensity) + "\n");
+    write_text(dir / "plate.glist",
+               "<geometrylist>\n"
+               " <object name=\"Plate\"><basegeometry><groundplane><matid>grey</matid>"
+               "</groundplane></basegeometry><staticinstance/></object>\n"
+               " <object name=\"Lamp\"><basesource><pointsource matid=\"lamp\"/></basesource>\n"
+               "  <staticinstance><translation><point><x>" + std::to_string(lamp_m.x) +
+                   "</x><y>" + std::to_string(lamp_m.y) + "</y><z>" + std::to_string(lamp_m.z) +
+                   "</z></point></translation></staticinstance></object>\n"
+                   "</geometrylist>\n");
+    write_text(dir / "night.tasks",
+               "<tasklist><reference><datetime type=\"absolute\">2020-06-21T00:00:00.0000-04:00"
+               "</datetime></reference><task><start><datetime type=\"relative\">0</datetime>"
+               "</start><stop><datetime type=\"relative\">0</datetime></stop></task></tasklist>\n");
+    write_text(dir / "plate.jsim",
+               "[{\"scene_list\": [{\"inputs\": \"plate.scene\"}], \"plugin_list\": [\n"
+               " {\"name\": \"BasicAtmosphere\", \"inputs\": {\"atmosphere_filename\": \"" +
+                   (kRenderData / "none.atm.yaml").string() +
+                   "\"}},\n"
+                   " {\"name\": \"BasicPlatform\", \"inputs\": {\"platform_filename\": \"" +
+                   (kRenderData / "cam.platform").string() + "\", \"motion_filename\": \"" +
+                   (kRenderData / "static.ppd").string() +
+                   "\", \"tasks_filename\": \"night.tasks\"}}]}]\n");
+}
+
+TEST(PointSources, PlateUnderALampFollowsIntensityCosineOverDistanceSquared) {
+    constexpr double kRho = 0.25;
+    constexpr double kIntensity = 40.0;  // W/(sr µm)
+    const motion::Vec3 lamp_m{0.3, -0.2, 3.0};
+    test::TempDir dir;
+    write_lamp_scene(dir.path(), kRho, kIntensity, lamp_m);
+    const fs::path out = dir / "out";
+    RenderOptions options = options_into(out);
+    constexpr std::uint64_t kSamples = 64;
+    options.convergence = radiometry::Convergence{kSamples, kSamples, 0.0};
+
+    // The expected pixel value: ρ I cos θ / (π r²) on the ground (z = 0) averaged over the
+    // pixel's footprint by a 32 × 32 midpoint rule (samples are spread uniformly over each
+    // pixel), in W/(cm² sr µm) (r in m: 10⁴ cm² per m²). The tophat channel is normalized and
+    // the spectrum flat, so the channel value is the radiance itself.
+    const auto prepared = detail::prepare(load(dir / "plate.jsim"), options, {});
+    const detail::RenderInputs& in = prepared->inputs;
+    const detail::FocalPlaneState& state = prepared->states.at(0);
+    const motion::Rigid pose = in.schedule->plugins()[0].poses->instrument_to_scene(0, 0.0);
+    auto radiance_at = [&](const motion::Vec3& ground_m) {
+        const motion::Vec3 to_lamp = lamp_m - ground_m;
+        const double r2_m2 = motion::dot(to_lamp, to_lamp);
+        const double cos_theta = to_lamp.z / std::sqrt(r2_m2);
+        return kRho * kIntensity * cos_theta / (std::numbers::pi * r2_m2 * 1e4);
+    };
+    const std::size_t columns = state.camera.columns();
+    const std::size_t rows = state.camera.rows();
+    std::vector<double> expected(columns * rows, 0.0);
+    constexpr int kGrid = 32;
+    for (std::size_t row = 0; row < rows; ++row) {
+        for (std::size_t column = 0; column < columns; ++column) {
+            double sum = 0.0;
+            for (int a = 0; a < kGrid; ++a) {
+                for (int b = 0; b < kGrid; ++b) {
+                    const double u = (a + 0.5) / kGrid;
+                    const double v = (b + 0.5) / kGrid;
+                    const motion::Vec3 d = motion::apply_direction(
+                        pose, state.camera.direction(state.camera.focal_plane_point(column, row, u, v)));
+                    const double s = -pose.translation_m.z / d.z;
+                    sum += radiance_at(pose.translation_m + d * s);
+                }
+            }
+            expected[row * columns + column] = sum / (kGrid * kGrid);
+        }
+    }
+
+    const RenderReport report = render(load(dir / "plate.jsim"), options, Context{});
+    ASSERT_EQ(report.files, std::vector<fs::path>{out / "frame.img"});
+    io::EnviHeader header;
+    const std::vector<double> image = io::read_envi_bip(out / "frame.img", &header);
+    ASSERT_EQ(image.size(), expected.size());
+    double lowest = expected[0];
+    double highest = expected[0];
+    for (std::size_t i = 0; i < image.size(); ++i) {
+        lowest = std::min(lowest, expected[i]);
+        highest = std::max(highest, expected[i]);
+        // 1 %: the footprint of a pixel (0.2 m at 3 m from the lamp) spans a few per cent of
+        // cos θ / r², and 64 samples leave a standard error of about 0.3 % of it.
+        EXPECT_NEAR(image[i], expected[i], 0.01 * expected[i]) << "pixel " << i;
+    }
+    EXPECT_LT(lowest, 0.85 * highest) << "the image spans a range of cos θ / r² worth testing";
+}
+
+TEST(PointSources, ANonFinitePositionIsAnInputErrorAtTheSource) {
+    const auto prepared =
+        detail::prepare(load(kLights / "lights.jsim"), options_into(fs::path("unused")), {});
+    detail::RenderInputs& in = prepared->inputs;
+    in.scene.point_sources[0].position_m[2] = std::nan("");
+    try {
+        (void)detail::point_lights_at(in, prepared->states.at(0).grid, 0.0);
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.category(), ErrorCategory::input);
+        EXPECT_NE(e.message().find("non-finite position"), std::string::npos) << e.message();
+        EXPECT_NE(e.context().file.find("street.glist"), std::string::npos) << e.context().file;
+    }
+}
+
+}  // namespace
+}  // namespace glint::sensor
