@@ -27,7 +27,8 @@ std::optional<schedule::Schedule> load(const Options& options, Context& ctx) {
     try {
         inputs::LoadOptions load_options;
         load_options.read = options.read_options;
-        load_options.atmosphere = false;  // the schedule needs no radiometry
+        load_options.atmosphere = false;      // the schedule needs no radiometry
+        load_options.scene_contents = false;  // only the origin (and any tracked instance)
         const model::SimulationInputs loaded_inputs =
             inputs::load(options.input, load_options, ctx.log, diagnostics);
         schedule::Schedule loaded =

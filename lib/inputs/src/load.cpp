@@ -5,6 +5,7 @@
 
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -177,6 +178,58 @@ std::optional<model::PlatformInputs> read_entry(const model::Simulation& simulat
     return entry;
 }
 
+/// Whether a mount of `attachments` (or below) tracks a named scene instance.
+bool tracks_named_target(const std::vector<model::Attachment>& attachments) {
+    for (const model::Attachment& attachment : attachments) {
+        for (const model::Mount& mount : attachment.mounts) {
+            if (mount.tracking && !mount.tracking->point_m && !mount.tracking->name.empty()) {
+                return true;
+            }
+            if (tracks_named_target(mount.attachments)) return true;
+        }
+    }
+    return false;
+}
+
+void copy_diagnostic(const Diagnostic& d, Diagnostics& to) {
+    if (d.severity == Diagnostic::Severity::error) {
+        to.error(d.where, d.message);
+    } else {
+        to.warning(d.where, d.message);
+    }
+}
+
+/// Copies the scene's problems `found` into `diagnostics`. With `contents_needed` false, its
+/// errors outside the scene-list files themselves become one warning.
+void report_scene_problems(const model::Simulation& simulation, const Diagnostics& found,
+                           bool contents_needed, Diagnostics& diagnostics) {
+    std::set<std::string> scene_files;
+    for (const model::SceneEntry& entry : simulation.scenes) {
+        scene_files.insert(entry.file.resolved.string());
+    }
+    std::size_t left = 0;
+    const Diagnostic* first = nullptr;
+    for (const Diagnostic& d : found.items()) {
+        const bool contents_error = !contents_needed &&
+                                    d.severity == Diagnostic::Severity::error &&
+                                    scene_files.count(d.where.file) == 0;
+        if (!contents_error) {
+            copy_diagnostic(d, diagnostics);
+            continue;
+        }
+        ++left;
+        if (first == nullptr) first = &d;
+    }
+    if (first == nullptr) return;
+    ErrorContext where;
+    if (simulation.scenes.size() == 1) where.file = simulation.scenes.front().file.resolved.string();
+    diagnostics.warning(where, "the scene's contents have " + std::to_string(left) +
+                                   (left == 1 ? " error" : " errors") + " (the first: " +
+                                   first->text() +
+                                   "); this tool needs only the scene's origin, but "
+                                   "glint-render and glint-platform2jsim --check refuse it");
+}
+
 }  // namespace
 
 std::optional<model::PlatformInputs> read_platform_entry(const model::Simulation& simulation,
@@ -203,7 +256,18 @@ model::SimulationInputs load(const std::filesystem::path& simulation_file,
     }
     model::SimulationInputs inputs;
     inputs.simulation = std::move(simulations.front());
-    inputs.scene = read_simulation_scene(inputs.simulation, read, diagnostics);
+    // The scene's problems are held back until the platforms tell whether its contents are
+    // needed (LoadOptions::scene_contents).
+    Diagnostics scene_problems;
+    try {
+        inputs.scene = read_simulation_scene(inputs.simulation, read, scene_problems);
+    } catch (const Error& e) {
+        if (e.category() != ErrorCategory::input) throw;
+        scene_problems.add(e);
+    }
+    if (options.scene_contents) {
+        report_scene_problems(inputs.simulation, scene_problems, true, diagnostics);
+    }
     if (options.atmosphere && options.atmosphere_override) {
         inputs.atmosphere =
             read_atmosphere_override(*options.atmosphere_override, read, diagnostics);
@@ -223,6 +287,13 @@ model::SimulationInputs load(const std::filesystem::path& simulation_file,
         if (auto entry = read_entry(inputs.simulation, index, read, parsed, diagnostics)) {
             inputs.platforms.push_back(std::move(*entry));
         }
+    }
+    if (!options.scene_contents) {
+        bool targets = false;
+        for (const model::PlatformInputs& p : inputs.platforms) {
+            targets = targets || tracks_named_target(p.platform->attachments);
+        }
+        report_scene_problems(inputs.simulation, scene_problems, targets, diagnostics);
     }
     diagnostics.throw_if_errors();
     read.files->clear();  // the texts were parsed; the record of opens stays

@@ -27,6 +27,12 @@ struct LoadOptions {
     /// False: the atmosphere file is not read and the default atmosphere is returned (tools
     /// that need no radiometry, such as glint-schedule).
     bool atmosphere = true;
+    /// False (tools that need only the scene's origin and its named instances, such as
+    /// glint-schedule): when no platform's mount tracks a named target, errors of the files a
+    /// scene names (materials, curve files, glists, OBJ files, motion files) are not fatal:
+    /// they become one warning per scene file counting them and quoting the first. Errors of
+    /// the scene files themselves (the origin) stay errors.
+    bool scene_contents = true;
     /// Set: this atmosphere replaces the simulation's, whose BasicAtmosphere file is then
     /// not read (glint-render --atmosphere).
     std::optional<AtmosphereOverride> atmosphere_override;
