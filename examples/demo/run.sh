@@ -5,10 +5,10 @@
 # atmosphere, an aircraft carrying an RGB frame camera and a multispectral pushbroom, a .ppd
 # flight line, a .tasks window) is converted to a DIRSIG5 .jsim and checked, its platform
 # dumped as normalized JSON and its capture schedule written; glint-render renders every
-# capture into ENVI files; glint-envi reports on them and converts the RGB frames and a
-# false-colour composite of the pushbroom image to PNG; the frames are encoded into a video
-# through ffmpeg; the Bayer camera's digital counts (detected in the render) are demosaiced
-# to colour. Takes about half a minute on two cores once the tools are built.
+# capture into ENVI files, and the RGB camera's processing tasks turn each frame into a PNG
+# and encode the frames into a video through ffmpeg; glint-envi reports on the files and
+# converts a false-colour composite of the pushbroom image to PNG; the Bayer camera's
+# digital counts (detected in the render) are demosaiced to colour. Takes about half a minute on two cores once the tools are built.
 # Usage: examples/demo/run.sh BIN_DIR OUT_DIR
 set -euo pipefail
 
@@ -21,7 +21,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 # bandpass centre moved by less than 1e-5 W/(cm2 sr um) (about 0.3% of the grass) with the
 # last sample.
 convergence=8,64,1e-5
-fps=6  # the RGB camera's clock rate: the video plays in real time
+fps=6  # the RGB camera's clock rate, the video's frame rate (demo.platform): real time
 
 step() { printf '\n== %s\n' "$*" >&2; }
 run() { printf '$ %s\n' "$*" >&2; "$@"; }
@@ -68,24 +68,21 @@ run "$envi" stats "$frame0" >&2
 run "$envi" info "$out/render/msi.img" > "$out/render/msi.info.txt"
 run "$envi" stats "$out/render/msi.img" | tee "$out/render/msi.stats.txt" >&2
 
-step "5. PNG previews: RGB frames on one fixed stretch, the pushbroom as false colour"
-# One stretch for every frame, so the video does not flicker: 0 to the brightest green value
-# of the first frame (the 80% panel), display gamma 2.2.
-white=$(grep '"max"' "$out/render/rgb-t0000-c0000.stats.json" | sed -n 2p | tr -dc '0-9.e+-')
-printf 'frames: --min 0 --max %s --gamma 2.2\n' "$white" >&2
-converted=0
-for img in "$out"/render/rgb-t0000-c*.img; do
-    "$envi" convert --min 0 --max "$white" --gamma 2.2 "$img" "${img%.img}.png"
-    converted=$((converted + 1))
-done
-printf '%d frames converted to PNG (render/rgb-t0000-cNNNN.png)\n' "$converted" >&2
+step "5. PNG previews: the RGB frames (made during the render), the pushbroom as false colour"
+# The RGB focal plane's processing tasks (examples/demo/sim/demo.platform, docs/processing.md)
+# converted each frame to PNG as it was written, on one stretch for all frames, and encoded
+# them into demo.mp4 when the collection completed: the render's log shows their messages.
+grep -m1 -e 'Converting radiance image to PNG' "$out/render/render.log" >&2
+grep -m1 -e 'Encoding frames into video' "$out/render/render.log" >&2
+printf '%d frames converted to PNG (render/rgb-t0000-cNNNN.png), video demo.mp4\n' \
+    "$(ls "$out"/render/rgb-t0000-c*.png | wc -l)" >&2
 # NIR, red, green as red, green, blue: vegetation shows red. The first line (south) is at
 # the top: a pushbroom image is stacked in acquisition order.
 run "$envi" convert --bands 4,2,1 --per-band --percent 1 --gamma 2.2 \
     "$out/render/msi.img" "$out/render/msi-false-colour.png"
 
-step "6. the RGB frames encoded into a video (ffmpeg through glint-envi encode)"
-run "$envi" encode --framerate "$fps" --output "$out/demo.mp4" "$out/render/rgb-t0000-c%04d.png"
+step "6. the video: encoded by ffmpeg, the RGB focal plane's collection_completed task"
+run ls -l "$out/demo.mp4" >&2
 
 step "7. the Bayer camera: digital counts from in-render detection, demosaiced to colour"
 # glint-render applied the focal plane's detector model (QE, shot/dark/read noise, 12-bit

@@ -51,8 +51,6 @@ def expected_warnings(items):
         kind = attrs.get("type", "").strip().lower()
         if tag == "spatialresponse":
             out.append((e["line"], "<spatialresponse> is a DIRSIG4 setting"))
-        elif tag == "processing" and child(e, "task"):
-            out.append((e["line"], "<processing> is read and checked, not applied"))
         elif tag == "capturemethod" and kind == "lidar":
             out.append((e["line"], "capturemethod type lidar is read, not applied"))
         elif tag == "capturemethod" and kind == "raw":

@@ -4,7 +4,8 @@
 signal's number, no file under a final name (the simulation-schedule output is still
 incomplete when the signal arrives), no temporary file left behind, and the process gone
 within a few seconds. Then a file-size limit (`ulimit -f`, SIGXFSZ): the write fails,
-exit 1 with the reason, nothing left behind.
+exit 1 with the reason, nothing left behind. Last, SIGINT while a processing task runs
+(tests/data/processing/hang.jsim): exit 130, and the task's process group is gone.
 
 Usage: render_interrupt_test.py --bin BIN_DIR --data TESTS_DATA_DIR --work WORK_DIR
 """
@@ -90,6 +91,47 @@ def file_size_limit(args):
     print("ok: file-size limit: exit 1 (%s), nothing left" % stderr.strip().splitlines()[-1])
 
 
+def interrupt_processing_task(args):
+    work = os.path.join(args.work, "processing")
+    out = os.path.join(work, "out")
+    os.makedirs(work)
+    command = [os.path.join(args.bin, "glint-render"),
+               os.path.join(args.data, "processing", "hang.jsim"),
+               "--output-folder", out, "--convergence", "1,1,0"]
+    env = dict(os.environ)
+    env["PATH"] = os.path.join(args.data, "processing", "bin") + ":/usr/bin:/bin"
+    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env)
+    # bin/hang writes its process id (its group's id too: a task leads its own group), then
+    # sleeps for 47 s.
+    pid_file = os.path.join(out, "hang.pid")
+    deadline = time.monotonic() + 300
+    while not os.path.exists(pid_file) or os.path.getsize(pid_file) == 0:
+        assert process.poll() is None, ("glint-render ended before its task ran",
+                                        process.stderr.read().decode())
+        assert time.monotonic() < deadline, "the processing task never started"
+        time.sleep(0.02)
+    task = int(open(pid_file).read())
+    process.send_signal(signal.SIGINT)
+    try:
+        stdout, stderr = process.communicate(timeout=30)
+    except subprocess.TimeoutExpired:
+        process.kill()
+        raise AssertionError("glint-render did not stop within 30 s of SIGINT during a task")
+    assert process.returncode == 130, (process.returncode, stderr.decode())
+    hang = os.path.join(args.data, "processing", "bin", "hang")
+    assert stderr.decode().endswith(
+        "glint-render: error: interrupted while running %s (SIGINT)\n" % hang), stderr.decode()
+    time.sleep(0.1)
+    try:
+        os.killpg(task, 0)
+        raise AssertionError("the task's process group %d is still there" % task)
+    except ProcessLookupError:
+        pass
+    left = [f for f in files_under(work) if ".tmp-" in os.path.basename(f)]
+    assert left == [], "temporary files left behind: %s" % left
+    print("ok: SIGINT during a processing task: exit 130, its process group %d gone" % task)
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--bin", required=True)
@@ -101,6 +143,7 @@ def main():
     for sig in (signal.SIGINT, signal.SIGHUP, signal.SIGTERM):
         stop_with(args, sig)
     file_size_limit(args)
+    interrupt_processing_task(args)
 
 
 if __name__ == "__main__":

@@ -2,6 +2,10 @@
 // glint-render's options (docs/tools/glint-render.md).
 #include "cli.h"
 
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
 #include "glint/core/runner.h"
 #include "glint/core/text.h"
 
@@ -63,6 +67,16 @@ void RenderCli::configure(CLI::App& app) {
     app.add_option("--log-info-filename,--log_info_filename", m_options.render.log_info_file,
                    "Write DIRSIG's capture list (captures, time windows, files) to FILE")
         ->type_name("FILE");
+    app.add_flag("--no-processing", m_options.no_processing,
+                 "Do not run the focal planes' <processing> tasks (a warning counts them)");
+    app.add_flag("--keep-going", m_options.processing.keep_going,
+                 "A processing task that fails (or whose program is missing) is a warning, not "
+                 "an error: the render goes on");
+    app.add_option("--processing-timeout", m_processing_timeout_s,
+                   "Seconds one processing task may run before it is killed (0: no limit)")
+        ->type_name("SECONDS")
+        ->check(CLI::NonNegativeNumber)
+        ->capture_default_str();
     app.add_option("--data-dir", m_options.render.data_dir,
                    "glint's data folder (solar spectrum); default $GLINT_DATA_DIR, else "
                    "<exe dir>/../share/glint when installed, else the source tree's data/")
@@ -79,6 +93,12 @@ int RenderCli::execute(Context& ctx, std::ostream& out) {
     }
     if (app.count("--max-memory") > 0) {
         render.device.max_memory_bytes = *parse_byte_size(m_max_memory);  // checked by byte_size()
+    }
+    if (m_processing_timeout_s > 0.0) {
+        m_options.processing.timeout = std::chrono::milliseconds(
+            static_cast<std::int64_t>(std::ceil(std::min(m_processing_timeout_s, 1e9) * 1000.0)));
+    } else {
+        m_options.processing.timeout.reset();
     }
     render.device.isa = m_isa;
     render.device.threads = ctx.threads;

@@ -13,6 +13,7 @@
 #include "glint/core/runner.h"
 #include "glint/core/text.h"
 #include "glint/inputs/load.h"
+#include "glint/model/names.h"
 
 namespace glint::app_render {
 namespace {
@@ -25,6 +26,44 @@ double parse_number(const std::string& text, const std::string& what) {
 
 std::string mebibytes(std::uint64_t bytes) {
     return format_shortest(static_cast<double>(bytes) / (1024.0 * 1024.0)) + " MiB";
+}
+
+/// Runs the processing tasks at the render's events.
+class ProcessingObserver final : public sensor::RenderObserver {
+public:
+    explicit ProcessingObserver(process::ProcessingRunner& runner) : m_runner(runner) {}
+    void on_plan(const std::vector<model::ProcessingEvent>& events) override {
+        m_runner.check(events);
+    }
+    void on_event(const model::ProcessingEvent& event) override { m_runner.run(event); }
+
+private:
+    process::ProcessingRunner& m_runner;
+};
+
+/// The number of tasks the events run.
+std::size_t task_count(const std::vector<model::ProcessingEvent>& events) {
+    std::size_t n = 0;
+    for (const model::ProcessingEvent& e : events) n += e.tasks.size();
+    return n;
+}
+
+/// --dry-run: each event with the commands its tasks would run.
+void print_events(const std::vector<model::ProcessingEvent>& events,
+                  process::ProcessingRunner& runner, std::ostream& out) {
+    for (const model::ProcessingEvent& e : events) {
+        for (const model::ProcessingTask& task : e.tasks) {
+            out << "processing: " << model::name_of(e.kind) << " " << e.focal_plane << " task "
+                << e.task + 1 << " capture " << e.capture + 1 << ": ";
+            try {
+                out << format_command_line(runner.command(task, e).argv);
+            } catch (const Error& error) {
+                out << "(" << error.message() << ")";
+            }
+            if (task.remove_file) out << " (then removes " << e.file.filename().string() << ")";
+            out << "\n";
+        }
+    }
 }
 
 }  // namespace
@@ -82,16 +121,29 @@ int run(const Options& options, Context& ctx, std::ostream& out) {
         load_options.atmosphere_override = inputs::parse_atmosphere_override(options.atmosphere);
     }
     model::SimulationInputs loaded = inputs::load_logged(options.input, load_options, ctx.log);
+    process::ProcessingOptions processing = options.processing;
+    if (processing.tools_dir.empty()) processing.tools_dir = executable_path().parent_path();
+    process::ProcessingRunner runner(processing, ctx);
     if (options.dry_run) {
         const sensor::RenderReport plan = sensor::plan(std::move(loaded), render, ctx);
         out << "captures: " << plan.captures.size() << "\n";
         out << "pixels: " << plan.pixels << "\n";
         out << "memory estimate: " << mebibytes(plan.memory_estimate_bytes) << "\n";
         for (const auto& file : plan.files) out << "output: " << file.string() << "\n";
+        if (!options.no_processing) print_events(plan.events, runner, out);
         return kExitSuccess;
     }
-    const sensor::RenderReport report = sensor::render(std::move(loaded), render, ctx);
-    for (const auto& file : report.files) out << file.string() << "\n";
+    ProcessingObserver observer(runner);
+    const sensor::RenderReport report = sensor::render(
+        std::move(loaded), render, ctx, options.no_processing ? nullptr : &observer);
+    if (options.no_processing && !report.events.empty()) {
+        ctx.log.warning("--no-processing: " + std::to_string(task_count(report.events)) +
+                        " processing task runs at " + std::to_string(report.events.size()) +
+                        " events were skipped");
+    }
+    for (const auto& file : report.files) {
+        if (runner.removed().count(file) == 0) out << file.string() << "\n";
+    }
     return kExitSuccess;
 }
 

@@ -282,11 +282,6 @@ std::vector<model::ProcessingTask> read_processing(const io::XmlNode& node,
     for (const auto& task : node.children("task")) {
         tasks.push_back(read_processing_task(task, diagnostics));
     }
-    if (!tasks.empty()) {
-        diagnostics.warning(node.where(),
-                            "<processing> is read and checked, not applied: glint runs no "
-                            "processing tasks (run them after glint-render)");
-    }
     return tasks;
 }
 

@@ -29,6 +29,7 @@ RenderReport plan(model::SimulationInputs inputs, const RenderOptions& options,
         c.pixels = prepared->inputs.schedule->sources()[p.capture.source].problems_per_capture;
         report.captures.push_back(c);
     }
+    report.events = detail::plan_events(*prepared).in_order();
     detail::write_log_info(*prepared, options, context);
     return report;
 }
@@ -61,11 +62,21 @@ std::string out_of_memory(const detail::Prepared& prepared, const detail::Planne
 }  // namespace
 
 RenderReport render(model::SimulationInputs inputs, const RenderOptions& options,
-                    const Context& context) {
+                    const Context& context, RenderObserver* observer) {
     const std::unique_ptr<detail::Prepared> prepared =
         detail::prepare(std::move(inputs), options, context);
     const detail::RenderInputs& in = prepared->inputs;
     RenderReport report = prepared->report;
+    const detail::EventPlan events = detail::plan_events(*prepared);
+    report.events = events.in_order();
+    if (observer != nullptr) observer->on_plan(report.events);
+    auto fire = [&](const std::vector<model::ProcessingEvent>& list) {
+        if (observer == nullptr) return;
+        for (const model::ProcessingEvent& e : list) {
+            context.cancel.throw_if_cancelled();
+            observer->on_event(e);
+        }
+    };
     std::optional<scene::GeometryScene> static_scene;
     if (!in.dynamic_scene) {
         static_scene.emplace(scene::GeometryScene::build(
@@ -75,8 +86,10 @@ RenderReport render(model::SimulationInputs inputs, const RenderOptions& options
     std::map<std::size_t, radiometry::SensorPathCache> path_caches;  // per focal plane
     std::vector<double> image;
     std::uint64_t pixels_done = 0;
-    for (const detail::PlannedCapture& p : prepared->captures) {
+    for (std::size_t i = 0; i < prepared->captures.size(); ++i) {
+        const detail::PlannedCapture& p = prepared->captures[i];
         context.cancel.throw_if_cancelled();
+        fire(events.before[i]);
         std::optional<scene::GeometryScene> moving;
         if (in.dynamic_scene) {
             moving.emplace(scene::GeometryScene::build(
@@ -94,6 +107,7 @@ RenderReport render(model::SimulationInputs inputs, const RenderOptions& options
         report.captures.push_back(stats);
         pixels_done += stats.pixels;
         context.progress.update("pixels", pixels_done, report.pixels);
+        fire(events.after[i]);
     }
     context.progress.finish("pixels", report.pixels);
     detail::write_log_info(*prepared, options, context);

@@ -17,6 +17,7 @@
 #include "glint/io/envi.h"
 #include "glint/model/atmosphere.h"
 #include "glint/model/inputs.h"
+#include "glint/model/processing.h"
 #include "glint/model/scene.h"
 #include "glint/model/simulation.h"
 #include "glint/motion/frames.h"
@@ -154,6 +155,20 @@ struct Prepared {
 /// make_focal_plane_state throw.
 std::unique_ptr<Prepared> prepare(model::SimulationInputs loaded, const RenderOptions& options,
                                   const Context& context);
+
+/// The processing events of a run, by planned capture: those fired before it (collection,
+/// task and capture started) and after it has been written (capture, task and collection
+/// completed). Only focal planes with processing tasks at an event have events.
+struct EventPlan {
+    std::vector<std::vector<model::ProcessingEvent>> before;  ///< one list per planned capture
+    std::vector<std::vector<model::ProcessingEvent>> after;
+
+    /// Every event in firing order.
+    std::vector<model::ProcessingEvent> in_order() const;
+};
+
+/// The processing events of `prepared`'s planned captures (docs/processing.md, "Events").
+EventPlan plan_events(const Prepared& prepared);
 
 /// Writes the capture list of the run (--log_info_filename), atomically; nothing when the
 /// option is empty.

@@ -13,6 +13,7 @@
 
 #include "glint/core/context.h"
 #include "glint/dirsig/read_options.h"
+#include "glint/process/processing.h"
 #include "glint/sensor/render.h"
 
 namespace glint::app_render {
@@ -27,6 +28,10 @@ struct Options {
     /// --atmosphere none|parametric|FILE: replaces the simulation's atmosphere (whose file is
     /// then not read); empty: the simulation's
     std::string atmosphere;
+    /// --no-processing: the focal planes' <processing> tasks are not run (said once).
+    bool no_processing = false;
+    /// --keep-going, --processing-timeout; `tools_dir` defaults to glint-render's folder.
+    process::ProcessingOptions processing;
 };
 
 /// Parses --convergence's "min,max,threshold" (threshold in W/(cm² sr µm)). Throws

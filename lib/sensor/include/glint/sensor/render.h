@@ -21,6 +21,7 @@
 
 #include "glint/core/context.h"
 #include "glint/model/inputs.h"
+#include "glint/model/processing.h"
 #include "glint/radiometry/path_tracer.h"
 #include "glint/radiometry/problem.h"
 #include "glint/scene/geometry_scene.h"
@@ -74,14 +75,30 @@ struct RenderReport {
     /// capture's radiance (pixels × bands × 8 B), bytes.
     std::uint64_t memory_estimate_bytes = 0;
     scene::DeviceInfo device;
+    /// The processing events of the focal planes with `<processing>` tasks, in firing order
+    /// (docs/processing.md): fired by render(), listed by plan().
+    std::vector<model::ProcessingEvent> events;
+};
+
+/// Receives a render's processing events (the manual's "Inline Processing"). on_plan() is
+/// called once, before the first capture, with every event the run will fire; on_event()
+/// at each, in order: *_started events before their capture is traced, *_completed ones after
+/// its lines are written and its file, when complete, published. An exception thrown by
+/// either stops the render (files not yet complete are discarded).
+class RenderObserver {
+public:
+    virtual ~RenderObserver() = default;
+    virtual void on_plan(const std::vector<model::ProcessingEvent>& events) = 0;
+    virtual void on_event(const model::ProcessingEvent& event) = 0;
 };
 
 /// Renders a loaded simulation (glint/inputs/load.h reads the `.jsim` or `.sim` and every file
 /// it names). Throws glint::Error: input for inputs glint cannot render (every problem is
 /// logged, each with file:line), usage for bad options, io when an output cannot be written,
 /// cancelled on an interrupt (every file not yet complete is discarded).
+/// `observer`, when given, receives the processing events.
 RenderReport render(model::SimulationInputs inputs, const RenderOptions& options,
-                    const Context& context);
+                    const Context& context, RenderObserver* observer = nullptr);
 
 /// Prepares everything like render() and returns the captures, pixel counts, output files and
 /// memory estimate without tracing a ray (--dry-run).
