@@ -485,6 +485,17 @@ void check_focal_plane(const model::FocalPlane& focal_plane, Diagnostics& diagno
                             "the <channel>s of a raw capture are read, not applied: raw writes "
                             "one band per bandpass sample");
     }
+    const model::DetectorArray& array = focal_plane.detector_array;
+    if ((array.x_oversample > 1 || array.y_oversample > 1) &&
+        capture.type != model::CaptureMethodType::raw) {
+        diagnostics.warning(array.oversample_where,
+                            "<xoversample>/<yoversample> are read, not applied: they oversample "
+                            "a raw capture only (a simple capture samples each element's area)");
+    } else if (array.y_oversample > 1 && array.rolling_line_time_s) {
+        diagnostics.error(array.oversample_where,
+                          "<yoversample> with rollingreadout: the sub-rows of a raw capture have "
+                          "no readout time of their own, expected one of the two");
+    }
     if (integration.tdi && focal_plane.detector_array.y_count > 1 &&
         focal_plane.detector_array.rolling_line_time_s) {
         diagnostics.warning(focal_plane.detector_array.where,

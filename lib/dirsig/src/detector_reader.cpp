@@ -181,6 +181,9 @@ model::MasterClock read_master_clock(const io::XmlNode& node, Diagnostics& diagn
     return clock;
 }
 
+/// The largest raw oversampling factor per axis.
+constexpr std::int64_t kMaxOversample = 64;
+
 model::DetectorArray read_detector_array(const io::XmlNode& node, const ReadContext& context,
                                          Diagnostics& diagnostics) {
     model::DetectorArray array;
@@ -279,10 +282,20 @@ model::DetectorArray read_detector_array(const io::XmlNode& node, const ReadCont
                             "<linetime> ignored: rollingreadout is not \"true\"");
     }
 
+    // Raw-capture spatial oversampling (docs/units.md, "Raw capture"): whole factors.
+    for (const auto& [name, factor] : {std::pair{"xoversample", &array.x_oversample},
+                                       std::pair{"yoversample", &array.y_oversample}}) {
+        const auto element = node.child(name);
+        if (!element) continue;
+        if (array.oversample_where.file.empty()) array.oversample_where = element->where();
+        if (const auto k = node.optional_int(name, diagnostics, 1, kMaxOversample)) {
+            *factor = static_cast<std::size_t>(*k);
+        }
+    }
     for (const io::XmlNode& child : node.children()) {
-        static constexpr std::array<std::string_view, 9> kNotUsed = {
-            "xoversample", "yoversample",      "xsubsamples",  "ysubsamples", "fieldcount",
-            "clockrate",   "selectorfilename", "selectorlist", "filename"};
+        static constexpr std::array<std::string_view, 7> kNotUsed = {
+            "xsubsamples",      "ysubsamples",  "fieldcount", "clockrate",
+            "selectorfilename", "selectorlist", "filename"};
         if (std::find(kNotUsed.begin(), kNotUsed.end(), child.name()) != kNotUsed.end()) {
             warn_not_used(child, diagnostics);
         }

@@ -43,14 +43,22 @@ double scaled_count(std::size_t count, double factor) {
 /// an error) when they exceed the reader's limits.
 bool set_pixel_counts(ClockedFocalPlane& source, double factor, Diagnostics& diagnostics) {
     const model::DetectorArray& array = source.focal_plane->detector_array;
-    const double x = scaled_count(array.x_count, factor);
+    // A raw capture writes each element's k_x × k_y sub-pixels as pixels of their own.
+    const bool raw = source.focal_plane->capture_method.type == model::CaptureMethodType::raw;
+    const double kx = raw ? static_cast<double>(array.x_oversample) : 1.0;
+    const double ky = raw ? static_cast<double>(array.y_oversample) : 1.0;
+    const double x = scaled_count(array.x_count, factor) * kx;
     const bool tdi = source.focal_plane->capture_method.temporal_integration.tdi;
     // TDI stages are not resolution: --scale_resolution leaves their count alone.
     const double y = tdi ? static_cast<double>(std::max<std::size_t>(array.y_count, 1))
-                         : scaled_count(array.y_count, factor);
+                         : scaled_count(array.y_count, factor) * ky;
     if (x > kMaxAxisCount || y > kMaxAxisCount || x * y > kMaxElementCount) {
         diagnostics.error(array.where,
-                          "--scale_resolution " + format_shortest(factor) + " makes the " +
+                          "--scale_resolution " + format_shortest(factor) +
+                              (kx * ky > 1.0 ? " and the raw oversampling " +
+                                                   format_shortest(kx) + "x" +
+                                                   format_shortest(ky) + " make the "
+                                             : std::string(" makes the ")) +
                               std::to_string(array.x_count) + "x" + std::to_string(array.y_count) +
                               " detector array " + std::to_string(static_cast<std::uint64_t>(x)) +
                               "x" + std::to_string(static_cast<std::uint64_t>(y)) +

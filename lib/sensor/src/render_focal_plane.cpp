@@ -92,6 +92,12 @@ io::EnviHeader header_of(const schedule::ClockedFocalPlane& source, const Output
                                          format_shortest(convergence.threshold_w_per_cm2_sr_um));
     h.set_extra("glint scale resolution", format_shortest(options.schedule.scale_resolution));
     if (source.tdi_stages > 1) h.set_extra("glint tdi stages", std::to_string(source.tdi_stages));
+    if (fp.capture_method.type == model::CaptureMethodType::raw) {
+        // Each detector element's sub-pixels, columns then lines (docs/units.md, "Raw capture").
+        h.set_extra("glint raw oversampling",
+                    io::envi_brace_list({std::to_string(fp.detector_array.x_oversample),
+                                         std::to_string(fp.detector_array.y_oversample)}));
+    }
     h.set_extra("glint split channels",
                 splits_channels(inputs, plugin.plugin_index, options) ? "true" : "false");
     h.set_extra("glint atmosphere", model::to_string(inputs.atmosphere.kind));

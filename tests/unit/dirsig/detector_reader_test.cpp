@@ -207,9 +207,15 @@ TEST(DetectorReader, ExtrasWarnAndUnknownsWarn) {
               "<xoversample>2</xoversample>\n<gain>3</gain>"));
     const Read read = read_text(dir, text);
     EXPECT_FALSE(read.diagnostics.has_errors()) << dump(read.diagnostics);
-    expect_diagnostic(read, "<xoversample> is parsed but not used yet",
+    // Oversampling is a raw capture's: on this simple one it is read, not applied.
+    expect_diagnostic(read,
+                      "<xoversample>/<yoversample> are read, not applied: they oversample a raw "
+                      "capture only",
                       line_of(text, "<xoversample>"), std::string(kDetectorPath) + "/xoversample",
                       Severity::warning);
+    EXPECT_EQ(read.platform.attachments.at(0).instruments.at(0).focal_planes.at(0)
+                  .detector_array.x_oversample,
+              2u);
     expect_diagnostic(read, "unknown element <gain> ignored", line_of(text, "<gain>"),
                       std::string(kDetectorPath) + "/gain", Severity::warning);
 }

@@ -74,6 +74,11 @@ struct DetectorArray {
     Clock clock;
     /// Rolling readout: time between the readout of consecutive rows; none = global shutter.
     std::optional<double> rolling_line_time_s;
+    /// `<xoversample>`, `<yoversample>`: sub-pixels per element along each axis, written as
+    /// their own pixels by a raw capture (1: none).
+    std::size_t x_oversample = 1;
+    std::size_t y_oversample = 1;
+    ErrorContext oversample_where;  ///< the first oversample element, when given
     ErrorContext where;
 };
 
