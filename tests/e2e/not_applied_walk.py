@@ -61,8 +61,11 @@ def expected_warnings(items):
                 out.append((first["line"], "the <channel>s of a raw capture are read"))
         elif tag == "samplestrategy" and kind not in ("", "central"):
             out.append((e["line"], "samplestrategy type"))
-        elif tag == "instrument" and kind in ("lidar", "datarecorder"):
+        elif tag == "instrument" and kind == "lidar":
             out.append((e["line"], f"instrument type {kind} is read, not applied"))
+        elif (tag == "instrument" and kind == "datarecorder" and child(e, "clock") is None
+              and child(e, "focalplane") is None):
+            out.append((e["line"], "has no <clock> (nor an enabled focal plane's): it records"))
         elif tag == "polarizer" and kind not in ("", "none"):
             out.append((e["line"], "polarization is not modelled"))
         elif tag == "temporalintegration" and child(e, "samples") is not None:

@@ -10,6 +10,7 @@
 #include <string_view>
 
 #include "glint/core/text.h"
+#include "glint/model/output_name.h"
 #include "glint/model/truth.h"
 #include "platform_tree.h"
 
@@ -196,6 +197,51 @@ model::FocalPlane read_focal_plane(const io::XmlNode& node, const ReadContext& c
     return plane;
 }
 
+/// A data recorder's `<clock>`, `<output>` and `<noise>` (docs/data-recorder.md).
+model::DataRecorder read_data_recorder(const io::XmlNode& node, const std::string& name,
+                                       const ReadContext& context, Diagnostics& diagnostics) {
+    model::DataRecorder recorder;
+    recorder.where = node.where();
+    recorder.basename = name;
+    if (const auto clock = node.child("clock")) {
+        recorder.clock = read_clock(*clock, context, diagnostics);
+        if (recorder.clock->type == model::ClockType::external_trigger) {
+            diagnostics.error(clock->where(),
+                              "a data recorder's own <clock> is independent or synchronous; "
+                              "for external triggers give it a focal plane with that clock");
+        }
+    }
+    ErrorContext name_where = node.where_attribute("name");
+    if (const auto output = node.child("output")) {
+        output->warn_unknown_children({"basename"}, diagnostics);
+        if (const auto basename = output->child("basename")) {
+            recorder.basename = basename->text();
+            name_where = basename->where();
+        }
+    }
+    if (recorder.basename.empty()) {
+        diagnostics.error(node.where(), "a data recorder needs a name or <output><basename> (its "
+                                        "files are BASENAME.csv and BASENAME.jsonl)");
+    } else if (const auto problem = model::output_name_problem(recorder.basename)) {
+        diagnostics.error(name_where, "data recorder file name " + quote(recorder.basename) +
+                                          " " + *problem);
+        recorder.basename.clear();
+    }
+    if (const auto noise = node.child("noise")) {
+        model::TelemetryNoise& n = recorder.noise;
+        n.where = noise->where();
+        noise->warn_unknown_children(
+            {"positionsigma", "velocitysigma", "orientationsigma", "angularratesigma"},
+            diagnostics);
+        const io::NumberRule rule = io::NumberRule::non_negative();
+        n.position_m = noise->optional_double("positionsigma", diagnostics, rule);
+        n.velocity_m_s = noise->optional_double("velocitysigma", diagnostics, rule);
+        n.orientation_deg = noise->optional_double("orientationsigma", diagnostics, rule);
+        n.angular_rate_deg_s = noise->optional_double("angularratesigma", diagnostics, rule);
+    }
+    return recorder;
+}
+
 }  // namespace
 
 model::Instrument read_instrument(const io::XmlNode& node, const ReadContext& context,
@@ -217,10 +263,6 @@ model::Instrument read_instrument(const io::XmlNode& node, const ReadContext& co
                                 "captures nothing");
         } else if (type == "datarecorder") {
             instrument.type = model::InstrumentType::data_recorder;
-            diagnostics.warning(node.where_attribute("type"),
-                                "instrument type datarecorder is read, not applied: glint "
-                                "records no telemetry file (glint-schedule's JSON holds every "
-                                "capture's pose)");
         } else {
             known_type = false;
             diagnostics.error(node.where_attribute("type"),
@@ -242,19 +284,35 @@ model::Instrument read_instrument(const io::XmlNode& node, const ReadContext& co
     for (const io::XmlNode& plane : node.children("focalplane")) {
         instrument.focal_planes.push_back(read_focal_plane(plane, context, diagnostics));
     }
+    const bool recorder = instrument.type == model::InstrumentType::data_recorder;
+    if (recorder) instrument.recorder = read_data_recorder(node, instrument.name, context, diagnostics);
     static constexpr std::array<std::string_view, 8> kNotUsed = {
         "frame", "options", "clock", "datetime", "source", "transmitter", "receiver", "output"};
     for (const io::XmlNode& child : node.children()) {
+        if (recorder && (child.name() == "clock" || child.name() == "output")) continue;
         if (std::find(kNotUsed.begin(), kNotUsed.end(), child.name()) != kNotUsed.end()) {
             warn_not_used(child, diagnostics);
         }
     }
     node.warn_unknown_children({"properties", "focalplane", "frame", "options", "clock", "datetime",
-                                "source", "transmitter", "receiver", "output"},
+                                "source", "transmitter", "receiver", "output", "noise"},
                                diagnostics);
-    if (known_type && instrument.focal_planes.empty() &&
-        instrument.type != model::InstrumentType::data_recorder) {
+    if (!recorder) {
+        if (const auto noise = node.child("noise")) {
+            diagnostics.warning(noise->where(), "<noise> is read only in a data recorder "
+                                                "(type=\"datarecorder\"): ignored");
+        }
+    }
+    if (known_type && instrument.focal_planes.empty() && !recorder) {
         diagnostics.warning(node.where(), "instrument has no <focalplane>: it captures nothing");
+    }
+    if (recorder && !instrument.recorder.clock &&
+        std::none_of(instrument.focal_planes.begin(), instrument.focal_planes.end(),
+                     [](const model::FocalPlane& p) { return p.enabled; })) {
+        diagnostics.warning(node.where(),
+                            "data recorder \"" + instrument.name +
+                                "\" has no <clock> (nor an enabled focal plane's): it records "
+                                "nothing");
     }
     return instrument;
 }

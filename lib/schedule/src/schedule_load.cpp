@@ -124,12 +124,10 @@ void Loader::add_sources(std::size_t plugin_slot) {
     const motion::PoseService& poses = *entry.poses;
     for (std::size_t k = 0; k < poses.instrument_count(); ++k) {
         const model::Instrument& instrument = *poses.instrument_path(k).instrument;
+        // A data recorder's own <clock> makes no captures: glint-render samples its pose at
+        // the ticks (docs/data-recorder.md); the reader warns about one without a clock.
         if (instrument.type == model::InstrumentType::data_recorder &&
             instrument.focal_planes.empty()) {
-            diagnostics.warning(instrument.where,
-                                "data recorder " + quote(instrument.name) +
-                                    " has no focal plane, so no sample clock: it is not "
-                                    "scheduled (see docs/schedule.md)");
             continue;
         }
         for (std::size_t f = 0; f < instrument.focal_planes.size(); ++f) {

@@ -83,6 +83,7 @@ RenderReport render(model::SimulationInputs inputs, const RenderOptions& options
             in.scene, in.trajectories, detail::build_options(options, 0.0, 0.0), context.log));
         report.device = static_scene->device();
     }
+    detail::write_telemetry(*prepared, options, context);  // complete before any capture
     std::map<std::size_t, radiometry::SensorPathCache> path_caches;  // per focal plane
     std::vector<double> image;
     std::uint64_t pixels_done = 0;
@@ -112,6 +113,12 @@ RenderReport render(model::SimulationInputs inputs, const RenderOptions& options
     context.progress.finish("pixels", report.pixels);
     detail::write_log_info(*prepared, options, context);
     report.files = prepared->outputs.published();
+    std::vector<std::filesystem::path> telemetry;  // written first
+    for (const detail::PlannedTelemetry& t : prepared->telemetry) {
+        telemetry.push_back(t.csv);
+        telemetry.push_back(t.jsonl);
+    }
+    report.files.insert(report.files.begin(), telemetry.begin(), telemetry.end());
     return report;
 }
 

@@ -16,6 +16,12 @@ namespace glint::sensor::detail {
 bool renders(const schedule::ClockedFocalPlane& source, std::string& why) {
     const model::Instrument& instrument = *source.instrument;
     const model::FocalPlane& fp = *source.focal_plane;
+    if (instrument.type == model::InstrumentType::data_recorder) {
+        why = "focal plane \"" + fp.name + "\" of data recorder \"" + instrument.name +
+              "\" makes no image: the recorder records its pose at these ticks "
+              "(docs/data-recorder.md)";
+        return false;
+    }
     if (instrument.type != model::InstrumentType::generic) {
         why = "instrument \"" + instrument.name + "\" is a " + instrument.type_text +
               " instrument; glint-render renders generic (camera) instruments";

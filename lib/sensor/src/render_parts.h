@@ -141,9 +141,24 @@ struct PlannedCapture {
     std::uint64_t event_count = 0;
 };
 
+/// A data recorder of the run and its two files (glint/sensor/telemetry.h).
+struct PlannedTelemetry {
+    std::size_t plugin = 0;      ///< index into the schedule's plugins
+    std::size_t instrument = 0;  ///< its pose service's instrument index
+    const model::Instrument* recorder = nullptr;
+    std::filesystem::path csv;
+    std::filesystem::path jsonl;
+};
+
+/// The data recorders the run writes: none in a --schedule run (one warning each). Throws
+/// glint::Error (input, at the recorder) when two would write the same file.
+std::vector<PlannedTelemetry> plan_telemetry(const RenderInputs& inputs,
+                                             const RenderOptions& options, const Context& context);
+
 /// Everything loaded and planned before the first capture (shared by render and plan).
 struct Prepared {
     RenderInputs inputs;
+    std::vector<PlannedTelemetry> telemetry;
     std::vector<PlannedCapture> captures;
     std::map<std::size_t, FocalPlaneState> states;  ///< by schedule source
     ImageOutputs outputs;
@@ -169,6 +184,10 @@ struct EventPlan {
 
 /// The processing events of `prepared`'s planned captures (docs/processing.md, "Events").
 EventPlan plan_events(const Prepared& prepared);
+
+/// Samples every planned data recorder and writes its files atomically.
+void write_telemetry(const Prepared& prepared, const RenderOptions& options,
+                     const Context& context);
 
 /// Writes the capture list of the run (--log_info_filename), atomically; nothing when the
 /// option is empty.

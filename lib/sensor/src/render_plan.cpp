@@ -142,8 +142,13 @@ std::unique_ptr<Prepared> prepare(model::SimulationInputs loaded, const RenderOp
     p->inputs = make_render_inputs(std::move(loaded), options, context);
     p->captures = select_captures(p->inputs, options, context);
     plan_outputs(p->inputs, p->captures, p->states, options, context, p->outputs);
+    p->telemetry = plan_telemetry(p->inputs, options, context);
     RenderReport& report = p->report;
     report.files = p->outputs.planned();
+    for (const PlannedTelemetry& t : p->telemetry) {
+        report.files.push_back(t.csv);
+        report.files.push_back(t.jsonl);
+    }
     const RenderInputs& in = p->inputs;
     std::uint64_t triangles = 0;
     for (const model::Instance& instance : in.scene.instances) {

@@ -23,10 +23,11 @@ constexpr const char* kMountPath = "platform/attachment/mount[M]";
 TEST(MountReader, MountsFixtureFieldByField) {
     const Read read = read_fixture("mounts.platform");
     ASSERT_FALSE(read.diagnostics.has_errors()) << dump(read.diagnostics);
-    // The only warnings: the two data recorders record nothing in glint.
+    // The only warnings: the two data recorders have no clock, so they record nothing.
     ASSERT_EQ(read.diagnostics.warning_count(), 2u) << dump(read.diagnostics);
     for (const Diagnostic& item : read.diagnostics.items()) {
-        EXPECT_THAT(item.message, HasSubstr("instrument type datarecorder is read, not applied"));
+        EXPECT_THAT(item.message, HasSubstr("has no <clock> (nor an enabled focal plane's): it "
+                                            "records nothing"));
     }
     const model::Platform& p = read.platform;
     ASSERT_EQ(p.attachments.size(), 3u);

@@ -128,12 +128,32 @@ struct InstrumentProperties {
 enum class InstrumentType { generic, lidar, data_recorder };
 
 /// `<instrument>`.
+/// Optional GPS/IMU-style noise of a data recorder (`<noise>`): the standard deviation of a
+/// zero-mean Gaussian added to each recorded component; unset: none.
+struct TelemetryNoise {
+    std::optional<double> position_m;          ///< each ENU axis
+    std::optional<double> velocity_m_s;        ///< each ENU axis
+    std::optional<double> orientation_deg;     ///< each Euler angle
+    std::optional<double> angular_rate_deg_s;  ///< each body axis
+    ErrorContext where;
+};
+
+/// What a data recorder instrument (`type="datarecorder"`) records (docs/data-recorder.md).
+struct DataRecorder {
+    /// The instrument-level `<clock>`; unset: its first enabled focal plane's clock.
+    std::optional<Clock> clock;
+    std::string basename;  ///< `<output><basename>`; default: the instrument's name
+    TelemetryNoise noise;
+    ErrorContext where;
+};
+
 struct Instrument {
     InstrumentType type = InstrumentType::generic;
     std::string type_text = "generic";  ///< as written
     std::string name;
     InstrumentProperties properties;
     std::vector<FocalPlane> focal_planes;
+    DataRecorder recorder;  ///< data recorders only
     ErrorContext where;
 };
 

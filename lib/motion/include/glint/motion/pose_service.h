@@ -92,6 +92,8 @@ public:
     Vec3 vehicle_velocity_m_s(double t_s) const;
     /// The vehicle trajectory.
     const Trajectory& trajectory() const noexcept { return *m_vehicle; }
+    /// The platform's rotation order: the `.ppd`'s, or a FlexMotion euler engine's, else xyz.
+    EulerOrder platform_rotation_order() const noexcept { return m_platform_jitter_order; }
 
 private:
     /// One attachment > mount step of an instrument's chain.
