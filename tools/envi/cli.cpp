@@ -68,6 +68,11 @@ void EnviCli::configure(CLI::App& app) {
     c.add_option("--band", m_band, "Write this one band (numbered from 0)")
         ->check(whole_number())
         ->type_name("N");
+    c.add_option("--pulse", m_pulse,
+                 "A DIRSIG lidar BIN input: write only this pulse (numbered from 0 over the "
+                 "file) to OUT; without it every pulse goes to OUT-pNNNN")
+        ->check(whole_number())
+        ->type_name("N");
     c.add_option("--bands", m_bands, "Write these bands as the output channels, e.g. 2,1,0")
         ->type_name("R,G,B");
     c.add_option("--gamma", m_gamma, "Display gamma: stretched values s become s^(1/G)")
@@ -136,6 +141,7 @@ void EnviCli::finish_convert() {
         o.output = m_convert_files[1];
     }
     if (c.count("--band") > 0) o.band = m_band;
+    if (c.count("--pulse") > 0) o.pulse = m_pulse;
     if (c.count("--bands") > 0) o.bands = parse_band_list(m_bands);
     if (c.count("--gamma") > 0) o.gamma = m_gamma;
     if (c.count("--percent") > 0) o.percent = m_percent;

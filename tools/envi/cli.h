@@ -42,6 +42,7 @@ private:
     double m_min = 0.0;
     double m_max = 0.0;
     std::size_t m_band = 0;
+    std::size_t m_pulse = 0;
     int m_bit_depth = 8;
 
     int m_crf = 23;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // `glint-envi info`: text and JSON reports of ENVI headers.
 #include "glint/app_envi/info.h"
+#include "glint/app_envi/lidar_bin.h"
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
@@ -184,6 +185,17 @@ int report_info(const InfoOptions& options, Context& ctx, std::ostream& out) {
     for (const auto& file : options.files) {
         ctx.cancel.throw_if_cancelled();
         try {
+            if (!is_stdio_name(file) && is_lidar_bin(file)) {
+                const io::BinFile bin = io::read_bin(file);
+                if (options.format == ReportFormat::json) {
+                    all.push_back(nlohmann::ordered_json::parse(format_bin_json(file, bin)));
+                } else {
+                    if (!first) out << '\n';
+                    out << format_bin_text(file, bin);
+                    first = false;
+                }
+                continue;
+            }
             const Described d = describe(file);
             if (options.format == ReportFormat::json) {
                 all.push_back(info_json(file, d.header, d.data_path, d.header_path));

@@ -69,6 +69,8 @@ struct ConvertOptions {
     std::optional<int> bit_depth;               ///< 8, 16, 32 (64 for ENVI)
     std::optional<io::EnviDataType> data_type;  ///< ENVI output type
     Colormap colormap = Colormap::automatic;    ///< how one band of labels is drawn
+    /// A DIRSIG lidar BIN input: the pulse to write (glint/app_envi/lidar_bin.h); unset: all.
+    std::optional<std::uint64_t> pulse;
 };
 
 /// What convert did.

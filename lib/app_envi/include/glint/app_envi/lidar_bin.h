@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: Apache-2.0
+// glint-envi on DIRSIG lidar BIN files (glint/io/lidar_bin.h; docs/lidar-bin.md): `info`
+// reports the file, task and pulse headers (text or JSON), `convert` writes one ENVI cube per
+// pulse — x × y × (1 + bins · samples per bin), BIP float64, band 0 the passive photon rate
+// (photons/s), then the time bins (photons) named by their start time after the pulse.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "glint/app_envi/report.h"
+#include "glint/core/context.h"
+#include "glint/io/lidar_bin.h"
+
+namespace glint::app_envi {
+
+/// True when `path` is a file beginning with DIRSIG's BIN magic (DIRSIGPROTO).
+bool is_lidar_bin(const std::filesystem::path& path);
+
+/// The text report of a BIN file (what `info` prints).
+std::string format_bin_text(const std::filesystem::path& path, const io::BinFile& file);
+/// Its JSON report, serialized with 2-space indentation.
+std::string format_bin_json(const std::filesystem::path& path, const io::BinFile& file);
+
+/// Writes `input`'s pulses as ENVI cubes: with `pulse` (0-based over the whole file) that one
+/// to `output`; else every pulse to `output` with `-pNNNN` before its extension. Returns the
+/// files written. Throws glint::Error (usage) for a pulse out of range or an output that is
+/// not ENVI, (input) for a bad BIN file, (io) when an output cannot be written.
+std::vector<std::filesystem::path> convert_bin(const std::filesystem::path& input,
+                                               const std::filesystem::path& output,
+                                               std::optional<std::uint64_t> pulse,
+                                               const Context& ctx);
+
+}  // namespace glint::app_envi

@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: Apache-2.0
+// DIRSIG's lidar BIN format (the lidar capture method's output; docs/lidar-bin.md): a file
+// header, then per task a task header, then per pulse a pulse header and its data — the
+// per-pixel passive photon rate followed by the time-bin photon counts, float64, zlib
+// compressed. Every multi-byte value uses the byte order the file header names; strings are
+// fixed-length and NUL padded. The reader takes format versions 0, 1 and 2; the writer writes
+// version 2, little endian. Pixel order of pulse data (glint's reading, which the writer
+// follows): pixel after pixel with x (column) fastest and y (row) slowest, each pixel's
+// 1 + bins × samples_per_bin values together, the passive rate first.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace glint::io {
+
+/// The BIN file header.
+struct BinFileHeader {
+    std::uint8_t version = 2;
+    bool little_endian = true;
+    std::string created;         ///< 15 characters, "YYYYMMDDThhmmss" (UTC)
+    std::string dirsig_version;  ///< 32 characters
+    std::string description;     ///< 256 characters
+    double origin_latitude_deg = 0.0;
+    double origin_longitude_deg = 0.0;
+    double origin_height_m = 0.0;
+    std::string transmitter_mount;  ///< 16 characters
+    std::string receiver_mount;     ///< 16 characters
+    std::uint32_t x_count = 0;
+    std::uint32_t y_count = 0;
+    double x_pitch_m = 0.0;
+    double y_pitch_m = 0.0;
+    double x_offset_m = 0.0;  ///< version ≥ 1
+    double y_offset_m = 0.0;
+    double k1 = 0.0;  ///< lens distortion, version ≥ 1
+    double k2 = 0.0;
+    std::uint32_t task_count = 0;
+    std::uint16_t focal_plane_id = 0;  ///< version ≥ 2
+};
+
+/// A task header.
+struct BinTaskHeader {
+    std::string description;  ///< 64 characters
+    std::string start;        ///< 15 characters
+    std::string stop;         ///< 15 characters
+    double focal_length_mm = 0.0;
+    double pulse_rate_hz = 0.0;
+    double pulse_duration_s = 0.0;
+    double pulse_energy_j = 0.0;
+    double laser_center_um = 0.0;
+    double laser_width_um = 0.0;
+    std::uint32_t pulse_count = 0;
+};
+
+using Affine16 = std::array<double, 16>;  ///< row-major 4 × 4
+inline constexpr Affine16 kIdentity16{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+
+/// A pulse: its header and, decompressed, its data.
+struct BinPulse {
+    double time_s = 0.0;
+    double gate_start_s = 0.0;  ///< after the pulse
+    double gate_stop_s = 0.0;
+    std::uint32_t bin_count = 0;
+    std::uint32_t samples_per_bin = 1;
+    std::array<double, 3> platform_location{};
+    std::array<double, 3> platform_rotation{};
+    std::string angle_order = "xyz";  ///< versions 0 and 1 only
+    Affine16 transmitter_to_mount = kIdentity16;
+    std::array<double, 3> transmitter_mount_pointing{};
+    Affine16 transmitter_mount_to_platform = kIdentity16;
+    Affine16 receiver_to_mount = kIdentity16;
+    std::array<double, 3> receiver_mount_pointing{};
+    Affine16 receiver_mount_to_platform = kIdentity16;
+    std::int32_t data_type = 5;      ///< 5 = float64 (the only one read)
+    std::uint8_t compression = 1;    ///< 0 none, 1 zlib
+    std::uint32_t pulse_index = 0;   ///< version 2
+    std::uint64_t data_bytes = 0;    ///< as stored
+    Affine16 transmit_mueller = kIdentity16;  ///< version 2
+    Affine16 receive_mueller = kIdentity16;
+    /// x_count · y_count · (1 + bin_count · samples_per_bin) values.
+    std::vector<double> data;
+
+    /// Values per pixel.
+    std::size_t values_per_pixel() const {
+        return 1 + static_cast<std::size_t>(bin_count) * samples_per_bin;
+    }
+};
+
+/// A task and its pulses.
+struct BinTask {
+    BinTaskHeader header;
+    std::vector<BinPulse> pulses;
+};
+
+/// A whole BIN file.
+struct BinFile {
+    BinFileHeader header;
+    std::vector<BinTask> tasks;
+};
+
+/// Reads a BIN file (versions 0–2, either byte order; zlib or uncompressed float64 data).
+/// Throws glint::Error (io) when it cannot be read, (input, naming the file and the byte
+/// offset) when it is not a BIN file or is truncated or inconsistent.
+BinFile read_bin(const std::filesystem::path& path);
+
+/// Writes `file` as a version-2, little-endian BIN file with zlib-compressed data, atomically.
+/// Throws glint::Error (usage) when a pulse's data size does not match the header counts,
+/// (io) when it cannot be written.
+void write_bin(const std::filesystem::path& path, const BinFile& file);
+
+}  // namespace glint::io
