@@ -294,6 +294,8 @@ Json detector_json(const DetectorArray& a) {
     j["x_flip"] = a.x_flip;
     j["y_flip"] = a.y_flip;
     j["rolling_line_time_s"] = optional_value(a.rolling_line_time_s);
+    j["x_oversample"] = a.x_oversample;
+    j["y_oversample"] = a.y_oversample;
     j["clock"] = clock_json(a.clock);
     return j;
 }
@@ -374,6 +376,18 @@ Json instrument_json(std::size_t index, const InstrumentPath& path) {
         planes.push_back(focal_plane_json(i, instrument.focal_planes[i], p));
     }
     j["focal_planes"] = std::move(planes);
+    j["recorder"] = Json();  // null but for data recorders: every key is always written
+    if (instrument.type == InstrumentType::data_recorder) {
+        const DataRecorder& r = instrument.recorder;
+        const TelemetryNoise& n = r.noise;
+        j["recorder"] =
+            Json{{"clock", r.clock ? clock_json(*r.clock) : Json()},
+                 {"basename", r.basename},
+                 {"noise_sigma", Json{{"position_m", optional_value(n.position_m)},
+                                      {"velocity_m_s", optional_value(n.velocity_m_s)},
+                                      {"orientation_deg", optional_value(n.orientation_deg)},
+                                      {"angular_rate_deg_s", optional_value(n.angular_rate_deg_s)}}}};
+    }
     return j;
 }
 

@@ -71,7 +71,13 @@ void expect_complete(const Json& d) {
     for (const Json& instrument : d["instruments"]) {
         EXPECT_EQ(keys(instrument),
                   (std::set<std::string>{"index", "name", "type", "type_text", "path", "properties",
-                                         "derived", "focal_planes"}));
+                                         "derived", "focal_planes", "recorder"}));
+        if (instrument["type"] == "datarecorder") {
+            EXPECT_EQ(keys(instrument["recorder"]),
+                      (std::set<std::string>{"clock", "basename", "noise_sigma"}));
+        } else {
+            EXPECT_TRUE(instrument["recorder"].is_null());
+        }
         EXPECT_EQ(keys(instrument["properties"]),
                   (std::set<std::string>{"focal_length_m", "aperture_diameter_m",
                                          "aperture_throughput", "focus_distance_m", "distortion"}));
@@ -90,7 +96,8 @@ void expect_complete(const Json& d) {
                       (std::set<std::string>{"spatial_units", "x_count", "y_count", "x_size_m",
                                              "y_size_m", "x_spacing_m", "y_spacing_m", "x_offset_m",
                                              "y_offset_m", "x_flip", "y_flip",
-                                             "rolling_line_time_s", "clock"}));
+                                             "rolling_line_time_s", "x_oversample",
+                                             "y_oversample", "clock"}));
             EXPECT_EQ(keys(fp["detector_array"]["clock"]),
                       (std::set<std::string>{"type", "temporal_units", "rate_hz", "offset_s",
                                              "master", "divider", "offset_count", "trigger_file"}));
