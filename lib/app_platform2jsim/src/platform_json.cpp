@@ -206,6 +206,15 @@ Json capture_json(const CaptureMethod& c) {
                                   {"remove_file", t.remove_file}});
     }
     j["processing"] = std::move(processing);
+    j["signal_gate"] = Json();  // lidar captures only
+    if (c.signal_gate) {
+        const SignalGate& g = *c.signal_gate;
+        j["signal_gate"] = Json{{"start_s", g.start_s},
+                                {"stop_s", g.stop_s},
+                                {"bin_width_s", g.bin_width_s},
+                                {"bin_count", g.bin_count()},
+                                {"samples_per_bin", g.samples_per_bin}};
+    }
     return j;
 }
 
@@ -376,6 +385,16 @@ Json instrument_json(std::size_t index, const InstrumentPath& path) {
         planes.push_back(focal_plane_json(i, instrument.focal_planes[i], p));
     }
     j["focal_planes"] = std::move(planes);
+    j["transmitter"] = Json();  // null but for lidar instruments
+    if (instrument.transmitter) {
+        const Transmitter& t = *instrument.transmitter;
+        j["transmitter"] = Json{{"wavelength_um", t.wavelength_um},
+                                {"spectral_width_um", t.spectral_width_um},
+                                {"pulse_energy_j", t.pulse_energy_j},
+                                {"pulse_duration_s", t.pulse_duration_s},
+                                {"pulse_shape_file", file_ref(t.pulse_shape_file)},
+                                {"beam_divergence_rad", t.beam_divergence_rad}};
+    }
     j["recorder"] = Json();  // null but for data recorders: every key is always written
     if (instrument.type == InstrumentType::data_recorder) {
         const DataRecorder& r = instrument.recorder;

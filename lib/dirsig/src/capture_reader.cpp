@@ -395,13 +395,45 @@ model::ImageFile read_image_file(const io::XmlNode& node, bool radiometric,
     return file;
 }
 
+/// `<signalgate>`: start, stop (s after the pulse), bin width (s), samples per bin.
+static model::SignalGate read_signal_gate(const io::XmlNode& node, Diagnostics& diagnostics) {
+    model::SignalGate gate;
+    gate.where = node.where();
+    node.warn_unknown_children({"start", "stop", "binwidth", "samplespertimebin"}, diagnostics);
+    const std::size_t errors = diagnostics.error_count();
+    const auto start = node.required_double("start", diagnostics, io::NumberRule::non_negative());
+    const auto stop = node.required_double("stop", diagnostics, io::NumberRule::positive());
+    const auto width = node.required_double("binwidth", diagnostics, io::NumberRule::positive());
+    gate.samples_per_bin = static_cast<std::uint32_t>(
+        node.optional_int("samplespertimebin", diagnostics, 1, 1024).value_or(1));
+    if (diagnostics.error_count() != errors || !start || !stop || !width) return gate;
+    gate.start_s = *start;
+    gate.stop_s = *stop;
+    gate.bin_width_s = *width;
+    if (!(*stop > *start)) {
+        diagnostics.error(node.child("stop")->where(),
+                          "the gate stops at " + format_shortest(*stop) +
+                              " s, expected after its start (" + format_shortest(*start) + " s)");
+        return gate;
+    }
+    const double bins = (*stop - *start) / *width;
+    if (std::abs(bins - std::round(bins)) > 1e-6 * bins || bins > 1e7) {
+        diagnostics.error(node.child("binwidth")->where(),
+                          "the " + format_shortest(*stop - *start) + " s gate holds " +
+                              format_shortest(bins) + " bins of " + format_shortest(*width) +
+                              " s, expected a whole number up to 10^7");
+    }
+    return gate;
+}
+
 model::CaptureMethod read_capture_method(const io::XmlNode& node, const ReadContext& context,
                                          Diagnostics& diagnostics) {
     model::CaptureMethod capture;
     capture.where = node.where();
     node.warn_unknown_children(
         {"samplestrategy", "imagefile", "spectralresponse", "spatialresponse",
-         "temporalintegration", "detectormodel", "convergence", "psf", "activearea", "processing"},
+         "temporalintegration", "detectormodel", "convergence", "psf", "activearea", "processing",
+         "signalgate"},
         diagnostics);
     const auto type = node.attribute_enum("type", {"simple", "raw", "lidar"}, diagnostics);
     if (type == "raw") capture.type = model::CaptureMethodType::raw;
@@ -414,6 +446,17 @@ model::CaptureMethod read_capture_method(const io::XmlNode& node, const ReadCont
                             "rendered as a passive image)");
     }
     const bool passive = capture.type != model::CaptureMethodType::lidar;
+    if (const auto gate = single_child(node, "signalgate", diagnostics)) {
+        if (passive) {
+            diagnostics.warning(gate->where(), "<signalgate> is read only in a lidar capture "
+                                               "(capturemethod type lidar): ignored");
+        } else {
+            capture.signal_gate = read_signal_gate(*gate, diagnostics);
+        }
+    } else if (!passive) {
+        diagnostics.error(node.where(), "a lidar capture needs a <signalgate> (the range gate: "
+                                        "<start>, <stop> and <binwidth> in s after the pulse)");
+    }
 
     if (const auto strategy = single_child(node, "samplestrategy", diagnostics)) {
         capture.sample_strategy = read_sample_strategy(*strategy, diagnostics);

@@ -197,6 +197,40 @@ model::FocalPlane read_focal_plane(const io::XmlNode& node, const ReadContext& c
     return plane;
 }
 
+/// A lidar instrument's `<transmitter>` (docs/lidar.md).
+model::Transmitter read_transmitter(const io::XmlNode& node, const ReadContext& context,
+                                    Diagnostics& diagnostics) {
+    model::Transmitter t;
+    t.where = node.where();
+    node.warn_unknown_children({"wavelength", "spectralwidth", "pulseenergy", "pulseduration",
+                                "pulseshape", "beamdivergence"},
+                               diagnostics);
+    const io::NumberRule positive = io::NumberRule::positive();
+    t.wavelength_um = node.required_double("wavelength", diagnostics, positive).value_or(0.0);
+    t.spectral_width_um =
+        node.optional_double("spectralwidth", diagnostics, io::NumberRule::non_negative())
+            .value_or(0.0);
+    t.pulse_energy_j = node.required_double("pulseenergy", diagnostics, positive).value_or(0.0);
+    t.pulse_duration_s = node.required_double("pulseduration", diagnostics, positive).value_or(0.0);
+    t.beam_divergence_rad =
+        node.required_double("beamdivergence", diagnostics, positive).value_or(0.0);
+    if (const auto shape = node.child("pulseshape")) {
+        shape->warn_unknown_children({"filename"}, diagnostics);
+        const auto type = shape->attribute_enum("type", {"gaussian", "tabulated"}, diagnostics);
+        if (type == "tabulated") {
+            const auto file = shape->child("filename");
+            if (!file) {
+                diagnostics.error(shape->where(), "a tabulated <pulseshape> needs <filename> "
+                                                  "(time s, relative power)");
+            } else {
+                t.pulse_shape_file = context.options.paths.resolve(
+                    file->text(), context.base_dir, file->where(), diagnostics);
+            }
+        }
+    }
+    return t;
+}
+
 /// A data recorder's `<clock>`, `<output>` and `<noise>` (docs/data-recorder.md).
 model::DataRecorder read_data_recorder(const io::XmlNode& node, const std::string& name,
                                        const ReadContext& context, Diagnostics& diagnostics) {
@@ -286,10 +320,21 @@ model::Instrument read_instrument(const io::XmlNode& node, const ReadContext& co
     }
     const bool recorder = instrument.type == model::InstrumentType::data_recorder;
     if (recorder) instrument.recorder = read_data_recorder(node, instrument.name, context, diagnostics);
+    const bool lidar = instrument.type == model::InstrumentType::lidar;
+    if (lidar) {
+        if (const auto transmitter = node.child("transmitter")) {
+            instrument.transmitter = read_transmitter(*transmitter, context, diagnostics);
+        } else {
+            diagnostics.error(node.where(), "a lidar instrument needs a <transmitter> (its laser: "
+                                            "wavelength, pulse energy and duration, beam "
+                                            "divergence)");
+        }
+    }
     static constexpr std::array<std::string_view, 8> kNotUsed = {
         "frame", "options", "clock", "datetime", "source", "transmitter", "receiver", "output"};
     for (const io::XmlNode& child : node.children()) {
         if (recorder && (child.name() == "clock" || child.name() == "output")) continue;
+        if (lidar && child.name() == "transmitter") continue;
         if (std::find(kNotUsed.begin(), kNotUsed.end(), child.name()) != kNotUsed.end()) {
             warn_not_used(child, diagnostics);
         }

@@ -71,7 +71,7 @@ void expect_complete(const Json& d) {
     for (const Json& instrument : d["instruments"]) {
         EXPECT_EQ(keys(instrument),
                   (std::set<std::string>{"index", "name", "type", "type_text", "path", "properties",
-                                         "derived", "focal_planes", "recorder"}));
+                                         "derived", "focal_planes", "recorder", "transmitter"}));
         if (instrument["type"] == "datarecorder") {
             EXPECT_EQ(keys(instrument["recorder"]),
                       (std::set<std::string>{"clock", "basename", "noise_sigma"}));
@@ -91,7 +91,8 @@ void expect_complete(const Json& d) {
                 keys(fp["capture_method"]),
                 (std::set<std::string>{"type", "name", "sample_strategy", "image_file",
                                        "spatial_response", "temporal_integration", "detector_model",
-                                       "convergence", "psf", "active_area_image", "processing"}));
+                                       "convergence", "psf", "active_area_image", "processing",
+                                       "signal_gate"}));
             EXPECT_EQ(keys(fp["detector_array"]),
                       (std::set<std::string>{"spatial_units", "x_count", "y_count", "x_size_m",
                                              "y_size_m", "x_spacing_m", "y_spacing_m", "x_offset_m",

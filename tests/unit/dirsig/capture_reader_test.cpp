@@ -61,16 +61,67 @@ TEST(CaptureReader, TypeAndName) {
     EXPECT_EQ(read.capture.type, CaptureMethodType::raw);
     EXPECT_TRUE(clean(read));
     EXPECT_EQ(read.capture.name, "Raw one");
-    // A lidar capture writes a BIN file: no image file or spectral response is required.
-    // glint models no lidar capture: one warning at the type.
-    read = read_capture("<capturemethod type=\"lidar\"/>");
+    // A lidar capture writes a BIN file: no image file or spectral response is required, but
+    // its range gate is. glint renders no lidar capture yet: one warning at the type.
+    read = read_capture(
+        "<capturemethod type=\"lidar\"><signalgate><start>6e-6</start><stop>7.5e-6</stop>"
+        "<binwidth>1e-9</binwidth><samplespertimebin>2</samplespertimebin></signalgate>"
+        "</capturemethod>");
     EXPECT_EQ(read.capture.type, CaptureMethodType::lidar);
     EXPECT_EQ(read.diagnostics.error_count(), 0u) << list_diagnostics(read.diagnostics);
     ASSERT_EQ(read.diagnostics.warning_count(), 1u) << list_diagnostics(read.diagnostics);
     EXPECT_THAT(read.diagnostics.items()[0].message,
                 ::testing::HasSubstr("capturemethod type lidar is read, not applied"));
     EXPECT_EQ(read.diagnostics.items()[0].where.element, "capturemethod@type");
+    ASSERT_TRUE(read.capture.signal_gate);
+    EXPECT_EQ(read.capture.signal_gate->start_s, 6e-6);
+    EXPECT_EQ(read.capture.signal_gate->stop_s, 7.5e-6);
+    EXPECT_EQ(read.capture.signal_gate->bin_count(), 1500u);
+    EXPECT_EQ(read.capture.signal_gate->samples_per_bin, 2u);
 }
+
+struct GateCase {
+    const char* name;
+    const char* gate;
+    const char* message;
+    const char* element;  ///< where the error is (all on line 1)
+};
+
+class LidarGateErrors : public ::testing::TestWithParam<GateCase> {};
+
+TEST_P(LidarGateErrors, OneErrorAtTheElement) {
+    const GateCase& c = GetParam();
+    const auto read =
+        read_capture(std::string("<capturemethod type=\"lidar\">") + c.gate + "</capturemethod>");
+    EXPECT_EQ(read.diagnostics.error_count(), 1u) << list_diagnostics(read.diagnostics);
+    EXPECT_TRUE(has_error(read, c.message, "<capturemethod", c.element));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    CaptureReader, LidarGateErrors,
+    ::testing::Values(
+        GateCase{"NoGate", "",
+                 "a lidar capture needs a <signalgate> (the range gate: <start>, <stop> and "
+                 "<binwidth> in s after the pulse)",
+                 "capturemethod"},
+        GateCase{"StopBeforeStart",
+                 "<signalgate><start>7e-6</start><stop>6e-6</stop><binwidth>1e-9</binwidth>"
+                 "</signalgate>",
+                 "the gate stops at 6e-06 s, expected after its start (7e-06 s)",
+                 "capturemethod/signalgate/stop"},
+        GateCase{"ZeroBinWidth",
+                 "<signalgate><start>6e-6</start><stop>7e-6</stop><binwidth>0</binwidth>"
+                 "</signalgate>",
+                 "expected a number > 0, got \"0\"", "capturemethod/signalgate/binwidth"},
+        GateCase{"BinsNotWhole",
+                 "<signalgate><start>0</start><stop>1e-6</stop><binwidth>3e-9</binwidth>"
+                 "</signalgate>",
+                 "the 1e-06 s gate holds 333.3333333333333 bins of 3e-09 s, expected a whole "
+                 "number up to 10^7",
+                 "capturemethod/signalgate/binwidth"}),
+    [](const ::testing::TestParamInfo<GateCase>& param_info) {
+        return std::string(param_info.param.name);
+    });
 
 TEST(CaptureReader, RawNeedsNoChannels) {
     const auto read = read_capture(capture_xml("", kBandpass, "type=\"raw\""));

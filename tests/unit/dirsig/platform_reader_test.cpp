@@ -371,7 +371,10 @@ TEST(PlatformReader, InstrumentTypesAndVariants) {
     const Read read = read_text(
         dir, with_instrument("<instrument name=\"A\" type=\"Data_Recorder\"/>\n"
                              "<instrument name=\"B\" type=\"data recorder\"/>\n"
-                             "<instrument name=\"C\" type=\"lidar\"/>\n"
+                             "<instrument name=\"C\" type=\"lidar\"><transmitter>"
+                             "<wavelength>1.064</wavelength><pulseenergy>1e-3</pulseenergy>"
+                             "<pulseduration>5e-9</pulseduration><beamdivergence>1e-3"
+                             "</beamdivergence></transmitter></instrument>\n"
                              "<instrument name=\"D\"><properties><focallength>10</focallength>"
                              "</properties></instrument>"));
     ASSERT_FALSE(read.diagnostics.has_errors()) << dump(read.diagnostics);
@@ -381,6 +384,12 @@ TEST(PlatformReader, InstrumentTypesAndVariants) {
     EXPECT_EQ(list[0].type_text, "Data_Recorder");
     EXPECT_EQ(list[1].type, model::InstrumentType::data_recorder);
     EXPECT_EQ(list[2].type, model::InstrumentType::lidar);
+    ASSERT_TRUE(list[2].transmitter);
+    EXPECT_EQ(list[2].transmitter->wavelength_um, 1.064);
+    EXPECT_EQ(list[2].transmitter->pulse_energy_j, 1e-3);
+    EXPECT_EQ(list[2].transmitter->pulse_duration_s, 5e-9);
+    EXPECT_EQ(list[2].transmitter->beam_divergence_rad, 1e-3);
+    EXPECT_TRUE(list[2].transmitter->pulse_shape_file.empty());  // Gaussian
     EXPECT_EQ(list[3].type, model::InstrumentType::generic);  // default
     EXPECT_EQ(list[3].type_text, "generic");
     // The lidar and the generic camera without focal planes capture nothing: warned.
@@ -407,11 +416,14 @@ TEST(PlatformReader, GenericInstrumentNeedsFocalLength) {
                                        "</instrument>"));
     expect_diagnostic(missing, "missing required element <focallength>", 6,
                       std::string(kInstrumentPath) + "/properties");
-    // A lidar or data recorder may go without.
+    // A lidar or data recorder may go without; a lidar needs its transmitter instead.
     const Read lidar =
         read_text(dir, with_instrument("<instrument name=\"L\" type=\"lidar\"><properties/>"
                                        "</instrument>"));
-    EXPECT_FALSE(lidar.diagnostics.has_errors()) << dump(lidar.diagnostics);
+    expect_diagnostic(lidar,
+                      "a lidar instrument needs a <transmitter> (its laser: wavelength, pulse "
+                      "energy and duration, beam divergence)",
+                      5, std::string("platform/attachment/instrument[L]"));
 }
 
 TEST(PlatformReader, InstrumentPropertyErrors) {

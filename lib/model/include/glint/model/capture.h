@@ -34,6 +34,10 @@
 // | activearea/image | 8-bit grey mask of one pixel (path resolved, existence checked later) | - | required in activearea |
 // | processing/task@schedule | collection_started, task_started, capture_started, capture_completed, task_completed, collection_completed | - | required |
 // | processing/task/message, program, argument*, removefile | text, non-empty text, text without whitespace, bool | - | "", required, -, false |
+// | signalgate (lidar only; required there) | | | |
+// | signalgate/start, stop | numbers, 0 <= start < stop | s after the pulse | required |
+// | signalgate/binwidth | number > 0, (stop − start) / binwidth whole (to 1e-6) | s | required |
+// | signalgate/samplespertimebin | integer 1–1024 | - | 1 |
 // (psf, activearea, convergence, processing and detectormodel are also accepted directly in
 // focalplane; giving one in both places is an error. docs/formats.md has the details.)
 // clang-format on
@@ -143,6 +147,19 @@ struct SpatialResponse {
     ErrorContext where;
 };
 
+/// A lidar capture's range gate (`<signalgate>`, docs/lidar.md): the receiver records
+/// photons from `start_s` to `stop_s` after each pulse in bins of `bin_width_s`.
+struct SignalGate {
+    double start_s = 0.0;
+    double stop_s = 0.0;
+    double bin_width_s = 0.0;
+    std::uint32_t samples_per_bin = 1;
+    ErrorContext where;
+
+    /// Bins in the gate: (stop − start) / bin width, rounded (the reader checks it is whole).
+    std::uint64_t bin_count() const;
+};
+
 /// `<capturemethod>`.
 struct CaptureMethod {
     CaptureMethodType type = CaptureMethodType::simple;
@@ -157,6 +174,7 @@ struct CaptureMethod {
     std::optional<Psf> psf;
     FileRef active_area_image;  ///< empty = full pixel
     std::vector<ProcessingTask> processing;
+    std::optional<SignalGate> signal_gate;  ///< lidar captures only
     ErrorContext where;
 };
 

@@ -147,6 +147,18 @@ struct DataRecorder {
     ErrorContext where;
 };
 
+/// A lidar instrument's laser (`<transmitter>`, docs/lidar.md). It sits at the instrument's
+/// frame and fires along its boresight (−Z), one pulse per tick of the receiver's clock.
+struct Transmitter {
+    double wavelength_um = 0.0;
+    double spectral_width_um = 0.0;    ///< FWHM of the laser line
+    double pulse_energy_j = 0.0;
+    double pulse_duration_s = 0.0;     ///< FWHM of the temporal shape
+    FileRef pulse_shape_file;          ///< tabulated shape (time s, relative power); empty: Gaussian
+    double beam_divergence_rad = 0.0;  ///< full angle at 1/e² of a Gaussian beam
+    ErrorContext where;
+};
+
 struct Instrument {
     InstrumentType type = InstrumentType::generic;
     std::string type_text = "generic";  ///< as written
@@ -154,6 +166,7 @@ struct Instrument {
     InstrumentProperties properties;
     std::vector<FocalPlane> focal_planes;
     DataRecorder recorder;  ///< data recorders only
+    std::optional<Transmitter> transmitter;  ///< lidar instruments only
     ErrorContext where;
 };
 
