@@ -18,8 +18,8 @@ bool renders(const schedule::ClockedFocalPlane& source, std::string& why) {
     const model::FocalPlane& fp = *source.focal_plane;
     if (instrument.type == model::InstrumentType::data_recorder) {
         why = "focal plane \"" + fp.name + "\" of data recorder \"" + instrument.name +
-              "\" makes no image: the recorder records its pose at these ticks "
-              "(docs/data-recorder.md)";
+              "\" makes no image (its capture method is read, not applied): the recorder "
+              "records its pose at its clock's ticks (docs/data-recorder.md)";
         return false;
     }
     if (instrument.type != model::InstrumentType::generic) {

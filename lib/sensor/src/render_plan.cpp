@@ -26,10 +26,14 @@ std::vector<PlannedCapture> select_captures(const RenderInputs& in, const Render
         std::string why;
         if (!renders(sources[s], why)) {
             skip[s] = true;
-            // A lidar or data-recorder instrument was warned about by the reader.
-            if (sources[s].instrument->type == model::InstrumentType::generic) {
+            // A lidar instrument was warned about by the reader; a data recorder's focal plane
+            // (its imagefile, spectral response, ...) is said here, once.
+            const model::InstrumentType type = sources[s].instrument->type;
+            if (type == model::InstrumentType::generic) {
                 context.log.warning(
                     format_located(sources[s].focal_plane->where, why + ": not rendered"));
+            } else if (type == model::InstrumentType::data_recorder) {
+                context.log.warning(format_located(sources[s].focal_plane->where, why));
             }
         }
     }
