@@ -249,21 +249,21 @@ struct MatReader {
                                 "SURFACE_PROPERTIES of point-source material \"" + m.name +
                                     "\" are not read: a source has no surface");
         }
-        const MatEntry* file = block.find("INTENSITY_FILENAME");
-        if (!file || file->value.empty()) {
+        const MatEntry* intensity = block.find("INTENSITY_FILENAME");
+        if (!intensity || intensity->value.empty()) {
             diagnostics.error(m.where, "point-source material \"" + m.name +
                                            "\" (OPTICAL_DESCRIPTION = SOURCE) needs "
                                            "INTENSITY_FILENAME (wavelength um, W/(sr um))");
             return;
         }
         // DIRSIG does not document the file's units; glint reads it as its curve files.
-        diagnostics.warning(at(file->line, path + "/INTENSITY_FILENAME"),
+        diagnostics.warning(at(intensity->line, path + "/INTENSITY_FILENAME"),
                             "point-source material \"" + m.name +
                                 "\": INTENSITY_FILENAME read as wavelength (um) and spectral "
                                 "intensity (W/(sr um)) columns, an isotropic source "
                                 "(glint's reading)");
         m.intensity_w_per_sr_um =
-            read_curve(*file, path + "/INTENSITY_FILENAME", "intensity",
+            read_curve(*intensity, path + "/INTENSITY_FILENAME", "intensity",
                        std::numeric_limits<double>::infinity());
     }
 
@@ -297,8 +297,8 @@ struct MatReader {
                                 "OPTICAL_DESCRIPTION \"" + optical->value + "\" of material \"" +
                                     m.name + "\" is not SOURCE: read as a surface material");
         }
-        if (const MatEntry* file = block.find("INTENSITY_FILENAME")) {
-            diagnostics.warning(at(file->line, path + "/INTENSITY_FILENAME"),
+        if (const MatEntry* intensity = block.find("INTENSITY_FILENAME")) {
+            diagnostics.warning(at(intensity->line, path + "/INTENSITY_FILENAME"),
                                 "INTENSITY_FILENAME is read only with OPTICAL_DESCRIPTION = "
                                 "SOURCE; ignored");
         }
