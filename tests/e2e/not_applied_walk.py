@@ -52,7 +52,13 @@ def expected_warnings(items):
         if tag == "spatialresponse":
             out.append((e["line"], "<spatialresponse> is a DIRSIG4 setting"))
         elif tag == "capturemethod" and kind == "lidar":
-            out.append((e["line"], "capturemethod type lidar is read, not applied"))
+            detector = child(e, "detectormodel")
+            if detector:
+                out.append((detector["line"], "a lidar capture applies only the detector model's"))
+            integration = child(e, "temporalintegration")
+            time = integration and child(integration, "time")
+            if time and float(time["text"].strip() or "0") > 0:
+                out.append((integration["line"], "does not apply to a lidar capture"))
         elif tag == "capturemethod" and kind == "raw":
             response = child(e, "spectralresponse")
             channels = response and child(response, "channellist")
@@ -61,8 +67,6 @@ def expected_warnings(items):
                 out.append((first["line"], "the <channel>s of a raw capture are read"))
         elif tag == "samplestrategy" and kind not in ("", "central"):
             out.append((e["line"], "samplestrategy type"))
-        elif tag == "instrument" and kind == "lidar":
-            out.append((e["line"], f"instrument type {kind} is read, not applied"))
         elif (tag == "instrument" and kind == "datarecorder" and child(e, "clock") is None
               and child(e, "focalplane") is None):
             out.append((e["line"], "has no <clock> (nor an enabled focal plane's): it records"))

@@ -393,19 +393,20 @@ Json instrument_json(std::size_t index, const InstrumentPath& path) {
                                 {"pulse_energy_j", t.pulse_energy_j},
                                 {"pulse_duration_s", t.pulse_duration_s},
                                 {"pulse_shape_file", file_ref(t.pulse_shape_file)},
-                                {"beam_divergence_rad", t.beam_divergence_rad}};
+                                {"beam_divergence_rad", t.beam_divergence_rad},
+                                {"pulse_rate_hz", optional_value(t.pulse_rate_hz)}};
     }
     j["recorder"] = Json();  // null but for data recorders: every key is always written
     if (instrument.type == InstrumentType::data_recorder) {
         const DataRecorder& r = instrument.recorder;
         const TelemetryNoise& n = r.noise;
-        j["recorder"] =
-            Json{{"clock", r.clock ? clock_json(*r.clock) : Json()},
-                 {"basename", r.basename},
-                 {"noise_sigma", Json{{"position_m", optional_value(n.position_m)},
-                                      {"velocity_m_s", optional_value(n.velocity_m_s)},
-                                      {"orientation_deg", optional_value(n.orientation_deg)},
-                                      {"angular_rate_deg_s", optional_value(n.angular_rate_deg_s)}}}};
+        j["recorder"] = Json{
+            {"clock", r.clock ? clock_json(*r.clock) : Json()},
+            {"basename", r.basename},
+            {"noise_sigma", Json{{"position_m", optional_value(n.position_m)},
+                                 {"velocity_m_s", optional_value(n.velocity_m_s)},
+                                 {"orientation_deg", optional_value(n.orientation_deg)},
+                                 {"angular_rate_deg_s", optional_value(n.angular_rate_deg_s)}}}};
     }
     return j;
 }

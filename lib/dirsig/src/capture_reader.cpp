@@ -150,7 +150,10 @@ model::TemporalIntegration read_temporal_integration(const io::XmlNode& node,
     return integration;
 }
 
-model::DetectorModel read_detector_model(const io::XmlNode& node, Diagnostics& diagnostics) {
+/// `<detectormodel>`; for a lidar capture (`lidar`), which applies the QE alone, the ADC's
+/// elements are optional.
+model::DetectorModel read_detector_model(const io::XmlNode& node, bool lidar,
+                                         Diagnostics& diagnostics) {
     model::DetectorModel detector;
     detector.where = node.where();
     node.warn_unknown_children({"quantumefficiency", "readnoise", "darkcurrentdensity",
@@ -164,8 +167,10 @@ model::DetectorModel read_detector_model(const io::XmlNode& node, Diagnostics& d
         node.optional_double("readnoise", diagnostics, non_negative).value_or(0);
     detector.dark_current_density_a_per_m2 =
         node.optional_double("darkcurrentdensity", diagnostics, non_negative).value_or(0.0);
-    const auto min_e = node.required_double("minelectrons", diagnostics, non_negative);
-    const auto max_e = node.required_double("maxelectrons", diagnostics, non_negative);
+    const auto min_e = lidar ? node.optional_double("minelectrons", diagnostics, non_negative)
+                             : node.required_double("minelectrons", diagnostics, non_negative);
+    const auto max_e = lidar ? node.optional_double("maxelectrons", diagnostics, non_negative)
+                             : node.required_double("maxelectrons", diagnostics, non_negative);
     if (min_e) detector.min_electrons = *min_e;
     if (max_e) detector.max_electrons = *max_e;
     if (min_e && max_e && !(*min_e < *max_e)) {
@@ -173,7 +178,8 @@ model::DetectorModel read_detector_model(const io::XmlNode& node, Diagnostics& d
                           "minelectrons (" + number_text(*min_e) +
                               ") must be less than maxelectrons (" + number_text(*max_e) + ")");
     }
-    const auto bits = node.required_int("bitdepth", diagnostics, 1, 32);
+    const auto bits = lidar ? node.optional_int("bitdepth", diagnostics, 1, 32)
+                            : node.required_int("bitdepth", diagnostics, 1, 32);
     if (bits) detector.bit_depth = static_cast<int>(*bits);
     return detector;
 }
@@ -302,7 +308,8 @@ void read_extras(const io::XmlNode& parent, model::CaptureMethod& capture,
         if (in_focal_plane && capture.detector_model) {
             report_twice(*node, capture.detector_model->where, diagnostics);
         } else {
-            capture.detector_model = read_detector_model(*node, diagnostics);
+            capture.detector_model = read_detector_model(
+                *node, capture.type == model::CaptureMethodType::lidar, diagnostics);
         }
     }
     if (const auto node = single_child(parent, "convergence", diagnostics)) {
@@ -360,7 +367,8 @@ model::ImageFile read_image_file(const io::XmlNode& node, bool radiometric,
             if (node.attribute(attribute)) {
                 diagnostics.warning(
                     node.where_attribute(attribute),
-                    std::string(attribute) + " does not apply to a truth image and is ignored");
+                    std::string(attribute) +
+                        " does not apply to a truth image or a lidar BIN file and is ignored");
             }
         }
     }
@@ -430,41 +438,49 @@ model::CaptureMethod read_capture_method(const io::XmlNode& node, const ReadCont
                                          Diagnostics& diagnostics) {
     model::CaptureMethod capture;
     capture.where = node.where();
-    node.warn_unknown_children(
-        {"samplestrategy", "imagefile", "spectralresponse", "spatialresponse",
-         "temporalintegration", "detectormodel", "convergence", "psf", "activearea", "processing",
-         "signalgate"},
-        diagnostics);
+    node.warn_unknown_children({"samplestrategy", "imagefile", "spectralresponse",
+                                "spatialresponse", "temporalintegration", "detectormodel",
+                                "convergence", "psf", "activearea", "processing", "signalgate"},
+                               diagnostics);
     const auto type = node.attribute_enum("type", {"simple", "raw", "lidar"}, diagnostics);
     if (type == "raw") capture.type = model::CaptureMethodType::raw;
     if (type == "lidar") capture.type = model::CaptureMethodType::lidar;
     capture.name = trim(node.attribute("name").value_or(""));
-    if (capture.type == model::CaptureMethodType::lidar) {
-        diagnostics.warning(node.where_attribute("type"),
-                            "capturemethod type lidar is read, not applied: glint models no "
-                            "lidar capture (a generic instrument's lidar focal plane is "
-                            "rendered as a passive image)");
-    }
     const bool passive = capture.type != model::CaptureMethodType::lidar;
     if (const auto gate = single_child(node, "signalgate", diagnostics)) {
         if (passive) {
-            diagnostics.warning(gate->where(), "<signalgate> is read only in a lidar capture "
-                                               "(capturemethod type lidar): ignored");
+            diagnostics.warning(gate->where(),
+                                "<signalgate> is read only in a lidar capture "
+                                "(capturemethod type lidar): ignored");
         } else {
             capture.signal_gate = read_signal_gate(*gate, diagnostics);
         }
     } else if (!passive) {
-        diagnostics.error(node.where(), "a lidar capture needs a <signalgate> (the range gate: "
-                                        "<start>, <stop> and <binwidth> in s after the pulse)");
+        diagnostics.error(node.where(),
+                          "a lidar capture needs a <signalgate> (the range gate: "
+                          "<start>, <stop> and <binwidth> in s after the pulse)");
     }
 
     if (const auto strategy = single_child(node, "samplestrategy", diagnostics)) {
         capture.sample_strategy = read_sample_strategy(*strategy, diagnostics);
     }
     if (const auto file = single_child(node, "imagefile", diagnostics)) {
-        capture.image_file = read_image_file(*file, true, diagnostics);
+        capture.image_file = read_image_file(*file, passive, diagnostics);
+        // A lidar capture writes a DIRSIG BIN file: float64 photons, named .bin by default.
+        if (!passive) {
+            if (!file->child("extension")) capture.image_file.extension = "bin";
+            if (const auto datatype = file->child("datatype")) {
+                diagnostics.warning(datatype->where(),
+                                    "<datatype> does not apply to a lidar capture, whose BIN "
+                                    "file holds float64 photons; ignored");
+            }
+        }
     } else if (passive) {
         diagnostics.error(node.where(), "missing required element <imagefile>");
+    } else {
+        diagnostics.error(node.where(),
+                          "a lidar capture needs an <imagefile> (the <basename> "
+                          "of its BIN file)");
     }
     if (const auto response = single_child(node, "spectralresponse", diagnostics)) {
         capture.spectral_response = capture_io::read_spectral_response(
@@ -506,12 +522,22 @@ void check_focal_plane(const model::FocalPlane& focal_plane, Diagnostics& diagno
                               "<yelementcount> > 1 in <detectorarray> (it is 1)");
         }
     }
-    if (capture.detector_model && capture.type != model::CaptureMethodType::simple) {
+    if (capture.detector_model && capture.type == model::CaptureMethodType::raw) {
         diagnostics.error(capture.detector_model->where,
-                          std::string("the detector model needs capturemethod type simple, "
-                                      "expected no <detectormodel> in a ") +
-                              (capture.type == model::CaptureMethodType::raw ? "raw" : "lidar") +
-                              " capture");
+                          "the detector model needs capturemethod type simple, expected no "
+                          "<detectormodel> in a raw capture");
+    }
+    if (capture.detector_model && capture.type == model::CaptureMethodType::lidar) {
+        diagnostics.warning(capture.detector_model->where,
+                            "a lidar capture applies only the detector model's "
+                            "<quantumefficiency> (its BIN file holds detected photons): the "
+                            "read noise, dark current and ADC are read, not applied");
+    }
+    if (capture.type == model::CaptureMethodType::lidar && integration.time_s > 0.0) {
+        diagnostics.warning(integration.where,
+                            "<temporalintegration> does not apply to a lidar capture (the "
+                            "signal gate sets its times, and the passive term is a rate); "
+                            "ignored");
     }
     // A raw capture is the bandpass-sampled radiance for an external detection model: the
     // TDI accumulation of the in-render detection is not for it (a <channelpattern> on it is

@@ -5,6 +5,7 @@
 // real files carry but glint does not model yet are warned about, never fatal.
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -203,7 +204,7 @@ model::Transmitter read_transmitter(const io::XmlNode& node, const ReadContext& 
     model::Transmitter t;
     t.where = node.where();
     node.warn_unknown_children({"wavelength", "spectralwidth", "pulseenergy", "pulseduration",
-                                "pulseshape", "beamdivergence"},
+                                "pulseshape", "beamdivergence", "pulserate"},
                                diagnostics);
     const io::NumberRule positive = io::NumberRule::positive();
     t.wavelength_um = node.required_double("wavelength", diagnostics, positive).value_or(0.0);
@@ -214,21 +215,41 @@ model::Transmitter read_transmitter(const io::XmlNode& node, const ReadContext& 
     t.pulse_duration_s = node.required_double("pulseduration", diagnostics, positive).value_or(0.0);
     t.beam_divergence_rad =
         node.required_double("beamdivergence", diagnostics, positive).value_or(0.0);
+    t.pulse_rate_hz = node.optional_double("pulserate", diagnostics, positive);
     if (const auto shape = node.child("pulseshape")) {
         shape->warn_unknown_children({"filename"}, diagnostics);
         const auto type = shape->attribute_enum("type", {"gaussian", "tabulated"}, diagnostics);
         if (type == "tabulated") {
             const auto file = shape->child("filename");
             if (!file) {
-                diagnostics.error(shape->where(), "a tabulated <pulseshape> needs <filename> "
-                                                  "(time s, relative power)");
+                diagnostics.error(shape->where(),
+                                  "a tabulated <pulseshape> needs <filename> "
+                                  "(time s, relative power)");
             } else {
-                t.pulse_shape_file = context.options.paths.resolve(
-                    file->text(), context.base_dir, file->where(), diagnostics);
+                t.pulse_shape_file = context.options.paths.resolve(file->text(), context.base_dir,
+                                                                   file->where(), diagnostics);
             }
         }
     }
     return t;
+}
+
+/// The transmitter's `<pulserate>` against its receivers' clocks: the receiver's clock fires
+/// the pulses, so an independent clock of another rate contradicts it.
+void check_pulse_rate(const model::Transmitter& t, const std::vector<model::FocalPlane>& planes,
+                      const io::XmlNode& node, Diagnostics& diagnostics) {
+    if (!t.pulse_rate_hz) return;
+    for (const model::FocalPlane& plane : planes) {
+        const model::Clock& clock = plane.detector_array.clock;
+        if (clock.type != model::ClockType::independent || !(clock.rate_hz > 0.0)) continue;
+        if (std::abs(clock.rate_hz - *t.pulse_rate_hz) > 1e-9 * *t.pulse_rate_hz) {
+            diagnostics.error(node.child("pulserate")->where(),
+                              "the pulse rate " + format_shortest(*t.pulse_rate_hz) +
+                                  " Hz differs from the " + format_shortest(clock.rate_hz) +
+                                  " Hz clock of receiver \"" + plane.name +
+                                  "\", whose ticks fire the pulses (give one rate)");
+        }
+    }
 }
 
 /// A data recorder's `<clock>`, `<output>` and `<noise>` (docs/data-recorder.md).
@@ -254,11 +275,12 @@ model::DataRecorder read_data_recorder(const io::XmlNode& node, const std::strin
         }
     }
     if (recorder.basename.empty()) {
-        diagnostics.error(node.where(), "a data recorder needs a name or <output><basename> (its "
-                                        "files are BASENAME.csv and BASENAME.jsonl)");
+        diagnostics.error(node.where(),
+                          "a data recorder needs a name or <output><basename> (its "
+                          "files are BASENAME.csv and BASENAME.jsonl)");
     } else if (const auto problem = model::output_name_problem(recorder.basename)) {
-        diagnostics.error(name_where, "data recorder file name " + quote(recorder.basename) +
-                                          " " + *problem);
+        diagnostics.error(name_where,
+                          "data recorder file name " + quote(recorder.basename) + " " + *problem);
         recorder.basename.clear();
     }
     if (const auto noise = node.child("noise")) {
@@ -291,10 +313,6 @@ model::Instrument read_instrument(const io::XmlNode& node, const ReadContext& co
             instrument.type = model::InstrumentType::generic;
         } else if (type == "lidar") {
             instrument.type = model::InstrumentType::lidar;
-            diagnostics.warning(node.where_attribute("type"),
-                                "instrument type lidar is read, not applied: glint renders "
-                                "generic (passive camera) instruments only, so this one "
-                                "captures nothing");
         } else if (type == "datarecorder") {
             instrument.type = model::InstrumentType::data_recorder;
         } else {
@@ -319,15 +337,19 @@ model::Instrument read_instrument(const io::XmlNode& node, const ReadContext& co
         instrument.focal_planes.push_back(read_focal_plane(plane, context, diagnostics));
     }
     const bool recorder = instrument.type == model::InstrumentType::data_recorder;
-    if (recorder) instrument.recorder = read_data_recorder(node, instrument.name, context, diagnostics);
+    if (recorder)
+        instrument.recorder = read_data_recorder(node, instrument.name, context, diagnostics);
     const bool lidar = instrument.type == model::InstrumentType::lidar;
     if (lidar) {
         if (const auto transmitter = node.child("transmitter")) {
             instrument.transmitter = read_transmitter(*transmitter, context, diagnostics);
+            check_pulse_rate(*instrument.transmitter, instrument.focal_planes, *transmitter,
+                             diagnostics);
         } else {
-            diagnostics.error(node.where(), "a lidar instrument needs a <transmitter> (its laser: "
-                                            "wavelength, pulse energy and duration, beam "
-                                            "divergence)");
+            diagnostics.error(node.where(),
+                              "a lidar instrument needs a <transmitter> (its laser: "
+                              "wavelength, pulse energy and duration, beam "
+                              "divergence)");
         }
     }
     static constexpr std::array<std::string_view, 8> kNotUsed = {
@@ -344,8 +366,9 @@ model::Instrument read_instrument(const io::XmlNode& node, const ReadContext& co
                                diagnostics);
     if (!recorder) {
         if (const auto noise = node.child("noise")) {
-            diagnostics.warning(noise->where(), "<noise> is read only in a data recorder "
-                                                "(type=\"datarecorder\"): ignored");
+            diagnostics.warning(noise->where(),
+                                "<noise> is read only in a data recorder "
+                                "(type=\"datarecorder\"): ignored");
         }
     }
     if (known_type && instrument.focal_planes.empty() && !recorder) {

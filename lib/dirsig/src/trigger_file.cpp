@@ -10,6 +10,7 @@
 
 #include "glint/core/error.h"
 #include "glint/core/text.h"
+#include "named_text.h"
 
 namespace glint::dirsig {
 
@@ -77,20 +78,10 @@ std::vector<double> read_trigger_file(const std::filesystem::path& file, const R
         diagnostics.error(ErrorContext{name, 0, ""}, "cannot read trigger file: it is a directory");
         return {};
     }
-    std::string text;
-    try {
-        text = options.read_text(file, name);
-    } catch (const Error& error) {
-        // "cannot open file: <reason>" from the reader, said of the trigger file.
-        const std::string prefix = "cannot open file: ";
-        const std::string& message = error.message();
-        diagnostics.error(ErrorContext{name, 0, ""},
-                          message.rfind(prefix, 0) == 0
-                              ? "cannot open trigger file: " + message.substr(prefix.size())
-                              : message);
-        return {};
-    }
-    return parse_trigger_times(text, name, diagnostics);
+    const std::optional<std::string> text =
+        detail::read_named_text(file, name, "trigger file", options, diagnostics);
+    if (!text) return {};
+    return parse_trigger_times(*text, name, diagnostics);
 }
 
 }  // namespace glint::dirsig

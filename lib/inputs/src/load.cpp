@@ -13,6 +13,7 @@
 #include "glint/core/error.h"
 #include "glint/dirsig/motion_reader.h"
 #include "glint/dirsig/psd_reader.h"
+#include "glint/dirsig/pulse_shape.h"
 #include "glint/dirsig/readers.h"
 #include "glint/dirsig/trigger_file.h"
 #include "glint/inputs/simulation_inputs.h"
@@ -76,6 +77,13 @@ void read_clock_triggers(std::vector<model::Attachment>& attachments, const Read
                 }
                 clock.trigger_times_s =
                     dirsig::read_trigger_file(clock.trigger_file.resolved, options, diagnostics);
+            }
+            // A lidar's tabulated pulse shape is read with the trigger files.
+            if (instrument.transmitter && !instrument.transmitter->pulse_shape_file.empty() &&
+                !instrument.transmitter->pulse_shape_file.resolved.empty()) {
+                model::Transmitter& t = *instrument.transmitter;
+                t.pulse_shape = dirsig::read_pulse_shape_file(t.pulse_shape_file.resolved, options,
+                                                              diagnostics);
             }
         }
         for (model::Mount& mount : attachment.mounts) {
@@ -210,8 +218,7 @@ void report_scene_problems(const model::Simulation& simulation, const Diagnostic
     std::size_t left = 0;
     const Diagnostic* first = nullptr;
     for (const Diagnostic& d : found.items()) {
-        const bool contents_error = !contents_needed &&
-                                    d.severity == Diagnostic::Severity::error &&
+        const bool contents_error = !contents_needed && d.severity == Diagnostic::Severity::error &&
                                     scene_files.count(d.where.file) == 0;
         if (!contents_error) {
             copy_diagnostic(d, diagnostics);
@@ -222,10 +229,11 @@ void report_scene_problems(const model::Simulation& simulation, const Diagnostic
     }
     if (first == nullptr) return;
     ErrorContext where;
-    if (simulation.scenes.size() == 1) where.file = simulation.scenes.front().file.resolved.string();
+    if (simulation.scenes.size() == 1)
+        where.file = simulation.scenes.front().file.resolved.string();
     diagnostics.warning(where, "the scene's contents have " + std::to_string(left) +
-                                   (left == 1 ? " error" : " errors") + " (the first: " +
-                                   first->text() +
+                                   (left == 1 ? " error" : " errors") +
+                                   " (the first: " + first->text() +
                                    "); this tool needs only the scene's origin, but "
                                    "glint-render and glint-platform2jsim --check refuse it");
 }

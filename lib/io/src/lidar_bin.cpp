@@ -30,12 +30,15 @@ class Cursor {
 public:
     Cursor(const std::string& bytes, std::string name) : m_bytes(bytes), m_name(std::move(name)) {}
 
-    void set_little_endian(bool little) { m_swap = little != (std::endian::native == std::endian::little); }
+    void set_little_endian(bool little) {
+        m_swap = little != (std::endian::native == std::endian::little);
+    }
     std::size_t offset() const { return m_at; }
     bool at_end() const { return m_at == m_bytes.size(); }
 
     [[noreturn]] void fail(const std::string& what) const {
-        throw input_error(what + " (at byte " + std::to_string(m_at) + ")", ErrorContext{m_name, 0, {}});
+        throw input_error(what + " (at byte " + std::to_string(m_at) + ")",
+                          ErrorContext{m_name, 0, {}});
     }
     const char* take(std::size_t n, const char* what) {
         if (m_bytes.size() - m_at < n) fail("file ends inside the " + std::string(what));
@@ -102,7 +105,9 @@ std::vector<double> inflate_doubles(const char* data, std::uint64_t size, std::u
     std::vector<double> out(values);
     const std::uint64_t want = values * sizeof(double);
     if (compression == 0) {
-        if (size != want) at.fail("pulse data holds " + std::to_string(size) + " bytes, expected " + std::to_string(want));
+        if (size != want)
+            at.fail("pulse data holds " + std::to_string(size) + " bytes, expected " +
+                    std::to_string(want));
         std::memcpy(out.data(), data, want);
     } else if (compression == 1) {
         uLongf got = static_cast<uLongf>(want);
@@ -173,13 +178,15 @@ BinPulse read_pulse(Cursor& c, const BinFileHeader& h, bool swap) {
         p.receive_mueller = c.doubles<16>("receive Mueller matrix");
     }
     if (p.data_type != 5) {
-        c.fail("pulse data type " + std::to_string(p.data_type) + " is not read, expected 5 (float64)");
+        c.fail("pulse data type " + std::to_string(p.data_type) +
+               " is not read, expected 5 (float64)");
     }
     if (p.samples_per_bin == 0) c.fail("samples per bin is 0");
     const std::uint64_t values = static_cast<std::uint64_t>(h.x_count) * h.y_count *
                                  (1 + static_cast<std::uint64_t>(p.bin_count) * p.samples_per_bin);
     if (values * sizeof(double) > kMaxPulseBytes || p.data_bytes > kMaxPulseBytes) {
-        c.fail("a pulse of " + std::to_string(values) + " values is larger than glint reads (4 GiB)");
+        c.fail("a pulse of " + std::to_string(values) +
+               " values is larger than glint reads (4 GiB)");
     }
     const Cursor at = c;
     const char* data = c.take(p.data_bytes, "pulse data");
@@ -202,9 +209,13 @@ BinFile read_bin(const fs::path& path) {
     BinFile file;
     BinFileHeader& h = file.header;
     h.version = c.value<std::uint8_t>("file header");
-    if (h.version > 2) c.fail("BIN format version " + std::to_string(h.version) + " is not read, expected 0, 1 or 2");
+    if (h.version > 2)
+        c.fail("BIN format version " + std::to_string(h.version) +
+               " is not read, expected 0, 1 or 2");
     const std::uint8_t order = c.value<std::uint8_t>("file header");
-    if (order > 1) c.fail("byte order flag " + std::to_string(order) + ", expected 1 (little endian) or 0 (big endian)");
+    if (order > 1)
+        c.fail("byte order flag " + std::to_string(order) +
+               ", expected 1 (little endian) or 0 (big endian)");
     h.little_endian = order == 1;
     c.set_little_endian(h.little_endian);
     const bool swap = h.little_endian != (std::endian::native == std::endian::little);
@@ -250,12 +261,39 @@ BinFile read_bin(const fs::path& path) {
         }
         file.tasks.push_back(std::move(task));
     }
-    if (!c.at_end()) c.fail(std::to_string(bytes.size() - c.offset()) + " bytes follow the last pulse");
+    if (!c.at_end())
+        c.fail(std::to_string(bytes.size() - c.offset()) + " bytes follow the last pulse");
     return file;
 }
 
-void write_bin(const fs::path& path, const BinFile& file) {
-    const BinFileHeader& h = file.header;
+namespace {
+
+/// The pulse data of `p`, little-endian float64 values, zlib compressed.
+std::string compress_pulse(const BinPulse& p) {
+    std::string raw(p.data.size() * sizeof(double), '\0');
+    for (std::size_t i = 0; i < p.data.size(); ++i) {
+        Out one;
+        one.value(p.data[i]);
+        std::memcpy(raw.data() + i * sizeof(double), one.bytes.data(), sizeof(double));
+    }
+    uLongf packed_size = ::compressBound(static_cast<uLong>(raw.size()));
+    std::string packed(packed_size, '\0');
+    if (::compress2(reinterpret_cast<Bytef*>(packed.data()), &packed_size,
+                    reinterpret_cast<const Bytef*>(raw.data()), static_cast<uLong>(raw.size()),
+                    Z_BEST_SPEED) != Z_OK) {
+        throw runtime_error("zlib could not compress a BIN pulse");
+    }
+    packed.resize(packed_size);
+    return packed;
+}
+
+}  // namespace
+
+BinWriter::BinWriter(const fs::path& path, const BinFileHeader& h, std::uint32_t task_count)
+    : m_path(path),
+      m_file(path),
+      m_pixels(static_cast<std::size_t>(h.x_count) * h.y_count),
+      m_tasks_left(task_count) {
     Out o;
     o.bytes.append(kMagic, kMagicSize);
     o.value<std::uint8_t>(2);
@@ -276,65 +314,87 @@ void write_bin(const fs::path& path, const BinFile& file) {
     o.value(h.y_offset_m);
     o.value(h.k1);
     o.value(h.k2);
-    o.value(static_cast<std::uint32_t>(file.tasks.size()));
+    o.value(task_count);
     o.value(h.focal_plane_id);
-    for (const BinTask& task : file.tasks) {
-        const BinTaskHeader& th = task.header;
-        o.text(th.description, 64);
-        o.text(th.start, 15);
-        o.text(th.stop, 15);
-        for (const double v : {th.focal_length_mm, th.pulse_rate_hz, th.pulse_duration_s,
-                               th.pulse_energy_j, th.laser_center_um, th.laser_width_um}) {
-            o.value(v);
-        }
-        o.value(static_cast<std::uint32_t>(task.pulses.size()));
-        for (const BinPulse& p : task.pulses) {
-            const std::size_t values =
-                static_cast<std::size_t>(h.x_count) * h.y_count * p.values_per_pixel();
-            if (p.data.size() != values) {
-                throw usage_error("BIN pulse " + std::to_string(p.pulse_index) + " holds " +
-                                  std::to_string(p.data.size()) + " values, expected " +
-                                  std::to_string(values));
-            }
-            std::string raw(values * sizeof(double), '\0');
-            for (std::size_t i = 0; i < values; ++i) {
-                Out one;
-                one.value(p.data[i]);
-                std::memcpy(raw.data() + i * sizeof(double), one.bytes.data(), sizeof(double));
-            }
-            uLongf packed_size = ::compressBound(static_cast<uLong>(raw.size()));
-            std::string packed(packed_size, '\0');
-            if (::compress2(reinterpret_cast<Bytef*>(packed.data()), &packed_size,
-                            reinterpret_cast<const Bytef*>(raw.data()),
-                            static_cast<uLong>(raw.size()), Z_BEST_SPEED) != Z_OK) {
-                throw runtime_error("zlib could not compress a BIN pulse");
-            }
-            packed.resize(packed_size);
-            o.value(p.time_s);
-            o.value(p.gate_start_s);
-            o.value(p.gate_stop_s);
-            o.value(p.bin_count);
-            o.value(p.samples_per_bin);
-            o.doubles(p.platform_location);
-            o.doubles(p.platform_rotation);
-            o.doubles(p.transmitter_to_mount);
-            o.doubles(p.transmitter_mount_pointing);
-            o.doubles(p.transmitter_mount_to_platform);
-            o.doubles(p.receiver_to_mount);
-            o.doubles(p.receiver_mount_pointing);
-            o.doubles(p.receiver_mount_to_platform);
-            o.value<std::int32_t>(5);
-            o.value<std::uint8_t>(1);
-            o.value(p.pulse_index);
-            o.value(static_cast<std::uint64_t>(packed.size()));
-            o.doubles(p.transmit_mueller);
-            o.doubles(p.receive_mueller);
-            o.bytes += packed;
-        }
+    m_file.write(o.bytes);
+}
+
+BinWriter::~BinWriter() = default;
+
+void BinWriter::begin_task(const BinTaskHeader& th, std::uint32_t pulse_count) {
+    if (m_pulses_left != 0 || m_tasks_left == 0) {
+        throw usage_error("BIN task begun with " + std::to_string(m_pulses_left) +
+                          " pulses of the previous one missing and " +
+                          std::to_string(m_tasks_left) + " tasks left");
     }
-    AtomicFile out(path);
-    out.write(o.bytes);
-    out.commit();
+    Out o;
+    o.text(th.description, 64);
+    o.text(th.start, 15);
+    o.text(th.stop, 15);
+    for (const double v : {th.focal_length_mm, th.pulse_rate_hz, th.pulse_duration_s,
+                           th.pulse_energy_j, th.laser_center_um, th.laser_width_um}) {
+        o.value(v);
+    }
+    o.value(pulse_count);
+    m_file.write(o.bytes);
+    --m_tasks_left;
+    m_pulses_left = pulse_count;
+    m_task_open = true;
+}
+
+void BinWriter::add_pulse(const BinPulse& p) {
+    if (!m_task_open || m_pulses_left == 0) {
+        throw usage_error("BIN pulse " + std::to_string(p.pulse_index) +
+                          " written outside a task's pulses");
+    }
+    const std::size_t values = m_pixels * p.values_per_pixel();
+    if (p.data.size() != values) {
+        throw usage_error("BIN pulse " + std::to_string(p.pulse_index) + " holds " +
+                          std::to_string(p.data.size()) + " values, expected " +
+                          std::to_string(values));
+    }
+    const std::string packed = compress_pulse(p);
+    Out o;
+    o.value(p.time_s);
+    o.value(p.gate_start_s);
+    o.value(p.gate_stop_s);
+    o.value(p.bin_count);
+    o.value(p.samples_per_bin);
+    o.doubles(p.platform_location);
+    o.doubles(p.platform_rotation);
+    o.doubles(p.transmitter_to_mount);
+    o.doubles(p.transmitter_mount_pointing);
+    o.doubles(p.transmitter_mount_to_platform);
+    o.doubles(p.receiver_to_mount);
+    o.doubles(p.receiver_mount_pointing);
+    o.doubles(p.receiver_mount_to_platform);
+    o.value<std::int32_t>(5);
+    o.value<std::uint8_t>(1);
+    o.value(p.pulse_index);
+    o.value(static_cast<std::uint64_t>(packed.size()));
+    o.doubles(p.transmit_mueller);
+    o.doubles(p.receive_mueller);
+    m_file.write(o.bytes);
+    m_file.write(packed);
+    --m_pulses_left;
+}
+
+void BinWriter::commit() {
+    if (m_tasks_left != 0 || m_pulses_left != 0) {
+        throw usage_error("BIN file " + m_path.string() + " closed with " +
+                          std::to_string(m_tasks_left) + " tasks and " +
+                          std::to_string(m_pulses_left) + " pulses missing");
+    }
+    m_file.commit();
+}
+
+void write_bin(const fs::path& path, const BinFile& file) {
+    BinWriter writer(path, file.header, static_cast<std::uint32_t>(file.tasks.size()));
+    for (const BinTask& task : file.tasks) {
+        writer.begin_task(task.header, static_cast<std::uint32_t>(task.pulses.size()));
+        for (const BinPulse& p : task.pulses) writer.add_pulse(p);
+    }
+    writer.commit();
 }
 
 }  // namespace glint::io

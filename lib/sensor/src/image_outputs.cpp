@@ -20,9 +20,13 @@ struct ImageOutputs::File {
     std::optional<io::EnviWriter> writer;
 };
 
-namespace {
-
-}  // namespace
+struct ImageOutputs::BinFile {
+    io::BinFileHeader header;
+    std::vector<std::pair<io::BinTaskHeader, std::uint32_t>> tasks;
+    std::size_t task = 0;           ///< the task being written
+    std::uint32_t task_pulses = 0;  ///< pulses of it written
+    std::optional<io::BinWriter> writer;
+};
 
 ImageOutputs::ImageOutputs() = default;
 ImageOutputs::~ImageOutputs() = default;
@@ -66,18 +70,7 @@ void ImageOutputs::write_capture(const std::filesystem::path& path, std::span<co
         throw internal_error("more captures than planned for " + path.string());
     }
     if (!f.writer) {
-        // The output folder is created as DIRSIG does; an existing file in its place, or a
-        // folder that cannot be created, is an io error naming it.
-        const std::filesystem::path folder = path.parent_path();
-        if (!folder.empty()) {
-            std::error_code ec;
-            std::filesystem::create_directories(folder, ec);
-            if (ec) {
-                throw io_error("cannot create the output folder: " + ec.message(), folder.string());
-            }
-        }
-        if (!m_locks.contains(folder))
-            m_locks.emplace(folder, FolderLock(folder.empty() ? "." : folder));
+        open_folder(path);
         f.writer.emplace(path, f.header);
     }
     for (std::uint64_t line = 0; line < f.lines_per_capture; ++line) {
@@ -103,6 +96,53 @@ void ImageOutputs::write_capture(const std::filesystem::path& path, std::span<co
     f.writer->set_extra("glint capture indices", io::envi_brace_list(indices));
     f.writer->set_extra("glint capture windows s", io::envi_brace_list(times));
     f.writer->set_extra("glint capture datetimes utc", io::envi_brace_list(datetimes));
+    f.writer->commit();
+    f.writer.reset();
+    m_published.push_back(path);
+}
+
+void ImageOutputs::open_folder(const std::filesystem::path& path) {
+    // The output folder is created as DIRSIG does; an existing file in its place, or a
+    // folder that cannot be created, is an io error naming it.
+    const std::filesystem::path folder = path.parent_path();
+    if (!folder.empty()) {
+        std::error_code ec;
+        std::filesystem::create_directories(folder, ec);
+        if (ec) {
+            throw io_error("cannot create the output folder: " + ec.message(), folder.string());
+        }
+    }
+    if (!m_locks.contains(folder))
+        m_locks.emplace(folder, FolderLock(folder.empty() ? "." : folder));
+}
+
+void ImageOutputs::plan_bin(const std::filesystem::path& path, const io::BinFileHeader& header,
+                            std::vector<std::pair<io::BinTaskHeader, std::uint32_t>> tasks) {
+    if (m_bins.contains(path) || m_files.contains(path)) {
+        throw usage_error("output " + path.string() + " is planned twice");
+    }
+    auto file = std::make_unique<BinFile>();
+    file->header = header;
+    file->tasks = std::move(tasks);
+    m_bins.emplace(path, std::move(file));
+    m_order.push_back(path);
+}
+
+void ImageOutputs::write_pulse(const std::filesystem::path& path, const io::BinPulse& pulse) {
+    auto it = m_bins.find(path);
+    if (it == m_bins.end()) throw internal_error("pulse for unplanned output " + path.string());
+    BinFile& f = *it->second;
+    if (f.task >= f.tasks.size())
+        throw internal_error("more pulses than planned for " + path.string());
+    if (!f.writer) {
+        open_folder(path);
+        f.writer.emplace(path, f.header, static_cast<std::uint32_t>(f.tasks.size()));
+    }
+    if (f.task_pulses == 0) f.writer->begin_task(f.tasks[f.task].first, f.tasks[f.task].second);
+    f.writer->add_pulse(pulse);
+    if (++f.task_pulses < f.tasks[f.task].second) return;
+    f.task_pulses = 0;
+    if (++f.task < f.tasks.size()) return;
     f.writer->commit();
     f.writer.reset();
     m_published.push_back(path);

@@ -6,8 +6,8 @@
 
 #include <cmath>
 #include <map>
-#include <new>
 #include <memory>
+#include <new>
 #include <optional>
 #include <string>
 #include <utility>
@@ -83,8 +83,9 @@ RenderReport render(model::SimulationInputs inputs, const RenderOptions& options
             in.scene, in.trajectories, detail::build_options(options, 0.0, 0.0), context.log));
         report.device = static_scene->device();
     }
-    detail::write_telemetry(*prepared, options, context);  // complete before any capture
-    std::map<std::size_t, radiometry::SensorPathCache> path_caches;  // per focal plane
+    detail::write_telemetry(*prepared, options, context);             // complete before any capture
+    std::map<std::size_t, radiometry::SensorPathCache> path_caches;   // per focal plane
+    std::map<std::size_t, radiometry::SensorPathCache> laser_caches;  // per lidar receiver
     std::vector<double> image;
     std::uint64_t pixels_done = 0;
     for (std::size_t i = 0; i < prepared->captures.size(); ++i) {
@@ -99,9 +100,15 @@ RenderReport render(model::SimulationInputs inputs, const RenderOptions& options
             report.device = moving->device();
         }
         CaptureReport stats;
+        const scene::GeometryScene& geometry = moving ? *moving : *static_scene;
         try {
-            stats = detail::render_capture(*prepared, p, moving ? *moving : *static_scene,
-                                           path_caches[p.capture.source], options, context, image);
+            if (prepared->states.at(p.capture.source).lidar) {
+                stats = detail::render_pulse(*prepared, p, geometry, path_caches[p.capture.source],
+                                             laser_caches[p.capture.source], options, context);
+            } else {
+                stats = detail::render_capture(
+                    *prepared, p, geometry, path_caches[p.capture.source], options, context, image);
+            }
         } catch (const std::bad_alloc&) {
             throw runtime_error(out_of_memory(*prepared, p));
         }

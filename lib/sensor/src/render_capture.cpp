@@ -40,31 +40,6 @@ void log_capture_start(const PlannedCapture& p, const schedule::ClockedFocalPlan
                      std::to_string(source.y_count));
 }
 
-/// The environment of one capture: sun at both ends of the window seen from the scene
-/// origin, sensor altitude from the instrument's position at mid-window.
-radiometry::Environment capture_environment(const RenderInputs& in, const FocalPlaneState& state,
-                                            const schedule::Capture& capture,
-                                            const schedule::ClockedFocalPlane& source,
-                                            radiometry::SensorPathCache& cache) {
-    const schedule::PluginSchedule& plugin = in.schedule->plugins()[source.plugin];
-    const DateTime& reference = plugin.tasks.reference;
-    const motion::SunPosition sun0 =
-        motion::sun_position(add_seconds(reference, capture.t0_s), in.frame);
-    const motion::SunPosition sun1 =
-        motion::sun_position(add_seconds(reference, capture.t1_s), in.frame);
-    const double mid = 0.5 * (capture.t0_s + capture.t1_s);
-    const motion::Rigid pose = plugin.poses->instrument_to_scene(source.instrument_index, mid);
-    radiometry::EnvironmentInputs env;
-    env.sun_direction_begin = sun0.direction_enu;
-    env.sun_direction_end = sun1.direction_enu;
-    env.window_begin_s = capture.t0_s;
-    env.window_end_s = capture.t1_s;
-    env.sun_distance_au = sun0.distance_au;
-    env.surface_altitude_m = in.frame.origin().altitude_m;
-    env.sensor_altitude_m = in.frame.origin().altitude_m + pose.translation_m.z;
-    return radiometry::Environment::make(state.grid, *in.atmosphere_model, *in.sun, env, &cache);
-}
-
 /// The channel values of the pixels of one spectral state's solutions into `image` (pixel
 /// after pixel, units.channels() values each): every channel for the focal plane's one
 /// state, its own channel for a split state. A masked element's radiance is its mean
@@ -90,6 +65,29 @@ void store_channels(const FocalPlaneState& state, const SpectralState& spectral,
 
 }  // namespace
 
+radiometry::Environment capture_environment(const RenderInputs& in, const SpectralGrid& grid,
+                                            const schedule::Capture& capture,
+                                            const schedule::ClockedFocalPlane& source,
+                                            radiometry::SensorPathCache& cache) {
+    const schedule::PluginSchedule& plugin = in.schedule->plugins()[source.plugin];
+    const DateTime& reference = plugin.tasks.reference;
+    const motion::SunPosition sun0 =
+        motion::sun_position(add_seconds(reference, capture.t0_s), in.frame);
+    const motion::SunPosition sun1 =
+        motion::sun_position(add_seconds(reference, capture.t1_s), in.frame);
+    const double mid = 0.5 * (capture.t0_s + capture.t1_s);
+    const motion::Rigid pose = plugin.poses->instrument_to_scene(source.instrument_index, mid);
+    radiometry::EnvironmentInputs env;
+    env.sun_direction_begin = sun0.direction_enu;
+    env.sun_direction_end = sun1.direction_enu;
+    env.window_begin_s = capture.t0_s;
+    env.window_end_s = capture.t1_s;
+    env.sun_distance_au = sun0.distance_au;
+    env.surface_altitude_m = in.frame.origin().altitude_m;
+    env.sensor_altitude_m = in.frame.origin().altitude_m + pose.translation_m.z;
+    return radiometry::Environment::make(grid, *in.atmosphere_model, *in.sun, env, &cache);
+}
+
 CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
                              const scene::GeometryScene& geometry,
                              radiometry::SensorPathCache& path_cache, const RenderOptions& options,
@@ -105,7 +103,7 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
     log_capture_start(p, source, state, plugin.tasks.reference, context);
 
     const radiometry::Environment environment =
-        capture_environment(in, state, capture, source, path_cache);
+        capture_environment(in, state.grid, capture, source, path_cache);
     CaptureTiming timing{capture.t0_s, capture.t1_s, source.rolling_line_time_s().value_or(0.0),
                          source.tdi_stages};
     const PixelRaySource rays(state.camera, *plugin.poses, source.instrument_index, timing,

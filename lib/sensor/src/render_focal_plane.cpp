@@ -22,7 +22,8 @@ bool renders(const schedule::ClockedFocalPlane& source, std::string& why) {
               "records its pose at its clock's ticks (docs/data-recorder.md)";
         return false;
     }
-    if (instrument.type != model::InstrumentType::generic) {
+    if (instrument.type != model::InstrumentType::generic &&
+        instrument.type != model::InstrumentType::lidar) {
         why = "instrument \"" + instrument.name + "\" is a " + instrument.type_text +
               " instrument; glint-render renders generic (camera) instruments";
         return false;
@@ -129,6 +130,44 @@ model::CaptureMethod units_method(const schedule::ClockedFocalPlane& source) {
     return method;
 }
 
+/// A lidar receiver's passive units: photons/s per cm² at the focal plane (the aperture's
+/// G#), no temporal integration, one channel: its filter (the capture's one <channel>), else
+/// a flat response over its bandpass; without a <spectralresponse>, a 1 nm band (3 samples)
+/// centred on the laser line.
+model::CaptureMethod lidar_units_method(const schedule::ClockedFocalPlane& source) {
+    model::CaptureMethod method = source.focal_plane->capture_method;
+    model::Bandpass& bandpass = method.spectral_response.bandpass;
+    if (bandpass.count == 0 && source.instrument->transmitter) {
+        const double centre = source.instrument->transmitter->wavelength_um;
+        bandpass.min_um = centre - 0.0005;
+        bandpass.max_um = centre + 0.0005;
+        bandpass.delta_um = 0.0005;
+        bandpass.count = 3;
+        bandpass.where = method.where;
+    }
+    method.image_file.flux_units = model::FluxUnits::photons_per_second;
+    method.image_file.area_units = model::AreaUnits::cm2;
+    method.temporal_integration.time_s = 0.0;
+    method.detector_model.reset();
+    if (method.spectral_response.channels.size() > 1) {
+        throw input_error("a lidar receiver has one <channel> (its filter), found " +
+                              std::to_string(method.spectral_response.channels.size()),
+                          method.spectral_response.channels[1].where);
+    }
+    if (method.spectral_response.channels.empty()) {
+        model::Channel flat;
+        flat.name = "receiver";
+        flat.shape = model::ChannelShape::tophat;
+        flat.center_um = 0.5 * (bandpass.min_um + bandpass.max_um);
+        // Wider than the bandpass by a sample either side: every sample weighs 1.
+        flat.width_um = bandpass.max_um - bandpass.min_um + 4.0 * bandpass.delta_um;
+        flat.where = method.where;
+        method.spectral_response.channels.push_back(flat);
+    }
+    method.spectral_response.channels.front().normalize = false;
+    return method;
+}
+
 /// The focal plane's spectral states: one over the whole grid, or, split, one per channel
 /// over the bands its response covers, each converging at the band nearest its centre.
 std::vector<SpectralState> spectral_states(const SpectralGrid& grid, const OutputUnits& units,
@@ -176,11 +215,13 @@ FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t s
     // What the focal plane's elements ask for and glint does not apply (a rolling readout on
     // a TDI array, <temporalintegration><samples>, normalize with a detector model) was
     // warned about once by the reader, at the element, for --check and the render alike.
-    SpectralGrid grid = model::bandpass_grid(fp.capture_method.spectral_response.bandpass);
+    const bool lidar = source.instrument->type == model::InstrumentType::lidar;
+    const model::CaptureMethod method = lidar ? lidar_units_method(source) : units_method(source);
+    SpectralGrid grid = model::bandpass_grid(method.spectral_response.bandpass);
     radiometry::MaterialTable materials(inputs.scene.materials, grid, context.log);
     CameraModel camera(source.instrument->properties, fp.detector_array, source.x_count,
                        source.y_count);
-    OutputUnits units(units_method(source), source.instrument->properties, grid);
+    OutputUnits units(method, source.instrument->properties, grid);
     std::vector<SpectralState> states = spectral_states(
         grid, units,
         splits_channels(inputs, inputs.schedule->plugins()[source.plugin].plugin_index, options));
@@ -190,10 +231,16 @@ FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t s
     FocalPlaneState state{std::move(grid),   std::move(states), std::move(materials),
                           std::move(camera), std::move(units),  convergence,
                           std::move(header), std::nullopt,      std::nullopt,
-                          std::nullopt,      TruthLayout{},     0};
+                          std::nullopt,      TruthLayout{},     0,
+                          std::nullopt};
     state.reference_band =
         radiometry::nearest_band(state.grid, 0.5 * (state.grid.min_um() + state.grid.max_um()));
-    state.truth = make_truth_layout(fp, inputs.scene, state.units, context.log);
+    if (lidar) {
+        state.lidar.emplace(
+            make_lidar_state(source, inputs.scene, state.camera, convergence, context));
+    } else {
+        state.truth = make_truth_layout(fp, inputs.scene, state.units, context.log);
+    }
     if (const std::optional<model::Psf>& psf = fp.capture_method.psf) {
         state.psf = PsfSampler::from_model(*psf);
         state.header.set_extra("glint psf", state.psf->description());
@@ -207,6 +254,7 @@ FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t s
         state.mask = ActiveArea::from_model(fp.capture_method.active_area_image);
         state.header.set_extra("glint active area", state.mask->description());
     }
+    if (lidar) return state;  // its detector model gives the QE alone (make_lidar_state)
     const bool detects = fp.capture_method.detector_model.has_value() ||
                          fp.capture_method.spectral_response.pattern.has_value() ||
                          source.tdi_stages > 1;

@@ -23,6 +23,7 @@
 #include "glint/motion/frames.h"
 #include "glint/motion/trajectory.h"
 #include "glint/radiometry/environment.h"
+#include "glint/radiometry/lidar.h"
 #include "glint/radiometry/materials.h"
 #include "glint/radiometry/point_lights.h"
 #include "glint/scene/geometry_scene.h"
@@ -68,6 +69,33 @@ struct SpectralState {
     std::optional<std::size_t> channel;  ///< the channel it alone renders, when split
 };
 
+/// What a lidar receiver needs for every pulse (docs/lidar.md, "Model"): the transmitter's
+/// pulse, the gate's time samples, the materials at the laser line and the factors that turn
+/// the solved radiances into photons per pixel.
+struct LidarState {
+    const model::Transmitter* transmitter = nullptr;
+    radiometry::PulseShape shape;
+    radiometry::TimeGate gate;  ///< bins × samples per bin samples
+    model::SignalGate signal_gate;
+    SpectralGrid laser_grid;  ///< one band at the laser's centre wavelength
+    radiometry::MaterialTable laser_materials;
+    /// Detected photons per J/(cm² sr) of mean energy radiance at the aperture: the element
+    /// area (cm²) / G# × QE × λ/(h c), times the active area's mean sensitivity.
+    double photons_per_energy_radiance = 0.0;
+    /// Passive photons/s per photons/s/cm² at the focal plane (the OutputUnits value): the
+    /// element area (cm²) × QE × the active area's mean sensitivity.
+    double passive_per_focal_plane_rate = 0.0;
+    std::uint64_t samples_per_pixel = 1;  ///< the active returns' (the convergence maximum)
+};
+
+/// Builds the lidar state of a lidar receiver (its FocalPlaneState's grid, camera, units and
+/// convergence already made). Throws glint::Error (input, at the element) for what glint
+/// cannot render: a receiver without an aperture (focal length and aperture diameter), truth
+/// collections on it, a bad pulse shape table.
+LidarState make_lidar_state(const schedule::ClockedFocalPlane& source, const model::Scene& scene,
+                            const CameraModel& camera, const radiometry::Convergence& convergence,
+                            const Context& context);
+
 /// What one focal plane needs for every capture.
 struct FocalPlaneState {
     SpectralGrid grid;
@@ -90,6 +118,8 @@ struct FocalPlaneState {
     /// The band of `grid` nearest its centre: the reference wavelength of the convergence of
     /// an unsplit focal plane and of the Reflectance truth.
     std::size_t reference_band = 0;
+    /// A lidar receiver's (docs/lidar.md); its `units` give the passive photon rate.
+    std::optional<LidarState> lidar;
 };
 
 /// Builds the state of schedule source `source` (frame, pushbroom and TDI focal planes alike).
@@ -199,6 +229,30 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& planned,
                              const scene::GeometryScene& geometry,
                              radiometry::SensorPathCache& path_cache, const RenderOptions& options,
                              const Context& context, std::vector<double>& image);
+
+/// Fires one pulse of a lidar receiver (a planned capture of a lidar focal plane, its tick the
+/// pulse time) and writes it to its BIN file: the passive photon rate by the path tracer on
+/// the receiver's band, the returns by the lidar tracer. `path_cache` is the receiver's,
+/// `laser_cache` its laser line's.
+CaptureReport render_pulse(Prepared& prepared, const PlannedCapture& planned,
+                           const scene::GeometryScene& geometry,
+                           radiometry::SensorPathCache& path_cache,
+                           radiometry::SensorPathCache& laser_cache, const RenderOptions& options,
+                           const Context& context);
+
+/// Plans the BIN file `path` of lidar receiver `source` holding `captures` (its pulses, in
+/// schedule order).
+void plan_bin_file(const RenderInputs& inputs, const FocalPlaneState& state, std::size_t source,
+                   const std::filesystem::path& path,
+                   const std::vector<const PlannedCapture*>& captures, const RenderOptions& options,
+                   ImageOutputs& outputs);
+
+/// The environment of a capture on `grid` (the sun at both ends of its window seen from the
+/// scene origin, the sensor altitude from the instrument's position at mid-window).
+radiometry::Environment capture_environment(const RenderInputs& in, const SpectralGrid& grid,
+                                            const schedule::Capture& capture,
+                                            const schedule::ClockedFocalPlane& source,
+                                            radiometry::SensorPathCache& cache);
 
 /// The Embree build options of a window.
 scene::BuildOptions build_options(const RenderOptions& options, double t0_s, double t1_s);

@@ -26,8 +26,8 @@ std::vector<PlannedCapture> select_captures(const RenderInputs& in, const Render
         std::string why;
         if (!renders(sources[s], why)) {
             skip[s] = true;
-            // A lidar instrument was warned about by the reader; a data recorder's focal plane
-            // (its imagefile, spectral response, ...) is said here, once.
+            // A data recorder's focal plane (its imagefile, spectral response, ...) is said
+            // here, once.
             const model::InstrumentType type = sources[s].instrument->type;
             if (type == model::InstrumentType::generic) {
                 context.log.warning(
@@ -42,8 +42,7 @@ std::vector<PlannedCapture> select_captures(const RenderInputs& in, const Render
     std::uint64_t selected = 0;
     for (std::size_t s = 0; s < sources.size(); ++s) {
         if (skip[s]) continue;
-        for (std::size_t t = 0; t < schedule.plugins()[sources[s].plugin].tasks.tasks.size();
-             ++t) {
+        for (std::size_t t = 0; t < schedule.plugins()[sources[s].plugin].tasks.tasks.size(); ++t) {
             selected += schedule.count(s, t);
         }
     }
@@ -53,11 +52,12 @@ std::vector<PlannedCapture> select_captures(const RenderInputs& in, const Render
     if (selected > kMaxCapturesPerRender) {
         throw input_error(
             "the schedule has " + std::to_string(selected) +
-            " captures to render, more than one glint-render run plans (" +
-            std::to_string(kMaxCapturesPerRender) +
-            "): check the clock rates and task windows (glint-schedule --summary shows them), or "
-            "render it in shards (glint-schedule --shard K/N -o part.json, then glint-render "
-            "--schedule part.json)",
+                " captures to render, more than one glint-render run plans (" +
+                std::to_string(kMaxCapturesPerRender) +
+                "): check the clock rates and task windows (glint-schedule --summary shows them), "
+                "or "
+                "render it in shards (glint-schedule --shard K/N -o part.json, then glint-render "
+                "--schedule part.json)",
             ErrorContext{schedule.simulation_file().string(), 0, {}});
     }
     std::map<std::pair<std::size_t, std::size_t>, std::uint64_t> events;  // (plugin, task)
@@ -121,9 +121,18 @@ void plan_outputs(const RenderInputs& in, const std::vector<PlannedCapture>& cap
                            detail::make_focal_plane_state(in, entry.source, options, context));
         }
     }
+    // A lidar receiver's BIN files, each with its pulses in schedule order.
+    std::map<std::filesystem::path, std::vector<const PlannedCapture*>> pulses;
+    for (const PlannedCapture& p : captures) {
+        if (states.at(p.capture.source).lidar) pulses[p.file].push_back(&p);
+    }
     for (const auto& [path, entry] : files) {
         const FocalPlaneState& state = states.at(entry.source);
         const schedule::ClockedFocalPlane& s = in.schedule->sources()[entry.source];
+        if (state.lidar) {
+            plan_bin_file(in, state, entry.source, path, pulses.at(path), options, outputs);
+            continue;
+        }
         if (!entry.truth) {
             outputs.plan(path, state.header, s.lines_per_capture(), entry.captures);
             continue;
@@ -163,8 +172,10 @@ std::unique_ptr<Prepared> prepare(model::SimulationInputs loaded, const RenderOp
         const schedule::ClockedFocalPlane& s = in.schedule->sources()[planned.capture.source];
         report.pixels += s.problems_per_capture;
         const FocalPlaneState& state = p->states.at(planned.capture.source);
+        // A lidar pulse holds 1 + time samples values per pixel (and its returns as many).
         const std::uint64_t bands =
-            state.grid.size() + state.units.channels() + state.truth.bands.size();
+            state.lidar ? 2 * (1 + state.lidar->gate.samples) + state.grid.size()
+                        : state.grid.size() + state.units.channels() + state.truth.bands.size();
         largest = std::max<std::uint64_t>(largest, s.problems_per_capture * bands * 8);
     }
     report.memory_estimate_bytes = triangles * 85 + largest;

@@ -61,18 +61,17 @@ TEST(CaptureReader, TypeAndName) {
     EXPECT_EQ(read.capture.type, CaptureMethodType::raw);
     EXPECT_TRUE(clean(read));
     EXPECT_EQ(read.capture.name, "Raw one");
-    // A lidar capture writes a BIN file: no image file or spectral response is required, but
-    // its range gate is. glint renders no lidar capture yet: one warning at the type.
+    // A lidar capture writes a BIN file: no spectral response is required, but its range
+    // gate and its file's basename are; the extension defaults to bin.
     read = read_capture(
-        "<capturemethod type=\"lidar\"><signalgate><start>6e-6</start><stop>7.5e-6</stop>"
+        "<capturemethod type=\"lidar\"><imagefile><basename>pulses</basename></imagefile>"
+        "<signalgate><start>6e-6</start><stop>7.5e-6</stop>"
         "<binwidth>1e-9</binwidth><samplespertimebin>2</samplespertimebin></signalgate>"
         "</capturemethod>");
     EXPECT_EQ(read.capture.type, CaptureMethodType::lidar);
-    EXPECT_EQ(read.diagnostics.error_count(), 0u) << list_diagnostics(read.diagnostics);
-    ASSERT_EQ(read.diagnostics.warning_count(), 1u) << list_diagnostics(read.diagnostics);
-    EXPECT_THAT(read.diagnostics.items()[0].message,
-                ::testing::HasSubstr("capturemethod type lidar is read, not applied"));
-    EXPECT_EQ(read.diagnostics.items()[0].where.element, "capturemethod@type");
+    EXPECT_TRUE(clean(read)) << list_diagnostics(read.diagnostics);
+    EXPECT_EQ(read.capture.image_file.basename, "pulses");
+    EXPECT_EQ(read.capture.image_file.extension, "bin");
     ASSERT_TRUE(read.capture.signal_gate);
     EXPECT_EQ(read.capture.signal_gate->start_s, 6e-6);
     EXPECT_EQ(read.capture.signal_gate->stop_s, 7.5e-6);
@@ -91,8 +90,9 @@ class LidarGateErrors : public ::testing::TestWithParam<GateCase> {};
 
 TEST_P(LidarGateErrors, OneErrorAtTheElement) {
     const GateCase& c = GetParam();
-    const auto read =
-        read_capture(std::string("<capturemethod type=\"lidar\">") + c.gate + "</capturemethod>");
+    const auto read = read_capture(std::string("<capturemethod type=\"lidar\"><imagefile>"
+                                               "<basename>l</basename></imagefile>") +
+                                   c.gate + "</capturemethod>");
     EXPECT_EQ(read.diagnostics.error_count(), 1u) << list_diagnostics(read.diagnostics);
     EXPECT_TRUE(has_error(read, c.message, "<capturemethod", c.element));
 }
@@ -226,8 +226,9 @@ TEST(CaptureReader, TruthImageFileWarnsAboutRadiometricUnits) {
     EXPECT_EQ(file.schedule, ImageSchedule::task);
     EXPECT_EQ(file.area_units, AreaUnits::cm2);
     EXPECT_EQ(read.diagnostics.error_count(), 0u);
-    EXPECT_TRUE(has_warning(read, "areaunits does not apply to a truth image and is ignored",
-                            "<imagefile", "imagefile@areaunits"));
+    EXPECT_TRUE(has_warning(
+        read, "areaunits does not apply to a truth image or a lidar BIN file and is ignored",
+        "<imagefile", "imagefile@areaunits"));
 }
 
 TEST(CaptureReader, SpatialResponseIsParsedAndWarnedAboutOnce) {

@@ -12,10 +12,10 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
-#include <memory>
 #include <string>
 #include <vector>
+
+#include "glint/core/atomic_file.h"
 
 namespace glint::io {
 
@@ -76,10 +76,10 @@ struct BinPulse {
     Affine16 receiver_to_mount = kIdentity16;
     std::array<double, 3> receiver_mount_pointing{};
     Affine16 receiver_mount_to_platform = kIdentity16;
-    std::int32_t data_type = 5;      ///< 5 = float64 (the only one read)
-    std::uint8_t compression = 1;    ///< 0 none, 1 zlib
-    std::uint32_t pulse_index = 0;   ///< version 2
-    std::uint64_t data_bytes = 0;    ///< as stored
+    std::int32_t data_type = 5;               ///< 5 = float64 (the only one read)
+    std::uint8_t compression = 1;             ///< 0 none, 1 zlib
+    std::uint32_t pulse_index = 0;            ///< version 2
+    std::uint64_t data_bytes = 0;             ///< as stored
     Affine16 transmit_mueller = kIdentity16;  ///< version 2
     Affine16 receive_mueller = kIdentity16;
     /// x_count · y_count · (1 + bin_count · samples_per_bin) values.
@@ -108,9 +108,44 @@ struct BinFile {
 /// offset) when it is not a BIN file or is truncated or inconsistent.
 BinFile read_bin(const std::filesystem::path& path);
 
-/// Writes `file` as a version-2, little-endian BIN file with zlib-compressed data, atomically.
-/// Throws glint::Error (usage) when a pulse's data size does not match the header counts,
-/// (io) when it cannot be written.
+/// Writes `file` as a version-2, little-endian BIN file with zlib-compressed data, atomically
+/// (a BinWriter). Throws what BinWriter throws.
 void write_bin(const std::filesystem::path& path, const BinFile& file);
+
+/// Writes a version-2, little-endian BIN file pulse by pulse, so a renderer holds one pulse at
+/// a time: the file header at construction, then for each of the `task_count` tasks
+/// begin_task() and its pulses, then commit(), which publishes the file under its name
+/// (atomically: a writer destroyed before commit() leaves nothing there).
+class BinWriter {
+public:
+    /// Opens the temporary file and writes the header (its task count is `task_count`).
+    /// Throws glint::Error (io) when it cannot be created.
+    BinWriter(const std::filesystem::path& path, const BinFileHeader& header,
+              std::uint32_t task_count);
+    ~BinWriter();
+    BinWriter(const BinWriter&) = delete;
+    BinWriter& operator=(const BinWriter&) = delete;
+
+    /// Starts a task of `pulse_count` pulses. Throws glint::Error (usage) when the previous
+    /// task is not complete or every task has been written.
+    void begin_task(const BinTaskHeader& header, std::uint32_t pulse_count);
+    /// Writes one pulse of the current task, its data compressed. Throws glint::Error (usage)
+    /// when no task is open, the task is complete or the data size does not match the header
+    /// counts, (io) when it cannot be written.
+    void add_pulse(const BinPulse& pulse);
+    /// Publishes the file. Throws glint::Error (usage) when a task or pulse is missing, (io)
+    /// when it cannot be published.
+    void commit();
+    /// The file's final name.
+    const std::filesystem::path& path() const noexcept { return m_path; }
+
+private:
+    std::filesystem::path m_path;
+    AtomicFile m_file;
+    std::size_t m_pixels = 0;
+    std::uint32_t m_tasks_left = 0;
+    std::uint32_t m_pulses_left = 0;
+    bool m_task_open = false;
+};
 
 }  // namespace glint::io

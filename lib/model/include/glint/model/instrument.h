@@ -147,15 +147,28 @@ struct DataRecorder {
     ErrorContext where;
 };
 
+/// A tabulated pulse shape: relative power against time (s after the pulse's firing time).
+struct PulseShapeTable {
+    std::vector<double> time_s;
+    std::vector<double> power;
+    ErrorContext where;  ///< the file, line of its first row
+};
+
 /// A lidar instrument's laser (`<transmitter>`, docs/lidar.md). It sits at the instrument's
 /// frame and fires along its boresight (−Z), one pulse per tick of the receiver's clock.
 struct Transmitter {
     double wavelength_um = 0.0;
-    double spectral_width_um = 0.0;    ///< FWHM of the laser line
+    double spectral_width_um = 0.0;  ///< FWHM of the laser line
     double pulse_energy_j = 0.0;
-    double pulse_duration_s = 0.0;     ///< FWHM of the temporal shape
-    FileRef pulse_shape_file;          ///< tabulated shape (time s, relative power); empty: Gaussian
+    double pulse_duration_s = 0.0;  ///< FWHM of the temporal shape
+    FileRef pulse_shape_file;       ///< tabulated shape (time s, relative power); empty: Gaussian
+    /// The tabulated shape, as the input loader (glint/inputs) read it; empty until then.
+    PulseShapeTable pulse_shape;
     double beam_divergence_rad = 0.0;  ///< full angle at 1/e² of a Gaussian beam
+    /// `<pulserate>` (Hz), the pulse repetition frequency: the receiver's clock fires the
+    /// pulses, so this must agree with an independent receiver clock's rate; unset: the
+    /// clock's.
+    std::optional<double> pulse_rate_hz;
     ErrorContext where;
 };
 
@@ -165,7 +178,7 @@ struct Instrument {
     std::string name;
     InstrumentProperties properties;
     std::vector<FocalPlane> focal_planes;
-    DataRecorder recorder;  ///< data recorders only
+    DataRecorder recorder;                   ///< data recorders only
     std::optional<Transmitter> transmitter;  ///< lidar instruments only
     ErrorContext where;
 };

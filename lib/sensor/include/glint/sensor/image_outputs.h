@@ -6,6 +6,9 @@
 // header — when its last capture has arrived. The header's `glint capture times` and
 // `glint captures` keys list the captures the file holds. Files not complete when the object
 // is destroyed (an error or an interrupt) leave nothing under their final names.
+// A lidar capture's DIRSIG BIN file (glint/io/lidar_bin.h) is planned with its file header and
+// task headers the same way, receives its pulses one at a time in schedule order (nothing but
+// the current pulse is held) and is published after its last.
 #pragma once
 
 #include <cstdint>
@@ -14,10 +17,12 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "glint/core/folder_lock.h"
 #include "glint/io/envi.h"
+#include "glint/io/lidar_bin.h"
 
 namespace glint::sensor {
 
@@ -51,6 +56,15 @@ public:
     void write_capture(const std::filesystem::path& path, std::span<const double> image,
                        const CaptureStamp& stamp);
 
+    /// Declares that `path` is a lidar BIN file of `header` holding `tasks` in order, each
+    /// task header with its pulse count. Throws glint::Error (usage) when `path` is planned
+    /// twice.
+    void plan_bin(const std::filesystem::path& path, const io::BinFileHeader& header,
+                  std::vector<std::pair<io::BinTaskHeader, std::uint32_t>> tasks);
+    /// Writes the next pulse of `path`: opens the file at its first pulse, starts each task at
+    /// its first pulse, publishes the file after its last. Throws glint::Error (internal) for
+    /// an unplanned path or a pulse too many, (io) when it cannot be written.
+    void write_pulse(const std::filesystem::path& path, const io::BinPulse& pulse);
     /// Locks every planned output folder that exists already (glint::FolderLock), so a
     /// second run into one of them fails before it traces anything; folders created later
     /// are locked when they are created. Throws glint::Error (io) when another run holds one.
@@ -63,7 +77,11 @@ public:
 
 private:
     struct File;
+    /// Creates `path`'s folder (as DIRSIG does) and locks it, once per folder.
+    void open_folder(const std::filesystem::path& path);
+    struct BinFile;
     std::map<std::filesystem::path, std::unique_ptr<File>> m_files;
+    std::map<std::filesystem::path, std::unique_ptr<BinFile>> m_bins;
     std::vector<std::filesystem::path> m_order;
     std::vector<std::filesystem::path> m_published;
     std::map<std::filesystem::path, FolderLock> m_locks;  ///< by folder, held to the end
