@@ -53,7 +53,8 @@ def expected_warnings(items):
             out.append((e["line"], "<spatialresponse> is a DIRSIG4 setting"))
         elif tag == "capturemethod" and kind == "lidar":
             detector = child(e, "detectormodel")
-            if detector:
+            if detector and any(child(detector, t) for t in (
+                    "readnoise", "darkcurrentdensity", "minelectrons", "maxelectrons", "bitdepth")):
                 out.append((detector["line"], "a lidar capture applies only the detector model's"))
             integration = child(e, "temporalintegration")
             time = integration and child(integration, "time")

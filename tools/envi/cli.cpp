@@ -73,6 +73,9 @@ void EnviCli::configure(CLI::App& app) {
                  "file) to OUT; without it every pulse goes to OUT-pNNNN")
         ->check(whole_number())
         ->type_name("N");
+    c.add_flag("--range", m_options.convert.range,
+               "A DIRSIG lidar BIN input: write each pulse's range image instead of its cube "
+               "(band 0 the range of each pixel's strongest return in m, band 1 its photons)");
     c.add_option("--bands", m_bands, "Write these bands as the output channels, e.g. 2,1,0")
         ->type_name("R,G,B");
     c.add_option("--gamma", m_gamma, "Display gamma: stretched values s become s^(1/G)")

@@ -3,7 +3,6 @@
 // to an image (io::ImageWriter) or an ENVI file (io::EnviWriter). The rules are documented
 // at the top of convert.h.
 #include "glint/app_envi/convert.h"
-#include "glint/app_envi/lidar_bin.h"
 
 #include <algorithm>
 #include <cctype>
@@ -11,6 +10,7 @@
 #include <limits>
 #include <set>
 
+#include "glint/app_envi/lidar_bin.h"
 #include "glint/core/error.h"
 #include "glint/core/runner.h"
 #include "glint/core/text.h"
@@ -381,17 +381,19 @@ ConvertResult convert_file(const ConvertOptions& o, Context& ctx) {
         // A DIRSIG lidar BIN file: ENVI cubes of its pulses, values unchanged.
         if (o.band || !o.bands.empty() || o.gamma || o.percent || o.min || o.max || o.raw ||
             o.bit_depth || o.data_type || o.per_band || !o.format.empty()) {
-            throw usage_error("a lidar BIN input converts to float64 ENVI cubes as they are: "
-                              "band, stretch, format and type options apply to the cubes");
+            throw usage_error(
+                "a lidar BIN input converts to float64 ENVI cubes as they are: "
+                "band, stretch, format and type options apply to the cubes");
         }
         ensure_not_an_input(o.output, std::vector<fs::path>{o.input});
-        convert_bin(o.input, o.output, o.pulse, ctx);
+        convert_bin(o.input, o.output, o.pulse, o.range, ctx);
         ConvertResult result;
         result.kind = OutputKind::envi;
         result.stored_type = "float64";
         return result;
     }
     if (o.pulse) throw usage_error("--pulse applies to a DIRSIG lidar BIN input only");
+    if (o.range) throw usage_error("--range applies to a DIRSIG lidar BIN input only");
     const OutputKind kind = io::output_kind_of(o.output, o.format);
     check_options(o, kind);
     std::unique_ptr<RasterSource> source;

@@ -2,6 +2,7 @@
 // glint-envi on DIRSIG lidar BIN files (glint/app_envi/lidar_bin.h).
 #include "glint/app_envi/lidar_bin.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -139,6 +140,46 @@ void write_pulse_cube(const fs::path& out, const fs::path& input, const io::BinF
     writer.commit();
 }
 
+/// Half the speed of light, m/s: range per second of round trip.
+constexpr double kHalfLightSpeedMPerS = 0.5 * 299'792'458.0;
+
+/// The range image of one pulse: per pixel the range (m) and photons of its strongest time
+/// sample.
+void write_range_image(const fs::path& out, const fs::path& input, const io::BinFile& file,
+                       std::size_t task, const io::BinPulse& p, const Context& ctx) {
+    const io::BinFileHeader& h = file.header;
+    io::EnviHeader header;
+    header.description = "range image of DIRSIG BIN pulse " + std::to_string(p.pulse_index) +
+                         " of task " + std::to_string(task) + " of " + input.filename().string();
+    header.samples = h.x_count;
+    header.lines = h.y_count;
+    header.bands = 2;
+    header.data_type = io::EnviDataType::float64;
+    header.interleave = io::Interleave::bip;
+    header.band_names = {"range of the strongest return (m)", "its photons"};
+    header.set_extra("glint tool", "glint-envi convert --range");
+    header.set_extra("glint source", input.string());
+    header.set_extra("glint command line", ctx.command_line());
+    header.set_extra("glint bin pulse", std::to_string(p.pulse_index));
+    const std::size_t values = p.values_per_pixel();
+    const double sample_s =
+        (p.gate_stop_s - p.gate_start_s) / (static_cast<double>(p.bin_count) * p.samples_per_bin);
+    io::EnviWriter writer(out, header);
+    std::vector<double> line(static_cast<std::size_t>(h.x_count) * 2);
+    for (std::size_t y = 0; y < h.y_count; ++y) {
+        for (std::size_t x = 0; x < h.x_count; ++x) {
+            const double* v = p.data.data() + (y * h.x_count + x) * values + 1;
+            const double* peak = std::max_element(v, v + values - 1);
+            const bool returned = values > 1 && *peak > 0.0;
+            const double t = bin_start_s(p, static_cast<std::size_t>(peak - v)) + 0.5 * sample_s;
+            line[2 * x] = returned ? kHalfLightSpeedMPerS * t : 0.0;
+            line[2 * x + 1] = returned ? *peak : 0.0;
+        }
+        writer.write_line(line);
+    }
+    writer.commit();
+}
+
 }  // namespace
 
 bool is_lidar_bin(const fs::path& path) {
@@ -187,10 +228,13 @@ std::string format_bin_text(const fs::path& path, const io::BinFile& file) {
 }
 
 std::vector<fs::path> convert_bin(const fs::path& input, const fs::path& output,
-                                  std::optional<std::uint64_t> pulse, const Context& ctx) {
+                                  std::optional<std::uint64_t> pulse, bool range,
+                                  const Context& ctx) {
+    const auto write = range ? write_range_image : write_pulse_cube;
     if (io::output_kind_of(output, "") != io::OutputKind::envi) {
-        throw usage_error("a BIN file converts to ENVI cubes (an output ending in .img, .dat, "
-                          ".bip, …): convert the cube to an image afterwards");
+        throw usage_error(
+            "a BIN file converts to ENVI cubes (an output ending in .img, .dat, "
+            ".bip, …): convert the cube to an image afterwards");
     }
     const io::BinFile file = io::read_bin(input);
     std::vector<std::pair<std::size_t, const io::BinPulse*>> all;
@@ -203,17 +247,17 @@ std::vector<fs::path> convert_bin(const fs::path& input, const fs::path& output,
             throw usage_error("--pulse " + std::to_string(*pulse) + ": " + input.string() +
                               " holds " + std::to_string(all.size()) + " pulses (0-based)");
         }
-        write_pulse_cube(output, input, file, all[*pulse].first, *all[*pulse].second, ctx);
+        write(output, input, file, all[*pulse].first, *all[*pulse].second, ctx);
         written.push_back(output);
         return written;
     }
     for (std::size_t i = 0; i < all.size(); ++i) {
         char suffix[32];
         std::snprintf(suffix, sizeof suffix, "-p%04zu", i);
-        fs::path out = output.parent_path() /
-                       (output.stem().string() + suffix + output.extension().string());
+        fs::path out =
+            output.parent_path() / (output.stem().string() + suffix + output.extension().string());
         ctx.cancel.throw_if_cancelled();
-        write_pulse_cube(out, input, file, all[i].first, *all[i].second, ctx);
+        write(out, input, file, all[i].first, *all[i].second, ctx);
         written.push_back(out);
     }
     return written;

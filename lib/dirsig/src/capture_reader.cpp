@@ -159,6 +159,18 @@ model::DetectorModel read_detector_model(const io::XmlNode& node, bool lidar,
     node.warn_unknown_children({"quantumefficiency", "readnoise", "darkcurrentdensity",
                                 "minelectrons", "maxelectrons", "bitdepth"},
                                diagnostics);
+    if (lidar) {
+        for (const char* element :
+             {"readnoise", "darkcurrentdensity", "minelectrons", "maxelectrons", "bitdepth"}) {
+            if (node.child(element)) {
+                diagnostics.warning(node.where(),
+                                    "a lidar capture applies only the detector model's "
+                                    "<quantumefficiency> (its BIN file holds detected photons): "
+                                    "the read noise, dark current and ADC are read, not applied");
+                break;
+            }
+        }
+    }
     const auto non_negative = io::NumberRule::non_negative();
     detector.quantum_efficiency =
         node.required_double("quantumefficiency", diagnostics, io::NumberRule::fraction())
@@ -526,12 +538,6 @@ void check_focal_plane(const model::FocalPlane& focal_plane, Diagnostics& diagno
         diagnostics.error(capture.detector_model->where,
                           "the detector model needs capturemethod type simple, expected no "
                           "<detectormodel> in a raw capture");
-    }
-    if (capture.detector_model && capture.type == model::CaptureMethodType::lidar) {
-        diagnostics.warning(capture.detector_model->where,
-                            "a lidar capture applies only the detector model's "
-                            "<quantumefficiency> (its BIN file holds detected photons): the "
-                            "read noise, dark current and ADC are read, not applied");
     }
     if (capture.type == model::CaptureMethodType::lidar && integration.time_s > 0.0) {
         diagnostics.warning(integration.where,

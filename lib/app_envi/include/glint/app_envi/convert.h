@@ -71,6 +71,8 @@ struct ConvertOptions {
     Colormap colormap = Colormap::automatic;    ///< how one band of labels is drawn
     /// A DIRSIG lidar BIN input: the pulse to write (glint/app_envi/lidar_bin.h); unset: all.
     std::optional<std::uint64_t> pulse;
+    /// A DIRSIG lidar BIN input: range images (convert_bin's `range`) instead of cubes.
+    bool range = false;
 };
 
 /// What convert did.

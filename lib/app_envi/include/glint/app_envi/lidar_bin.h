@@ -26,12 +26,15 @@ std::string format_bin_text(const std::filesystem::path& path, const io::BinFile
 std::string format_bin_json(const std::filesystem::path& path, const io::BinFile& file);
 
 /// Writes `input`'s pulses as ENVI cubes: with `pulse` (0-based over the whole file) that one
-/// to `output`; else every pulse to `output` with `-pNNNN` before its extension. Returns the
-/// files written. Throws glint::Error (usage) for a pulse out of range or an output that is
-/// not ENVI, (input) for a bad BIN file, (io) when an output cannot be written.
+/// to `output`; else every pulse to `output` with `-pNNNN` before its extension. With `range`,
+/// each pulse becomes a range image instead: x × y × 2, BIP float64, band 0 the range (m) of
+/// the pixel's strongest time sample — c/2 × the sample's centre time after the pulse — and
+/// band 1 its photons (both 0 for a pixel with no return). Returns the files written. Throws
+/// glint::Error (usage) for a pulse out of range or an output that is not ENVI, (input) for a
+/// bad BIN file, (io) when an output cannot be written.
 std::vector<std::filesystem::path> convert_bin(const std::filesystem::path& input,
                                                const std::filesystem::path& output,
-                                               std::optional<std::uint64_t> pulse,
+                                               std::optional<std::uint64_t> pulse, bool range,
                                                const Context& ctx);
 
 }  // namespace glint::app_envi
