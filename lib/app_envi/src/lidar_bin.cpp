@@ -11,6 +11,7 @@
 #include "glint/core/error.h"
 #include "glint/core/json_text.h"
 #include "glint/core/text.h"
+#include "glint/core/units.h"
 #include "glint/io/envi.h"
 #include "glint/io/output_kind.h"
 
@@ -141,7 +142,7 @@ void write_pulse_cube(const fs::path& out, const fs::path& input, const io::BinF
 }
 
 /// Half the speed of light, m/s: range per second of round trip.
-constexpr double kHalfLightSpeedMPerS = 0.5 * 299'792'458.0;
+constexpr double kHalfLightSpeedMPerS = 0.5 * kSpeedOfLightMPerS;
 
 /// The range image of one pulse: per pixel the range (m) and photons of its strongest time
 /// sample.

@@ -11,6 +11,7 @@
 
 #include "glint/core/datetime.h"
 #include "glint/core/error.h"
+#include "glint/core/spectral.h"
 #include "glint/core/text.h"
 #include "glint/model/derived.h"
 #include "glint/motion/euler.h"
@@ -19,8 +20,6 @@
 namespace glint::sensor::detail {
 namespace {
 
-/// Planck's constant × the speed of light, J·m.
-constexpr double kPlanckTimesLightJM = 6.62607015e-34 * radiometry::kSpeedOfLightMPerS;
 /// The stream id of the returns' samples (the spectral-state slot of the key; the passive
 /// term uses the unsplit key), ASCII "lidar".
 constexpr std::uint64_t kReturnsStream = 0x6C69646172;
@@ -102,14 +101,13 @@ LidarState make_lidar_state(const schedule::ClockedFocalPlane& source, const mod
     radiometry::MaterialTable laser_materials(scene.materials, laser_grid, context.log);
     const double qe = method.detector_model ? method.detector_model->quantum_efficiency : 1.0;
     const double element_cm2 = camera.element_size_m()[0] * camera.element_size_m()[1] * 1e4;
-    const double photons_per_joule = t.wavelength_um * 1e-6 / kPlanckTimesLightJM;
     return LidarState{&t,
                       pulse_shape_of(t),
                       gate,
                       g,
                       std::move(laser_grid),
                       std::move(laser_materials),
-                      element_cm2 / *g_number * qe * photons_per_joule,
+                      element_cm2 / *g_number * qe * photons_per_joule(t.wavelength_um),
                       element_cm2 * qe,
                       convergence.max_samples};
 }

@@ -25,15 +25,13 @@
 
 #include "glint/core/context.h"
 #include "glint/core/rng.h"
+#include "glint/core/units.h"
 #include "glint/radiometry/materials.h"
 #include "glint/radiometry/path_tracer.h"
 #include "glint/radiometry/problem.h"
 #include "glint/scene/geometry_scene.h"
 
 namespace glint::radiometry {
-
-/// Speed of light in vacuum, m/s.
-inline constexpr double kSpeedOfLightMPerS = 299'792'458.0;
 
 /// The temporal shape of a pulse: the fraction C(t) of its energy emitted before t (s after
 /// the pulse's reference time, its nominal firing time).
