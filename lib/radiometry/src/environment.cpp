@@ -161,7 +161,8 @@ Environment Environment::make(const SpectralGrid& grid,
         std::llround(geometry.sun_zenith_deg / SensorPathCache::kAngleStepDeg),
         std::llround(geometry.sun_azimuth_deg / SensorPathCache::kAngleStepDeg),
         std::llround(geometry.surface_altitude_m / SensorPathCache::kAltitudeStepM),
-        std::llround(geometry.sensor_altitude_m / SensorPathCache::kAltitudeStepM)};
+        std::llround(geometry.sensor_altitude_m / SensorPathCache::kAltitudeStepM),
+        std::llround(in.sun_distance_au / SensorPathCache::kSunDistanceStepAu)};
     if (cache != nullptr) env.m_paths = cache->find(key);
     if (!env.m_paths) {
         glint::atmosphere::AtmosphereGeometry rounded = geometry;
@@ -169,7 +170,11 @@ Environment Environment::make(const SpectralGrid& grid,
         rounded.sun_azimuth_deg = static_cast<double>(key[1]) * SensorPathCache::kAngleStepDeg;
         rounded.surface_altitude_m = static_cast<double>(key[2]) * SensorPathCache::kAltitudeStepM;
         rounded.sensor_altitude_m = static_cast<double>(key[3]) * SensorPathCache::kAltitudeStepM;
-        env.m_paths = sensor_path_tables(grid, atmosphere, rounded, toa);
+        // The exo-atmospheric sun at the rounded distance too: the tables are a function of
+        // the key alone (a shard renders the bytes of the whole run).
+        const std::vector<double> rounded_toa =
+            sun.resample(grid, static_cast<double>(key[4]) * SensorPathCache::kSunDistanceStepAu);
+        env.m_paths = sensor_path_tables(grid, atmosphere, rounded, rounded_toa);
         if (cache != nullptr) cache->insert(key, env.m_paths);
     }
     return env;

@@ -380,9 +380,12 @@ TEST(Environment, SensorPathTablesAreSharedByRoundedGeometry) {
     EnvironmentInputs a;
     a.sun_direction_begin = a.sun_direction_end = direction_from(30.0, 90.0);
     a.sensor_altitude_m = 2000.0;
-    EnvironmentInputs b = a;  // the sun 0.01° lower, the sensor 0.3 m higher: same rounding
+    // The sun 0.01° lower, the sensor 0.3 m higher, the sun 10⁻⁶ AU farther (a second
+    // later): same rounding, and the same tables whichever capture filled the cache.
+    EnvironmentInputs b = a;
     b.sun_direction_begin = b.sun_direction_end = direction_from(30.01, 90.0);
     b.sensor_altitude_m = 2000.3;
+    b.sun_distance_au = a.sun_distance_au + 1e-6;
     SensorPathCache cache;
     const Environment ea = Environment::make(kGrid, atmosphere, sun, a, &cache);
     const Environment eb = Environment::make(kGrid, atmosphere, sun, b, &cache);

@@ -45,10 +45,13 @@ struct SensorPathTables {
 class SensorPathCache {
 public:
     /// The key of a geometry: sun zenith and azimuth rounded to kAngleStepDeg, sensor and
-    /// surface altitude to kAltitudeStepM.
+    /// surface altitude to kAltitudeStepM, the sun's distance to kSunDistanceStepAu. The
+    /// tables are computed from the rounded values alone, so what a key holds never depends
+    /// on which capture filled it.
     static constexpr double kAngleStepDeg = 0.05;
     static constexpr double kAltitudeStepM = 1.0;
-    using Key = std::array<long long, 4>;
+    static constexpr double kSunDistanceStepAu = 1e-5;
+    using Key = std::array<long long, 5>;
     std::shared_ptr<const SensorPathTables> find(const Key& key) const;
     void insert(const Key& key, std::shared_ptr<const SensorPathTables> tables);
     std::size_t size() const noexcept { return m_tables.size(); }
