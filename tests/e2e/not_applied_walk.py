@@ -56,6 +56,10 @@ def expected_warnings(items):
             if detector and any(child(detector, t) for t in (
                     "readnoise", "darkcurrentdensity", "minelectrons", "maxelectrons", "bitdepth")):
                 out.append((detector["line"], "a lidar capture applies only the detector model's"))
+            strategy = child(e, "samplestrategy")
+            multiplier = strategy and child(strategy, "hypersamplingmultiplier")
+            if multiplier and float(multiplier["text"].strip() or "1") > 1:
+                out.append((e["line"], "<hypersamplingmultiplier> is read, not applied on a lidar"))
             integration = child(e, "temporalintegration")
             time = integration and child(integration, "time")
             if time and float(time["text"].strip() or "0") > 0:

@@ -539,6 +539,25 @@ void check_focal_plane(const model::FocalPlane& focal_plane, Diagnostics& diagno
                           "the detector model needs capturemethod type simple, expected no "
                           "<detectormodel> in a raw capture");
     }
+    if (capture.type == model::CaptureMethodType::lidar) {
+        // A pulse is one instant for every pixel and each pixel is one problem.
+        if (integration.tdi) {
+            diagnostics.error(integration.where,
+                              "tdi=\"true\" needs capturemethod type simple (a lidar receiver "
+                              "records every pixel at each pulse)");
+        }
+        if (focal_plane.detector_array.rolling_line_time_s) {
+            diagnostics.warning(focal_plane.detector_array.where,
+                                "rollingreadout is read, not applied on a lidar receiver: every "
+                                "row records the same pulse");
+        }
+        if (capture.sample_strategy.hypersampling_multiplier > 1.0) {
+            diagnostics.warning(capture.where,
+                                "<hypersamplingmultiplier> is read, not applied on a lidar "
+                                "receiver: its returns take the convergence maximum of samples "
+                                "in every pixel");
+        }
+    }
     if (capture.type == model::CaptureMethodType::lidar && integration.time_s > 0.0) {
         diagnostics.warning(integration.where,
                             "<temporalintegration> does not apply to a lidar capture (the "
