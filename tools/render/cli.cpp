@@ -8,6 +8,7 @@
 
 #include "glint/core/runner.h"
 #include "glint/core/text.h"
+#include "glint/schedule/row_band.h"
 
 namespace glint::tools::render {
 
@@ -43,6 +44,10 @@ void RenderCli::configure(CLI::App& app) {
     app.add_option("--schedule", m_options.schedule,
                    "Render only the captures of this glint-schedule JSON (a subset or shard)")
         ->type_name("FILE");
+    app.add_option("--rows", m_rows,
+                   "Render only lines A to B-1 of every capture (a row shard; glint-envi merge "
+                   "joins the parts): A:B, A:, :B or N")
+        ->type_name("A:B");
     app.add_flag("--radiance-only", m_options.radiance_only,
                  "Stop at radiance: write the radiometric product even where a detector model, "
                  "TDI or a colour filter array is configured");
@@ -100,6 +105,7 @@ int RenderCli::execute(Context& ctx, std::ostream& out) {
     } else {
         m_options.processing.timeout.reset();
     }
+    if (app.count("--rows") > 0) render.rows = schedule::parse_row_band(m_rows);
     render.device.isa = m_isa;
     render.device.threads = ctx.threads;
     return app_render::run(m_options, ctx, out);

@@ -28,6 +28,7 @@ private:
     std::string m_convergence;
     std::string m_max_memory;
     std::string m_isa;
+    std::string m_rows;
     double m_processing_timeout_s = 3600.0;
 };
 

@@ -35,6 +35,10 @@ void ScheduleCli::configure(CLI::App& app) {
     app.add_option("--shard", m_shard,
                    "Only shard K of N (1 <= K <= N): contiguous runs balanced by problem count")
         ->type_name("K/N");
+    app.add_option("--by", m_by,
+                   "What --shard splits: captures (whole captures, the default) or rows (a band "
+                   "of lines of every capture)")
+        ->type_name("captures|rows");
     app.add_option("--output-folder,--output_folder", m_output_folder,
                    "Output folder of every BasicPlatform without its own in the .jsim")
         ->type_name("DIR");
@@ -71,6 +75,13 @@ int ScheduleCli::execute(Context& ctx, std::ostream& out) {
     }
     if (app.count("--focal-plane") > 0) m_options.filters.focal_plane = m_focal_plane;
     if (app.count("--shard") > 0) m_options.filters.shard = app_schedule::parse_shard(m_shard);
+    if (app.count("--by") > 0) {
+        if (m_by != "captures" && m_by != "rows") {
+            throw usage_error("--by: expected captures or rows, got \"" + m_by + "\"");
+        }
+        if (!m_options.filters.shard) throw usage_error("--by " + m_by + " needs --shard K/N");
+        m_options.filters.shard->by_rows = m_by == "rows";
+    }
     if (app.count("--output-folder") > 0) m_options.schedule.output_folder = m_output_folder;
     if (app.count("--output-prefix") > 0) m_options.schedule.output_prefix = m_output_prefix;
     return app_schedule::run(m_options, ctx, out);

@@ -29,6 +29,7 @@ private:
     std::string m_format = "json";
     std::string m_captures;
     std::string m_shard;
+    std::string m_by = "captures";
     std::size_t m_task = 0;
     std::string m_focal_plane;
     std::string m_output_folder;

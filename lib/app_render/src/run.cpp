@@ -8,9 +8,9 @@
 
 #include "glint/app_render/render_tool.h"
 #include "glint/core/error.h"
-#include "glint/core/stdio_name.h"
 #include "glint/core/install_paths.h"
 #include "glint/core/runner.h"
+#include "glint/core/stdio_name.h"
 #include "glint/core/text.h"
 #include "glint/inputs/load.h"
 #include "glint/model/names.h"
@@ -113,7 +113,15 @@ int run(const Options& options, Context& ctx, std::ostream& out) {
     if (render.data_dir.empty()) render.data_dir = default_data_dir();
     ctx.log.info("Data folder: " + render.data_dir.string());
     if (!options.schedule.empty()) {
-        render.only_captures = sensor::read_schedule_selection(options.schedule);
+        sensor::ScheduleSelection selection = sensor::read_schedule_selection(options.schedule);
+        render.only_captures = std::move(selection.captures);
+        if (selection.rows) {
+            if (render.rows) {
+                throw usage_error("--rows and a --by rows shard in --schedule " +
+                                  options.schedule.string() + ": give one band of lines");
+            }
+            render.rows = selection.rows;
+        }
     }
     inputs::LoadOptions load_options;
     load_options.read = options.read;
@@ -133,11 +141,19 @@ int run(const Options& options, Context& ctx, std::ostream& out) {
         if (!options.no_processing) print_events(plan.events, runner, out);
         return kExitSuccess;
     }
+    // A band of lines is part of its images: processing tasks would see parts, so they run on
+    // the merged files instead (docs/scale.md).
+    const bool run_tasks = !options.no_processing && !render.rows;
     ProcessingObserver observer(runner);
-    const sensor::RenderReport report = sensor::render(
-        std::move(loaded), render, ctx, options.no_processing ? nullptr : &observer);
-    if (options.no_processing && !report.events.empty()) {
-        ctx.log.warning("--no-processing: " + std::to_string(task_count(report.events)) +
+    const sensor::RenderReport report =
+        sensor::render(std::move(loaded), render, ctx, run_tasks ? &observer : nullptr);
+    if (!run_tasks && !report.events.empty()) {
+        const std::string why =
+            options.no_processing
+                ? std::string("--no-processing")
+                : "--rows " + render.rows->describe() +
+                      " (a band of lines; run them on the files glint-envi merge joins)";
+        ctx.log.warning(why + ": " + std::to_string(task_count(report.events)) +
                         " processing task runs at " + std::to_string(report.events.size()) +
                         " events were skipped");
     }

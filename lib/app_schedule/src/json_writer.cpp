@@ -65,6 +65,7 @@ Json capture_json(const CaptureRecord& record, const motion::SceneFrame& frame) 
     j["time_window_s"] = Json::array({c.t0_s, c.t1_s});
     j["datetime_utc"] = datetime_utc(reference_of(record), c.t0_s);
     j["problem_count"] = record.problems;
+    if (record.rows) j["rows"] = Json::array({record.rows->first, record.rows->second});
     if (const std::optional<double> rolling = source.rolling_line_time_s()) {
         const double line_time_s = *rolling;
         const double last_s = line_time_s * static_cast<double>(source.y_count - 1);
@@ -197,9 +198,10 @@ Json selection_json(const Filters& filters) {
         j["captures"] = nullptr;
     }
     j["focal_plane"] = filters.focal_plane ? Json(*filters.focal_plane) : Json(nullptr);
-    j["shard"] = filters.shard
-                     ? Json{{"index", filters.shard->index}, {"count", filters.shard->count}}
-                     : Json(nullptr);
+    j["shard"] = filters.shard ? Json{{"index", filters.shard->index},
+                                      {"count", filters.shard->count},
+                                      {"by", filters.shard->by_rows ? "rows" : "captures"}}
+                               : Json(nullptr);
     return j;
 }
 

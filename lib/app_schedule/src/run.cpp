@@ -100,7 +100,8 @@ internal::WrittenTotals stream_captures(const schedule::Schedule& schedule,
         }
     }
     std::optional<ShardSplitter> splitter;
-    if (selection.filters().shard) {
+    const std::optional<ShardSpec>& shard_spec = selection.filters().shard;
+    if (shard_spec && !shard_spec->by_rows) {
         splitter.emplace(selection_totals(schedule, selection, ctx.cancel),
                          selection.filters().shard->count);
     }
@@ -115,8 +116,8 @@ internal::WrittenTotals stream_captures(const schedule::Schedule& schedule,
         const schedule::ClockedFocalPlane& source = sources[capture->source];
         const std::uint64_t event = ++events[source.plugin][capture->task_index];
         if (selection.matches(*capture)) {
-            const std::uint64_t problems = problems_per_capture(source);
-            const std::uint64_t shard = splitter ? splitter->shard_of(problems) : 0;
+            const std::uint64_t shard =
+                splitter ? splitter->shard_of(problems_per_capture(source)) : 0;
             if (splitter && shard > selection.filters().shard->index) break;  // contiguous
             if (!splitter || shard == selection.filters().shard->index) {
                 CaptureRecord record;
@@ -125,12 +126,13 @@ internal::WrittenTotals stream_captures(const schedule::Schedule& schedule,
                 record.plugin = &plugins[source.plugin];
                 record.event_number = event;
                 record.event_count = event_counts[source.plugin][capture->task_index];
-                record.problems = problems;
+                record.problems = selected_problems(source, shard_spec);
+                record.rows = shard_rows(source, shard_spec);
                 record.image = schedule.image_file(*capture);
                 record.truth = schedule.truth_files(*capture);
                 for (internal::CaptureWriter* writer : writers) writer->capture(record);
                 ++written.captures;
-                written.problems += problems;
+                written.problems += record.problems;
             }
         }
         if (selection.exhausted(*capture)) break;

@@ -8,6 +8,7 @@
 #include <set>
 
 #include "glint/core/error.h"
+#include "glint/schedule/row_band.h"
 
 namespace glint::app_schedule {
 namespace {
@@ -87,6 +88,22 @@ ShardSpec parse_shard(std::string_view text) {
 
 std::uint64_t problems_per_capture(const schedule::ClockedFocalPlane& source) {
     return source.focal_plane == nullptr ? 0 : source.problems_per_capture;
+}
+
+std::optional<std::pair<std::uint64_t, std::uint64_t>> shard_rows(
+    const schedule::ClockedFocalPlane& source, const std::optional<ShardSpec>& shard) {
+    if (!shard || !shard->by_rows) return std::nullopt;
+    schedule::RowBand band;
+    band.shard = {shard->index, shard->count};
+    return band.of(source.lines_per_capture());
+}
+
+std::uint64_t selected_problems(const schedule::ClockedFocalPlane& source,
+                                const std::optional<ShardSpec>& shard) {
+    const std::uint64_t problems = problems_per_capture(source);
+    const auto rows = shard_rows(source, shard);
+    if (!rows || source.lines_per_capture() == 0) return problems;
+    return problems / source.lines_per_capture() * (rows->second - rows->first);
 }
 
 Selection::Selection(const schedule::Schedule& schedule, const Filters& filters)

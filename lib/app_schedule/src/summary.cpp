@@ -31,7 +31,8 @@ Tally count_selection(const schedule::Schedule& schedule, const Selection& selec
     for (std::size_t s = 0; s < sources.size(); ++s) {
         tally.captures[s].assign(schedule.plugins()[sources[s].plugin].tasks.tasks.size(), 0);
     }
-    if (selection.analytic() && !selection.filters().shard) {
+    const std::optional<ShardSpec>& shard_spec = selection.filters().shard;
+    if (selection.analytic() && (!shard_spec || shard_spec->by_rows)) {
         for (std::size_t s = 0; s < sources.size(); ++s) {
             for (std::size_t t = 0; t < tally.captures[s].size(); ++t) {
                 if (selection.keeps(s, t)) tally.captures[s][t] = schedule.count(s, t);
@@ -40,7 +41,7 @@ Tally count_selection(const schedule::Schedule& schedule, const Selection& selec
     } else {
         tally.enumerated = true;
         std::optional<ShardSplitter> splitter;
-        if (selection.filters().shard) {
+        if (shard_spec && !shard_spec->by_rows) {
             splitter.emplace(selection_totals(schedule, selection, ctx.cancel),
                              selection.filters().shard->count);
         }
@@ -70,7 +71,7 @@ Tally count_selection(const schedule::Schedule& schedule, const Selection& selec
     for (std::size_t s = 0; s < sources.size(); ++s) {
         for (std::uint64_t n : tally.captures[s]) {
             tally.total_captures += n;
-            tally.total_problems += n * problems_per_capture(sources[s]);
+            tally.total_problems += n * selected_problems(sources[s], shard_spec);
         }
     }
     return tally;
@@ -103,7 +104,8 @@ void write_summary(const RunInfo& info, const Selection& selection, Context& ctx
             for (std::size_t s = 0; s < sources.size(); ++s) {
                 if (sources[s].plugin != p) continue;
                 captures += tally.captures[s][t];
-                problems += tally.captures[s][t] * problems_per_capture(sources[s]);
+                problems +=
+                    tally.captures[s][t] * selected_problems(sources[s], selection.filters().shard);
             }
             const model::Task& task = plugin.tasks.tasks[t];
             if (captures > 0) {
@@ -130,7 +132,8 @@ void write_summary(const RunInfo& info, const Selection& selection, Context& ctx
                       sources[s].focal_plane ? Json(sources[s].focal_plane->name) : Json(nullptr)},
                      {"problems_per_capture", problems_per_capture(sources[s])},
                      {"capture_count", captures},
-                     {"problem_count", captures * problems_per_capture(sources[s])}});
+                     {"problem_count",
+                      captures * selected_problems(sources[s], selection.filters().shard)}});
         }
         plugins.push_back(Json{{"plugin_index", plugin.plugin_index},
                                {"output_prefix", plugin.output_prefix},

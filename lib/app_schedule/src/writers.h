@@ -34,6 +34,8 @@ struct CaptureRecord {
     std::uint64_t event_number = 0;  ///< 1-based among its plugin's captures in its task
     std::uint64_t event_count = 0;   ///< captures of its plugin in its task
     std::uint64_t problems = 0;
+    /// The lines [a, b) of a --by rows shard; none: the whole capture.
+    std::optional<std::pair<std::uint64_t, std::uint64_t>> rows;
     std::filesystem::path image;  ///< empty when the source writes no image
     std::vector<std::filesystem::path> truth;
 };

@@ -141,6 +141,10 @@ std::string envi_brace_list(const std::vector<std::string>& items) {
     return out + "}";
 }
 
+std::vector<std::string> envi_list_items(std::string_view value) {
+    return detail::split_list(value);
+}
+
 std::string sanitize_band_name(std::string_view name) {
     std::string out(name);
     for (char& c : out) {

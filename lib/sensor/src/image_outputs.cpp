@@ -8,6 +8,7 @@
 
 #include "glint/core/error.h"
 #include "glint/core/text.h"
+#include "glint/io/envi_part.h"
 
 namespace glint::sensor {
 
@@ -18,6 +19,7 @@ struct ImageOutputs::File {
     std::uint64_t written = 0;
     std::vector<CaptureStamp> stamps;
     std::optional<io::EnviWriter> writer;
+    std::optional<PartOf> part;
 };
 
 struct ImageOutputs::BinFile {
@@ -32,7 +34,8 @@ ImageOutputs::ImageOutputs() = default;
 ImageOutputs::~ImageOutputs() = default;
 
 void ImageOutputs::plan(const std::filesystem::path& path, io::EnviHeader header,
-                        std::uint64_t lines_per_capture, std::uint64_t captures) {
+                        std::uint64_t lines_per_capture, std::uint64_t captures,
+                        std::optional<PartOf> part) {
     header.lines = static_cast<std::size_t>(lines_per_capture * captures);
     auto it = m_files.find(path);
     if (it != m_files.end()) {
@@ -51,6 +54,7 @@ void ImageOutputs::plan(const std::filesystem::path& path, io::EnviHeader header
     file->header = std::move(header);
     file->lines_per_capture = lines_per_capture;
     file->captures = captures;
+    file->part = std::move(part);
     m_files.emplace(path, std::move(file));
     m_order.push_back(path);
 }
@@ -96,6 +100,13 @@ void ImageOutputs::write_capture(const std::filesystem::path& path, std::span<co
     f.writer->set_extra("glint capture indices", io::envi_brace_list(indices));
     f.writer->set_extra("glint capture windows s", io::envi_brace_list(times));
     f.writer->set_extra("glint capture datetimes utc", io::envi_brace_list(datetimes));
+    if (f.part) {
+        f.writer->set_extra(io::kPartRowsKey, "{" + std::to_string(f.part->first_line) + ", " +
+                                                  std::to_string(f.part->end_line) + "}");
+        f.writer->set_extra(io::kPartLinesPerCaptureKey,
+                            std::to_string(f.part->whole_lines_per_capture));
+        f.writer->set_extra(io::kPartCapturesKey, io::format_index_runs(f.part->whole_captures));
+    }
     f.writer->commit();
     f.writer.reset();
     m_published.push_back(path);

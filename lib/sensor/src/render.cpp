@@ -26,7 +26,7 @@ RenderReport plan(model::SimulationInputs inputs, const RenderOptions& options,
     for (const detail::PlannedCapture& p : prepared->captures) {
         CaptureReport c;
         c.index = p.capture.index;
-        c.pixels = prepared->inputs.schedule->sources()[p.capture.source].problems_per_capture;
+        c.pixels = p.problems(prepared->inputs.schedule->sources()[p.capture.source]);
         report.captures.push_back(c);
     }
     report.events = detail::plan_events(*prepared).in_order();

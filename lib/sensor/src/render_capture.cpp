@@ -116,7 +116,10 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
                  std::nullopt};
     batch.source = &rays;
     batch.convergence = state.convergence;
-    batch.count = source.problems_per_capture;
+    // Only the capture's lines first_line … end_line − 1 (--rows): the problems keep their
+    // indices in the capture, so their random streams are those of the whole render.
+    batch.first_problem = p.first_problem(source);
+    batch.count = p.problems(source);
     const double multiplier =
         source.focal_plane->capture_method.sample_strategy.hypersampling_multiplier;
     std::vector<std::uint8_t> important;
@@ -124,7 +127,11 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
         important = hypersampled_pixels(in.scene, geometry, state.camera, *plugin.poses,
                                         source.instrument_index, timing,
                                         state.psf ? state.psf->reach_px() : 0.0);
-        batch.hypersampled = important;
+        if (!important.empty()) {  // empty: nothing important in view
+            batch.hypersampled = std::span<const std::uint8_t>(important).subspan(
+                static_cast<std::size_t>(batch.first_problem),
+                static_cast<std::size_t>(batch.count));
+        }
         batch.hypersampling_multiplier = multiplier;
     }
     const std::size_t channels = state.units.channels();
@@ -170,11 +177,11 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
     if (state.detection) {
         // Detection line by line, keyed like glint-detect: (capture index, line in capture).
         const detect::DetectionChain& chain = *state.detection;
-        const std::size_t lines = source.lines_per_capture();
+        const std::size_t lines = p.end_line - p.first_line;
         std::vector<double> detected(chain.output_values_per_line() * lines);
         for (std::size_t line = 0; line < lines; ++line) {
             chain.process_line(
-                {capture.index, line},
+                {capture.index, p.first_line + line},
                 std::span<const double>(image).subspan(line * chain.input_values_per_line(),
                                                        chain.input_values_per_line()),
                 std::span<double>(detected).subspan(line * chain.output_values_per_line(),

@@ -169,6 +169,19 @@ struct PlannedCapture {
     std::vector<std::filesystem::path> truth_files;
     std::uint64_t event_number = 0;  ///< DIRSIG's "Event #N of M" within its plugin's task
     std::uint64_t event_count = 0;
+    /// The lines first_line … end_line − 1 of the capture to render (all of them unless
+    /// RenderOptions::rows says otherwise).
+    std::uint64_t first_line = 0;
+    std::uint64_t end_line = 0;
+
+    /// The pixel problems of its lines: per line × lines.
+    std::uint64_t problems(const schedule::ClockedFocalPlane& source) const {
+        return source.problems_per_capture / source.lines_per_capture() * (end_line - first_line);
+    }
+    /// The first pixel problem of its first line.
+    std::uint64_t first_problem(const schedule::ClockedFocalPlane& source) const {
+        return source.problems_per_capture / source.lines_per_capture() * first_line;
+    }
 };
 
 /// A data recorder of the run and its two files (glint/sensor/telemetry.h).

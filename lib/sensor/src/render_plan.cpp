@@ -17,8 +17,15 @@ namespace {
 
 /// The selected captures in schedule order, skipping (with one info line each) the sources
 /// glint-render does not render.
-std::vector<PlannedCapture> select_captures(const RenderInputs& in, const RenderOptions& options,
-                                            const Context& context) {
+/// The captures a run renders and, when it renders only part of the schedule (--schedule,
+/// --rows), every file's captures in the whole schedule (what its parts are parts of).
+struct Selected {
+    std::vector<PlannedCapture> captures;
+    std::map<std::filesystem::path, std::vector<std::uint64_t>> whole;
+};
+
+Selected select_captures(const RenderInputs& in, const RenderOptions& options,
+                         const Context& context) {
     const schedule::Schedule& schedule = *in.schedule;
     const auto& sources = schedule.sources();
     std::vector<bool> skip(sources.size(), false);
@@ -68,18 +75,27 @@ std::vector<PlannedCapture> select_captures(const RenderInputs& in, const Render
             event_counts[{sources[s].plugin, t}] += schedule.count(s, t);
         }
     }
-    std::vector<PlannedCapture> out;
+    const bool partial = !options.only_captures.empty() || options.rows;
+    Selected selected_captures;
+    std::vector<PlannedCapture>& out = selected_captures.captures;
     schedule::Schedule::Generator generator = schedule.captures();
     while (const std::optional<schedule::Capture> capture = generator.next()) {
         if ((capture->index & 0x3FF) == 0) context.cancel.throw_if_cancelled();
         const std::pair key{sources[capture->source].plugin, capture->task_index};
         const std::uint64_t event = ++events[key];
         if (skip[capture->source]) continue;
+        std::filesystem::path image = schedule.image_file(*capture);
+        std::vector<std::filesystem::path> truth = schedule.truth_files(*capture);
+        if (partial) {
+            selected_captures.whole[image].push_back(capture->index);
+            for (const auto& t : truth) selected_captures.whole[t].push_back(capture->index);
+        }
         if (!options.only_captures.empty() && !options.only_captures.contains(capture->index)) {
             continue;
         }
-        out.push_back({*capture, schedule.image_file(*capture), schedule.truth_files(*capture),
-                       event, event_counts[key]});
+        const std::uint64_t lines = sources[capture->source].lines_per_capture();
+        out.push_back(
+            {*capture, std::move(image), std::move(truth), event, event_counts[key], 0, lines});
     }
     if (!options.only_captures.empty()) {
         std::set<std::uint64_t> found;
@@ -92,27 +108,45 @@ std::vector<PlannedCapture> select_captures(const RenderInputs& in, const Render
             }
         }
     }
-    return out;
+    if (options.rows) {
+        // A band of lines: a capture with none of its lines in it renders nothing here.
+        std::erase_if(out, [&](PlannedCapture& p) {
+            const auto [a, b] = options.rows->of(p.end_line);
+            p.first_line = a;
+            p.end_line = b;
+            return a == b;
+        });
+        if (out.empty()) {
+            context.log.warning("--rows " + options.rows->describe() +
+                                " holds no line of any selected capture: nothing is rendered");
+        }
+    }
+    return selected_captures;
 }
 
 /// Plans every output file with its header and capture count.
-void plan_outputs(const RenderInputs& in, const std::vector<PlannedCapture>& captures,
+void plan_outputs(const RenderInputs& in, const Selected& selected,
                   std::map<std::size_t, FocalPlaneState>& states, const RenderOptions& options,
                   const Context& context, ImageOutputs& outputs) {
+    const std::vector<PlannedCapture>& captures = selected.captures;
     // (source, truth file index or none for the radiometric image) → captures
     struct Entry {
         std::size_t source = 0;
         std::optional<std::size_t> truth;
         std::uint64_t captures = 0;
+        std::uint64_t first_line = 0;  ///< the lines of each capture it holds
+        std::uint64_t end_line = 0;
     };
     std::map<std::filesystem::path, Entry> files;
     for (const PlannedCapture& p : captures) {
         Entry& entry = files[p.file];
         entry.source = p.capture.source;
         ++entry.captures;
+        entry.first_line = p.first_line;
+        entry.end_line = p.end_line;
         for (std::size_t t = 0; t < p.truth_files.size(); ++t) {
             Entry& truth = files[p.truth_files[t]];
-            truth = {p.capture.source, t, truth.captures + 1};
+            truth = {p.capture.source, t, truth.captures + 1, p.first_line, p.end_line};
         }
     }
     for (const auto& [path, entry] : files) {
@@ -129,12 +163,32 @@ void plan_outputs(const RenderInputs& in, const std::vector<PlannedCapture>& cap
     for (const auto& [path, entry] : files) {
         const FocalPlaneState& state = states.at(entry.source);
         const schedule::ClockedFocalPlane& s = in.schedule->sources()[entry.source];
+        // A part: some of the whole file's lines or captures (glint/io/envi_part.h).
+        std::optional<PartOf> part;
+        const auto whole = selected.whole.find(path);
+        const std::uint64_t lines = entry.end_line - entry.first_line;
+        if (lines != s.lines_per_capture() ||
+            (whole != selected.whole.end() && whole->second.size() != entry.captures)) {
+            part = PartOf{
+                entry.first_line, entry.end_line, s.lines_per_capture(),
+                whole != selected.whole.end() ? whole->second : std::vector<std::uint64_t>{}};
+        }
         if (state.lidar) {
+            if (part) {
+                throw usage_error(
+                    "lidar receiver \"" + s.focal_plane->name + "\"'s file " + path.string() +
+                    " would hold " + std::to_string(entry.captures) + " of its " +
+                    std::to_string(part->whole_captures.size()) + " pulses" +
+                    (lines != s.lines_per_capture() ? std::string(" and some of their rows") : "") +
+                    ": glint-envi merge joins ENVI parts, not BIN files; render all of a lidar "
+                    "receiver's pulses in one run, without --rows (glint-schedule --focal-plane "
+                    "selects them)");
+            }
             plan_bin_file(in, state, entry.source, path, pulses.at(path), options, outputs);
             continue;
         }
         if (!entry.truth) {
-            outputs.plan(path, state.header, s.lines_per_capture(), entry.captures);
+            outputs.plan(path, state.header, lines, entry.captures, part);
             continue;
         }
         if (*entry.truth >= state.truth.files.size()) {
@@ -143,7 +197,7 @@ void plan_outputs(const RenderInputs& in, const std::vector<PlannedCapture>& cap
         outputs.plan(path,
                      truth_header(state.header, *s.focal_plane, state.truth,
                                   state.truth.files[*entry.truth], in.scene),
-                     s.lines_per_capture(), entry.captures);
+                     lines, entry.captures, std::move(part));
     }
 }
 
@@ -153,8 +207,9 @@ std::unique_ptr<Prepared> prepare(model::SimulationInputs loaded, const RenderOp
                                   const Context& context) {
     auto p = std::make_unique<Prepared>();
     p->inputs = make_render_inputs(std::move(loaded), options, context);
-    p->captures = select_captures(p->inputs, options, context);
-    plan_outputs(p->inputs, p->captures, p->states, options, context, p->outputs);
+    Selected selected = select_captures(p->inputs, options, context);
+    plan_outputs(p->inputs, selected, p->states, options, context, p->outputs);
+    p->captures = std::move(selected.captures);
     p->telemetry = plan_telemetry(p->inputs, options, context);
     RenderReport& report = p->report;
     report.files = p->outputs.planned();
@@ -170,7 +225,7 @@ std::unique_ptr<Prepared> prepare(model::SimulationInputs loaded, const RenderOp
     std::uint64_t largest = 0;
     for (const PlannedCapture& planned : p->captures) {
         const schedule::ClockedFocalPlane& s = in.schedule->sources()[planned.capture.source];
-        report.pixels += s.problems_per_capture;
+        report.pixels += planned.problems(s);
         const FocalPlaneState& state = p->states.at(planned.capture.source);
         // A lidar pulse holds 1 + time samples values per pixel (and its returns as many).
         const std::uint64_t bands =

@@ -14,8 +14,7 @@
 namespace glint::sensor::detail {
 
 std::vector<PlannedTelemetry> plan_telemetry(const RenderInputs& inputs,
-                                             const RenderOptions& options,
-                                             const Context& context) {
+                                             const RenderOptions& options, const Context& context) {
     std::vector<PlannedTelemetry> planned;
     std::set<std::filesystem::path> names;
     for (std::size_t p = 0; p < inputs.schedule->plugins().size(); ++p) {
@@ -25,12 +24,12 @@ std::vector<PlannedTelemetry> plan_telemetry(const RenderInputs& inputs,
             const model::Instrument& instrument = *poses.instrument_path(k).instrument;
             if (instrument.type != model::InstrumentType::data_recorder) continue;
             if (instrument.recorder.basename.empty()) continue;
-            if (!options.only_captures.empty()) {
+            if (!options.only_captures.empty() || options.rows) {
                 context.log.warning(format_located(
                     instrument.where, "data recorder " + quote(instrument.name) +
-                                          " records nothing in a --schedule run (each shard "
-                                          "would write the same files): render without "
-                                          "--schedule to record it"));
+                                          " records nothing in a --schedule or --rows run (each "
+                                          "shard would write the same files): render without "
+                                          "them to record it"));
                 continue;
             }
             PlannedTelemetry t;
@@ -44,7 +43,8 @@ std::vector<PlannedTelemetry> plan_telemetry(const RenderInputs& inputs,
             for (const auto& file : {t.csv, t.jsonl}) {
                 if (!names.insert(file.lexically_normal()).second) {
                     throw input_error("data recorder " + quote(instrument.name) + " would write " +
-                                          file.string() + ", which another recorder writes: "
+                                          file.string() +
+                                          ", which another recorder writes: "
                                           "give one an <output><basename> of its own",
                                       instrument.recorder.where);
                 }
@@ -61,9 +61,9 @@ void write_telemetry(const Prepared& prepared, const RenderOptions& options,
     for (const PlannedTelemetry& t : prepared.telemetry) {
         const schedule::PluginSchedule& plugin = in.schedule->plugins()[t.plugin];
         const auto times = recorder_times_s(*t.recorder, *plugin.platform, plugin.tasks);
-        const std::vector<TelemetryRecord> records =
-            record_telemetry(*plugin.poses, t.instrument, times, in.frame, t.recorder->recorder.noise,
-                             options.schedule.seed, plugin.plugin_index);
+        const std::vector<TelemetryRecord> records = record_telemetry(
+            *plugin.poses, t.instrument, times, in.frame, t.recorder->recorder.noise,
+            options.schedule.seed, plugin.plugin_index);
         TelemetryHeader header;
         header.instrument = t.recorder->name;
         header.platform_file = plugin.platform->file;

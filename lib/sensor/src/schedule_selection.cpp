@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 // read_schedule_selection: the capture indices of a glint-schedule JSON file (--schedule),
 // read by a SAX handler that keeps only them.
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
 #include <string>
-
-#include <nlohmann/json.hpp>
+#include <utility>
 
 #include "glint/core/error.h"
 #include "glint/core/stdio_name.h"
@@ -34,6 +34,10 @@ public:
     std::optional<std::size_t> bad_capture;  ///< the first capture without a valid index
     std::optional<std::string> parse_problem;
     std::set<std::uint64_t> indices;
+    /// selection.shard's index, count and by (a "rows" shard renders a band of lines).
+    std::optional<std::uint64_t> shard_index;
+    std::optional<std::uint64_t> shard_count;
+    std::optional<std::string> shard_by;
 
     bool null() override { return scalar(); }
     bool boolean(bool) override { return scalar(); }
@@ -44,11 +48,14 @@ public:
             m_capture_has_index = true;
             return true;
         }
+        if (m_depth == 3 && m_in_shard && m_key == "index") shard_index = value;
+        if (m_depth == 3 && m_in_shard && m_key == "count") shard_count = value;
         return scalar();
     }
     bool number_float(number_float_t, const string_t&) override { return scalar(); }
     bool string(string_t& value) override {
         if (m_depth == 1 && m_key == "format") format = value;
+        if (m_depth == 3 && m_in_shard && m_key == "by") shard_by = value;
         return scalar();
     }
     bool binary(binary_t&) override { return scalar(); }
@@ -91,6 +98,10 @@ private:
         } else if (at_capture_element()) {
             if (!object) note_bad_capture();
             m_capture_has_index = false;
+        } else if (m_depth == 1 && m_key == "selection" && object) {
+            m_in_selection = true;
+        } else if (m_depth == 2 && m_in_selection && m_key == "shard" && object) {
+            m_in_shard = true;
         }
         ++m_depth;
         m_key.clear();
@@ -100,6 +111,8 @@ private:
         --m_depth;
         if (at_capture_element()) ++m_capture;
         if (m_depth == 1) m_in_captures = false;
+        if (m_depth == 1) m_in_selection = false;
+        if (m_depth == 2) m_in_shard = false;
         m_key.clear();
         return true;
     }
@@ -110,13 +123,15 @@ private:
     std::size_t m_depth = 0;  ///< containers open around the current value
     std::string m_key;        ///< the current object key at this depth
     bool m_in_captures = false;
-    std::size_t m_capture = 0;  ///< index of the current captures[] element
+    bool m_in_selection = false;  ///< inside the top-level "selection" object
+    bool m_in_shard = false;      ///< inside selection.shard
+    std::size_t m_capture = 0;    ///< index of the current captures[] element
     bool m_capture_has_index = false;
 };
 
 }  // namespace
 
-std::set<std::uint64_t> read_schedule_selection(const std::filesystem::path& file) {
+ScheduleSelection read_schedule_selection(const std::filesystem::path& file) {
     // "-": the schedule piped in (glint-schedule ... --format json | jq ... | glint-render
     // --schedule - ...).
     const bool piped = is_stdio_name(file);
@@ -130,9 +145,10 @@ std::set<std::uint64_t> read_schedule_selection(const std::filesystem::path& fil
                           where);
     }
     if (reader.format != "glint-schedule") {
-        throw input_error("not a glint-schedule file (expected \"format\": \"glint-schedule\"; "
-                          "write one with glint-schedule --format json)",
-                          where);
+        throw input_error(
+            "not a glint-schedule file (expected \"format\": \"glint-schedule\"; "
+            "write one with glint-schedule --format json)",
+            where);
     }
     if (!reader.captures_is_array) {
         throw input_error("the schedule has no \"captures\" array", where);
@@ -143,7 +159,26 @@ std::set<std::uint64_t> read_schedule_selection(const std::filesystem::path& fil
                           where);
     }
     if (reader.indices.empty()) throw input_error("the schedule selects no capture", where);
-    return reader.indices;
+    ScheduleSelection selection;
+    selection.captures = std::move(reader.indices);
+    if (reader.shard_by && *reader.shard_by != "captures") {
+        if (*reader.shard_by != "rows") {
+            throw input_error("selection.shard.by is " + quote(*reader.shard_by) +
+                                  ", expected \"captures\" or \"rows\"",
+                              where);
+        }
+        if (!reader.shard_index || !reader.shard_count || *reader.shard_index < 1 ||
+            *reader.shard_index > *reader.shard_count) {
+            throw input_error(
+                "selection.shard of a row shard needs \"index\" K and \"count\" N with 1 <= K "
+                "<= N",
+                where);
+        }
+        schedule::RowBand rows;
+        rows.shard = {*reader.shard_index, *reader.shard_count};
+        selection.rows = rows;
+    }
+    return selection;
 }
 
 }  // namespace glint::sensor

@@ -19,6 +19,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "glint/core/cancel.h"
@@ -39,6 +40,9 @@ struct CaptureRange {
 struct ShardSpec {
     std::uint64_t index = 1;  ///< K, 1..count
     std::uint64_t count = 1;  ///< N >= 1
+    /// --by rows: every selected capture, lines ⌊(K−1)·L/N⌋ … ⌊K·L/N⌋ − 1 of each
+    /// (glint/schedule/row_band.h), instead of whole captures.
+    bool by_rows = false;
 };
 
 /// Parses "A:B", "A:", ":B" or "N". Throws glint::Error (usage) naming --captures otherwise
@@ -48,9 +52,18 @@ CaptureRange parse_capture_range(std::string_view text);
 ShardSpec parse_shard(std::string_view text);
 
 /// Problems (pixel problems handed to the radiometry) of one capture of `source`
-/// (ClockedFocalPlane::problems_per_capture: x × y elements after scale_resolution, x for a TDI focal
-/// plane); 0 for a source without a focal plane.
+/// (ClockedFocalPlane::problems_per_capture: x × y elements after scale_resolution, x for a TDI
+/// focal plane); 0 for a source without a focal plane.
 std::uint64_t problems_per_capture(const schedule::ClockedFocalPlane& source);
+
+/// The lines [a, b) of a capture of `source` that a --by rows shard holds; nullopt without
+/// one (whole captures).
+std::optional<std::pair<std::uint64_t, std::uint64_t>> shard_rows(
+    const schedule::ClockedFocalPlane& source, const std::optional<ShardSpec>& shard);
+/// Problems of one capture of `source` in the selection: problems_per_capture, or those of
+/// the --by rows shard's lines.
+std::uint64_t selected_problems(const schedule::ClockedFocalPlane& source,
+                                const std::optional<ShardSpec>& shard);
 
 /// The filters, resolved against one schedule.
 struct Filters {

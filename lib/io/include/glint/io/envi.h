@@ -108,6 +108,9 @@ std::string format_envi_header(const EnviHeader& header);
 std::string sanitize_band_name(std::string_view name);
 /// A brace list for a header value, "{a, b, c}", each item made safe by sanitize_band_name.
 std::string envi_brace_list(const std::vector<std::string>& items);
+/// The items of a header value: `{a, b, c}` → "a", "b", "c" (each trimmed; `{}` gives none,
+/// a value without braces is one item).
+std::vector<std::string> envi_list_items(std::string_view value);
 
 /// Header path for a data file: `<name>.hdr` beside it if that exists and `<data>.hdr`
 /// does not, otherwise `<data>.hdr` (the glint and DIRSIG naming `x.img.hdr`).
@@ -115,7 +118,6 @@ std::filesystem::path envi_header_path_for(const std::filesystem::path& data_pat
 /// Data path for a header or data path argument: `x.img.hdr` → `x.img`; `x.hdr` → `x`,
 /// `x.img`, `x.dat`, `x.raw` or `x.bin`, whichever exists; a data path is returned as is.
 std::filesystem::path envi_data_path_for(const std::filesystem::path& path);
-
 
 /// Streams an ENVI file line by line. Any interleave and byte order; values are delivered
 /// in BIP order (for each sample, all bands) and native byte order.
@@ -128,8 +130,7 @@ public:
 
     /// Opens the data file (or its header), parses and validates the header and checks that
     /// the data file holds at least header offset + data bytes.
-    explicit EnviReader(const std::filesystem::path& path,
-                        LineUse line_use = LineUse::read_lines,
+    explicit EnviReader(const std::filesystem::path& path, LineUse line_use = LineUse::read_lines,
                         std::size_t max_memory_bytes = kDefaultMaxMemoryBytes);
     ~EnviReader();
     EnviReader(EnviReader&&) noexcept;

@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <utility>
@@ -36,6 +37,15 @@ struct CaptureStamp {
     std::uint64_t index = 0;    ///< global schedule index (the random streams' capture key)
 };
 
+/// What a part (a file holding some of the whole file's lines or captures, glint/io/envi_part.h)
+/// is part of: its header gets the `glint part ...` keys.
+struct PartOf {
+    std::uint64_t first_line = 0;  ///< lines first_line … end_line − 1 of each capture
+    std::uint64_t end_line = 0;
+    std::uint64_t whole_lines_per_capture = 0;
+    std::vector<std::uint64_t> whole_captures;  ///< global indices of the whole file, sorted
+};
+
 class ImageOutputs {
 public:
     ImageOutputs();
@@ -44,10 +54,12 @@ public:
     ImageOutputs& operator=(const ImageOutputs&) = delete;
 
     /// Declares that `path` receives `captures` captures of `lines_per_capture` lines each,
-    /// with `header` (its `lines` is set here). Nothing is created yet. Throws glint::Error
-    /// (usage) when `path` is planned twice with a different header shape.
+    /// with `header` (its `lines` is set here); `part`, when given, says what whole file it is
+    /// a part of. Nothing is created yet. Throws glint::Error (usage) when `path` is planned
+    /// twice with a different header shape.
     void plan(const std::filesystem::path& path, io::EnviHeader header,
-              std::uint64_t lines_per_capture, std::uint64_t captures);
+              std::uint64_t lines_per_capture, std::uint64_t captures,
+              std::optional<PartOf> part = std::nullopt);
 
     /// Writes one capture (lines_per_capture × samples × bands values, BIP) to `path`: opens
     /// the file at its first capture, publishes it after its last. Throws glint::Error

@@ -25,6 +25,7 @@
 #include "glint/radiometry/path_tracer.h"
 #include "glint/radiometry/problem.h"
 #include "glint/scene/geometry_scene.h"
+#include "glint/schedule/row_band.h"
 #include "glint/schedule/schedule.h"
 
 namespace glint::sensor {
@@ -48,6 +49,10 @@ struct RenderOptions {
     std::filesystem::path data_dir;
     /// Global capture indices to render (--schedule FILE); empty: all.
     std::set<std::uint64_t> only_captures;
+    /// --rows A:B or a --by rows shard: only these lines of every capture (docs/scale.md). A
+    /// file that then lacks lines or captures of the whole run is a *part*: its header says
+    /// which (`glint part ...` keys) for glint-envi merge. None: every line.
+    std::optional<schedule::RowBand> rows;
     /// Provenance written into every header (with the Context's command line).
     std::string version;
     /// DIRSIG's --log_info_filename: the capture list (captures, time windows, files) of the
@@ -110,9 +115,15 @@ RenderReport plan(model::SimulationInputs inputs, const RenderOptions& options,
 RenderReport plan(const std::filesystem::path& simulation_file, const RenderOptions& options,
                   const Context& context);
 
-/// The global capture indices listed in a glint-schedule JSON file (its `captures[].index`).
-/// Throws glint::Error (io) when unreadable, (input, with the file) when it is not a
-/// glint-schedule file.
-std::set<std::uint64_t> read_schedule_selection(const std::filesystem::path& file);
+/// What a glint-schedule JSON file selects: its `captures[].index`, and the row band of a
+/// `--by rows` shard (its `selection.shard` with `"by": "rows"`).
+struct ScheduleSelection {
+    std::set<std::uint64_t> captures;
+    std::optional<schedule::RowBand> rows;
+};
+
+/// Reads a glint-schedule JSON file's selection. Throws glint::Error (io) when unreadable,
+/// (input, with the file) when it is not a glint-schedule file or its row shard is invalid.
+ScheduleSelection read_schedule_selection(const std::filesystem::path& file);
 
 }  // namespace glint::sensor
