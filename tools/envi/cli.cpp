@@ -123,7 +123,22 @@ void EnviCli::configure(CLI::App& app) {
         ->required()
         ->type_name("FRAME");
 
-    for (CLI::App* sub : {m_info, m_stats, m_convert, m_encode}) sub->fallthrough();
+    m_merge = app.add_subcommand(
+        "merge", "Join the parts sharded glint-render runs wrote into the files of one run");
+    CLI::App& m = *m_merge;
+    m.add_option("parts", m_options.merge.parts, "The part folders (each shard's --output-folder)")
+        ->required()
+        ->type_name("PART_FOLDER");
+    m.add_option("-o,--output-folder,--output_folder", m_options.merge.output_folder,
+                 "Folder for the whole files (the single run's --output-folder)")
+        ->required()
+        ->type_name("DIR");
+    m.add_option("--expect", m_options.merge.expect,
+                 "A glint-schedule JSON of the whole run (made with -o's folder as its "
+                 "--output-folder): every image and truth file it lists must come out")
+        ->type_name("SCHEDULE");
+
+    for (CLI::App* sub : {m_info, m_stats, m_convert, m_encode, m_merge}) sub->fallthrough();
 }
 
 void EnviCli::finish_convert() {
@@ -173,6 +188,8 @@ int EnviCli::execute(Context& ctx, std::ostream& out) {
         m_options.subcommand = Subcommand::encode;
         if (m_encode->count("--crf") > 0) m_options.encode.crf = m_crf;
         if (m_encode->count("--timeout") > 0) m_options.encode.timeout_s = m_timeout_s;
+    } else if (m_merge->parsed()) {
+        m_options.subcommand = Subcommand::merge;
     } else {
         throw usage_error("no subcommand given");
     }

@@ -27,6 +27,7 @@ private:
     CLI::App* m_stats = nullptr;
     CLI::App* m_convert = nullptr;
     CLI::App* m_encode = nullptr;
+    CLI::App* m_merge = nullptr;
 
     app_envi::Options m_options;
     std::string m_info_format = "text";

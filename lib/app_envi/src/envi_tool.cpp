@@ -31,6 +31,19 @@ void refuse_stdio_names(const Options& options) {
             refuse_stdio_name(options.encode.output, StdioRole::output,
                               "the output of glint-envi encode", kOutputNeedsFile);
             return;
+        case Subcommand::merge:
+            for (const auto& part : options.merge.parts) {
+                refuse_stdio_name(part, StdioRole::input, "a part folder of glint-envi merge",
+                                  kImageInputNeedsFile);
+            }
+            refuse_stdio_name(options.merge.output_folder, StdioRole::output,
+                              "the output folder of glint-envi merge", kOutputNeedsFile);
+            if (!options.merge.expect.empty()) {
+                refuse_stdio_name(options.merge.expect, StdioRole::input,
+                                  "the --expect schedule of glint-envi merge",
+                                  kImageInputNeedsFile);
+            }
+            return;
     }
 }
 
@@ -48,6 +61,9 @@ int run(const Options& options, Context& ctx, std::ostream& out) {
             return kExitSuccess;
         case Subcommand::encode:
             encode_frames(options.encode, ctx);
+            return kExitSuccess;
+        case Subcommand::merge:
+            for (const auto& file : merge_parts(options.merge, ctx)) out << file.string() << "\n";
             return kExitSuccess;
     }
     throw internal_error("unknown glint-envi subcommand");
