@@ -20,6 +20,8 @@ packages=(
     # programs glint runs and test oracles
     ffmpeg openimageio-tools gdal-bin python3 python3-gdal python3-numpy python3-spectral
     python3-sgp4 python3-astropy python3-opencv jq
+    # the one-node Slurm cluster of tests/cluster (examples/slurm): slurmctld, slurmd, sbatch, munged
+    slurm-wlm munge
 )
 
 missing=()
