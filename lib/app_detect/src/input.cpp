@@ -9,6 +9,8 @@
 #include "glint/core/error.h"
 #include "glint/core/text.h"
 #include "glint/dirsig/readers.h"
+#include "glint/io/envi.h"
+#include "glint/io/envi_part.h"
 
 namespace glint::app_detect::internal {
 namespace {
@@ -30,22 +32,6 @@ std::optional<std::uint64_t> parse_unsigned(const std::string& text) {
     } catch (const std::exception&) {
         return std::nullopt;
     }
-}
-
-/// The items of a brace list "{a, b, c}" (or a bare single value).
-std::vector<std::string> list_items(const std::string& value) {
-    std::string t = trim(value);
-    if (t.size() >= 2 && t.front() == '{' && t.back() == '}') t = t.substr(1, t.size() - 2);
-    std::vector<std::string> items;
-    std::size_t begin = 0;
-    while (begin <= t.size()) {
-        std::size_t end = t.find(',', begin);
-        if (end == std::string::npos) end = t.size();
-        const std::string item = trim(t.substr(begin, end - begin));
-        if (!item.empty()) items.push_back(item);
-        begin = end + 1;
-    }
-    return items;
 }
 
 /// The platform path named by the header: as written when it exists (absolute, or relative
@@ -186,7 +172,7 @@ CaptureMap capture_map(const io::EnviHeader& header, const std::string& header_f
     }
     const std::size_t captures = header.lines / map.lines_per_capture;
     if (indices_text) {
-        for (const std::string& item : list_items(*indices_text)) {
+        for (const std::string& item : io::envi_list_items(*indices_text)) {
             const auto index = parse_unsigned(item);
             if (!index) {
                 throw input_error("'" + item + "' is not a capture index",
@@ -202,6 +188,17 @@ CaptureMap capture_map(const io::EnviHeader& header, const std::string& header_f
         }
     } else {
         for (std::size_t i = 0; i < captures; ++i) map.indices.push_back(i);
+    }
+    if (const auto rows = header.find_extra(io::kPartRowsKey)) {
+        const std::vector<std::string> band = io::envi_list_items(*rows);
+        const auto first = band.size() == 2 ? parse_unsigned(band[0]) : std::nullopt;
+        const auto end = band.size() == 2 ? parse_unsigned(band[1]) : std::nullopt;
+        if (!first || !end || *end <= *first || *end - *first != map.lines_per_capture) {
+            throw input_error("'" + trim(*rows) + "' is not the band {A, B} of the part's " +
+                                  std::to_string(map.lines_per_capture) + " lines per capture",
+                              ErrorContext{header_file, 0, io::kPartRowsKey});
+        }
+        map.first_line = static_cast<std::size_t>(*first);
     }
     return map;
 }

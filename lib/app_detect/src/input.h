@@ -44,6 +44,9 @@ double scale_resolution(const io::EnviHeader& header, const std::string& header_
 struct CaptureMap {
     std::size_t lines_per_capture = 1;
     std::vector<std::uint64_t> indices;  ///< global index of each capture, in line order
+    /// The first line's line in its capture: A of a row part's `glint part rows = {A, B}`
+    /// (glint/io/envi_part.h), so a part's lines draw their whole capture's streams.
+    std::size_t first_line = 0;
 };
 
 /// From `glint lines per capture` and `glint capture indices` when present (they must fit

@@ -81,7 +81,7 @@ void stream_lines(io::EnviReader& reader, io::EnviWriter& writer,
                 const std::size_t y = current.first + i;
                 try {
                     const detect::LineKey key{map.indices[y / map.lines_per_capture],
-                                              y % map.lines_per_capture};
+                                              map.first_line + y % map.lines_per_capture};
                     chain.process_line(
                         key, std::span<const double>(current.in).subspan(i * in_values, in_values),
                         std::span<double>(current.out).subspan(i * out_values, out_values));

@@ -17,15 +17,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// `{a, b}` → {"a", "b"}.
-std::vector<std::string> brace_items(std::string_view value) {
-    value = trim(value);
-    if (value.size() >= 2 && value.front() == '{' && value.back() == '}') {
-        value = value.substr(1, value.size() - 2);
-    }
-    return split_list(value);
-}
-
 class EnviSource final : public RasterSource {
 public:
     EnviSource(const fs::path& path, std::size_t max_memory_bytes)
@@ -40,7 +31,7 @@ public:
         m_files = {m_reader.data_path(), m_reader.header_path()};
         read_ignore_value();
         if (const auto units = m_envi->find_extra("glint band units")) {
-            m_band_units = brace_items(*units);
+            m_band_units = io::envi_list_items(*units);
             if (m_band_units.size() != m_bands) {
                 m_warnings.push_back("glint band units lists " +
                                      std::to_string(m_band_units.size()) + " units for " +
