@@ -6,6 +6,7 @@
 #include "glint/sensor/output_units.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -22,6 +23,9 @@ std::string number_text(double value) {
     std::snprintf(buffer, sizeof buffer, "%g", value);
     return buffer;
 }
+
+/// A channel's band weights below this fraction of its largest are dropped (2⁻⁶⁴).
+constexpr double kNegligibleWeight = 0x1p-64;
 
 /// Trapezoid weights Δ_b (µm) of the grid: Σ_b Δ_b f_b = Σ_i ½ (λ_i − λ_{i−1}) (f_i + f_{i−1}),
 /// i.e. integrate_trapezoid(grid, f) up to rounding. Δ_0 = ½(λ_1 − λ_0), Δ_last =
@@ -167,7 +171,6 @@ OutputUnits::OutputUnits(const model::CaptureMethod& method,
 
     if (method.type == model::CaptureMethodType::raw) {
         make_raw(file, grid, k_common);
-        find_supports();
         return;
     }
     // Δ_b · k_flux(λ_b): the part of the weight shared by every channel.
@@ -176,7 +179,7 @@ OutputUnits::OutputUnits(const model::CaptureMethod& method,
         band_factor[b] *= flux_factor(file.flux_units, grid.wavelengths_um()[b]);
     }
 
-    m_weights.assign(m_channels * m_bands, 0.0);
+    std::vector<double> row(m_bands);
     m_bias.resize(m_channels);
     m_centers_um.resize(m_channels);
     m_fwhm_um.resize(m_channels);
@@ -195,8 +198,19 @@ OutputUnits::OutputUnits(const model::CaptureMethod& method,
                               channel.where);
         }
         const double scale = channel.gain * k_common / (channel.normalize ? integral_um : 1.0);
-        double* row = m_weights.data() + c * m_bands;
-        for (std::size_t b = 0; b < m_bands; ++b) row[b] = scale * response[b] * band_factor[b];
+        double peak = 0.0;
+        for (std::size_t b = 0; b < m_bands; ++b) {
+            row[b] = scale * response[b] * band_factor[b];
+            peak = std::max(peak, std::fabs(row[b]));
+        }
+        // A gaussian's tails never reach 0: weights below 2⁻⁶⁴ of the channel's largest add
+        // less than the sum's rounding (unless the radiance under them is 2¹² times the
+        // radiance at the peak) and are dropped, so a channel weighs the few dozen bands
+        // around its centre (support()), not the whole bandpass.
+        for (std::size_t b = 0; b < m_bands; ++b) {
+            if (std::fabs(row[b]) < peak * kNegligibleWeight) row[b] = 0.0;
+        }
+        add_row(row);
         m_bias[c] = channel.bias;
         set_center_and_fwhm(channel, m_centers_um[c], m_fwhm_um[c]);
         m_band_names.push_back(channel.name);
@@ -214,7 +228,6 @@ OutputUnits::OutputUnits(const model::CaptureMethod& method,
                        : data_units_string(file.flux_units, file.area_units, m_description.aperture,
                                            m_description.temporal_integration, false);
     if (!mixed) m_description.per_channel_units.clear();
-    find_supports();
 }
 
 void OutputUnits::apply(std::span<const double> radiance_w_per_cm2_sr_um,
@@ -226,24 +239,25 @@ void OutputUnits::apply(std::span<const double> radiance_w_per_cm2_sr_um,
                              std::to_string(m_channels));
     }
     for (std::size_t c = 0; c < m_channels; ++c) {
-        const double* row = m_weights.data() + c * m_bands;
+        // Only the channel's support: the bands outside it weigh exactly 0.
+        const BandRange bands = m_support[c];
+        const double* w = m_weights.data() + m_offset[c];
+        const double* radiance = radiance_w_per_cm2_sr_um.data() + bands.first;
         double sum = 0.0;
-        for (std::size_t b = 0; b < m_bands; ++b) sum += row[b] * radiance_w_per_cm2_sr_um[b];
+        for (std::size_t b = 0; b < bands.count; ++b) sum += w[b] * radiance[b];
         out[c] = sum + m_bias[c];
     }
 }
 
-void OutputUnits::find_supports() {
-    m_support.assign(m_channels, BandRange{});
-    for (std::size_t c = 0; c < m_channels; ++c) {
-        const double* row = m_weights.data() + c * m_bands;
-        std::size_t first = 0;
-        while (first < m_bands && row[first] == 0.0) ++first;
-        if (first == m_bands) continue;
-        std::size_t last = m_bands - 1;
-        while (row[last] == 0.0) --last;
-        m_support[c] = {first, last - first + 1};
-    }
+void OutputUnits::add_row(std::span<const double> row) {
+    std::size_t first = 0;
+    while (first < row.size() && row[first] == 0.0) ++first;
+    std::size_t end = row.size();
+    while (end > first && row[end - 1] == 0.0) --end;
+    m_support.push_back(first < end ? BandRange{first, end - first} : BandRange{});
+    m_offset.push_back(m_weights.size());
+    m_weights.insert(m_weights.end(), row.begin() + static_cast<std::ptrdiff_t>(first),
+                     row.begin() + static_cast<std::ptrdiff_t>(end));
 }
 
 double OutputUnits::channel_value(std::size_t channel, std::size_t first_band,
@@ -257,9 +271,12 @@ double OutputUnits::channel_value(std::size_t channel, std::size_t first_band,
                              std::to_string(first_band) + " + " + std::to_string(count) + " of " +
                              std::to_string(m_bands));
     }
-    const double* row = m_weights.data() + channel * m_bands + first_band;
+    if (needed.count == 0) return m_bias[channel];
+    // The support's bands (those outside weigh exactly 0).
+    const double* w = m_weights.data() + m_offset[channel];
+    const double* radiance = radiance_w_per_cm2_sr_um.data() + (needed.first - first_band);
     double sum = 0.0;
-    for (std::size_t b = 0; b < count; ++b) sum += row[b] * radiance_w_per_cm2_sr_um[b];
+    for (std::size_t b = 0; b < needed.count; ++b) sum += w[b] * radiance[b];
     return sum + m_bias[channel];
 }
 
@@ -267,10 +284,11 @@ void OutputUnits::make_raw(const model::ImageFile& file, const SpectralGrid& gri
                            double k_common) {
     const std::span<const double> wl = grid.wavelengths_um();
     m_channels = m_bands;
-    m_weights.assign(m_channels * m_bands, 0.0);
     m_bias.assign(m_channels, 0.0);
     for (std::size_t b = 0; b < m_bands; ++b) {
-        m_weights[b * m_bands + b] = k_common * flux_factor(file.flux_units, wl[b]);
+        m_support.push_back({b, 1});  // band b alone
+        m_offset.push_back(m_weights.size());
+        m_weights.push_back(k_common * flux_factor(file.flux_units, wl[b]));
         m_centers_um.push_back(wl[b]);
         // The spacing around the sample: half the distance between its neighbours (one-sided
         // at the ends; 0 for a one-sample grid).

@@ -103,7 +103,10 @@ public:
     void apply(std::span<const double> radiance_w_per_cm2_sr_um, std::span<double> out) const;
     /// The weight of band b in channel c (everything but the bias).
     double weight(std::size_t channel, std::size_t band) const noexcept {
-        return m_weights[channel * m_bands + band];
+        const BandRange r = m_support[channel];
+        return band >= r.first && band - r.first < r.count
+                   ? m_weights[m_offset[channel] + band - r.first]
+                   : 0.0;
     }
     /// The bands channel c weighs: from its first to its last band with a non-zero weight
     /// (count 0 when it weighs none).
@@ -129,7 +132,10 @@ public:
 private:
     std::size_t m_channels = 0;
     std::size_t m_bands = 0;
-    std::vector<double> m_weights;  ///< [channel][band]
+    /// Each channel's weights over its support, one channel after the other (m_offset): a
+    /// channel weighs a few dozen bands of a hyperspectral bandpass, a raw band one.
+    std::vector<double> m_weights;
+    std::vector<std::size_t> m_offset;  ///< per channel, where its weights start
     std::vector<double> m_bias;
     std::vector<double> m_centers_um;
     std::vector<double> m_fwhm_um;
@@ -137,8 +143,9 @@ private:
     std::vector<BandRange> m_support;  ///< per channel, found once when the map is built
     UnitsDescription m_description;
 
-    /// Fills m_support from the weights.
-    void find_supports();
+    /// Appends channel c's weights (`row`: one per band; c = the channels stored so far): its
+    /// support, from its first to its last non-zero weight.
+    void add_row(std::span<const double> row);
 
     /// The raw capture's map (one band per grid sample).
     void make_raw(const model::ImageFile& file, const SpectralGrid& grid, double k_common);
