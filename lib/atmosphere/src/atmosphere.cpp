@@ -24,8 +24,24 @@ constexpr double kDegToRad = kPi / 180.0;
 constexpr double kTopOfAtmosphereM = 100'000.0;
 /// Altitude layers of the single-scatter integration (spacing ∝ k², finer near the ground).
 constexpr int kPathLayers = 256;
+
 /// Standard sea-level pressure, hPa (the Hansen–Travis Rayleigh depth is for it).
 constexpr double kStandardPressureHpa = 1013.25;
+
+/// The Rayleigh optical depth of the whole atmosphere above sea level at λ (the Hansen–Travis
+/// fit scaled by the surface pressure); at altitude z it is this × e^(−z/H_R).
+double rayleigh_sea_level(const model::ParametricAtmosphere& p, double wavelength_um) {
+    const double l2 = 1.0 / (wavelength_um * wavelength_um);
+    const double l4 = l2 * l2;
+    const double sea_level = 0.008569 * l4 * (1.0 + 0.0113 * l2 + 0.00013 * l4);
+    return sea_level * (p.sea_level_pressure_hpa / kStandardPressureHpa);
+}
+
+/// The aerosol optical depth above sea level at λ (Ångström's law from τ(550 nm)); at
+/// altitude z it is this × e^(−z/H_A).
+double aerosol_sea_level(const model::ParametricAtmosphere& p, double wavelength_um) {
+    return p.aerosol_optical_depth_550 * std::pow(wavelength_um / 0.55, -p.angstrom_exponent);
+}
 
 void check_geometry(const AtmosphereGeometry& g) {
     const std::array<double, 6> values{g.sun_zenith_deg,    g.sun_azimuth_deg, g.surface_altitude_m,
@@ -194,17 +210,13 @@ ParametricAtmosphereModel::ParametricAtmosphereModel(model::ParametricAtmosphere
 
 double ParametricAtmosphereModel::rayleigh_optical_depth(double wavelength_um,
                                                          double altitude_m) const noexcept {
-    const double l2 = 1.0 / (wavelength_um * wavelength_um);
-    const double l4 = l2 * l2;
-    const double sea_level = 0.008569 * l4 * (1.0 + 0.0113 * l2 + 0.00013 * l4);
-    return sea_level * (m_parameters.sea_level_pressure_hpa / kStandardPressureHpa) *
+    return rayleigh_sea_level(m_parameters, wavelength_um) *
            std::exp(-altitude_m / m_parameters.rayleigh_scale_height_m);
 }
 
 double ParametricAtmosphereModel::aerosol_optical_depth(double wavelength_um,
                                                         double altitude_m) const noexcept {
-    return m_parameters.aerosol_optical_depth_550 *
-           std::pow(wavelength_um / 0.55, -m_parameters.angstrom_exponent) *
+    return aerosol_sea_level(m_parameters, wavelength_um) *
            std::exp(-altitude_m / m_parameters.aerosol_scale_height_m);
 }
 
@@ -269,23 +281,49 @@ std::vector<double> ParametricAtmosphereModel::path_radiance_w_per_cm2_sr_um(
     const double p_aerosol = henyey_greenstein(g, cos_scatter);
     const double omega = m_parameters.aerosol_single_scatter_albedo;
     const double temperature_k = m_parameters.air_temperature_k;
-    for (std::size_t i = 0; i < grid.size(); ++i) {
-        const double wl = grid.wavelength_um(i);
-        const double tau_sensor = rayleigh_optical_depth(wl, z1) + aerosol_optical_depth(wl, z1);
-        const double emission = planck_radiance_w_per_cm2_sr_um(wl, temperature_k);
-        double sum = 0.0;
+    // τ(λ, z) = τ_R(λ)·e^(−z/H_R) + τ_A(λ)·e^(−z/H_A): the altitude factors of every layer
+    // boundary and midpoint are computed once, the spectral ones once per band, and each
+    // optical depth is their product, computed exactly as rayleigh_optical_depth and
+    // aerosol_optical_depth compute it.
+    struct Level {
+        double rayleigh = 0.0;  ///< e^(−z/H_R)
+        double aerosol = 0.0;   ///< e^(−z/H_A)
+    };
+    const auto level = [&](double z) {
+        return Level{std::exp(-z / m_parameters.rayleigh_scale_height_m),
+                     std::exp(-z / m_parameters.aerosol_scale_height_m)};
+    };
+    std::vector<Level> bounds(kPathLayers + 1);  // z_0 = z0 … z_K = z1
+    std::vector<Level> middles(kPathLayers);
+    {
         double za = z0;
-        double tau_r_a = rayleigh_optical_depth(wl, za);
-        double tau_a_a = aerosol_optical_depth(wl, za);
+        bounds[0] = level(za);
         for (int k = 1; k <= kPathLayers; ++k) {
             const double f = static_cast<double>(k) / kPathLayers;
             const double zb = z0 + (z1 - z0) * f * f;
-            const double tau_r_b = rayleigh_optical_depth(wl, zb);
-            const double tau_a_b = aerosol_optical_depth(wl, zb);
+            bounds[static_cast<std::size_t>(k)] = level(zb);
+            middles[static_cast<std::size_t>(k - 1)] = level(0.5 * (za + zb));
+            za = zb;
+        }
+    }
+    const Level top = level(z1);
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+        const double wl = grid.wavelength_um(i);
+        const double rayleigh = rayleigh_sea_level(m_parameters, wl);
+        const double aerosol = aerosol_sea_level(m_parameters, wl);
+        const auto tau_r = [&](const Level& at) { return rayleigh * at.rayleigh; };
+        const auto tau_a = [&](const Level& at) { return aerosol * at.aerosol; };
+        const double tau_sensor = tau_r(top) + tau_a(top);
+        const double emission = planck_radiance_w_per_cm2_sr_um(wl, temperature_k);
+        double sum = 0.0;
+        double tau_r_a = tau_r(bounds[0]);
+        double tau_a_a = tau_a(bounds[0]);
+        for (std::size_t k = 1; k <= static_cast<std::size_t>(kPathLayers); ++k) {
+            const double tau_r_b = tau_r(bounds[k]);
+            const double tau_a_b = tau_a(bounds[k]);
             const double d_r = tau_r_a - tau_r_b;
             const double d_a = tau_a_a - tau_a_b;
-            const double zm = 0.5 * (za + zb);
-            const double tau_m = rayleigh_optical_depth(wl, zm) + aerosol_optical_depth(wl, zm);
+            const double tau_m = tau_r(middles[k - 1]) + tau_a(middles[k - 1]);
             const double to_sensor = std::exp(-(tau_m - tau_sensor) * m_view);
             double source = (1.0 - omega) * d_a * emission;
             if (sunlit) {
@@ -293,7 +331,6 @@ std::vector<double> ParametricAtmosphereModel::path_radiance_w_per_cm2_sr_um(
                           (d_r * p_rayleigh + omega * d_a * p_aerosol);
             }
             sum += source * m_view * to_sensor;
-            za = zb;
             tau_r_a = tau_r_b;
             tau_a_a = tau_a_b;
         }

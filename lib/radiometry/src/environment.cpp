@@ -3,6 +3,9 @@
 // (glint/radiometry/environment.h).
 #include "glint/radiometry/environment.h"
 
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -60,7 +63,8 @@ std::pair<std::size_t, double> locate(double value, double step, std::size_t cou
 /// T_v over the view-zenith nodes and L_p over the (zenith, relative azimuth) nodes.
 std::shared_ptr<const SensorPathTables> sensor_path_tables(
     const SpectralGrid& grid, const glint::atmosphere::AtmosphereModel& atmosphere,
-    glint::atmosphere::AtmosphereGeometry geometry, const std::vector<double>& toa) {
+    const glint::atmosphere::AtmosphereGeometry& geometry, const std::vector<double>& toa,
+    unsigned threads) {
     auto t = std::make_shared<SensorPathTables>();
     const std::size_t bands = grid.size();
     t->zenith_nodes = static_cast<std::size_t>(std::lround(Environment::kViewZenithMaxDeg /
@@ -70,26 +74,30 @@ std::shared_ptr<const SensorPathTables> sensor_path_tables(
         static_cast<std::size_t>(std::lround(180.0 / Environment::kAzimuthStepDeg)) + 1;
     t->transmittance.resize(t->zenith_nodes * bands);
     t->path_radiance.resize(t->zenith_nodes * t->azimuth_nodes * bands);
-    for (std::size_t z = 0; z < t->zenith_nodes; ++z) {
-        geometry.view_zenith_deg = static_cast<double>(z) * Environment::kViewZenithStepDeg;
-        geometry.view_azimuth_deg = geometry.sun_azimuth_deg;
-        const std::vector<double> t_view = atmosphere.sensor_transmittance(grid, geometry);
+    // One view zenith per task: each node's values depend on its geometry alone.
+    const auto zenith_row = [&](std::size_t z) {
+        glint::atmosphere::AtmosphereGeometry g = geometry;
+        g.view_zenith_deg = static_cast<double>(z) * Environment::kViewZenithStepDeg;
+        g.view_azimuth_deg = g.sun_azimuth_deg;
+        const std::vector<double> t_view = atmosphere.sensor_transmittance(grid, g);
         std::copy(t_view.begin(), t_view.end(),
                   t->transmittance.begin() + static_cast<std::ptrdiff_t>(z * bands));
-        t->effects = t->effects ||
-                     std::any_of(t_view.begin(), t_view.end(), [](double v) { return v != 1.0; });
         for (std::size_t a = 0; a < t->azimuth_nodes; ++a) {
-            geometry.view_azimuth_deg = std::fmod(
-                geometry.sun_azimuth_deg + static_cast<double>(a) * Environment::kAzimuthStepDeg,
-                360.0);
-            const std::vector<double> lp =
-                atmosphere.path_radiance_w_per_cm2_sr_um(grid, geometry, toa);
+            g.view_azimuth_deg = std::fmod(
+                g.sun_azimuth_deg + static_cast<double>(a) * Environment::kAzimuthStepDeg, 360.0);
+            const std::vector<double> lp = atmosphere.path_radiance_w_per_cm2_sr_um(grid, g, toa);
             std::copy(lp.begin(), lp.end(),
                       t->path_radiance.begin() +
                           static_cast<std::ptrdiff_t>((z * t->azimuth_nodes + a) * bands));
-            t->effects = t->effects || any_positive(lp);
         }
-    }
+    };
+    tbb::task_arena arena(threads == 0 ? tbb::task_arena::automatic : static_cast<int>(threads));
+    arena.execute([&] {
+        tbb::parallel_for(std::size_t{0}, t->zenith_nodes, [&](std::size_t z) { zenith_row(z); });
+    });
+    t->effects = std::any_of(t->transmittance.begin(), t->transmittance.end(),
+                             [](double v) { return v != 1.0; }) ||
+                 any_positive(t->path_radiance);
     return t;
 }
 
@@ -174,7 +182,7 @@ Environment Environment::make(const SpectralGrid& grid,
         // the key alone (a shard renders the bytes of the whole run).
         const std::vector<double> rounded_toa =
             sun.resample(grid, static_cast<double>(key[4]) * SensorPathCache::kSunDistanceStepAu);
-        env.m_paths = sensor_path_tables(grid, atmosphere, rounded, rounded_toa);
+        env.m_paths = sensor_path_tables(grid, atmosphere, rounded, rounded_toa, in.threads);
         if (cache != nullptr) cache->insert(key, env.m_paths);
     }
     return env;

@@ -26,11 +26,13 @@ struct Workspace {
         : path(tracer.environment().bands()),
           sample(tracer.bands()),
           sum(tracer.bands()),
+          radiance(tracer.bands()),
           recorder(batch.observer != nullptr ? batch.observer->make_recorder() : nullptr),
           wants_first_hit(batch.observer != nullptr && batch.observer->wants_first_hit()) {}
     PathScratch path;
-    std::vector<double> sample;  ///< one sample's radiance
-    std::vector<double> sum;     ///< Σ w L per band
+    std::vector<double> sample;    ///< one sample's radiance
+    std::vector<double> sum;       ///< Σ w L per band
+    std::vector<double> radiance;  ///< the problem's result, handed to the receiver
     std::unique_ptr<SampleRecorder> recorder;
     bool wants_first_hit = false;
     FirstHit first_hit;
@@ -157,7 +159,21 @@ Solutions solve(const PathTracer& tracer, const ProblemBatch& batch, const Conte
     out.radiance_w_per_cm2_sr_um.assign(batch.count * out.bands, 0.0);
     out.samples.assign(batch.count, 0);
     out.standard_error_w_per_cm2_sr_um.assign(batch.count, 0.0);
+    out.rays = solve_each(
+        tracer, batch, context,
+        [&](std::uint64_t i, std::span<double> radiance, std::uint64_t samples, double error) {
+            std::copy(
+                radiance.begin(), radiance.end(),
+                out.radiance_w_per_cm2_sr_um.begin() + static_cast<std::ptrdiff_t>(i * out.bands));
+            out.samples[i] = samples;
+            out.standard_error_w_per_cm2_sr_um[i] = error;
+        });
+    return out;
+}
 
+std::uint64_t solve_each(const PathTracer& tracer, const ProblemBatch& batch,
+                         const Context& context, const SolutionReceiver& receive) {
+    check_batch(tracer, batch);
     const int threads =
         context.threads == 0 ? tbb::task_arena::automatic : static_cast<int>(context.threads);
     tbb::task_arena arena(threads);
@@ -166,30 +182,27 @@ Solutions solve(const PathTracer& tracer, const ProblemBatch& batch, const Conte
     std::mutex progress_mutex;
     const std::uint64_t report_every = std::max<std::uint64_t>(1, batch.count / 100);
     arena.execute([&] {
-        tbb::parallel_for(
-            tbb::blocked_range<std::uint64_t>(0, batch.count, 16),
-            [&](const tbb::blocked_range<std::uint64_t>& range) {
-                Workspace& ws = workspaces.local();
-                for (std::uint64_t i = range.begin(); i != range.end(); ++i) {
-                    if (context.cancel.cancelled()) return;
-                    std::span<double> radiance(out.radiance_w_per_cm2_sr_um.data() + i * out.bands,
-                                               out.bands);
-                    const auto [samples, error] =
-                        solve_into(tracer, batch, batch.first_problem + i, ws, radiance);
-                    out.samples[i] = samples;
-                    out.standard_error_w_per_cm2_sr_um[i] = error;
-                    const std::uint64_t finished = ++done;
-                    if (finished % report_every == 0) {
-                        const std::lock_guard lock(progress_mutex);
-                        context.progress.update("radiance", finished, batch.count);
-                    }
-                }
-            });
+        tbb::parallel_for(tbb::blocked_range<std::uint64_t>(0, batch.count, 16),
+                          [&](const tbb::blocked_range<std::uint64_t>& range) {
+                              Workspace& ws = workspaces.local();
+                              for (std::uint64_t i = range.begin(); i != range.end(); ++i) {
+                                  if (context.cancel.cancelled()) return;
+                                  const auto [samples, error] = solve_into(
+                                      tracer, batch, batch.first_problem + i, ws, ws.radiance);
+                                  receive(i, ws.radiance, samples, error);
+                                  const std::uint64_t finished = ++done;
+                                  if (finished % report_every == 0) {
+                                      const std::lock_guard lock(progress_mutex);
+                                      context.progress.update("radiance", finished, batch.count);
+                                  }
+                              }
+                          });
     });
     context.cancel.throw_if_cancelled();
-    for (const Workspace& ws : workspaces) out.rays += ws.path.rays;
+    std::uint64_t rays = 0;
+    for (const Workspace& ws : workspaces) rays += ws.path.rays;
     context.progress.finish("radiance", batch.count);
-    return out;
+    return rays;
 }
 
 }  // namespace glint::radiometry

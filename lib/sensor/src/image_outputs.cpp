@@ -16,7 +16,8 @@ struct ImageOutputs::File {
     io::EnviHeader header;
     std::uint64_t lines_per_capture = 0;
     std::uint64_t captures = 0;
-    std::uint64_t written = 0;
+    std::uint64_t written = 0;           ///< captures ended
+    std::uint64_t lines_in_capture = 0;  ///< lines of the current capture written
     std::vector<CaptureStamp> stamps;
     std::optional<io::EnviWriter> writer;
     std::optional<PartOf> part;
@@ -63,12 +64,26 @@ void ImageOutputs::write_capture(const std::filesystem::path& path, std::span<co
                                  const CaptureStamp& stamp) {
     auto it = m_files.find(path);
     if (it == m_files.end()) throw internal_error("write to unplanned output " + path.string());
-    File& f = *it->second;
+    const File& f = *it->second;
     const std::size_t line_values = f.header.samples * f.header.bands;
     if (image.size() != line_values * f.lines_per_capture) {
         throw internal_error("capture image of " + std::to_string(image.size()) + " values for " +
                              path.string() + ", expected " +
                              std::to_string(line_values * f.lines_per_capture));
+    }
+    write_lines(path, image);
+    end_capture(path, stamp);
+}
+
+void ImageOutputs::write_lines(const std::filesystem::path& path, std::span<const double> lines) {
+    auto it = m_files.find(path);
+    if (it == m_files.end()) throw internal_error("write to unplanned output " + path.string());
+    File& f = *it->second;
+    const std::size_t line_values = f.header.samples * f.header.bands;
+    if (line_values == 0 || lines.size() % line_values != 0 ||
+        f.lines_in_capture + lines.size() / line_values > f.lines_per_capture) {
+        throw internal_error(std::to_string(lines.size()) + " values for " + path.string() +
+                             ": not whole lines of its current capture");
     }
     if (f.written >= f.captures) {
         throw internal_error("more captures than planned for " + path.string());
@@ -77,9 +92,21 @@ void ImageOutputs::write_capture(const std::filesystem::path& path, std::span<co
         open_folder(path);
         f.writer.emplace(path, f.header);
     }
-    for (std::uint64_t line = 0; line < f.lines_per_capture; ++line) {
-        f.writer->write_line(image.subspan(line * line_values, line_values));
+    for (std::size_t at = 0; at < lines.size(); at += line_values) {
+        f.writer->write_line(lines.subspan(at, line_values));
     }
+    f.lines_in_capture += lines.size() / line_values;
+}
+
+void ImageOutputs::end_capture(const std::filesystem::path& path, const CaptureStamp& stamp) {
+    auto it = m_files.find(path);
+    if (it == m_files.end()) throw internal_error("write to unplanned output " + path.string());
+    File& f = *it->second;
+    if (f.lines_in_capture != f.lines_per_capture) {
+        throw internal_error("capture of " + std::to_string(f.lines_in_capture) + " lines for " +
+                             path.string() + ", expected " + std::to_string(f.lines_per_capture));
+    }
+    f.lines_in_capture = 0;
     f.stamps.push_back(stamp);
     ++f.written;
     if (f.written < f.captures) return;

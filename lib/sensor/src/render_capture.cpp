@@ -40,26 +40,21 @@ void log_capture_start(const PlannedCapture& p, const schedule::ClockedFocalPlan
                      std::to_string(source.y_count));
 }
 
-/// The channel values of the pixels of one spectral state's solutions into `image` (pixel
-/// after pixel, units.channels() values each): every channel for the focal plane's one
-/// state, its own channel for a split state. A masked element's radiance is its mean
-/// sensitivity's share (active_area.h).
+/// Turns one pixel's solved radiance into its channel values in `out` (units.channels()
+/// values): every channel for the focal plane's one state, its own channel for a split state.
+/// A masked element's radiance is its mean sensitivity's share (active_area.h). `radiance`
+/// is the solving thread's buffer, scaled in place.
 void store_channels(const FocalPlaneState& state, const SpectralState& spectral,
-                    const radiometry::Solutions& solutions, std::vector<double>& image) {
-    const std::size_t channels = state.units.channels();
+                    std::span<double> radiance, std::span<double> out) {
     const double share = state.mask ? state.mask->mean_sensitivity() : 1.0;
-    std::vector<double> radiance(solutions.bands);
-    const std::size_t pixels = solutions.samples.size();
-    for (std::size_t i = 0; i < pixels; ++i) {
-        const std::span<const double> solved = solutions.radiance(i);
-        for (std::size_t b = 0; b < radiance.size(); ++b) radiance[b] = solved[b] * share;
-        double* out = image.data() + i * channels;
-        if (spectral.channel) {
-            out[*spectral.channel] =
-                state.units.channel_value(*spectral.channel, spectral.bands.first, radiance);
-        } else {
-            state.units.apply(radiance, std::span<double>(out, channels));
-        }
+    if (share != 1.0) {
+        for (double& value : radiance) value *= share;
+    }
+    if (spectral.channel) {
+        out[*spectral.channel] =
+            state.units.channel_value(*spectral.channel, spectral.bands.first, radiance);
+    } else {
+        state.units.apply(radiance, out);
     }
 }
 
@@ -68,7 +63,7 @@ void store_channels(const FocalPlaneState& state, const SpectralState& spectral,
 radiometry::Environment capture_environment(const RenderInputs& in, const SpectralGrid& grid,
                                             const schedule::Capture& capture,
                                             const schedule::ClockedFocalPlane& source,
-                                            radiometry::SensorPathCache& cache) {
+                                            radiometry::SensorPathCache& cache, unsigned threads) {
     const schedule::PluginSchedule& plugin = in.schedule->plugins()[source.plugin];
     const DateTime& reference = plugin.tasks.reference;
     const motion::SunPosition sun0 =
@@ -85,6 +80,7 @@ radiometry::Environment capture_environment(const RenderInputs& in, const Spectr
     env.sun_distance_au = sun0.distance_au;
     env.surface_altitude_m = in.frame.origin().altitude_m;
     env.sensor_altitude_m = in.frame.origin().altitude_m + pose.translation_m.z;
+    env.threads = threads;
     return radiometry::Environment::make(grid, *in.atmosphere_model, *in.sun, env, &cache);
 }
 
@@ -103,7 +99,7 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
     log_capture_start(p, source, state, plugin.tasks.reference, context);
 
     const radiometry::Environment environment =
-        capture_environment(in, state.grid, capture, source, path_cache);
+        capture_environment(in, state.grid, capture, source, path_cache, context.threads);
     CaptureTiming timing{capture.t0_s, capture.t1_s, source.rolling_line_time_s().value_or(0.0),
                          source.tdi_stages};
     const PixelRaySource rays(state.camera, *plugin.poses, source.instrument_index, timing,
@@ -135,70 +131,103 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
         batch.hypersampling_multiplier = multiplier;
     }
     const std::size_t channels = state.units.channels();
-    image.assign(batch.count * channels, 0.0);
-    std::vector<std::uint64_t> samples(batch.count, 0);  // per pixel, over the states
-    // Truth, from the same samples: the first state's first hits, each state's errors.
-    std::vector<double> truth(state.truth.empty() ? 0 : batch.count * state.truth.bands.size(),
-                              0.0);
     const TruthContext truth_context{
         &in.scene,    &state.materials,     &in.frame,
         &state.units, state.reference_band, state.mask ? state.mask->mean_sensitivity() : 1.0};
     // Point sources sit where they are at mid-window (docs/physics.md, "Point sources").
     const radiometry::PointLights lights =
         point_lights_at(in, state.grid, 0.5 * (capture.t0_s + capture.t1_s));
-    CaptureReport stats;
+    std::vector<radiometry::PathTracer> tracers;
+    tracers.reserve(state.spectral_states.size());
     for (const SpectralState& spectral : state.spectral_states) {
-        const radiometry::PathTracer tracer(geometry, state.materials, environment, options.tracer,
-                                            spectral.bands, lights.empty() ? nullptr : &lights);
-        batch.key.spectral_state = spectral.channel;
-        batch.reference_band = spectral.reference_band - spectral.bands.first;
-        std::optional<TruthObserver> observer;
-        if (!state.truth.empty()) {
-            observer.emplace(state.truth, truth_context, spectral.bands, spectral.channel,
-                             &spectral == &state.spectral_states.front(), batch.first_problem,
-                             truth);
-        }
-        batch.observer = observer ? &*observer : nullptr;
-        const radiometry::Solutions solutions = radiometry::solve(tracer, batch, quiet);
-        store_channels(state, spectral, solutions, image);
-        for (std::uint64_t i = 0; i < batch.count; ++i) samples[i] += solutions.samples[i];
-        stats.rays += solutions.rays;
+        tracers.emplace_back(geometry, state.materials, environment, options.tracer, spectral.bands,
+                             lights.empty() ? nullptr : &lights);
     }
+    const CaptureStamp stamp{capture.task_index,
+                             capture.capture_index,
+                             capture.t0_s,
+                             capture.t1_s,
+                             format_iso8601_utc(add_seconds(plugin.tasks.reference, capture.t0_s)),
+                             capture.index};
+    // The capture is solved, reduced and written a band of lines at a time (about
+    // kBlockPixels pixels): a pixel's spectrum lives only while its thread reduces it to
+    // channels, and only the band's channels and truth are held, whatever the frame's size.
+    const std::uint64_t per_line = source.problems_per_capture / source.lines_per_capture();
+    const std::uint64_t band_lines = block_lines(source);
+    const radiometry::ProblemBatch capture_batch = batch;
+    CaptureReport stats;
+    std::uint64_t least = UINT64_MAX;
+    std::uint64_t most = 0;
+    double total = 0.0;
+    std::vector<std::uint64_t> samples;  // per pixel of the band, over the states
+    std::vector<double> truth;
+    std::vector<double> detected;
+    for (std::uint64_t first = p.first_line; first < p.end_line; first += band_lines) {
+        const std::uint64_t lines = std::min(band_lines, p.end_line - first);
+        batch.first_problem = first * per_line;
+        batch.count = lines * per_line;
+        if (!capture_batch.hypersampled.empty()) {
+            batch.hypersampled = capture_batch.hypersampled.subspan(
+                static_cast<std::size_t>(batch.first_problem - capture_batch.first_problem),
+                static_cast<std::size_t>(batch.count));
+        }
+        image.assign(batch.count * channels, 0.0);
+        samples.assign(batch.count, 0);
+        // Truth, from the same samples: the first state's first hits, each state's errors.
+        truth.assign(state.truth.empty() ? 0 : batch.count * state.truth.bands.size(), 0.0);
+        for (std::size_t k = 0; k < state.spectral_states.size(); ++k) {
+            const SpectralState& spectral = state.spectral_states[k];
+            batch.key.spectral_state = spectral.channel;
+            batch.reference_band = spectral.reference_band - spectral.bands.first;
+            std::optional<TruthObserver> observer;
+            if (!state.truth.empty()) {
+                observer.emplace(state.truth, truth_context, spectral.bands, spectral.channel,
+                                 k == 0, batch.first_problem, truth);
+            }
+            batch.observer = observer ? &*observer : nullptr;
+            // Each pixel is reduced to its channels as soon as it is solved, on its thread.
+            stats.rays += radiometry::solve_each(
+                tracers[k], batch, quiet,
+                [&](std::uint64_t i, std::span<double> radiance, std::uint64_t n, double) {
+                    store_channels(state, spectral, radiance,
+                                   std::span<double>(image).subspan(i * channels, channels));
+                    samples[i] += n;
+                });
+        }
+        for (const std::uint64_t n : samples) {
+            least = std::min(least, n);
+            most = std::max(most, n);
+            total += static_cast<double>(n);
+        }
+        if (state.detection) {
+            // Detection line by line, keyed like glint-detect: (capture index, line in
+            // capture).
+            const detect::DetectionChain& chain = *state.detection;
+            detected.assign(chain.output_values_per_line() * lines, 0.0);
+            for (std::size_t line = 0; line < lines; ++line) {
+                chain.process_line(
+                    {capture.index, first + line},
+                    std::span<const double>(image).subspan(line * chain.input_values_per_line(),
+                                                           chain.input_values_per_line()),
+                    std::span<double>(detected).subspan(line * chain.output_values_per_line(),
+                                                        chain.output_values_per_line()));
+            }
+            image.swap(detected);
+        }
+        prepared.outputs.write_lines(p.file, image);
+        for (std::size_t t = 0; t < p.truth_files.size(); ++t) {
+            prepared.outputs.write_lines(
+                p.truth_files[t], truth_file_values(state.truth, state.truth.files[t], truth));
+        }
+    }
+    prepared.outputs.end_capture(p.file, stamp);
+    for (const auto& file : p.truth_files) prepared.outputs.end_capture(file, stamp);
     stats.index = capture.index;
-    stats.pixels = batch.count;
-    if (!samples.empty()) {
-        const auto [least, most] = std::minmax_element(samples.begin(), samples.end());
-        stats.min_samples = *least;
-        stats.max_samples = *most;
-        double total = 0.0;
-        for (const std::uint64_t n : samples) total += static_cast<double>(n);
-        stats.mean_samples = total / static_cast<double>(samples.size());
-    }
-    if (state.detection) {
-        // Detection line by line, keyed like glint-detect: (capture index, line in capture).
-        const detect::DetectionChain& chain = *state.detection;
-        const std::size_t lines = p.end_line - p.first_line;
-        std::vector<double> detected(chain.output_values_per_line() * lines);
-        for (std::size_t line = 0; line < lines; ++line) {
-            chain.process_line(
-                {capture.index, p.first_line + line},
-                std::span<const double>(image).subspan(line * chain.input_values_per_line(),
-                                                       chain.input_values_per_line()),
-                std::span<double>(detected).subspan(line * chain.output_values_per_line(),
-                                                    chain.output_values_per_line()));
-        }
-        image.swap(detected);
-    }
-    CaptureStamp stamp{capture.task_index,
-                       capture.capture_index,
-                       capture.t0_s,
-                       capture.t1_s,
-                       format_iso8601_utc(add_seconds(plugin.tasks.reference, capture.t0_s)),
-                       capture.index};
-    prepared.outputs.write_capture(p.file, image, stamp);
-    for (std::size_t t = 0; t < p.truth_files.size(); ++t) {
-        prepared.outputs.write_capture(
-            p.truth_files[t], truth_file_values(state.truth, state.truth.files[t], truth), stamp);
+    stats.pixels = p.problems(source);
+    if (stats.pixels > 0) {
+        stats.min_samples = least;
+        stats.max_samples = most;
+        stats.mean_samples = total / static_cast<double>(stats.pixels);
     }
     stats.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();

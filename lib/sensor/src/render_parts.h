@@ -260,12 +260,38 @@ void plan_bin_file(const RenderInputs& inputs, const FocalPlaneState& state, std
                    const std::vector<const PlannedCapture*>& captures, const RenderOptions& options,
                    ImageOutputs& outputs);
 
+/// Pixels a capture is solved, reduced and written in at a time (render_capture.cpp): a band of
+/// whole lines of about this many.
+inline constexpr std::uint64_t kBlockPixels = std::uint64_t{1} << 16;
+/// The lines of such a band of a capture of `source` (at least one).
+inline std::uint64_t block_lines(const schedule::ClockedFocalPlane& source) {
+    const std::uint64_t per_line = source.problems_per_capture / source.lines_per_capture();
+    return std::max<std::uint64_t>(1, kBlockPixels / std::max<std::uint64_t>(1, per_line));
+}
+
+/// The values held per pixel of a band of lines of an image capture: its channels (twice with a
+/// detection chain: before and after) and its truth bands.
+inline std::uint64_t band_values(const FocalPlaneState& state) {
+    return state.units.channels() * (state.detection ? 2 : 1) + state.truth.bands.size();
+}
+
+/// The memory of one band of lines of an image capture of `source` (band_values × 8 bytes per
+/// pixel).
+inline std::uint64_t band_bytes(const schedule::ClockedFocalPlane& source,
+                                const FocalPlaneState& state) {
+    const std::uint64_t per_line = source.problems_per_capture / source.lines_per_capture();
+    const std::uint64_t lines =
+        std::min<std::uint64_t>(block_lines(source), source.lines_per_capture());
+    return per_line * lines * band_values(state) * 8;
+}
+
 /// The environment of a capture on `grid` (the sun at both ends of its window seen from the
-/// scene origin, the sensor altitude from the instrument's position at mid-window).
+/// scene origin, the sensor altitude from the instrument's position at mid-window); its
+/// sensor-path tables, when not in `cache`, are computed on `threads` threads (0: all).
 radiometry::Environment capture_environment(const RenderInputs& in, const SpectralGrid& grid,
                                             const schedule::Capture& capture,
                                             const schedule::ClockedFocalPlane& source,
-                                            radiometry::SensorPathCache& cache);
+                                            radiometry::SensorPathCache& cache, unsigned threads);
 
 /// The Embree build options of a window.
 scene::BuildOptions build_options(const RenderOptions& options, double t0_s, double t1_s);

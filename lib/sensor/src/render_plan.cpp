@@ -227,11 +227,13 @@ std::unique_ptr<Prepared> prepare(model::SimulationInputs loaded, const RenderOp
         const schedule::ClockedFocalPlane& s = in.schedule->sources()[planned.capture.source];
         report.pixels += planned.problems(s);
         const FocalPlaneState& state = p->states.at(planned.capture.source);
-        // A lidar pulse holds 1 + time samples values per pixel (and its returns as many).
-        const std::uint64_t bands =
-            state.lidar ? 2 * (1 + state.lidar->gate.samples) + state.grid.size()
-                        : state.grid.size() + state.units.channels() + state.truth.bands.size();
-        largest = std::max<std::uint64_t>(largest, s.problems_per_capture * bands * 8);
+        // A lidar pulse holds 1 + time samples values per pixel (and its returns as many); an
+        // image capture a band of lines of channels and truth (block_lines) at a time.
+        const std::uint64_t bytes =
+            state.lidar ? s.problems_per_capture *
+                              (2 * (1 + state.lidar->gate.samples) + state.grid.size()) * 8
+                        : band_bytes(s, state);
+        largest = std::max<std::uint64_t>(largest, bytes);
     }
     report.memory_estimate_bytes = triangles * 85 + largest;
     return p;

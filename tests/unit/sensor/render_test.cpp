@@ -40,9 +40,10 @@ using test_render::load;
 using test_render::options_into;
 using test_render::read_text;
 
-/// Bands the memory estimate counts per pixel for the test cameras: the 0.50–0.60 µm
-/// bandpass at 0.02 µm (6 samples) plus one channel.
-constexpr std::uint64_t kBandsPerPixel = 6 + 1;
+/// Values the memory estimate counts per pixel for the test cameras: their one channel (the
+/// capture is rendered a band of lines at a time, each pixel's spectrum reduced to its
+/// channels as it is solved: the bandpass's 6 samples are not held per pixel).
+constexpr std::uint64_t kBandsPerPixel = 1;
 /// Bytes the memory estimate counts per triangle (render.h).
 constexpr std::uint64_t kBytesPerTriangle = 85;
 

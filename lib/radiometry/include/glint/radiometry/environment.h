@@ -70,6 +70,9 @@ struct EnvironmentInputs {
     double sun_distance_au = 1.0;
     double surface_altitude_m = 0.0;  ///< the scene origin's altitude
     double sensor_altitude_m = 0.0;   ///< the sensor's altitude (≥ surface; clamped to it)
+    /// Threads that compute the sensor-path tables, one view zenith each (0: all cores); the
+    /// tables are the same numbers whatever the count.
+    unsigned threads = 0;
 };
 
 /// The precomputed illumination of one capture.

@@ -20,6 +20,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -155,5 +156,21 @@ Solution solve(const PathTracer& tracer, const ProblemBatch& batch, std::uint64_
 /// "radiance" and stopping with glint::Error (cancelled) when context.cancel is raised.
 /// Same errors as the single-problem solve.
 Solutions solve(const PathTracer& tracer, const ProblemBatch& batch, const Context& context);
+
+/// Receives each solved problem of a batch (solve_each): its index in the batch (0 … count −
+/// 1), its radiance (one value per band, in a buffer of the solving thread that the receiver
+/// may change and must not keep), its sample count and its standard error at the reference
+/// band. Called from the solving threads, once per index; calls for different indices run
+/// at the same time.
+using SolutionReceiver =
+    std::function<void(std::uint64_t index, std::span<double> radiance_w_per_cm2_sr_um,
+                       std::uint64_t samples, double standard_error_w_per_cm2_sr_um)>;
+
+/// Solves a batch like solve(tracer, batch, context) — the same numbers for every problem —
+/// but hands each problem to `receive` as soon as it is solved instead of keeping it, so the
+/// memory is the threads' buffers (bands values each), whatever the batch's size. Returns
+/// the rays traced.
+std::uint64_t solve_each(const PathTracer& tracer, const ProblemBatch& batch,
+                         const Context& context, const SolutionReceiver& receive);
 
 }  // namespace glint::radiometry

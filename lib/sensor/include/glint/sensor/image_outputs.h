@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
 // The ENVI image files of a render: each file is planned with its header and the number of
 // captures it will hold, opened at its first capture, receives each capture's lines in
-// schedule order (several captures of one file are appended along the line axis, as a
-// pushbroom builds its image line by line), and is published atomically — data, then
-// header — when its last capture has arrived. The header's `glint capture times` and
-// `glint captures` keys list the captures the file holds. Files not complete when the object
-// is destroyed (an error or an interrupt) leave nothing under their final names.
-// A lidar capture's DIRSIG BIN file (glint/io/lidar_bin.h) is planned with its file header and
-// task headers the same way, receives its pulses one at a time in schedule order (nothing but
-// the current pulse is held) and is published after its last.
+// schedule order, whole or in bands of lines (several captures of one file are appended along the
+// line axis, as a pushbroom builds its image line by line), and is published atomically — data,
+// then header — when its last capture has arrived. The header's `glint capture times` and `glint
+// captures` keys list the captures the file holds. Files not complete when the object is destroyed
+// (an error or an interrupt) leave nothing under their final names. A lidar capture's DIRSIG BIN
+// file (glint/io/lidar_bin.h) is planned with its file header and task headers the same way,
+// receives its pulses one at a time in schedule order (nothing but the current pulse is held) and
+// is published after its last.
 #pragma once
 
 #include <cstdint>
@@ -67,6 +67,15 @@ public:
     /// written.
     void write_capture(const std::filesystem::path& path, std::span<const double> image,
                        const CaptureStamp& stamp);
+
+    /// Appends whole lines (samples × bands values each, BIP) of the current capture of
+    /// `path`, opening the file at its first line: a capture may be written in pieces.
+    /// Throws glint::Error (internal) for an unplanned path, a partial line or more lines than
+    /// a capture holds, (io) when the file cannot be written.
+    void write_lines(const std::filesystem::path& path, std::span<const double> lines);
+    /// Ends the current capture of `path` (all its lines written: internal error otherwise)
+    /// and publishes the file after its last capture.
+    void end_capture(const std::filesystem::path& path, const CaptureStamp& stamp);
 
     /// Declares that `path` is a lidar BIN file of `header` holding `tasks` in order, each
     /// task header with its pulse count. Throws glint::Error (usage) when `path` is planned

@@ -76,8 +76,10 @@ struct RenderReport {
     std::vector<CaptureReport> captures;
     std::vector<std::filesystem::path> files;  ///< published (render) or planned (plan)
     std::uint64_t pixels = 0;
-    /// Rough peak memory: scene (Embree ≈ 85 B per triangle plus meshes) and the largest
-    /// capture's radiance (pixels × bands × 8 B), bytes.
+    /// Rough peak memory: scene (Embree ≈ 85 B per triangle plus meshes) and the largest band
+    /// of lines a capture is rendered in (its pixels × (channels, twice with detection, +
+    /// truth bands) × 8 B;
+    /// a lidar pulse: pixels × (2 × (1 + gate samples) + bands) × 8 B), bytes.
     std::uint64_t memory_estimate_bytes = 0;
     scene::DeviceInfo device;
     /// The processing events of the focal planes with `<processing>` tasks, in firing order
