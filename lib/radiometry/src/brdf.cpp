@@ -147,6 +147,8 @@ SurfaceBrdf::SurfaceBrdf(double reflectance, double specular_fraction, double ro
       m_specular_probability(specular_fraction) {}
 
 double SurfaceBrdf::eval(const Vec3& wo, const Vec3& wi) const noexcept {
+    // A Lambertian surface: the GGX lobe weighs nothing (same value: 1·d + 0 = d).
+    if (m_specular_fraction == 0.0) return m_diffuse.eval(wo, wi);
     return (1.0 - m_specular_fraction) * m_diffuse.eval(wo, wi) +
            m_specular_fraction * m_diffuse.reflectance() * m_specular.eval(wo, wi);
 }

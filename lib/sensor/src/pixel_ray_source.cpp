@@ -16,8 +16,8 @@
 namespace glint::sensor {
 
 PixelRaySource::PixelRaySource(const CameraModel& camera, const motion::PoseService& poses,
-                               std::size_t instrument, CaptureTiming timing,
-                               const PsfSampler* psf, const ActiveArea* mask)
+                               std::size_t instrument, CaptureTiming timing, const PsfSampler* psf,
+                               const ActiveArea* mask)
     : m_camera(camera),
       m_poses(poses),
       m_instrument(instrument),
@@ -42,6 +42,9 @@ PixelRaySource::PixelRaySource(const CameraModel& camera, const motion::PoseServ
         throw internal_error("pixel ray source: " + std::to_string(timing.tdi_stages) +
                              " TDI stages for a camera of " + std::to_string(camera.rows()) +
                              " rows (stages must be 1, or the rows without rolling readout)");
+    }
+    if (timing.t1_s == timing.t0_s && timing.rolling_line_time_s == 0.0) {
+        m_fixed_pose = poses.instrument_to_scene(instrument, timing.t0_s);
     }
 }
 
@@ -93,7 +96,8 @@ radiometry::SampleRay PixelRaySource::generate(std::uint64_t problem, std::uint6
         const Vec3 focus = d_instrument * (lens->focus_distance_m / -d_instrument.z);
         d_instrument = motion::normalized(focus - origin_instrument);
     }
-    const motion::Rigid pose = m_poses.instrument_to_scene(m_instrument, t_s);
+    const motion::Rigid pose =
+        m_fixed_pose ? *m_fixed_pose : m_poses.instrument_to_scene(m_instrument, t_s);
     radiometry::SampleRay ray;
     ray.origin_m = motion::apply_point(pose, origin_instrument);
     ray.direction = motion::normalized(motion::apply_direction(pose, d_instrument));

@@ -56,8 +56,8 @@ struct ThinLens {
 /// The camera of one focal plane.
 class CameraModel {
 public:
-    /// `columns`, `rows`: the pixel counts after scale_resolution (schedule::ClockedFocalPlane x_count,
-    /// y_count). Throws glint::Error (input, at the element: properties.where for the
+    /// `columns`, `rows`: the pixel counts after scale_resolution (schedule::ClockedFocalPlane
+    /// x_count, y_count). Throws glint::Error (input, at the element: properties.where for the
     /// focal length and distortion, array.where for the rest) when the instrument has no
     /// focal length (or a non-positive one), the array or the scaled counts are zero, a pitch
     /// or element size is not positive, an element is larger than its pitch, or an offset or
@@ -76,8 +76,7 @@ public:
     /// moved by `offset_px` (pixels along the columns and the lines: a PSF offset), flips
     /// applied (they mirror u, v and the offset with the pixels; see the top of this file), so
     /// project() of its direction is the pixel position plus the offset.
-    std::array<double, 2> focal_plane_point(std::size_t column, std::size_t row, double u,
-                                            double v,
+    std::array<double, 2> focal_plane_point(std::size_t column, std::size_t row, double u, double v,
                                             std::array<double, 2> offset_px = {}) const noexcept;
     /// Unit direction in the instrument frame that the focal-plane point looks along.
     Vec3 direction(const std::array<double, 2>& focal_plane_m) const noexcept;
@@ -143,8 +142,8 @@ public:
     /// `psf` and `mask` (each may be null: none) must outlive it too. With a mask, u and v
     /// come from its importance draw (the same two uniforms).
     PixelRaySource(const CameraModel& camera, const motion::PoseService& poses,
-                   std::size_t instrument, CaptureTiming timing,
-                   const PsfSampler* psf = nullptr, const ActiveArea* mask = nullptr);
+                   std::size_t instrument, CaptureTiming timing, const PsfSampler* psf = nullptr,
+                   const ActiveArea* mask = nullptr);
     radiometry::SampleRay generate(std::uint64_t problem, std::uint64_t sample,
                                    RandomStream& rng) const override;
 
@@ -155,6 +154,9 @@ private:
     CaptureTiming m_timing;
     const PsfSampler* m_psf;
     const ActiveArea* m_mask;
+    /// The pose of a window of zero length without rolling readout: every sample's time is
+    /// t0, so it is computed once.
+    std::optional<motion::Rigid> m_fixed_pose;
 };
 
 }  // namespace glint::sensor
