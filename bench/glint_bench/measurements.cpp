@@ -29,12 +29,14 @@ using Json = nlohmann::ordered_json;
 /// The camera: 3 km above the terrain's centre, ±29° across, which covers about ±1.66 km.
 constexpr double kCameraAltitude_m = 3000.0;
 constexpr double kCameraHalfFovDeg = 29.0;
-/// The band counts of the band-cost runs.
-constexpr unsigned kBandCounts[] = {1, 16, 256};
+/// The band counts of the band-cost runs: 2,100 is a real hyperspectral bandpass (0.4-2.5 µm
+/// at 1 nm).
+constexpr unsigned kBandCounts[] = {1, 16, 256, 2100};
 /// The targets of the requirement.
 constexpr double kRatioTarget = 0.5;
 constexpr double kRatioStretch = 0.65;
 constexpr double kBandCostTarget = 1.5;
+constexpr double kHyperspectralCostTarget = 2.0;
 constexpr double kScalingTarget = 0.95;
 /// Above this share of the machine taken by other processes a figure is flagged unreliable.
 constexpr double kQuietLimit = 0.05;
@@ -359,10 +361,13 @@ Json run_benchmark(const BenchOptions& options, const Context& context) {
     }
     report["bands"] = bands;
     const double band_cost = ratio(per_path(by_bands.at(256)), one_band_per_path);
-    report["targets"] = {{"ratio_primary", target(ratio_primary, kRatioTarget, true)},
-                         {"ratio_primary_stretch", target(ratio_primary, kRatioStretch, true)},
-                         {"band_cost_256", target(band_cost, kBandCostTarget, false)},
-                         {"thread_scaling", target(relative_scaling, kScalingTarget, true)}};
+    const double hyperspectral_cost = ratio(per_path(by_bands.at(2100)), one_band_per_path);
+    report["targets"] = {
+        {"ratio_primary", target(ratio_primary, kRatioTarget, true)},
+        {"ratio_primary_stretch", target(ratio_primary, kRatioStretch, true)},
+        {"band_cost_256", target(band_cost, kBandCostTarget, false)},
+        {"band_cost_2100", target(hyperspectral_cost, kHyperspectralCostTarget, false)},
+        {"thread_scaling", target(relative_scaling, kScalingTarget, true)}};
     return report;
 }
 

@@ -2,7 +2,7 @@
 // What glint-bench measures and reports: it builds the procedural scene twice (GeometryScene
 // for the tracer, a bare two-level Embree scene for the baseline), then, on the same threads,
 // times bare rtcIntersect1 on the camera's primary rays and on incoherent bounce rays, the
-// path tracer on the same camera, both again on one thread, and the tracer at 1, 16 and 256
+// path tracer on the same camera, both again on one thread, and the tracer at 1, 16, 256 and 2,100
 // bands. The result is one JSON document (docs/performance.md explains every figure).
 #pragma once
 
