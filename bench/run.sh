@@ -5,7 +5,49 @@
 # asserted in a test). Grows as tools land.
 # Usage: bench/run.sh BIN_DIR [SIZE]   (SIZE: square image side in pixels, default 4096)
 # GLINT_BENCH_ARGS: extra arguments for glint-bench (e.g. "--quick", "--threads 1").
+#
+#        bench/run.sh --peer [--quick] [BIN_DIR [WORK_DIR]]
+# The peer benchmark (bench/peer/README.md): glint-render against Blender Cycles on the same
+# 1,008,200-triangle terrain, interleaved, other load recorded; prints a table of render and
+# wall time ratios per spp and band count, and a JSON line. BIN_DIR defaults to
+# build/release/bin, WORK_DIR (scene, cached OBJ, logs, peer.json) to out/peer. Installs
+# Debian's blender package (apt-get, as root) when `blender` is missing, and python3-numpy
+# when /usr/bin/python3 has no numpy. --quick: 256 x 256, spp 1 and 4, one repeat (checks the
+# script in a minute). GLINT_PEER_ARGS: extra arguments for bench/peer/run_peer.py (e.g.
+# "--repeats 5", "--spp 1,4", "--max-interference 0.10").
 set -euo pipefail
+
+if [[ "${1:-}" == "--peer" ]]; then
+    shift
+    quick=()
+    if [[ "${1:-}" == "--quick" ]]; then
+        quick=(--quick)
+        shift
+    fi
+    here=$(cd "$(dirname "$0")" && pwd)
+    bin=$(cd "${1:-$here/../build/release/bin}" && pwd)
+    work=${2:-$here/../out/peer}
+    as_root() { if [[ $(id -u) -eq 0 ]]; then "$@"; else sudo "$@"; fi; }
+    apt_install() {  # installs Debian packages, refreshing the package lists once if needed
+        as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends "$@" ||
+            { as_root apt-get update && as_root env DEBIAN_FRONTEND=noninteractive \
+                apt-get install -y --no-install-recommends "$@"; }
+    }
+    if ! command -v blender >/dev/null; then
+        echo "bench/run.sh --peer: installing Debian's blender package (with blender-data about 190 MB installed)" >&2
+        apt_install blender
+    fi
+    py=/usr/bin/python3
+    [[ -x $py ]] || py=python3
+    if ! "$py" -c "import numpy" 2>/dev/null; then
+        apt_install python3-numpy
+    fi
+    read -r -a peer_args <<<"${GLINT_PEER_ARGS:-}"
+    mkdir -p "$work"
+    work=$(cd "$work" && pwd)
+    exec "$py" "$here/peer/run_peer.py" --bin "$bin" --work "$work" --out "$work/results" \
+        "${quick[@]}" "${peer_args[@]}"
+fi
 
 bin=$(cd "${1:?usage: run.sh BIN_DIR [SIZE]}" && pwd)
 size=${2:-4096}
