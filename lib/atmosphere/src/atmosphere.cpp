@@ -137,6 +137,20 @@ std::vector<double> NoAtmosphere::thermal_sky_radiance_w_per_cm2_sr_um(
     return filled(grid, 0.0);
 }
 
+// ---- every model ----
+
+std::vector<std::vector<double>> AtmosphereModel::path_radiance_at_azimuths(
+    const SpectralGrid& grid, const AtmosphereGeometry& geometry, std::span<const double> toa,
+    std::span<const double> view_azimuths_deg) const {
+    std::vector<std::vector<double>> out;
+    AtmosphereGeometry g = geometry;
+    for (double azimuth : view_azimuths_deg) {
+        g.view_azimuth_deg = azimuth;
+        out.push_back(path_radiance_w_per_cm2_sr_um(grid, g, toa));
+    }
+    return out;
+}
+
 // ---- simple (.atm) ----
 
 SimpleAtmosphereModel::SimpleAtmosphereModel(model::SimpleAtmosphere parameters)
@@ -261,24 +275,39 @@ std::vector<double> ParametricAtmosphereModel::sensor_transmittance(
 std::vector<double> ParametricAtmosphereModel::path_radiance_w_per_cm2_sr_um(
     const SpectralGrid& grid, const AtmosphereGeometry& geometry,
     std::span<const double> toa) const {
+    const double azimuth[] = {geometry.view_azimuth_deg};
+    return std::move(path_radiance_at_azimuths(grid, geometry, toa, azimuth).front());
+}
+
+std::vector<std::vector<double>> ParametricAtmosphereModel::path_radiance_at_azimuths(
+    const SpectralGrid& grid, const AtmosphereGeometry& geometry, std::span<const double> toa,
+    std::span<const double> view_azimuths_deg) const {
     check_geometry(geometry);
     check_size(grid, toa);
+    for (double a : view_azimuths_deg) {
+        if (!std::isfinite(a)) throw input_error("atmosphere query with a non-finite geometry");
+    }
     const double z0 = geometry.surface_altitude_m;
     const double z1 =
         std::min(std::max(z0, geometry.sensor_altitude_m), std::max(z0, kTopOfAtmosphereM));
-    std::vector<double> out(grid.size(), 0.0);
+    std::vector<std::vector<double>> out(view_azimuths_deg.size(),
+                                         std::vector<double>(grid.size(), 0.0));
     if (z1 <= z0) return out;
     const bool sunlit = sun_up(geometry);
     const double m_sun = relative_air_mass(geometry.sun_zenith_deg);
     const double m_view = relative_air_mass(geometry.view_zenith_deg);
     const auto s = direction(geometry.sun_zenith_deg, geometry.sun_azimuth_deg);
-    const auto v =
-        direction(std::clamp(geometry.view_zenith_deg, 0.0, 90.0), geometry.view_azimuth_deg);
-    // Light travels along −s from the sun and leaves along v towards the sensor.
-    const double cos_scatter = -(s[0] * v[0] + s[1] * v[1] + s[2] * v[2]);
-    const double p_rayleigh = rayleigh_phase(cos_scatter);
     const double g = m_parameters.aerosol_asymmetry;
-    const double p_aerosol = henyey_greenstein(g, cos_scatter);
+    // The phase functions at each azimuth: light travels along −s from the sun and leaves
+    // along v towards the sensor.
+    std::vector<double> p_rayleigh;
+    std::vector<double> p_aerosol;
+    for (double azimuth : view_azimuths_deg) {
+        const auto v = direction(std::clamp(geometry.view_zenith_deg, 0.0, 90.0), azimuth);
+        const double cos_scatter = -(s[0] * v[0] + s[1] * v[1] + s[2] * v[2]);
+        p_rayleigh.push_back(rayleigh_phase(cos_scatter));
+        p_aerosol.push_back(henyey_greenstein(g, cos_scatter));
+    }
     const double omega = m_parameters.aerosol_single_scatter_albedo;
     const double temperature_k = m_parameters.air_temperature_k;
     // τ(λ, z) = τ_R(λ)·e^(−z/H_R) + τ_A(λ)·e^(−z/H_A): the altitude factors of every layer
@@ -293,8 +322,9 @@ std::vector<double> ParametricAtmosphereModel::path_radiance_w_per_cm2_sr_um(
         return Level{std::exp(-z / m_parameters.rayleigh_scale_height_m),
                      std::exp(-z / m_parameters.aerosol_scale_height_m)};
     };
-    std::vector<Level> bounds(kPathLayers + 1);  // z_0 = z0 … z_K = z1
-    std::vector<Level> middles(kPathLayers);
+    const std::size_t layers = static_cast<std::size_t>(kPathLayers);
+    std::vector<Level> bounds(layers + 1);  // z_0 = z0 … z_K = z1
+    std::vector<Level> middles(layers);
     {
         double za = z0;
         bounds[0] = level(za);
@@ -307,6 +337,9 @@ std::vector<double> ParametricAtmosphereModel::path_radiance_w_per_cm2_sr_um(
         }
     }
     const Level top = level(z1);
+    // Per layer of one band: its Rayleigh and aerosol optical depths and its transmittances
+    // from the sun and to the sensor, the same at every azimuth.
+    std::vector<double> d_r(layers), d_a(layers), sun(layers), to_sensor(layers);
     for (std::size_t i = 0; i < grid.size(); ++i) {
         const double wl = grid.wavelength_um(i);
         const double rayleigh = rayleigh_sea_level(m_parameters, wl);
@@ -315,26 +348,31 @@ std::vector<double> ParametricAtmosphereModel::path_radiance_w_per_cm2_sr_um(
         const auto tau_a = [&](const Level& at) { return aerosol * at.aerosol; };
         const double tau_sensor = tau_r(top) + tau_a(top);
         const double emission = planck_radiance_w_per_cm2_sr_um(wl, temperature_k);
-        double sum = 0.0;
         double tau_r_a = tau_r(bounds[0]);
         double tau_a_a = tau_a(bounds[0]);
-        for (std::size_t k = 1; k <= static_cast<std::size_t>(kPathLayers); ++k) {
-            const double tau_r_b = tau_r(bounds[k]);
-            const double tau_a_b = tau_a(bounds[k]);
-            const double d_r = tau_r_a - tau_r_b;
-            const double d_a = tau_a_a - tau_a_b;
-            const double tau_m = tau_r(middles[k - 1]) + tau_a(middles[k - 1]);
-            const double to_sensor = std::exp(-(tau_m - tau_sensor) * m_view);
-            double source = (1.0 - omega) * d_a * emission;
-            if (sunlit) {
-                source += toa[i] / (4.0 * kPi) * std::exp(-tau_m * m_sun) *
-                          (d_r * p_rayleigh + omega * d_a * p_aerosol);
-            }
-            sum += source * m_view * to_sensor;
+        for (std::size_t k = 0; k < layers; ++k) {
+            const double tau_r_b = tau_r(bounds[k + 1]);
+            const double tau_a_b = tau_a(bounds[k + 1]);
+            d_r[k] = tau_r_a - tau_r_b;
+            d_a[k] = tau_a_a - tau_a_b;
+            const double tau_m = tau_r(middles[k]) + tau_a(middles[k]);
+            to_sensor[k] = std::exp(-(tau_m - tau_sensor) * m_view);
+            if (sunlit) sun[k] = std::exp(-tau_m * m_sun);
             tau_r_a = tau_r_b;
             tau_a_a = tau_a_b;
         }
-        out[i] = sum;
+        for (std::size_t a = 0; a < view_azimuths_deg.size(); ++a) {
+            double sum = 0.0;
+            for (std::size_t k = 0; k < layers; ++k) {
+                double source = (1.0 - omega) * d_a[k] * emission;
+                if (sunlit) {
+                    source += toa[i] / (4.0 * kPi) * sun[k] *
+                              (d_r[k] * p_rayleigh[a] + omega * d_a[k] * p_aerosol[a]);
+                }
+                sum += source * m_view * to_sensor[k];
+            }
+            out[a][i] = sum;
+        }
     }
     return out;
 }

@@ -82,11 +82,15 @@ std::shared_ptr<const SensorPathTables> sensor_path_tables(
         const std::vector<double> t_view = atmosphere.sensor_transmittance(grid, g);
         std::copy(t_view.begin(), t_view.end(),
                   t->transmittance.begin() + static_cast<std::ptrdiff_t>(z * bands));
+        std::vector<double> azimuths(t->azimuth_nodes);
         for (std::size_t a = 0; a < t->azimuth_nodes; ++a) {
-            g.view_azimuth_deg = std::fmod(
+            azimuths[a] = std::fmod(
                 g.sun_azimuth_deg + static_cast<double>(a) * Environment::kAzimuthStepDeg, 360.0);
-            const std::vector<double> lp = atmosphere.path_radiance_w_per_cm2_sr_um(grid, g, toa);
-            std::copy(lp.begin(), lp.end(),
+        }
+        const std::vector<std::vector<double>> lp =
+            atmosphere.path_radiance_at_azimuths(grid, g, toa, azimuths);
+        for (std::size_t a = 0; a < t->azimuth_nodes; ++a) {
+            std::copy(lp[a].begin(), lp[a].end(),
                       t->path_radiance.begin() +
                           static_cast<std::ptrdiff_t>((z * t->azimuth_nodes + a) * bands));
         }

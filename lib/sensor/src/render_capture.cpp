@@ -234,6 +234,10 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
     context.log.info("    Samples per pixel (min/mean/max) = " + std::to_string(stats.min_samples) +
                      " / " + format_shortest(stats.mean_samples) + " / " +
                      std::to_string(stats.max_samples));
+    char took[96];
+    std::snprintf(took, sizeof took, "    Rendered in %.3f s (%llu rays)", stats.seconds,
+                  static_cast<unsigned long long>(stats.rays));
+    context.log.info(took);
     return stats;
 }
 

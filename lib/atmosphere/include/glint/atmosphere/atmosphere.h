@@ -50,6 +50,15 @@ public:
         const SpectralGrid& grid, const AtmosphereGeometry& geometry,
         std::span<const double> toa_irradiance_w_per_cm2_um) const = 0;
 
+    /// The path radiance at each view azimuth of `view_azimuths_deg` (the geometry's own view
+    /// azimuth unused): one spectrum per azimuth, each equal to path_radiance_w_per_cm2_sr_um
+    /// at that azimuth. This default asks once per azimuth; a model may share the work that
+    /// does not depend on the azimuth.
+    virtual std::vector<std::vector<double>> path_radiance_at_azimuths(
+        const SpectralGrid& grid, const AtmosphereGeometry& geometry,
+        std::span<const double> toa_irradiance_w_per_cm2_um,
+        std::span<const double> view_azimuths_deg) const;
+
     /// Diffuse (scattered sunlight) irradiance on a horizontal surface at the surface point,
     /// W/(cm² µm).
     virtual std::vector<double> diffuse_sky_irradiance_w_per_cm2_um(
@@ -128,6 +137,12 @@ public:
     std::vector<double> path_radiance_w_per_cm2_sr_um(
         const SpectralGrid& grid, const AtmosphereGeometry& geometry,
         std::span<const double> toa_irradiance_w_per_cm2_um) const override;
+    /// The layers' transmittances towards the sun and the sensor do not depend on the view
+    /// azimuth: computed once for every azimuth (the same numbers as one query each).
+    std::vector<std::vector<double>> path_radiance_at_azimuths(
+        const SpectralGrid& grid, const AtmosphereGeometry& geometry,
+        std::span<const double> toa_irradiance_w_per_cm2_um,
+        std::span<const double> view_azimuths_deg) const override;
     std::vector<double> diffuse_sky_irradiance_w_per_cm2_um(
         const SpectralGrid& grid, const AtmosphereGeometry& geometry,
         std::span<const double> toa_irradiance_w_per_cm2_um) const override;
