@@ -53,7 +53,7 @@ open(os.path.join(a.out, 'hyper.platform'), 'w').write('''<platform>
           </imagefile>
           <spectralresponse>
             <bandpass spectralunits="microns">
-              <minimum>0.4</minimum><maximum>2.5</maximum><delta>%.9f</delta>
+              <minimum>0.4</minimum><maximum>2.5</maximum><delta>%.12g</delta>
             </bandpass>
             <channellist>
               %s

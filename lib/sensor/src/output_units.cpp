@@ -171,6 +171,7 @@ OutputUnits::OutputUnits(const model::CaptureMethod& method,
 
     if (method.type == model::CaptureMethodType::raw) {
         make_raw(file, grid, k_common);
+        index_by_band();
         return;
     }
     // Δ_b · k_flux(λ_b): the part of the weight shared by every channel.
@@ -228,6 +229,7 @@ OutputUnits::OutputUnits(const model::CaptureMethod& method,
                        : data_units_string(file.flux_units, file.area_units, m_description.aperture,
                                            m_description.temporal_integration, false);
     if (!mixed) m_description.per_channel_units.clear();
+    index_by_band();
 }
 
 void OutputUnits::apply(std::span<const double> radiance_w_per_cm2_sr_um,
@@ -238,14 +240,38 @@ void OutputUnits::apply(std::span<const double> radiance_w_per_cm2_sr_um,
                              " outputs, expected " + std::to_string(m_bands) + " and " +
                              std::to_string(m_channels));
     }
+    // Band by band into every channel it feeds: each channel's sum takes its bands in band
+    // order, as a loop over the channel's bands would (the same bits), but the channels'
+    // additions do not wait for one another. Zero weights add nothing and are skipped.
+    std::fill(out.begin(), out.end(), 0.0);
+    for (std::size_t b = 0; b < m_bands; ++b) {
+        const double radiance = radiance_w_per_cm2_sr_um[b];
+        for (std::size_t j = m_band_start[b]; j < m_band_start[b + 1]; ++j) {
+            out[m_band_channel[j]] += m_band_weight[j] * radiance;
+        }
+    }
+    for (std::size_t c = 0; c < m_channels; ++c) out[c] += m_bias[c];
+}
+
+void OutputUnits::index_by_band() {
+    m_band_start.assign(m_bands + 1, 0);
     for (std::size_t c = 0; c < m_channels; ++c) {
-        // Only the channel's support: the bands outside it weigh exactly 0.
-        const BandRange bands = m_support[c];
-        const double* w = m_weights.data() + m_offset[c];
-        const double* radiance = radiance_w_per_cm2_sr_um.data() + bands.first;
-        double sum = 0.0;
-        for (std::size_t b = 0; b < bands.count; ++b) sum += w[b] * radiance[b];
-        out[c] = sum + m_bias[c];
+        for (std::size_t k = 0; k < m_support[c].count; ++k) {
+            if (m_weights[m_offset[c] + k] != 0.0) ++m_band_start[m_support[c].first + k + 1];
+        }
+    }
+    for (std::size_t b = 0; b < m_bands; ++b) m_band_start[b + 1] += m_band_start[b];
+    m_band_channel.resize(m_band_start[m_bands]);
+    m_band_weight.resize(m_band_start[m_bands]);
+    std::vector<std::size_t> next(m_band_start.begin(), m_band_start.end() - 1);
+    for (std::size_t c = 0; c < m_channels; ++c) {  // ascending channels within each band
+        for (std::size_t k = 0; k < m_support[c].count; ++k) {
+            const double w = m_weights[m_offset[c] + k];
+            if (w == 0.0) continue;
+            const std::size_t j = next[m_support[c].first + k]++;
+            m_band_channel[j] = static_cast<std::uint32_t>(c);
+            m_band_weight[j] = w;
+        }
     }
 }
 

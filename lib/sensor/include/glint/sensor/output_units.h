@@ -50,6 +50,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
@@ -136,6 +137,15 @@ private:
     /// channel weighs a few dozen bands of a hyperspectral bandpass, a raw band one.
     std::vector<double> m_weights;
     std::vector<std::size_t> m_offset;  ///< per channel, where its weights start
+    /// The same non-zero weights by band (m_band_start[b] … m_band_start[b + 1] − 1: the
+    /// channels band b feeds, ascending), so apply() adds each band into every channel it
+    /// feeds at once — each channel still sums its bands in band order, but the channels'
+    /// sums proceed side by side instead of one after the other.
+    std::vector<std::size_t> m_band_start;
+    std::vector<std::uint32_t> m_band_channel;
+    std::vector<double> m_band_weight;
+    /// Fills the by-band copy from the rows.
+    void index_by_band();
     std::vector<double> m_bias;
     std::vector<double> m_centers_um;
     std::vector<double> m_fwhm_um;
