@@ -1,14 +1,18 @@
 // SPDX-License-Identifier: Apache-2.0
-// Wavefront OBJ parsing (glint/mesh/mesh.h). tinyobjloader's callback parser reads vertices,
-// faces and `usemtl` names; a scan of the same text beforehand, splitting lines and spotting
-// statements exactly as tinyobjloader does, finds the file line of every `v`, `f` and `usemtl`
-// statement (tinyobjloader gives none), checks that vertex coordinates are finite numbers
-// (tinyobjloader silently reads "nan" as 0) and range-checks every face index as written
-// (tinyobjloader narrows them with atoi, so "4294967299" would wrap to 3).
-#include <tiny_obj_loader.h>
-
+// Wavefront OBJ parsing (glint/mesh/mesh.h), in one pass over the text, with no allocation
+// for a well-formed line. It reads what tinyobjloader 2.0's callback parser read when glint
+// used it, value for value (obj_numbers.h), and reports what glint's checks around it
+// reported, in the same order: first, in file order, the vertex coordinates that are not
+// finite numbers and the face indices that are not integers in range as written (no
+// narrowing: "4294967299" is not 3); then, in file order, unknown materials, faces with fewer
+// than 3 vertices and faces without a material. Lines end at "\n", "\r\n" or "\r"; a line is
+// read up to its first NUL.
+#include <array>
+#include <bit>
 #include <charconv>
+#include <cstdint>
 #include <cstring>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -17,101 +21,60 @@
 
 #include "glint/core/text.h"
 #include "glint/mesh/mesh.h"
+#include "obj_numbers.h"
 
 namespace glint::mesh {
 namespace {
 
 bool is_blank(char c) { return c == ' ' || c == '\t'; }
 
-/// The file lines of the statements tinyobjloader reports through its callbacks, in order,
-/// and which faces the scan already reported as bad.
-struct StatementLines {
-    std::vector<int> vertices;
-    std::vector<int> faces;
-    std::vector<bool> bad_faces;  ///< one per face: an index was already reported
-    std::vector<int> materials;
-};
-
-/// Counts of what a face index may refer to, so far in the file.
-struct ElementCounts {
-    long long vertices = 0;
-    long long texcoords = 0;
-    long long normals = 0;
-};
-
-/// Checks one index of a face as written: a base-10 integer, 1..count or -count..-1
-/// (relative). Reports the problem at `where` and returns false otherwise. An empty texture
-/// or normal index means none (`1//3`, `1/2`).
-bool check_index(std::string_view text, long long count, const char* what, const char* counted,
-                 bool optional, const ErrorContext& where, Diagnostics& diagnostics) {
-    if (text.empty() && optional) return true;
-    std::string_view digits = text;
-    if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
-    long long value = 0;
-    const auto [end, error] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-    const bool integer = !digits.empty() && end == digits.data() + digits.size() &&
-                         (error == std::errc{} || error == std::errc::result_out_of_range) &&
-                         digits.front() != '+';
-    if (!integer) {
-        diagnostics.error(where,
-                          std::string(what) + " index " + quote(text) + " is not an integer");
-        return false;
-    }
-    const bool in_range =
-        error == std::errc{} && value != 0 && (value > 0 ? value <= count : value >= -count);
-    if (!in_range) {
-        diagnostics.error(where, std::string(what) + " index " + std::string(text) +
-                                     " is out of range (" + std::to_string(count) + " " + counted +
-                                     " so far)");
-        return false;
-    }
-    return true;
-}
-
-/// Checks the indices of one face statement (`rest`: the text after "f" and its blanks,
-/// ending at the line's end), splitting them exactly as tinyobjloader's parseRawTriple does.
-/// Returns false when an index was reported.
-bool check_face(std::string_view rest, const ElementCounts& counts, const ErrorContext& where,
-                Diagnostics& diagnostics) {
-    const auto field_end = [&rest](std::size_t at) {
-        const std::size_t end = rest.find_first_of("/ \t\r", at);
-        return end == std::string_view::npos ? rest.size() : end;
-    };
+std::string_view skip_blanks(std::string_view text) {
     std::size_t at = 0;
-    while (at < rest.size()) {
-        std::size_t end = field_end(at);
-        if (!check_index(rest.substr(at, end - at), counts.vertices, "vertex", "vertices", false,
-                         where, diagnostics)) {
-            return false;
-        }
-        at = end;
-        if (at < rest.size() && rest[at] == '/') {
-            ++at;
-            const bool no_texcoord = at < rest.size() && rest[at] == '/';
-            if (!no_texcoord) {
-                end = field_end(at);
-                if (!check_index(rest.substr(at, end - at), counts.texcoords, "texture coordinate",
-                                 "texture coordinates", true, where, diagnostics)) {
-                    return false;
-                }
-                at = end;
-            }
-            if (at < rest.size() && rest[at] == '/') {
-                ++at;
-                end = field_end(at);
-                if (!check_index(rest.substr(at, end - at), counts.normals, "normal", "normals",
-                                 true, where, diagnostics)) {
-                    return false;
-                }
-                at = end;
-            }
-        }
-        while (at < rest.size() && (is_blank(rest[at]) || rest[at] == '\r')) ++at;
-    }
-    return true;
+    while (at < text.size() && is_blank(text[at])) ++at;
+    return text.substr(at);
 }
 
-/// Checks the x, y, z of a `v` statement (`rest`: the text after "v ").
+/// One face index as written: a base-10 integer, 1..count or -count..-1 (relative). Sets
+/// `value` and returns nullopt when it is one, or returns the problem. An empty texture or
+/// normal index means none (`1//3`, `1/2`).
+std::optional<std::string> index_problem(std::string_view text, long long count, const char* what,
+                                         const char* counted, bool optional, long long& value) {
+    value = 0;
+    if (text.empty() && optional) return std::nullopt;
+    bool integer = false;
+    bool overflow = false;
+    if (!text.empty() && text.size() <= 18 && detail::is_digit(text.front())) {
+        // The hot path: up to 18 digits, no sign, never out of long long's range.
+        integer = true;
+        for (const char c : text) {
+            if (!detail::is_digit(c)) {
+                integer = false;
+                break;
+            }
+            value = value * 10 + (c - '0');
+        }
+    }
+    if (!integer) {
+        std::string_view digits = text;
+        if (!digits.empty() && digits.front() == '+') digits.remove_prefix(1);
+        const auto [end, error] =
+            std::from_chars(digits.data(), digits.data() + digits.size(), value);
+        integer = !digits.empty() && end == digits.data() + digits.size() &&
+                  (error == std::errc{} || error == std::errc::result_out_of_range) &&
+                  digits.front() != '+';
+        overflow = error == std::errc::result_out_of_range;
+    }
+    if (!integer) return std::string(what) + " index " + quote(text) + " is not an integer";
+    const bool in_range = !overflow && value != 0 && (value > 0 ? value <= count : value >= -count);
+    if (!in_range) {
+        return std::string(what) + " index " + std::string(text) + " is out of range (" +
+               std::to_string(count) + " " + counted + " so far)";
+    }
+    return std::nullopt;
+}
+
+/// Checks the x, y, z of a `v` statement (`rest`: the text after "v "), fields split at any
+/// white space. The slow path: lines whose coordinates are not all plain decimals.
 void check_vertex(std::string_view rest, const ErrorContext& where, Diagnostics& diagnostics) {
     std::istringstream fields{std::string(rest)};
     std::string field;
@@ -127,125 +90,237 @@ void check_vertex(std::string_view rest, const ErrorContext& where, Diagnostics&
     }
 }
 
-/// Scans `text` as tinyobjloader reads it: lines end at "\n", "\r\n" or "\r"; a line is read
-/// up to its first NUL; the statement is the first token after blanks. Reports bad vertices
-/// and face indices.
-StatementLines scan(std::string_view text, const std::string& file, Diagnostics& diagnostics) {
-    StatementLines lines;
-    ElementCounts counts;
-    std::size_t start = 0;
-    int line = 0;
-    while (start < text.size()) {
-        std::size_t end = text.find_first_of("\r\n", start);
-        if (end == std::string_view::npos) end = text.size();
-        ++line;
-        std::string_view row(text.data() + start, end - start);
-        start = end + 1;
-        if (end < text.size() && text[end] == '\r' && start < text.size() && text[start] == '\n') {
-            ++start;
-        }
-        if (const std::size_t nul = row.find('\0'); nul != std::string_view::npos) {
-            row = row.substr(0, nul);
-        }
-        while (!row.empty() && is_blank(row.front())) row.remove_prefix(1);
-        if (row.size() < 2) continue;
-        if (row[0] == 'v' && is_blank(row[1])) {
-            lines.vertices.push_back(line);
-            ++counts.vertices;
-            check_vertex(row.substr(2), {file, line, "v"}, diagnostics);
-        } else if (row[0] == 'v' && row.size() > 2 && is_blank(row[2]) &&
-                   (row[1] == 't' || row[1] == 'n')) {
-            ++(row[1] == 't' ? counts.texcoords : counts.normals);
-        } else if (row[0] == 'f' && is_blank(row[1])) {
-            std::string_view rest = row.substr(2);
-            while (!rest.empty() && is_blank(rest.front())) rest.remove_prefix(1);
-            if (rest.empty()) continue;  // tinyobjloader reports no face
-            lines.faces.push_back(line);
-            lines.bad_faces.push_back(!check_face(rest, counts, {file, line, "f"}, diagnostics));
-        } else if (row.substr(0, 6) == "usemtl" && row.size() > 6 && is_blank(row[6])) {
-            lines.materials.push_back(line);
-        }
-    }
-    return lines;
-}
+/// The state of one parse.
+class ObjReader {
+public:
+    ObjReader(const std::string& file, const MaterialLookup& material_index,
+              std::optional<std::uint32_t> default_material, Diagnostics& diagnostics)
+        : m_file(file),
+          m_material_index(material_index),
+          m_material(default_material),
+          m_diagnostics(diagnostics) {}
 
-/// State of one load, shared with the tinyobjloader callbacks.
-struct Loader {
-    std::string file;
-    const StatementLines* lines = nullptr;
-    const std::function<std::optional<std::uint32_t>(const std::string&)>* material_index = nullptr;
-    std::optional<std::uint32_t> current_material;
-    bool material_known = true;  ///< false after a usemtl naming an unknown material
-    Diagnostics* diagnostics = nullptr;
-    model::Mesh mesh;
-    std::size_t faces_seen = 0;
-    std::size_t materials_seen = 0;
-    bool reported_no_material = false;
+    /// One line, up to its end or first NUL.
+    void statement(std::string_view row, int line);
+    /// Reports the errors kept for after the whole text (see the file comment).
+    void report_later_errors();
+    model::Mesh& mesh() { return m_mesh; }
 
-    int line_of(const std::vector<int>& lines_of_kind, std::size_t index) const {
-        return index < lines_of_kind.size() ? lines_of_kind[index] : 0;
+private:
+    void vertex(std::string_view rest, int line);
+    void face(std::string_view rest, int line);
+    void use_material(std::string_view name, int line);
+    /// Reads the indices of a face (`rest`: from its first index to the line's end), checking
+    /// each as written; fills m_vertex_indices with each vertex index as tinyobjloader read it
+    /// (atoi). Returns false when an index was reported.
+    bool read_face(std::string_view rest, int line);
+    bool index_ok(std::string_view text, long long count, const char* what, const char* counted,
+                  bool optional, int line, long long& value);
+    void later_error(int line, const char* element, std::string message) {
+        m_later.push_back(
+            {Diagnostic::Severity::error, {m_file, line, element}, std::move(message)});
     }
+
+    const std::string& m_file;
+    const MaterialLookup& m_material_index;
+    std::optional<std::uint32_t> m_material;
+    bool m_material_known = true;  ///< false after a usemtl naming an unknown material
+    bool m_reported_no_material = false;
+    Diagnostics& m_diagnostics;
+    std::vector<Diagnostic> m_later;
+    model::Mesh m_mesh;
+    long long m_texcoords = 0;
+    long long m_normals = 0;
+    std::vector<int> m_vertex_indices;  ///< of the current face, reused
 };
 
-void on_vertex(void* user, tinyobj::real_t x, tinyobj::real_t y, tinyobj::real_t z,
-               tinyobj::real_t /*w*/) {
-    auto& loader = *static_cast<Loader*>(user);
-    loader.mesh.vertices_m.push_back(
-        {static_cast<float>(x), static_cast<float>(y), static_cast<float>(z)});
-}
-
-void on_usemtl(void* user, const char* name, int /*material_id*/) {
-    auto& loader = *static_cast<Loader*>(user);
-    const int line = loader.line_of(loader.lines->materials, loader.materials_seen++);
-    std::string text(name);
-    while (!text.empty() && is_blank(text.back())) text.pop_back();
-    loader.current_material = (*loader.material_index)(text);
-    loader.material_known = loader.current_material.has_value();
-    if (!loader.material_known) {
-        loader.diagnostics->error({loader.file, line, "usemtl"},
-                                  "unknown material \"" + text + "\"");
+void ObjReader::statement(std::string_view row, int line) {
+    row = skip_blanks(row);
+    if (row.size() < 2) return;
+    if (row[0] == 'v' && is_blank(row[1])) {
+        vertex(row.substr(2), line);
+    } else if (row[0] == 'v' && row.size() > 2 && is_blank(row[2]) &&
+               (row[1] == 't' || row[1] == 'n')) {
+        ++(row[1] == 't' ? m_texcoords : m_normals);
+    } else if (row[0] == 'f' && is_blank(row[1])) {
+        const std::string_view rest = skip_blanks(row.substr(2));
+        if (!rest.empty()) face(rest, line);  // tinyobjloader reported no face
+    } else if (row.substr(0, 6) == "usemtl" && row.size() > 6 && is_blank(row[6])) {
+        use_material(row.substr(7), line);
     }
 }
 
-void on_face(void* user, tinyobj::index_t* indices, int count) {
-    auto& loader = *static_cast<Loader*>(user);
-    const std::size_t face = loader.faces_seen++;
-    if (face < loader.lines->bad_faces.size() && loader.lines->bad_faces[face]) return;
-    const int line = loader.line_of(loader.lines->faces, face);
-    const ErrorContext where{loader.file, line, "f"};
+void ObjReader::vertex(std::string_view rest, int line) {
+    // tinyobjloader's fields: split at blanks only, a missing or unreadable one is 0.
+    std::array<double, 3> xyz{};
+    bool plain = true;
+    const char* p = rest.data();
+    const char* const end = p + rest.size();
+    for (double& value : xyz) {
+        while (p != end && is_blank(*p)) ++p;
+        const char* const token = p;
+        while (p != end && !is_blank(*p)) ++p;
+        if (plain && detail::plain_real(token, p, value)) continue;
+        plain = false;
+        value = detail::legacy_real(token, p).value_or(0.0);
+    }
+    // Three plain decimals are three fields however white space splits them, and valid.
+    if (!plain) check_vertex(rest, {m_file, line, "v"}, m_diagnostics);
+    m_mesh.vertices_m.push_back(
+        {static_cast<float>(xyz[0]), static_cast<float>(xyz[1]), static_cast<float>(xyz[2])});
+}
+
+bool ObjReader::index_ok(std::string_view text, long long count, const char* what,
+                         const char* counted, bool optional, int line, long long& value) {
+    std::optional<std::string> problem = index_problem(text, count, what, counted, optional, value);
+    if (!problem) return true;
+    m_diagnostics.error({m_file, line, "f"}, std::move(*problem));
+    return false;
+}
+
+bool ObjReader::read_face(std::string_view rest, int line) {
+    // Split as tinyobjloader's parseRawTriple splits: v, v/t, v//n, v/t/n.
+    const auto field_end = [&rest](std::size_t at) {
+        while (at < rest.size() && rest[at] != '/' && !is_blank(rest[at]) && rest[at] != '\r') {
+            ++at;
+        }
+        return at;
+    };
+    const auto vertices = static_cast<long long>(m_mesh.vertices_m.size());
+    m_vertex_indices.clear();
+    std::size_t at = 0;
+    long long value = 0;
+    while (at < rest.size()) {
+        // The hot path: a plain vertex index in range ("123"), then a blank or the end.
+        std::size_t digits_end = at;
+        value = 0;
+        while (digits_end < rest.size() && digits_end - at < 18 &&
+               detail::is_digit(rest[digits_end])) {
+            value = value * 10 + (rest[digits_end++] - '0');
+        }
+        if (digits_end > at && (digits_end == rest.size() || is_blank(rest[digits_end])) &&
+            value >= 1 && value <= vertices) {
+            m_vertex_indices.push_back(static_cast<int>(value));
+            at = digits_end;
+            while (at < rest.size() && is_blank(rest[at])) ++at;
+            continue;
+        }
+        std::size_t end = field_end(at);
+        const std::string_view field = rest.substr(at, end - at);
+        if (!index_ok(field, vertices, "vertex", "vertices", false, line, value)) return false;
+        // atoi: "+-3" is 0; otherwise the value, in int as tinyobjloader holds it.
+        m_vertex_indices.push_back(
+            field.size() > 1 && field[0] == '+' && field[1] == '-' ? 0 : static_cast<int>(value));
+        at = end;
+        if (at < rest.size() && rest[at] == '/') {
+            ++at;
+            const bool no_texcoord = at < rest.size() && rest[at] == '/';
+            if (!no_texcoord) {
+                end = field_end(at);
+                if (!index_ok(rest.substr(at, end - at), m_texcoords, "texture coordinate",
+                              "texture coordinates", true, line, value)) {
+                    return false;
+                }
+                at = end;
+            }
+            if (at < rest.size() && rest[at] == '/') {
+                ++at;
+                end = field_end(at);
+                if (!index_ok(rest.substr(at, end - at), m_normals, "normal", "normals", true, line,
+                              value)) {
+                    return false;
+                }
+                at = end;
+            }
+        }
+        while (at < rest.size() && (is_blank(rest[at]) || rest[at] == '\r')) ++at;
+    }
+    return true;
+}
+
+void ObjReader::face(std::string_view rest, int line) {
+    if (!read_face(rest, line)) return;
+    const std::size_t count = m_vertex_indices.size();
     if (count < 3) {
-        loader.diagnostics->error(
-            where, "face has " + std::to_string(count) + " vertices, expected at least 3");
+        later_error(line, "f",
+                    "face has " + std::to_string(count) + " vertices, expected at least 3");
         return;
     }
-    // The scan checked the indices as written; this guards the narrowed values anyway.
-    const auto n = static_cast<long long>(loader.mesh.vertices_m.size());
-    std::vector<std::uint32_t> resolved;
-    for (int k = 0; k < count; ++k) {
-        const long long raw = indices[k].vertex_index;
-        const long long index = raw > 0 ? raw - 1 : n + raw;
+    // read_face checked the indices as written; this guards the values tinyobjloader read
+    // ("+-3" is 0).
+    const auto n = static_cast<long long>(m_mesh.vertices_m.size());
+    for (int& raw : m_vertex_indices) {
+        const long long index = raw > 0 ? raw - 1LL : n + raw;
         if (raw == 0 || index < 0 || index >= n) {
-            loader.diagnostics->error(where, "vertex index " + std::to_string(raw) +
-                                                 " is out of range (" + std::to_string(n) +
-                                                 " vertices so far)");
+            later_error(line, "f",
+                        "vertex index " + std::to_string(raw) + " is out of range (" +
+                            std::to_string(n) + " vertices so far)");
             return;
         }
-        resolved.push_back(static_cast<std::uint32_t>(index));
+        raw = static_cast<int>(index);
     }
-    if (!loader.material_known) return;  // reported at the usemtl
-    if (!loader.current_material) {
-        if (!loader.reported_no_material) {
-            loader.diagnostics->error(where,
-                                      "face has no material: no usemtl before it and no "
-                                      "material given for the object");
-            loader.reported_no_material = true;
+    if (!m_material_known) return;  // reported at the usemtl
+    if (!m_material) {
+        if (!m_reported_no_material) {
+            later_error(line, "f",
+                        "face has no material: no usemtl before it and no material given for "
+                        "the object");
+            m_reported_no_material = true;
         }
         return;
     }
-    for (int k = 1; k + 1 < count; ++k) {
-        loader.mesh.triangles.push_back({resolved[0], resolved[k], resolved[k + 1]});
-        loader.mesh.triangle_materials.push_back(*loader.current_material);
+    const auto corner = [this](std::size_t k) {
+        return static_cast<std::uint32_t>(m_vertex_indices[k]);
+    };
+    for (std::size_t k = 1; k + 1 < count; ++k) {
+        m_mesh.triangles.push_back({corner(0), corner(k), corner(k + 1)});
+        m_mesh.triangle_materials.push_back(*m_material);
     }
+}
+
+void ObjReader::use_material(std::string_view name, int line) {
+    while (!name.empty() && is_blank(name.back())) name.remove_suffix(1);
+    const std::string text(name);
+    m_material = m_material_index(text);
+    m_material_known = m_material.has_value();
+    if (!m_material_known) later_error(line, "usemtl", "unknown material \"" + text + "\"");
+}
+
+void ObjReader::report_later_errors() {
+    for (Diagnostic& diagnostic : m_later) {
+        m_diagnostics.error(std::move(diagnostic.where), std::move(diagnostic.message));
+    }
+    m_later.clear();
+}
+
+/// Where the first '\n', '\r' or NUL of [p, end) is (`end` if none), eight bytes at a time.
+const char* first_line_break(const char* p, const char* const end) {
+    if constexpr (std::endian::native == std::endian::little) {
+        constexpr std::uint64_t ones = 0x0101010101010101u;
+        constexpr std::uint64_t highs = 0x8080808080808080u;
+        // The lowest byte flagged is the first zero byte (flags above it may be false).
+        const auto zero_bytes = [](std::uint64_t w) { return (w - ones) & ~w & highs; };
+        for (; end - p >= 8; p += 8) {
+            std::uint64_t word = 0;
+            std::memcpy(&word, p, 8);
+            const std::uint64_t found = zero_bytes(word) | zero_bytes(word ^ (ones * '\n')) |
+                                        zero_bytes(word ^ (ones * '\r'));
+            if (found != 0) return p + std::countr_zero(found) / 8;
+        }
+    }
+    while (p != end && *p != '\n' && *p != '\r' && *p != '\0') ++p;
+    return p;
+}
+
+/// The end of the line starting at `at`: the first "\n" or "\r" (or the text's end).
+/// `content_end` is set to the end of what is read of it: the line's end or its first NUL.
+std::size_t line_end(std::string_view text, std::size_t at, std::size_t& content_end) {
+    const char* const begin = text.data();
+    const char* const end = begin + text.size();
+    const char* p = first_line_break(begin + at, end);
+    content_end = static_cast<std::size_t>(p - begin);
+    while (p != end && *p != '\n' && *p != '\r') ++p;
+    return static_cast<std::size_t>(p - begin);
 }
 
 }  // namespace
@@ -254,32 +329,25 @@ model::Mesh parse_obj_mesh(std::string_view text, const std::string& display_nam
                            const MaterialLookup& material_index,
                            std::optional<std::uint32_t> default_material,
                            std::size_t material_count, Diagnostics& diagnostics) {
-    const std::string& name = display_name;
     const std::size_t errors = diagnostics.error_count();
-    const StatementLines lines = scan(text, name, diagnostics);
-
-    Loader loader;
-    loader.file = name;
-    loader.lines = &lines;
-    loader.material_index = &material_index;
-    loader.current_material = default_material;
-    loader.diagnostics = &diagnostics;
-
-    tinyobj::callback_t callbacks;
-    callbacks.vertex_cb = on_vertex;
-    callbacks.usemtl_cb = on_usemtl;
-    callbacks.index_cb = on_face;
-    std::istringstream stream{std::string(text)};
-    std::string warning;
-    std::string error;
-    if (!tinyobj::LoadObjWithCallback(stream, callbacks, &loader, nullptr, &warning, &error) ||
-        !error.empty()) {
-        while (!error.empty() && (error.back() == '\n' || error.back() == '.')) error.pop_back();
-        diagnostics.error({name, 0, {}}, "cannot parse OBJ: " + error);
+    ObjReader reader(display_name, material_index, default_material, diagnostics);
+    std::size_t start = 0;
+    int line = 0;
+    while (start < text.size()) {
+        std::size_t content_end = 0;
+        const std::size_t end = line_end(text, start, content_end);
+        ++line;
+        reader.statement(text.substr(start, content_end - start), line);
+        start = end + 1;
+        if (end < text.size() && text[end] == '\r' && start < text.size() && text[start] == '\n') {
+            ++start;
+        }
     }
+    reader.report_later_errors();
     if (diagnostics.error_count() != errors) return {};
-    validate_mesh(loader.mesh, material_count, {name, 0, {}}, diagnostics);
-    return std::move(loader.mesh);
+    model::Mesh& mesh = reader.mesh();
+    validate_mesh(mesh, material_count, {display_name, 0, {}}, diagnostics);
+    return std::move(mesh);
 }
 
 }  // namespace glint::mesh

@@ -2,11 +2,12 @@
 // Tessellation of the YAML scene's primitives (ground plane, box, UV sphere, disk, cylinder)
 // into triangle meshes, and the mesh validation every mesh passes before Embree sees it.
 // docs/scene.md ("Primitives", "Validation") is the reference for both.
-#include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "glint/core/text.h"
 #include "glint/mesh/mesh.h"
@@ -23,6 +24,27 @@ Vec3 cross(const Vec3& a, const Vec3& b) {
     return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+Vec3 to_double(const std::array<float, 3>& v) { return {v[0], v[1], v[2]}; }
+
+/// A repeated index, or an area <= 1e-12 × the squared longest edge (validate_mesh).
+bool is_degenerate(const std::vector<std::array<float, 3>>& vertices,
+                   const std::array<std::uint32_t, 3>& tri) {
+    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) return true;
+    const Vec3 p0 = to_double(vertices[tri[0]]);
+    const Vec3 p1 = to_double(vertices[tri[1]]);
+    const Vec3 p2 = to_double(vertices[tri[2]]);
+    const Vec3 e0 = sub(p1, p0);
+    const Vec3 e1 = sub(p2, p0);
+    const Vec3 e2 = sub(p2, p1);
+    // std::max({...}) without the initializer list's stack copy: the first largest.
+    double longest = dot(e0, e0);
+    if (longest < dot(e1, e1)) longest = dot(e1, e1);
+    if (longest < dot(e2, e2)) longest = dot(e2, e2);
+    const Vec3 n = cross(e0, e1);
+    const double twice_area = std::sqrt(dot(n, n));
+    return !(twice_area / 2.0 > 1e-12 * longest);
+}
 
 /// Builds a mesh one vertex and one triangle at a time.
 class MeshBuilder {
@@ -266,22 +288,7 @@ bool validate_mesh(model::Mesh& mesh, std::size_t material_count, const ErrorCon
             bad = true;
         }
         if (bad) continue;
-        bool is_degenerate = tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2];
-        if (!is_degenerate) {
-            Vec3 p[3];
-            for (int k = 0; k < 3; ++k) {
-                const auto& v = mesh.vertices_m[tri[k]];
-                p[k] = {v[0], v[1], v[2]};
-            }
-            const Vec3 e0 = sub(p[1], p[0]);
-            const Vec3 e1 = sub(p[2], p[0]);
-            const Vec3 e2 = sub(p[2], p[1]);
-            const double longest = std::max({dot(e0, e0), dot(e1, e1), dot(e2, e2)});
-            const Vec3 n = cross(e0, e1);
-            const double twice_area = std::sqrt(dot(n, n));
-            is_degenerate = !(twice_area / 2.0 > 1e-12 * longest);
-        }
-        if (is_degenerate) {
+        if (is_degenerate(mesh.vertices_m, tri)) {
             ++degenerate;
             continue;
         }

@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 // Building the triangle meshes of a scene from what its files describe: Wavefront OBJ text
-// (tinyobjloader, `usemtl` names bound to materials), the YAML scene's primitives (ground
-// plane, box, UV sphere, disk, cylinder; docs/scene.md gives the exact tessellation), and the
-// validation every mesh passes before the Embree scene sees it. No file is opened here: the
-// readers hand the text in. Problems go to `diagnostics` (file:line) and the functions carry
-// on; the caller fails when diagnostics has errors.
+// (glint's own one-pass reader, which values coordinates as tinyobjloader 2.0 did; `usemtl`
+// names bound to materials), the YAML scene's primitives (ground plane, box, UV sphere, disk,
+// cylinder; docs/scene.md gives the exact tessellation), and the validation every mesh passes
+// before the Embree scene sees it. No file is opened here: the readers hand the text in.
+// Problems go to `diagnostics` (file:line) and the functions carry on; the caller fails when
+// diagnostics has errors.
 #pragma once
 
 #include <cstddef>
