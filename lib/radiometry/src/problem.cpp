@@ -152,33 +152,19 @@ Solution solve(const PathTracer& tracer, const ProblemBatch& batch, std::uint64_
     return solution;
 }
 
-Solutions solve(const PathTracer& tracer, const ProblemBatch& batch, const Context& context) {
-    check_batch(tracer, batch);
-    Solutions out;
-    out.bands = tracer.bands();
-    out.radiance_w_per_cm2_sr_um.assign(batch.count * out.bands, 0.0);
-    out.samples.assign(batch.count, 0);
-    out.standard_error_w_per_cm2_sr_um.assign(batch.count, 0.0);
-    out.rays = solve_each(
-        tracer, batch, context,
-        [&](std::uint64_t i, std::span<double> radiance, std::uint64_t samples, double error) {
-            std::copy(
-                radiance.begin(), radiance.end(),
-                out.radiance_w_per_cm2_sr_um.begin() + static_cast<std::ptrdiff_t>(i * out.bands));
-            out.samples[i] = samples;
-            out.standard_error_w_per_cm2_sr_um[i] = error;
-        });
-    return out;
-}
+namespace {
 
-std::uint64_t solve_each(const PathTracer& tracer, const ProblemBatch& batch,
-                         const Context& context, const SolutionReceiver& receive) {
+/// The parallel loop of both batch solves: problem i's radiance goes into into(i, ws), and
+/// done(i, radiance, samples, error) is called once it is there (on the solving thread).
+template <typename Into, typename Done>
+std::uint64_t solve_batch(const PathTracer& tracer, const ProblemBatch& batch,
+                          const Context& context, const Into& into, const Done& done) {
     check_batch(tracer, batch);
     const int threads =
         context.threads == 0 ? tbb::task_arena::automatic : static_cast<int>(context.threads);
     tbb::task_arena arena(threads);
     tbb::enumerable_thread_specific<Workspace> workspaces([&] { return Workspace(tracer, batch); });
-    std::atomic<std::uint64_t> done{0};
+    std::atomic<std::uint64_t> finished_count{0};
     std::mutex progress_mutex;
     const std::uint64_t report_every = std::max<std::uint64_t>(1, batch.count / 100);
     arena.execute([&] {
@@ -187,10 +173,11 @@ std::uint64_t solve_each(const PathTracer& tracer, const ProblemBatch& batch,
                               Workspace& ws = workspaces.local();
                               for (std::uint64_t i = range.begin(); i != range.end(); ++i) {
                                   if (context.cancel.cancelled()) return;
+                                  const std::span<double> radiance = into(i, ws);
                                   const auto [samples, error] = solve_into(
-                                      tracer, batch, batch.first_problem + i, ws, ws.radiance);
-                                  receive(i, ws.radiance, samples, error);
-                                  const std::uint64_t finished = ++done;
+                                      tracer, batch, batch.first_problem + i, ws, radiance);
+                                  done(i, radiance, samples, error);
+                                  const std::uint64_t finished = ++finished_count;
                                   if (finished % report_every == 0) {
                                       const std::lock_guard lock(progress_mutex);
                                       context.progress.update("radiance", finished, batch.count);
@@ -203,6 +190,39 @@ std::uint64_t solve_each(const PathTracer& tracer, const ProblemBatch& batch,
     for (const Workspace& ws : workspaces) rays += ws.path.rays;
     context.progress.finish("radiance", batch.count);
     return rays;
+}
+
+}  // namespace
+
+Solutions solve(const PathTracer& tracer, const ProblemBatch& batch, const Context& context) {
+    check_batch(tracer, batch);
+    Solutions out;
+    out.bands = tracer.bands();
+    out.radiance_w_per_cm2_sr_um.assign(batch.count * out.bands, 0.0);
+    out.samples.assign(batch.count, 0);
+    out.standard_error_w_per_cm2_sr_um.assign(batch.count, 0.0);
+    // Each problem solves straight into its slot of the result.
+    out.rays = solve_batch(
+        tracer, batch, context,
+        [&](std::uint64_t i, Workspace&) {
+            return std::span<double>(out.radiance_w_per_cm2_sr_um.data() + i * out.bands,
+                                     out.bands);
+        },
+        [&](std::uint64_t i, std::span<double>, std::uint64_t samples, double error) {
+            out.samples[i] = samples;
+            out.standard_error_w_per_cm2_sr_um[i] = error;
+        });
+    return out;
+}
+
+std::uint64_t solve_each(const PathTracer& tracer, const ProblemBatch& batch,
+                         const Context& context, const SolutionReceiver& receive) {
+    return solve_batch(
+        tracer, batch, context,
+        [](std::uint64_t, Workspace& ws) { return std::span<double>(ws.radiance); },
+        [&](std::uint64_t i, std::span<double> radiance, std::uint64_t samples, double error) {
+            receive(i, radiance, samples, error);
+        });
 }
 
 }  // namespace glint::radiometry
