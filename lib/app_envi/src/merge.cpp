@@ -4,6 +4,7 @@
 #include "glint/app_envi/merge.h"
 
 #include <algorithm>
+#include <charconv>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -25,13 +26,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// The keys that say which captures a file holds (set again for the whole file).
-constexpr const char* kCapturesKey = "glint captures";
-constexpr const char* kLinesPerCaptureKey = "glint lines per capture";
-constexpr const char* kIdsKey = "glint capture ids";
-constexpr const char* kIndicesKey = "glint capture indices";
-constexpr const char* kWindowsKey = "glint capture windows s";
-constexpr const char* kDatetimesKey = "glint capture datetimes utc";
+using io::kCapturesKey;
+using io::kDatetimesKey;
+using io::kIdsKey;
+using io::kIndicesKey;
+using io::kLinesPerCaptureKey;
+using io::kWindowsKey;
 constexpr const char* kCommandLineKey = "glint command line";
 
 /// The largest --expect file read (as glint-render's --schedule).
@@ -88,11 +88,16 @@ private:
     std::vector<std::string> m_list;
 };
 
+/// A whole number written alone (blanks around it allowed); nullopt for anything else.
 std::optional<std::uint64_t> whole_number(const std::optional<std::string>& text) {
     if (!text) return std::nullopt;
-    const std::optional<std::vector<std::uint64_t>> v = io::parse_index_runs("{" + *text + "}");
-    if (!v || v->size() != 1) return std::nullopt;
-    return v->front();
+    const std::string_view digits = trim(*text);
+    std::uint64_t value = 0;
+    const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+    if (digits.empty() || ec != std::errc{} || end != digits.data() + digits.size()) {
+        return std::nullopt;
+    }
+    return value;
 }
 
 /// Reads what a glint-render header says about its captures and part; a problem otherwise.

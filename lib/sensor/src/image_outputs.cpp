@@ -121,12 +121,12 @@ void ImageOutputs::end_capture(const std::filesystem::path& path, const CaptureS
         datetimes.push_back(s.datetime_utc);
         indices.push_back(std::to_string(s.index));
     }
-    f.writer->set_extra("glint captures", std::to_string(f.stamps.size()));
-    f.writer->set_extra("glint lines per capture", std::to_string(f.lines_per_capture));
-    f.writer->set_extra("glint capture ids", io::envi_brace_list(ids));
-    f.writer->set_extra("glint capture indices", io::envi_brace_list(indices));
-    f.writer->set_extra("glint capture windows s", io::envi_brace_list(times));
-    f.writer->set_extra("glint capture datetimes utc", io::envi_brace_list(datetimes));
+    f.writer->set_extra(io::kCapturesKey, std::to_string(f.stamps.size()));
+    f.writer->set_extra(io::kLinesPerCaptureKey, std::to_string(f.lines_per_capture));
+    f.writer->set_extra(io::kIdsKey, io::envi_brace_list(ids));
+    f.writer->set_extra(io::kIndicesKey, io::envi_brace_list(indices));
+    f.writer->set_extra(io::kWindowsKey, io::envi_brace_list(times));
+    f.writer->set_extra(io::kDatetimesKey, io::envi_brace_list(datetimes));
     if (f.part) {
         f.writer->set_extra(io::kPartRowsKey, "{" + std::to_string(f.part->first_line) + ", " +
                                                   std::to_string(f.part->end_line) + "}");

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
-// The header keys of a *part*: an ENVI image a sharded glint-render wrote that holds some of
-// the lines or captures of the file one run writes (docs/scale.md). glint-render writes
-// them; glint-envi merge reads them to join parts into the whole file. A file that holds
-// all of its lines and captures carries none of them and is the whole file.
+// The capture keys glint-render writes into every image, and the header keys of a *part*: an ENVI
+// image a sharded glint-render wrote that holds some of the lines or captures of the file one run
+// writes (docs/scale.md). glint-render writes them; glint-envi merge reads them to join parts into
+// the whole file. A file that holds all of its lines and captures carries none of them and is the
+// whole file.
 //
 //   glint part rows = {A, B}              lines A … B−1 of each capture it holds
 //   glint part lines per capture = L      lines of each capture in the whole file
@@ -20,6 +21,15 @@
 
 namespace glint::io {
 
+/// The capture keys of every glint-render image (which captures it holds, in file order).
+inline constexpr const char* kCapturesKey = "glint captures";
+inline constexpr const char* kLinesPerCaptureKey = "glint lines per capture";
+inline constexpr const char* kIdsKey = "glint capture ids";
+inline constexpr const char* kIndicesKey = "glint capture indices";
+inline constexpr const char* kWindowsKey = "glint capture windows s";
+inline constexpr const char* kDatetimesKey = "glint capture datetimes utc";
+
+/// The part keys.
 inline constexpr const char* kPartRowsKey = "glint part rows";
 inline constexpr const char* kPartLinesPerCaptureKey = "glint part lines per capture";
 inline constexpr const char* kPartCapturesKey = "glint part of captures";
