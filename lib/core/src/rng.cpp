@@ -48,12 +48,37 @@ constexpr std::uint64_t mix64(std::uint64_t z) noexcept {
     return z ^ (z >> 31);
 }
 
-/// One ordered chain over (seed, ids); distinct salts give independent chains.
+// An identity chain over (seed, ids) in three steps, so that StreamPrefix can stop after
+// some ids and go on later: start from the seed, absorb each id in order, finish with the
+// total id count. Distinct salts give independent chains.
+
+/// A chain's state before any id.
+constexpr std::uint64_t chain_start(std::uint64_t salt, std::uint64_t seed) noexcept {
+    return mix64(seed ^ salt);
+}
+
+/// A chain's state `h` after absorbing `ids` in order.
+constexpr std::uint64_t chain_absorb(std::uint64_t salt, std::uint64_t h,
+                                     std::span<const std::uint64_t> ids) noexcept {
+    for (std::uint64_t id : ids) h = mix64(h ^ mix64(id ^ kSaltId ^ salt));
+    return h;
+}
+
+/// A chain's output from its state `h` after `id_count` ids in all.
+constexpr std::uint64_t chain_finish(std::uint64_t h, std::uint64_t id_count) noexcept {
+    return mix64(h ^ kSaltFinal ^ id_count);
+}
+
+/// One ordered chain over (seed, ids).
 std::uint64_t identity_chain(std::uint64_t salt, std::uint64_t seed,
                              std::span<const std::uint64_t> ids) noexcept {
-    std::uint64_t h = mix64(seed ^ salt);
-    for (std::uint64_t id : ids) h = mix64(h ^ mix64(id ^ kSaltId ^ salt));
-    return mix64(h ^ kSaltFinal ^ static_cast<std::uint64_t>(ids.size()));
+    return chain_finish(chain_absorb(salt, chain_start(salt, seed), ids),
+                        static_cast<std::uint64_t>(ids.size()));
+}
+
+/// The Philox key from the key chain's 64-bit output.
+constexpr PhiloxKey philox_key(std::uint64_t key) noexcept {
+    return {static_cast<std::uint32_t>(key), static_cast<std::uint32_t>(key >> 32)};
 }
 
 inline void mul_hi_lo(std::uint32_t a, std::uint32_t b, std::uint32_t& hi,
@@ -97,10 +122,38 @@ PhiloxCounter philox4x32_10(PhiloxCounter counter, PhiloxKey key) noexcept {
 RandomStream::RandomStream(std::uint64_t seed, std::initializer_list<std::uint64_t> stream_ids)
     : RandomStream(seed, std::span<const std::uint64_t>(stream_ids.begin(), stream_ids.size())) {}
 
-RandomStream::RandomStream(std::uint64_t seed, std::span<const std::uint64_t> stream_ids) {
-    const std::uint64_t key = identity_chain(kSaltChainKey, seed, stream_ids);
-    m_key = {static_cast<std::uint32_t>(key), static_cast<std::uint32_t>(key >> 32)};
-    m_counter_high = identity_chain(kSaltChainCounter, seed, stream_ids);
+RandomStream::RandomStream(std::uint64_t seed, std::span<const std::uint64_t> stream_ids)
+    : m_key(philox_key(identity_chain(kSaltChainKey, seed, stream_ids))),
+      m_counter_high(identity_chain(kSaltChainCounter, seed, stream_ids)) {}
+
+StreamPrefix::StreamPrefix(std::uint64_t seed,
+                           std::initializer_list<std::uint64_t> leading_ids) noexcept
+    : StreamPrefix(seed, std::span<const std::uint64_t>(leading_ids.begin(), leading_ids.size())) {}
+
+StreamPrefix::StreamPrefix(std::uint64_t seed, std::span<const std::uint64_t> leading_ids) noexcept
+    : m_key_chain(chain_absorb(kSaltChainKey, chain_start(kSaltChainKey, seed), leading_ids)),
+      m_counter_chain(
+          chain_absorb(kSaltChainCounter, chain_start(kSaltChainCounter, seed), leading_ids)),
+      m_id_count(static_cast<std::uint64_t>(leading_ids.size())) {}
+
+StreamPrefix StreamPrefix::extended(std::uint64_t id) const noexcept {
+    const std::span<const std::uint64_t> ids(&id, 1);
+    StreamPrefix longer = *this;
+    longer.m_key_chain = chain_absorb(kSaltChainKey, m_key_chain, ids);
+    longer.m_counter_chain = chain_absorb(kSaltChainCounter, m_counter_chain, ids);
+    ++longer.m_id_count;
+    return longer;
+}
+
+RandomStream StreamPrefix::stream(std::initializer_list<std::uint64_t> rest) const noexcept {
+    return stream(std::span<const std::uint64_t>(rest.begin(), rest.size()));
+}
+
+RandomStream StreamPrefix::stream(std::span<const std::uint64_t> rest) const noexcept {
+    const std::uint64_t id_count = m_id_count + static_cast<std::uint64_t>(rest.size());
+    return RandomStream(
+        philox_key(chain_finish(chain_absorb(kSaltChainKey, m_key_chain, rest), id_count)),
+        chain_finish(chain_absorb(kSaltChainCounter, m_counter_chain, rest), id_count));
 }
 
 void RandomStream::refill() {

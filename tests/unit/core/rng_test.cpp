@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "glint/core/error.h"
@@ -133,6 +134,77 @@ TEST(RandomStream, RegressionFirstWords) {
     // rendered image, so it must be a deliberate decision. Update these values only then.
     EXPECT_EQ(draw_words(RandomStream(0, {}), 4),
               (std::vector<std::uint32_t>{0x5b93e0d5u, 0x9fea1f86u, 0x59fb8398u, 0xf3876fdfu}));
+}
+
+/// A few well-mixed 64-bit values (SplitMix64) for the prefix tests' seeds and ids.
+std::uint64_t test_value(std::uint64_t index) {
+    std::uint64_t z = index * 0x9E3779B97F4A7C15ull + 0x2545F4914F6CDD1Dull;
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+
+TEST(StreamPrefix, SameStreamsAsDirectAtEverySplit) {
+    // Random seeds and 0 to 8 ids (including 0 and all-ones), split at every position: the
+    // prefix-made stream and one built by extending the prefix id by id give the same first
+    // 64 words as RandomStream(seed, ids).
+    std::uint64_t next = 0;
+    for (int trial = 0; trial < 40; ++trial) {
+        const std::uint64_t seed = trial == 0 ? 0 : test_value(next++);
+        for (std::size_t count = 0; count <= 8; ++count) {
+            std::vector<std::uint64_t> ids;
+            for (std::size_t i = 0; i < count; ++i) {
+                const std::uint64_t v = test_value(next++);
+                ids.push_back(trial == 1 ? ~std::uint64_t{0} : trial == 2 ? i : v);
+            }
+            const auto direct = draw_words(RandomStream(seed, ids), 64);
+            const std::span<const std::uint64_t> all(ids);
+            for (std::size_t split = 0; split <= count; ++split) {
+                const StreamPrefix prefix(seed, all.first(split));
+                EXPECT_EQ(prefix.id_count(), split);
+                ASSERT_EQ(draw_words(prefix.stream(all.subspan(split)), 64), direct)
+                    << "seed " << seed << ", " << count << " ids split at " << split;
+                StreamPrefix grown(seed, all.first(split));
+                for (std::size_t i = split; i < count; ++i) grown = grown.extended(ids[i]);
+                EXPECT_EQ(grown.id_count(), count);
+                ASSERT_EQ(draw_words(grown.stream({}), 64), direct)
+                    << "seed " << seed << ", " << count << " ids extended from " << split;
+            }
+        }
+    }
+}
+
+TEST(StreamPrefix, InitializerListOverloadsMatchDirect) {
+    const StreamPrefix batch(42, {1, 2, 3});
+    EXPECT_EQ(draw_words(batch.stream({4, 5}), 64),
+              draw_words(RandomStream(42, {1, 2, 3, 4, 5}), 64));
+    EXPECT_EQ(draw_words(batch.stream({4, 5, 6}), 64),
+              draw_words(RandomStream(42, {1, 2, 3, 4, 5, 6}), 64));
+    EXPECT_EQ(draw_words(batch.stream({}), 64), draw_words(RandomStream(42, {1, 2, 3}), 64));
+    EXPECT_EQ(draw_words(StreamPrefix(0, {}).stream({}), 4), draw_words(RandomStream(0, {}), 4));
+}
+
+TEST(StreamPrefix, FinalMixTakesTheTotalIdCount) {
+    // A prefix of 2 ids plus 1 more is the 3-id stream, not the 2-id one: the final mix takes
+    // the total count, not the count of either part.
+    const StreamPrefix two(7, {10, 20});
+    const auto three_ids = draw_words(two.stream({30}), 16);
+    EXPECT_EQ(three_ids, draw_words(RandomStream(7, {10, 20, 30}), 16));
+    EXPECT_NE(three_ids, draw_words(RandomStream(7, {10, 20}), 16));
+    EXPECT_NE(draw_words(two.stream({}), 16), draw_words(StreamPrefix(7, {10}).stream({}), 16));
+    // A trailing 0 id still counts: {10, 20} and {10, 20, 0} differ.
+    EXPECT_NE(draw_words(two.stream({}), 16), draw_words(two.stream({0}), 16));
+    EXPECT_NE(draw_words(two.stream({}), 16), draw_words(two.extended(0).stream({}), 16));
+}
+
+TEST(StreamPrefix, SharedPrefixGivesDistinctStreams) {
+    // One prefix, many streams: each keyed by its own rest, the prefix itself unchanged.
+    const StreamPrefix batch(2024, {3, 1, 4});
+    const auto first = draw_words(batch.stream({0, 0}), 8);
+    EXPECT_NE(first, draw_words(batch.stream({0, 1}), 8));
+    EXPECT_NE(first, draw_words(batch.stream({1, 0}), 8));
+    EXPECT_EQ(first, draw_words(batch.stream({0, 0}), 8));
+    EXPECT_EQ(batch.id_count(), 3u);
 }
 
 TEST(RandomStream, NextU64CombinesTwoWordsLowFirst) {

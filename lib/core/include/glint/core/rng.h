@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // Deterministic counter-based random numbers: the Philox4x32-10 block function (Salmon et al.,
 // "Parallel random numbers: as easy as 1, 2, 3", SC 2011) and RandomStream, a stream keyed
-// by (seed, stream ids) that gives the same sequence on every platform and thread layout.
+// by (seed, stream ids) that gives the same sequence on every platform and thread layout, and
+// StreamPrefix, which keys many streams that share their leading ids with less hashing.
 // All distributions (uniform, normal, Poisson) are implemented here; std::*_distribution is
 // never used because its output differs between standard libraries. See docs/physics.md.
 #pragma once
@@ -27,6 +28,9 @@ PhiloxCounter philox4x32_10(PhiloxCounter counter, PhiloxKey key) noexcept;
 /// and the high 64 bits of the counter (128 bits of identity); the low 64 bits of the counter
 /// number the 128-bit blocks drawn. Equal (seed, ids) give equal sequences everywhere;
 /// different seeds, ids, id counts or id orders give independent streams.
+///
+/// Streams that share leading ids (e.g. one per sample of a batch) are keyed more cheaply
+/// through StreamPrefix, which gives the same streams.
 ///
 /// Integer and uniform draws are bit-exact on every platform. normal() and poisson() also
 /// call log/exp/sqrt/sin/cos, so they are exact wherever the C library's results agree
@@ -82,6 +86,12 @@ public:
     void blocks_at(std::span<const std::uint64_t> word_indices, std::span<PhiloxCounter> out) const;
 
 private:
+    friend class StreamPrefix;
+
+    /// A stream with an already mixed identity (what StreamPrefix computes).
+    RandomStream(PhiloxKey key, std::uint64_t counter_high) noexcept
+        : m_key(key), m_counter_high(counter_high) {}
+
     void refill();
 
     PhiloxKey m_key{};
@@ -90,6 +100,37 @@ private:
     PhiloxCounter m_buffer{};          ///< output of block (m_position - 1) / 4
     bool m_has_spare_normal = false;
     double m_spare_normal = 0.0;
+};
+
+/// The identity chains of RandomStream run over (seed, leading ids), kept so that many
+/// streams sharing those ids can be keyed by hashing only the ids that differ (e.g.
+/// {plugin, task, capture} once per batch, then {problem, sample} per stream). The streams
+/// are identical, bit for bit, to the ones the RandomStream constructor gives:
+/// StreamPrefix(seed, {a, b}).stream({c, d}) is RandomStream(seed, {a, b, c, d}), and
+/// StreamPrefix(seed, {a}).extended(b).stream({}) is RandomStream(seed, {a, b}).
+/// A small value (three words); copy it freely between threads.
+class StreamPrefix {
+public:
+    /// The chains over `seed` and the ordered `leading_ids`.
+    StreamPrefix(std::uint64_t seed, std::initializer_list<std::uint64_t> leading_ids) noexcept;
+    /// The chains over `seed` and the ordered `leading_ids`.
+    StreamPrefix(std::uint64_t seed, std::span<const std::uint64_t> leading_ids) noexcept;
+
+    /// This prefix with `id` appended to its ids.
+    StreamPrefix extended(std::uint64_t id) const noexcept;
+
+    /// The stream keyed by the seed and the prefix's ids followed by the ordered `rest`.
+    RandomStream stream(std::initializer_list<std::uint64_t> rest) const noexcept;
+    /// The stream keyed by the seed and the prefix's ids followed by the ordered `rest`.
+    RandomStream stream(std::span<const std::uint64_t> rest) const noexcept;
+
+    /// How many ids the prefix holds.
+    std::uint64_t id_count() const noexcept { return m_id_count; }
+
+private:
+    std::uint64_t m_key_chain = 0;      ///< the key chain's state after the ids so far
+    std::uint64_t m_counter_chain = 0;  ///< the counter chain's state after the ids so far
+    std::uint64_t m_id_count = 0;       ///< ids so far; the final mix takes the total count
 };
 
 }  // namespace glint
