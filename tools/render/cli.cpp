@@ -67,6 +67,19 @@ void RenderCli::configure(CLI::App& app) {
                    "earlier)")
         ->type_name("N")
         ->capture_default_str();
+    app.add_option("--spectral-samples", m_options.render.tracer.spectral_samples,
+                   "Wavelengths each path follows: 0 follows every band; K >= 2 follows the "
+                   "reference band and K-1 others drawn per path, weighted to stay unbiased "
+                   "(faster per path on many bands, noisier per band)")
+        ->type_name("K")
+        ->check(CLI::Validator(
+            [](const std::string& text) -> std::string {
+                return text == "1" ? "1 wavelength per path cannot be drawn: use 0 (every "
+                                     "band) or at least 2 (the reference band and one more)"
+                                   : "";
+            },
+            ""))
+        ->capture_default_str();
     app.add_option("--isa", m_isa, "Embree ISA: sse2, sse4.2, avx, avx2 or avx512 (default: best)")
         ->type_name("ISA");
     app.add_option("--log-info-filename,--log_info_filename", m_options.render.log_info_file,

@@ -199,6 +199,28 @@ Vec3 Environment::sun_direction(double time_s) const noexcept {
     return normalized(m_sun_begin * (1.0 - f) + m_sun_end * f);
 }
 
+Environment::PathLookup Environment::path_lookup(const Vec3& to_sensor,
+                                                 double time_s) const noexcept {
+    const SensorPathTables& tables = *m_paths;
+    const auto [z0, fz] = locate(zenith_deg(to_sensor), kViewZenithStepDeg, tables.zenith_nodes);
+    double relative = std::fabs(azimuth_deg(to_sensor) - azimuth_deg(sun_direction(time_s)));
+    if (relative > 180.0) relative = 360.0 - relative;
+    const auto [a0, fa] = locate(relative, kAzimuthStepDeg, tables.azimuth_nodes);
+    PathLookup l;
+    l.t0 = tables.transmittance.data() + z0 * m_bands;
+    l.t1 = l.t0 + m_bands;
+    l.p00 = tables.path_radiance.data() + (z0 * tables.azimuth_nodes + a0) * m_bands;
+    l.p01 = l.p00 + m_bands;
+    l.p10 = l.p00 + tables.azimuth_nodes * m_bands;
+    l.p11 = l.p10 + m_bands;
+    l.fz = fz;
+    l.w00 = (1.0 - fz) * (1.0 - fa);
+    l.w01 = (1.0 - fz) * fa;
+    l.w10 = fz * (1.0 - fa);
+    l.w11 = fz * fa;
+    return l;
+}
+
 void Environment::sensor_path(const Vec3& to_sensor, double time_s, std::span<double> transmittance,
                               std::span<double> path_radiance) const noexcept {
     if (!has_sensor_path()) {
@@ -206,24 +228,25 @@ void Environment::sensor_path(const Vec3& to_sensor, double time_s, std::span<do
         std::fill(path_radiance.begin(), path_radiance.end(), 0.0);
         return;
     }
-    const SensorPathTables& tables = *m_paths;
-    const auto [z0, fz] = locate(zenith_deg(to_sensor), kViewZenithStepDeg, tables.zenith_nodes);
-    double relative = std::fabs(azimuth_deg(to_sensor) - azimuth_deg(sun_direction(time_s)));
-    if (relative > 180.0) relative = 360.0 - relative;
-    const auto [a0, fa] = locate(relative, kAzimuthStepDeg, tables.azimuth_nodes);
-    const double* t0 = tables.transmittance.data() + z0 * m_bands;
-    const double* t1 = t0 + m_bands;
-    const double* p00 = tables.path_radiance.data() + (z0 * tables.azimuth_nodes + a0) * m_bands;
-    const double* p01 = p00 + m_bands;
-    const double* p10 = p00 + tables.azimuth_nodes * m_bands;
-    const double* p11 = p10 + m_bands;
-    const double w00 = (1.0 - fz) * (1.0 - fa);
-    const double w01 = (1.0 - fz) * fa;
-    const double w10 = fz * (1.0 - fa);
-    const double w11 = fz * fa;
+    const PathLookup l = path_lookup(to_sensor, time_s);
     for (std::size_t b = 0; b < m_bands; ++b) {
-        transmittance[b] = (1.0 - fz) * t0[b] + fz * t1[b];
-        path_radiance[b] = w00 * p00[b] + w01 * p01[b] + w10 * p10[b] + w11 * p11[b];
+        transmittance[b] = l.transmittance(b);
+        path_radiance[b] = l.path_radiance(b);
+    }
+}
+
+void Environment::sensor_path_at(const Vec3& to_sensor, double time_s,
+                                 std::span<const std::uint32_t> bands,
+                                 std::span<double> transmittance,
+                                 std::span<double> path_radiance) const noexcept {
+    if (!has_sensor_path()) {
+        sensor_path(to_sensor, time_s, transmittance, path_radiance);  // 1 and 0
+        return;
+    }
+    const PathLookup l = path_lookup(to_sensor, time_s);
+    for (std::size_t j = 0; j < bands.size(); ++j) {
+        transmittance[j] = l.transmittance(bands[j]);
+        path_radiance[j] = l.path_radiance(bands[j]);
     }
 }
 

@@ -15,34 +15,76 @@ namespace {
 /// The largest max_bounces accepted (a guard against a typo turning into a hang).
 constexpr unsigned kMaxBouncesLimit = 10'000;
 
+/// The bands a path follows, as indices into the environment's grid: a contiguous range (the
+/// whole spectrum of the tracer) ...
+struct RangeBands {
+    std::size_t first = 0;
+    std::size_t count = 0;
+    std::size_t size() const noexcept { return count; }
+    std::size_t operator[](std::size_t j) const noexcept { return first + j; }
+};
+
+/// ... or a list of them (the wavelengths one path samples, spectral_samples > 0).
+struct ListBands {
+    std::span<const std::uint32_t> list;
+    std::size_t size() const noexcept { return list.size(); }
+    std::size_t operator[](std::size_t j) const noexcept { return list[j]; }
+};
+
 /// One surface vertex's contribution: L += β ⊙ (emission + ρ ⊙ E_sun · sun_factor), any of
-/// the two terms switched off by a null pointer.
-void add_vertex_light(std::span<double> radiance, std::span<const double> throughput,
-                      const double* emission, const double* reflectance, const double* sun,
-                      double sun_factor) {
+/// the two terms switched off by a null pointer (spectra indexed by grid band).
+template <typename Bands>
+void add_vertex_light(const Bands& bands, std::span<double> radiance,
+                      std::span<const double> throughput, const double* emission,
+                      const double* reflectance, const double* sun, double sun_factor) {
     const std::size_t n = radiance.size();
     if (emission != nullptr && sun != nullptr) {
-        for (std::size_t b = 0; b < n; ++b) {
-            radiance[b] += throughput[b] * (emission[b] + reflectance[b] * sun[b] * sun_factor);
+        for (std::size_t j = 0; j < n; ++j) {
+            const std::size_t b = bands[j];
+            radiance[j] += throughput[j] * (emission[b] + reflectance[b] * sun[b] * sun_factor);
         }
     } else if (emission != nullptr) {
-        for (std::size_t b = 0; b < n; ++b) radiance[b] += throughput[b] * emission[b];
+        for (std::size_t j = 0; j < n; ++j) radiance[j] += throughput[j] * emission[bands[j]];
     } else if (sun != nullptr) {
-        for (std::size_t b = 0; b < n; ++b) {
-            radiance[b] += throughput[b] * reflectance[b] * sun[b] * sun_factor;
+        for (std::size_t j = 0; j < n; ++j) {
+            const std::size_t b = bands[j];
+            radiance[j] += throughput[j] * reflectance[b] * sun[b] * sun_factor;
         }
     }
 }
 
 /// β ← β ⊙ ρ · weight; returns max β.
-double scale_throughput(std::span<double> throughput, std::span<const double> reflectance,
+template <typename Bands>
+double scale_throughput(const Bands& bands, std::span<double> throughput, const double* reflectance,
                         double weight) {
     double largest = 0.0;
-    for (std::size_t b = 0; b < throughput.size(); ++b) {
-        throughput[b] *= reflectance[b] * weight;
-        largest = std::max(largest, throughput[b]);
+    for (std::size_t j = 0; j < throughput.size(); ++j) {
+        throughput[j] *= reflectance[bands[j]] * weight;
+        largest = std::max(largest, throughput[j]);
     }
     return largest;
+}
+
+/// L ← T_v ⊙ L + L_p for the primary ray's direction.
+void apply_sensor_path(const Environment& env, const RangeBands& bands, const Vec3& to_sensor,
+                       double time_s, PathScratch& scratch, std::span<double> radiance) {
+    env.sensor_path(to_sensor, time_s, scratch.sensor_transmittance, scratch.path_radiance);
+    const double* transmittance = scratch.sensor_transmittance.data() + bands.first;
+    const double* path = scratch.path_radiance.data() + bands.first;
+    for (std::size_t b = 0; b < radiance.size(); ++b) {
+        radiance[b] = transmittance[b] * radiance[b] + path[b];
+    }
+}
+
+void apply_sensor_path(const Environment& env, const ListBands& bands, const Vec3& to_sensor,
+                       double time_s, PathScratch& scratch, std::span<double> radiance) {
+    const std::span<double> transmittance =
+        std::span<double>(scratch.sensor_transmittance).first(bands.size());
+    const std::span<double> path = std::span<double>(scratch.path_radiance).first(bands.size());
+    env.sensor_path_at(to_sensor, time_s, bands.list, transmittance, path);
+    for (std::size_t j = 0; j < radiance.size(); ++j) {
+        radiance[j] = transmittance[j] * radiance[j] + path[j];
+    }
 }
 
 }  // namespace
@@ -76,18 +118,23 @@ PathTracer::PathTracer(const scene::GeometryScene& scene, const MaterialTable& m
         throw input_error("the materials have " + std::to_string(materials.bands()) +
                           " bands and the environment " + std::to_string(environment.bands()));
     }
+    if (settings.spectral_samples == 1) {
+        throw usage_error(
+            "1 spectral sample per path cannot be drawn: use 0 (every band) or at least 2 (the "
+            "reference band and one more)");
+    }
     if (settings.max_bounces > kMaxBouncesLimit) {
         throw usage_error("max bounces " + std::to_string(settings.max_bounces) +
                           " exceeds the limit of " + std::to_string(kMaxBouncesLimit));
     }
 }
 
-void PathTracer::add_point_lights(const scene::RayHit& hit, const Vec3& normal,
+template <typename Bands>
+void PathTracer::add_point_lights(const Bands& bands, const scene::RayHit& hit, const Vec3& normal,
                                   const Vec3& wo_local, const Frame& frame, std::size_t material,
                                   double time_s, std::span<const double> beta,
                                   std::span<double> radiance, PathScratch& scratch) const {
-    const std::size_t first = m_range.first;
-    const auto rho = m_materials.reflectance(material).subspan(first, m_range.count);
+    const double* rho = m_materials.reflectance(material).data();
     for (std::size_t l = 0; l < m_lights->size(); ++l) {
         const Vec3 to_light = m_lights->position_m(l) - hit.position_m;
         const double r2_m2 = dot(to_light, to_light);
@@ -101,24 +148,26 @@ void PathTracer::add_point_lights(const scene::RayHit& hit, const Vec3& normal,
             continue;
         }
         // I cos θ / r², m² → cm² (10⁴), times the lobe's BRDF.
-        const double factor = m_materials.shape(material).eval(wo_local, frame.to_local(wi)) *
-                              cos_i / (r2_m2 * 1e4);
-        const auto intensity = m_lights->intensity_w_per_sr_um(l).subspan(first, m_range.count);
-        for (std::size_t b = 0; b < radiance.size(); ++b) {
-            radiance[b] += beta[b] * rho[b] * intensity[b] * factor;
+        const double factor =
+            m_materials.shape(material).eval(wo_local, frame.to_local(wi)) * cos_i / (r2_m2 * 1e4);
+        const double* intensity = m_lights->intensity_w_per_sr_um(l).data();
+        for (std::size_t j = 0; j < radiance.size(); ++j) {
+            const std::size_t b = bands[j];
+            radiance[j] += beta[j] * rho[b] * intensity[b] * factor;
         }
     }
 }
 
-void PathTracer::trace(const SampleRay& ray, RandomStream& rng, PathScratch& scratch,
-                       std::span<double> radiance, FirstHit* first_hit) const {
+template <typename Bands>
+void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStream& rng,
+                            PathScratch& scratch, std::span<double> radiance,
+                            FirstHit* first_hit) const {
     const Environment& env = m_environment;
-    const std::size_t first = m_range.first;
-    const std::size_t count = m_range.count;
+    const std::size_t count = bands.size();
     std::fill(radiance.begin(), radiance.end(), 0.0);
     std::span<double> beta = std::span<double>(scratch.throughput).first(count);
     std::fill(beta.begin(), beta.end(), 1.0);
-    const std::span<const double> sky = env.sky_radiance_w_per_cm2_sr_um().subspan(first, count);
+    const double* sky = env.sky_radiance_w_per_cm2_sr_um().data();
     const double time = ray.time_s;
 
     std::optional<scene::RayHit> hit = m_scene.intersect(ray.origin_m, ray.direction, time);
@@ -126,7 +175,7 @@ void PathTracer::trace(const SampleRay& ray, RandomStream& rng, PathScratch& scr
     if (first_hit != nullptr) first_hit->hit = hit.has_value();
     if (!hit) {
         if (ray.direction.z > 0.0 && !env.sky_black()) {
-            std::copy(sky.begin(), sky.end(), radiance.begin());
+            for (std::size_t j = 0; j < count; ++j) radiance[j] = sky[bands[j]];
         }
         return;
     }
@@ -137,11 +186,11 @@ void PathTracer::trace(const SampleRay& ray, RandomStream& rng, PathScratch& scr
         const Vec3 wo = -direction;
         const Vec3 normal = dot(hit->normal, wo) < 0.0 ? -hit->normal : hit->normal;
         const bool reflects = m_materials.reflects(m);
-        const auto rho = m_materials.reflectance(m).subspan(first, count);
+        const double* rho = m_materials.reflectance(m).data();
 
         // Emission and the sun by next-event estimation.
         const double* emission =
-            m_materials.emits(m) ? m_materials.emission_w_per_cm2_sr_um(m).data() + first : nullptr;
+            m_materials.emits(m) ? m_materials.emission_w_per_cm2_sr_um(m).data() : nullptr;
         double sun_factor = 0.0;
         const Frame frame = Frame::from_normal(normal);
         const Vec3 wo_local = frame.to_local(wo);
@@ -171,12 +220,12 @@ void PathTracer::trace(const SampleRay& ray, RandomStream& rng, PathScratch& scr
             record->instance = hit->instance;
             record->sun_blocked = sun_blocked;
         }
-        add_vertex_light(
-            radiance, beta, emission, rho.data(),
-            sun_factor > 0.0 ? env.sun_irradiance_w_per_cm2_um().data() + first : nullptr,
-            sun_factor);
+        add_vertex_light(bands, radiance, beta, emission, rho,
+                         sun_factor > 0.0 ? env.sun_irradiance_w_per_cm2_um().data() : nullptr,
+                         sun_factor);
         if (m_lights != nullptr && reflects && wo_local.z > 0.0) {
-            add_point_lights(*hit, normal, wo_local, frame, m, time, beta, radiance, scratch);
+            add_point_lights(bands, *hit, normal, wo_local, frame, m, time, beta, radiance,
+                             scratch);
         }
 
         // Continue the path.
@@ -187,7 +236,7 @@ void PathTracer::trace(const SampleRay& ray, RandomStream& rng, PathScratch& scr
         const auto sample = m_materials.shape(m).sample(wo_local, u_lobe, u1, u2);
         if (!sample || !(sample->weight > 0.0)) break;
         const Vec3 wi = normalized(frame.to_world(sample->wi));
-        const double largest = scale_throughput(beta, rho, sample->weight);
+        const double largest = scale_throughput(bands, beta, rho, sample->weight);
         if (!(largest > 0.0)) break;
         if (bounce + 1 >= m_settings.roulette_start_bounce) {
             const double survive = std::min(1.0, largest);
@@ -201,7 +250,7 @@ void PathTracer::trace(const SampleRay& ray, RandomStream& rng, PathScratch& scr
         ++scratch.rays;
         if (!hit) {
             if (wi.z > 0.0 && !env.sky_black()) {
-                for (std::size_t b = 0; b < radiance.size(); ++b) radiance[b] += beta[b] * sky[b];
+                for (std::size_t j = 0; j < count; ++j) radiance[j] += beta[j] * sky[bands[j]];
             }
             break;
         }
@@ -209,13 +258,24 @@ void PathTracer::trace(const SampleRay& ray, RandomStream& rng, PathScratch& scr
     }
 
     if (env.has_sensor_path()) {
-        env.sensor_path(-ray.direction, time, scratch.sensor_transmittance, scratch.path_radiance);
-        const double* transmittance = scratch.sensor_transmittance.data() + first;
-        const double* path = scratch.path_radiance.data() + first;
-        for (std::size_t b = 0; b < radiance.size(); ++b) {
-            radiance[b] = transmittance[b] * radiance[b] + path[b];
-        }
+        apply_sensor_path(env, bands, -ray.direction, time, scratch, radiance);
     }
+}
+
+void PathTracer::trace(const SampleRay& ray, RandomStream& rng, PathScratch& scratch,
+                       std::span<double> radiance, FirstHit* first_hit) const {
+    trace_path(RangeBands{m_range.first, m_range.count}, ray, rng, scratch, radiance, first_hit);
+}
+
+void PathTracer::trace_bands(const SampleRay& ray, RandomStream& rng, PathScratch& scratch,
+                             std::span<const std::uint32_t> bands, std::span<double> radiance,
+                             FirstHit* first_hit) const {
+    if (bands.size() != radiance.size() || bands.empty() ||
+        bands.size() > scratch.throughput.size()) {
+        throw internal_error("trace_bands: " + std::to_string(bands.size()) + " bands for " +
+                             std::to_string(radiance.size()) + " values");
+    }
+    trace_path(ListBands{bands}, ray, rng, scratch, radiance, first_hit);
 }
 
 }  // namespace glint::radiometry

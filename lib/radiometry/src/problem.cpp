@@ -16,9 +16,15 @@
 
 #include "glint/core/error.h"
 #include "glint/core/text.h"
+#include "glint/radiometry/spectral_draw.h"
 
 namespace glint::radiometry {
 namespace {
+
+/// φ − 1, the golden ratio's fractional part: the step of the samples' spectral offsets.
+constexpr double kGoldenRatioConjugate = 0.6180339887498948482;
+/// The last stream id of a problem's spectral offset stream (no sample has this index).
+constexpr std::uint64_t kSpectralDrawId = 0x5350454354524100ull;
 
 /// Per-thread buffers of the convergence loop (the "arena" of one worker).
 struct Workspace {
@@ -28,7 +34,12 @@ struct Workspace {
           sum(tracer.bands()),
           radiance(tracer.bands()),
           recorder(batch.observer != nullptr ? batch.observer->make_recorder() : nullptr),
-          wants_first_hit(batch.observer != nullptr && batch.observer->wants_first_hit()) {}
+          wants_first_hit(batch.observer != nullptr && batch.observer->wants_first_hit()),
+          draw(tracer.range().first, tracer.range().count, batch.reference_band,
+               tracer.settings().spectral_samples),
+          grid_bands(draw.active() ? draw.size() : 0),
+          bands(grid_bands.size()),
+          values(grid_bands.size()) {}
     PathScratch path;
     std::vector<double> sample;    ///< one sample's radiance
     std::vector<double> sum;       ///< Σ w L per band
@@ -36,7 +47,47 @@ struct Workspace {
     std::unique_ptr<SampleRecorder> recorder;
     bool wants_first_hit = false;
     FirstHit first_hit;
+    SpectralDraw draw;                      ///< the wavelengths of a path (spectral sampling)
+    std::vector<std::uint32_t> grid_bands;  ///< a path's drawn bands, grid indices
+    std::vector<std::uint32_t> bands;       ///< the same, relative to the tracer's range
+    std::vector<double> values;             ///< the path's radiance at them
+    /// Spectral sampling: the bands of `sum` the problem's samples reached so far (each once,
+    /// flagged in `reached`); the others are still 0.
+    std::vector<std::uint32_t> touched;
+    std::vector<std::uint8_t> reached = std::vector<std::uint8_t>(draw.active() ? sum.size() : 0);
 };
+
+/// Traces one sample into ws.sum (weighted by `weight`) and returns its radiance at the
+/// reference band; hands it to the recorder, if any, as a whole spectrum.
+double trace_sample(const PathTracer& tracer, const SampleRay& ray, RandomStream& rng,
+                    std::size_t reference_band, double spectral_u, Workspace& ws) {
+    FirstHit* first_hit = ws.wants_first_hit ? &ws.first_hit : nullptr;
+    if (!ws.draw.active()) {
+        tracer.trace(ray, rng, ws.path, ws.sample, first_hit);
+        if (ws.recorder) ws.recorder->add(ray, ws.sample, first_hit);
+        for (std::size_t b = 0; b < ws.sum.size(); ++b) ws.sum[b] += ray.weight * ws.sample[b];
+        return ws.sample[reference_band];
+    }
+    // Spectral sampling: the reference band (weight 1), then the drawn ones.
+    ws.draw.draw(spectral_u, ws.grid_bands, ws.bands);
+    tracer.trace_bands(ray, rng, ws.path, ws.grid_bands, ws.values, first_hit);
+    const double drawn = ws.draw.weight();
+    for (std::size_t j = 1; j < ws.values.size(); ++j) ws.values[j] *= drawn;
+    for (std::size_t j = 0; j < ws.values.size(); ++j) {
+        const std::uint32_t b = ws.bands[j];
+        ws.sum[b] += ray.weight * ws.values[j];
+        if (ws.reached[b] == 0) {
+            ws.reached[b] = 1;
+            ws.touched.push_back(b);
+        }
+    }
+    if (ws.recorder) {
+        std::fill(ws.sample.begin(), ws.sample.end(), 0.0);
+        for (std::size_t j = 0; j < ws.values.size(); ++j) ws.sample[ws.bands[j]] = ws.values[j];
+        ws.recorder->add(ray, ws.sample, first_hit);
+    }
+    return ws.values[0];
+}
 
 void check_batch(const PathTracer& tracer, const ProblemBatch& batch) {
     const Convergence& c = batch.convergence;
@@ -81,37 +132,61 @@ std::pair<std::uint64_t, double> solve_into(const PathTracer& tracer, const Prob
                                             std::span<double> radiance) {
     const Convergence c = effective_convergence(batch, problem);
     const StreamKey& k = batch.key;
-    std::fill(ws.sum.begin(), ws.sum.end(), 0.0);
+    if (!ws.draw.active()) std::fill(ws.sum.begin(), ws.sum.end(), 0.0);  // else kept at 0
     double weight_sum = 0.0;
     double weight_sq_sum = 0.0;
     WeightedMoments reference;  // at the reference band
     std::uint64_t n = 0;
     if (ws.recorder) ws.recorder->begin(problem);
+    // The samples' streams share (seed, plugin, task, capture, problem): keyed once here,
+    // each stream is the one sample_stream() gives.
+    const StreamPrefix pixel =
+        StreamPrefix(k.seed, {k.plugin, k.task, k.capture}).extended(problem);
+    // Spectral sampling: sample n's wavelengths come from u_n = (u_0 + n φ) mod 1, u_0 drawn
+    // once per problem: each u_n is uniform (so each band is drawn with its probability), and
+    // successive samples cover the spectrum evenly instead of at random.
+    double spectral_u = 0.0;
+    if (ws.draw.active()) {
+        RandomStream start = k.spectral_state ? pixel.stream({kSpectralDrawId, *k.spectral_state})
+                                              : pixel.stream({kSpectralDrawId});
+        spectral_u = start.uniform();
+    }
     while (n < c.max_samples) {
-        RandomStream rng = sample_stream(k, problem, n);
+        RandomStream rng =
+            k.spectral_state ? pixel.stream({n, *k.spectral_state}) : pixel.stream({n});
         const SampleRay ray = batch.source->generate(problem, n, rng);
         if (!(ray.weight > 0.0) || !std::isfinite(ray.weight)) {
             throw input_error("sample " + std::to_string(n) + " of problem " +
                               std::to_string(problem) + " has weight " +
                               format_shortest(ray.weight) + "; weights must be finite and > 0");
         }
-        tracer.trace(ray, rng, ws.path, ws.sample, ws.wants_first_hit ? &ws.first_hit : nullptr);
-        if (ws.recorder) {
-            ws.recorder->add(ray, ws.sample, ws.wants_first_hit ? &ws.first_hit : nullptr);
-        }
-        for (std::size_t b = 0; b < ws.sum.size(); ++b) ws.sum[b] += ray.weight * ws.sample[b];
+        const double at_reference =
+            trace_sample(tracer, ray, rng, batch.reference_band, spectral_u, ws);
+        spectral_u += kGoldenRatioConjugate;
+        if (spectral_u >= 1.0) spectral_u -= 1.0;
         ++n;
         const double previous = reference.mean;
         weight_sum += ray.weight;
         weight_sq_sum += ray.weight * ray.weight;
-        reference.add(ws.sample[batch.reference_band], ray.weight, weight_sum);
+        reference.add(at_reference, ray.weight, weight_sum);
         if (n >= 2 && n >= c.min_samples && c.threshold_w_per_cm2_sr_um > 0.0 &&
             std::fabs(reference.mean - previous) < c.threshold_w_per_cm2_sr_um) {
             break;
         }
     }
     if (ws.recorder) ws.recorder->end(problem, n);
-    for (std::size_t b = 0; b < radiance.size(); ++b) radiance[b] = ws.sum[b] / weight_sum;
+    if (ws.draw.active()) {
+        // Only the reached bands are not 0 (0 / Σw is 0): divided, and their sums reset.
+        std::fill(radiance.begin(), radiance.end(), 0.0);
+        for (const std::uint32_t b : ws.touched) {
+            radiance[b] = ws.sum[b] / weight_sum;
+            ws.sum[b] = 0.0;
+            ws.reached[b] = 0;
+        }
+        ws.touched.clear();
+    } else {
+        for (std::size_t b = 0; b < radiance.size(); ++b) radiance[b] = ws.sum[b] / weight_sum;
+    }
     return {n, reference.standard_error(weight_sum, weight_sq_sum)};
 }
 

@@ -242,10 +242,13 @@ void OutputUnits::apply(std::span<const double> radiance_w_per_cm2_sr_um,
     }
     // Band by band into every channel it feeds: each channel's sum takes its bands in band
     // order, as a loop over the channel's bands would (the same bits), but the channels'
-    // additions do not wait for one another. Zero weights add nothing and are skipped.
+    // additions do not wait for one another. Zero weights and zero radiances add nothing
+    // (a finite sum plus ±0 is itself) and are skipped: a spectrally sampled pixel has few
+    // bands that are not zero.
     std::fill(out.begin(), out.end(), 0.0);
     for (std::size_t b = 0; b < m_bands; ++b) {
         const double radiance = radiance_w_per_cm2_sr_um[b];
+        if (radiance == 0.0) continue;
         for (std::size_t j = m_band_start[b]; j < m_band_start[b + 1]; ++j) {
             out[m_band_channel[j]] += m_band_weight[j] * radiance;
         }

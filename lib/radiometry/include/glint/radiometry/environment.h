@@ -16,6 +16,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <span>
@@ -127,7 +128,32 @@ public:
     void sensor_path(const Vec3& to_sensor, double time_s, std::span<double> transmittance,
                      std::span<double> path_radiance_w_per_cm2_sr_um) const noexcept;
 
+    /// sensor_path() at the bands `bands` only (indices into the grid): transmittance[j] and
+    /// path_radiance[j] are T_v and L_p at bands[j], the same numbers sensor_path() gives there.
+    void sensor_path_at(const Vec3& to_sensor, double time_s, std::span<const std::uint32_t> bands,
+                        std::span<double> transmittance,
+                        std::span<double> path_radiance_w_per_cm2_sr_um) const noexcept;
+
 private:
+    /// The four table rows around a direction and their bilinear weights.
+    struct PathLookup {
+        const double* t0 = nullptr;
+        const double* t1 = nullptr;
+        const double* p00 = nullptr;
+        const double* p01 = nullptr;
+        const double* p10 = nullptr;
+        const double* p11 = nullptr;
+        double fz = 0.0;
+        double w00 = 0.0, w01 = 0.0, w10 = 0.0, w11 = 0.0;
+        double transmittance(std::size_t b) const noexcept {
+            return (1.0 - fz) * t0[b] + fz * t1[b];
+        }
+        double path_radiance(std::size_t b) const noexcept {
+            return w00 * p00[b] + w01 * p01[b] + w10 * p10[b] + w11 * p11[b];
+        }
+    };
+    PathLookup path_lookup(const Vec3& to_sensor, double time_s) const noexcept;
+
     Environment(const SpectralGrid& grid);
 
     SpectralGrid m_grid;

@@ -61,6 +61,11 @@ struct FirstHit {
 struct TracerSettings {
     unsigned max_bounces = 8;            ///< surface scatterings after the first hit
     unsigned roulette_start_bounce = 3;  ///< Russian roulette from this bounce on
+    /// Wavelengths each path follows (docs/physics.md, "Spectral sampling"): 0, or at least
+    /// the tracer's band count, follows every band (the full-spectrum estimator); K >= 2
+    /// follows the reference band and K - 1 others drawn as a stratified rotation, each
+    /// weighted by the inverse of its chance of being drawn (solve() does the drawing).
+    unsigned spectral_samples = 0;
 };
 
 /// Per-thread scratch space for trace(), sized for the environment's bands.
@@ -79,7 +84,7 @@ class PathTracer {
 public:
     /// The tracer keeps references: the scene, materials and environment must outlive it.
     /// Throws glint::Error (input) when the materials and environment have different band
-    /// counts, or (usage) for max_bounces > 10000.
+    /// counts, or (usage) for max_bounces > 10000 or spectral_samples 1.
     /// `lights`, when given, are the scene's point sources on the environment's grid (kept by
     /// reference too); every surface vertex is lit by each of them as by the sun.
     PathTracer(const scene::GeometryScene& scene, const MaterialTable& materials,
@@ -105,6 +110,16 @@ public:
     /// the first surface hit there.
     void trace(const SampleRay& ray, RandomStream& rng, PathScratch& scratch,
                std::span<double> radiance, FirstHit* first_hit = nullptr) const;
+    /// trace() at the bands `bands` only (indices into the environment's grid, inside
+    /// range(), at most environment().bands() of them): radiance[j] is what trace() would give
+    /// at bands[j] for a path with the same geometry. The path's geometry does not depend on
+    /// the bands but its Russian roulette does (it watches these bands' throughput).
+    /// Throws glint::Error (internal) when the two spans differ in size or are empty.
+    void trace_bands(const SampleRay& ray, RandomStream& rng, PathScratch& scratch,
+                     std::span<const std::uint32_t> bands, std::span<double> radiance,
+                     FirstHit* first_hit = nullptr) const;
+    /// The settings.
+    const TracerSettings& settings() const noexcept { return m_settings; }
 
 private:
     const scene::GeometryScene& m_scene;
@@ -114,10 +129,15 @@ private:
     BandRange m_range;
     const PointLights* m_lights = nullptr;  ///< none or empty: no point source
 
+    /// The path at `bands` (a band range or list, path_tracer.cpp).
+    template <typename Bands>
+    void trace_path(const Bands& bands, const SampleRay& ray, RandomStream& rng,
+                    PathScratch& scratch, std::span<double> radiance, FirstHit* first_hit) const;
     /// Adds the point sources' light reflected at a vertex (next-event estimation).
-    void add_point_lights(const scene::RayHit& hit, const Vec3& normal, const Vec3& wo_local,
-                          const Frame& frame, std::size_t material, double time_s,
-                          std::span<const double> beta, std::span<double> radiance,
+    template <typename Bands>
+    void add_point_lights(const Bands& bands, const scene::RayHit& hit, const Vec3& normal,
+                          const Vec3& wo_local, const Frame& frame, std::size_t material,
+                          double time_s, std::span<const double> beta, std::span<double> radiance,
                           PathScratch& scratch) const;
 };
 
