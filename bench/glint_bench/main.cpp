@@ -42,6 +42,10 @@ int main(int argc, char** argv) {
         app.add_option("--bands", options.bands, "Bands of the ratio and scaling runs")
             ->check(CLI::Range(1u, 4096u))
             ->capture_default_str();
+        app.add_option("--spectral-samples", options.spectral_samples,
+                       "Wavelengths per path of the spectrally sampled band-cost runs")
+            ->check(CLI::Range(2u, 4096u))
+            ->capture_default_str();
         app.add_option("--repeats", options.repeats,
                        "Run every measurement N times; keep the fastest")
             ->check(CLI::Range(1u, 100u))

@@ -21,7 +21,9 @@ struct BenchOptions {
     unsigned samples = 1;        ///< samples per pixel
     /// Pixels per solve() call (a 64 × 64 tile); each call allocates its own result arrays.
     unsigned tile = 4096;
-    unsigned bands = 16;            ///< band count of the ratio and thread-scaling runs
+    unsigned bands = 16;  ///< band count of the ratio and thread-scaling runs
+    /// Wavelengths per path of the spectrally sampled band-cost runs (--spectral-samples).
+    unsigned spectral_samples = 4;
     unsigned repeats = 1;           ///< tracer runs: the fastest of this many
     double min_bare_seconds = 2.0;  ///< bare Embree: passes over the rays for at least this long
     SceneParameters scene;

@@ -56,23 +56,26 @@ radiometry::Environment make_environment(const SpectralGrid& grid) {
 }  // namespace
 
 TracerRig::TracerRig(const model::Scene& scene, const scene::GeometryScene& geometry,
-                     std::size_t bands)
+                     std::size_t bands, radiometry::TracerSettings settings)
     : grid(make_grid(bands)),
       materials(scene.materials, grid),
       environment(make_environment(grid)),
-      tracer(geometry, materials, environment) {}
+      tracer(geometry, materials, environment, settings) {}
 
-TracerTiming time_tracer(const radiometry::PathTracer& tracer, const radiometry::RaySource& source,
-                         std::uint64_t count, std::uint64_t samples, std::uint64_t tile,
-                         const radiometry::StreamKey& key, unsigned threads, unsigned repeats,
-                         const Context& context) {
+namespace {
+
+/// The tile loop of time_tracer and time_reduced: `repeats` runs over problems 0 … count − 1,
+/// `tile` at a time, each tile handed to solve_tile(batch, timing) (which adds its seconds,
+/// rays, paths and hash); returns the fastest run.
+template <typename SolveTile>
+TracerTiming time_tiles(const radiometry::RaySource& source, std::uint64_t count,
+                        std::uint64_t samples, std::uint64_t tile, const radiometry::StreamKey& key,
+                        unsigned repeats, const SolveTile& solve_tile) {
     tile = std::max<std::uint64_t>(1, tile);
     radiometry::ProblemBatch batch;
     batch.key = key;
     batch.source = &source;
     batch.convergence = {samples, samples, 0.0};
-    Context run = context;
-    run.threads = threads;
     TracerTiming best;
     for (unsigned r = 0; r < std::max(1u, repeats); ++r) {
         TracerTiming t;
@@ -80,22 +83,69 @@ TracerTiming time_tracer(const radiometry::PathTracer& tracer, const radiometry:
         for (std::uint64_t first = 0; first < count; first += tile) {
             batch.first_problem = first;
             batch.count = std::min(tile, count - first);
-            const auto start = std::chrono::steady_clock::now();
-            radiometry::Solutions solutions = radiometry::solve(tracer, batch, run);
-            t.seconds +=
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            t.rays += solutions.rays;
-            for (const std::uint64_t n : solutions.samples) t.paths += n;
-            t.radiance_hash = hash_bits(t.radiance_hash, solutions.radiance_w_per_cm2_sr_um);
-            // Freed inside the timed part next time round, as a renderer frees its tiles.
-            const auto release = std::chrono::steady_clock::now();
-            solutions = {};
-            t.seconds +=
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - release).count();
+            solve_tile(batch, t);
         }
         if (r == 0 || t.seconds < best.seconds) best = t;
     }
     return best;
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+TracerTiming time_tracer(const radiometry::PathTracer& tracer, const radiometry::RaySource& source,
+                         std::uint64_t count, std::uint64_t samples, std::uint64_t tile,
+                         const radiometry::StreamKey& key, unsigned threads, unsigned repeats,
+                         const Context& context) {
+    Context run = context;
+    run.threads = threads;
+    return time_tiles(source, count, samples, tile, key, repeats,
+                      [&](const radiometry::ProblemBatch& batch, TracerTiming& t) {
+                          const auto start = std::chrono::steady_clock::now();
+                          radiometry::Solutions solutions = radiometry::solve(tracer, batch, run);
+                          t.seconds += seconds_since(start);
+                          t.rays += solutions.rays;
+                          for (const std::uint64_t n : solutions.samples) t.paths += n;
+                          t.radiance_hash =
+                              hash_bits(t.radiance_hash, solutions.radiance_w_per_cm2_sr_um);
+                          // Freed inside the timed part, as a renderer frees its tiles.
+                          const auto release = std::chrono::steady_clock::now();
+                          solutions = {};
+                          t.seconds += seconds_since(release);
+                      });
+}
+
+TracerTiming time_reduced(const radiometry::PathTracer& tracer, const radiometry::RaySource& source,
+                          std::uint64_t count, std::uint64_t samples, std::uint64_t tile,
+                          const radiometry::StreamKey& key, unsigned threads, unsigned repeats,
+                          const Context& context) {
+    Context run = context;
+    run.threads = threads;
+    std::vector<double> integrated;
+    std::vector<std::uint64_t> taken;
+    return time_tiles(
+        source, count, samples, tile, key, repeats,
+        [&](const radiometry::ProblemBatch& batch, TracerTiming& t) {
+            integrated.assign(batch.count, 0.0);
+            taken.assign(batch.count, 0);
+            const auto start = std::chrono::steady_clock::now();
+            t.rays += radiometry::solve_each(
+                tracer, batch, run,
+                [&](std::uint64_t i, std::span<double> radiance, std::uint64_t n, double) {
+                    double sum = 0.0;
+                    for (const double v : radiance) {
+                        if (v != 0.0) sum += v;  // as OutputUnits::apply skips zero bands
+                    }
+                    integrated[i] = sum;
+                    taken[i] = n;
+                });
+            t.seconds += seconds_since(start);
+            for (const std::uint64_t n : taken) t.paths += n;
+            t.radiance_hash = hash_bits(t.radiance_hash, integrated);
+        });
 }
 
 TracerTiming time_trace_only(const radiometry::PathTracer& tracer,

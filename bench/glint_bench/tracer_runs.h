@@ -22,7 +22,8 @@ namespace glint::bench {
 /// A path tracer of the scene on a grid of `bands` bands (one band: 0.55 µm; more: evenly
 /// spaced over 0.4–2.5 µm). Neither copyable nor movable (the tracer holds references).
 struct TracerRig {
-    TracerRig(const model::Scene& scene, const scene::GeometryScene& geometry, std::size_t bands);
+    TracerRig(const model::Scene& scene, const scene::GeometryScene& geometry, std::size_t bands,
+              radiometry::TracerSettings settings = {});
     TracerRig(const TracerRig&) = delete;
     TracerRig& operator=(const TracerRig&) = delete;
 
@@ -52,6 +53,15 @@ TracerTiming time_tracer(const radiometry::PathTracer& tracer, const radiometry:
                          std::uint64_t count, std::uint64_t samples, std::uint64_t tile,
                          const radiometry::StreamKey& key, unsigned threads, unsigned repeats,
                          const Context& context);
+
+/// Like time_tracer, but the way glint-render solves a capture: solve_each() hands each
+/// pixel's spectrum to a receiver that integrates it into one value (a channel over every
+/// band, as the render reduces spectra to channels) and keeps that alone, so no spectrum of
+/// the image is stored. The radiance hash covers the integrated values.
+TracerTiming time_reduced(const radiometry::PathTracer& tracer, const radiometry::RaySource& source,
+                          std::uint64_t count, std::uint64_t samples, std::uint64_t tile,
+                          const radiometry::StreamKey& key, unsigned threads, unsigned repeats,
+                          const Context& context);
 
 /// Like time_tracer, but calls PathTracer::trace() directly (one RandomStream per sample,
 /// keyed as solve() keys it, so the same paths), keeping no sums and writing no output: the
