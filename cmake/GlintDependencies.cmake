@@ -30,7 +30,6 @@ find_package(tinyxml2 9 CONFIG REQUIRED)
 find_package(nlohmann_json 3.11 CONFIG REQUIRED)
 find_package(TBB CONFIG REQUIRED)
 find_package(Eigen3 3.4 CONFIG REQUIRED)
-find_package(tinyobjloader CONFIG REQUIRED)
 
 list(APPEND CMAKE_MODULE_PATH /usr/share/cmake/geographiclib)
 find_package(GeographicLib REQUIRED)

@@ -67,11 +67,11 @@ set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_HOMEPAGE "https://github.com/glint")
 # The shared libraries the tools link (Debian 12 names; `ldd build/<preset>/bin/glint-*`).
 set(CPACK_DEBIAN_PACKAGE_DEPENDS
-    "libc6, libstdc++6, libgcc-s1, libembree3-3 (>= 3.13), libopenimageio2.4, libyaml-cpp0.7, libtinyxml2-9, libtbb12, libgeographiclib23, libtinyobjloader2rc10")
+    "libc6, libstdc++6, libgcc-s1, libembree3-3 (>= 3.13), libopenimageio2.4, libyaml-cpp0.7, libtinyxml2-9, libtbb12, libgeographiclib23")
 # glint-envi encode runs ffmpeg.
 set(CPACK_DEBIAN_PACKAGE_RECOMMENDS "ffmpeg")
 # Building against the installed CMake package (examples/plugin) needs the -dev packages
 # glintConfig.cmake finds.
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS
-    "cmake, g++, libembree-dev, libopenimageio-dev, libcli11-dev, libyaml-cpp-dev, libtinyxml2-dev, nlohmann-json3-dev, libtbb-dev, libgeographiclib-dev, libtinyobjloader-dev")
+    "cmake, g++, libembree-dev, libopenimageio-dev, libcli11-dev, libyaml-cpp-dev, libtinyxml2-dev, nlohmann-json3-dev, libtbb-dev, libgeographiclib-dev")
 include(CPack)

@@ -14,7 +14,7 @@ packages=(
     # tinyxml2 9, nlohmann_json 3.11, GTest 1.12)
     libembree-dev libopenimageio-dev libcli11-dev libyaml-cpp-dev libtinyxml2-dev
     nlohmann-json3-dev libgtest-dev libgmock-dev libtbb-dev libeigen3-dev
-    libgeographiclib-dev libtinyobjloader-dev zlib1g-dev
+    libgeographiclib-dev zlib1g-dev
     # the tools' man pages (generated from --help; optional: skipped without it)
     help2man
     # programs glint runs and test oracles
