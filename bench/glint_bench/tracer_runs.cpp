@@ -126,26 +126,32 @@ TracerTiming time_reduced(const radiometry::PathTracer& tracer, const radiometry
     run.threads = threads;
     std::vector<double> integrated;
     std::vector<std::uint64_t> taken;
-    return time_tiles(
-        source, count, samples, tile, key, repeats,
-        [&](const radiometry::ProblemBatch& batch, TracerTiming& t) {
-            integrated.assign(batch.count, 0.0);
-            taken.assign(batch.count, 0);
-            const auto start = std::chrono::steady_clock::now();
-            t.rays += radiometry::solve_each(
-                tracer, batch, run,
-                [&](std::uint64_t i, std::span<double> radiance, std::uint64_t n, double) {
-                    double sum = 0.0;
-                    for (const double v : radiance) {
-                        if (v != 0.0) sum += v;  // as OutputUnits::apply skips zero bands
-                    }
-                    integrated[i] = sum;
-                    taken[i] = n;
-                });
-            t.seconds += seconds_since(start);
-            for (const std::uint64_t n : taken) t.paths += n;
-            t.radiance_hash = hash_bits(t.radiance_hash, integrated);
-        });
+    return time_tiles(source, count, samples, tile, key, repeats,
+                      [&](const radiometry::ProblemBatch& batch, TracerTiming& t) {
+                          integrated.assign(batch.count, 0.0);
+                          taken.assign(batch.count, 0);
+                          const auto start = std::chrono::steady_clock::now();
+                          t.rays += radiometry::solve_each(
+                              tracer, batch, run,
+                              [&](std::uint64_t i, std::span<double> radiance,
+                                  std::span<const std::uint32_t> nonzero, std::uint64_t n, double) {
+                                  // As OutputUnits::apply does: the listed bands only, zero bands
+                                  // skipped.
+                                  double sum = 0.0;
+                                  if (nonzero.empty()) {
+                                      for (const double v : radiance) {
+                                          if (v != 0.0) sum += v;
+                                      }
+                                  } else {
+                                      for (const std::uint32_t b : nonzero) sum += radiance[b];
+                                  }
+                                  integrated[i] = sum;
+                                  taken[i] = n;
+                              });
+                          t.seconds += seconds_since(start);
+                          for (const std::uint64_t n : taken) t.paths += n;
+                          t.radiance_hash = hash_bits(t.radiance_hash, integrated);
+                      });
 }
 
 TracerTiming time_trace_only(const radiometry::PathTracer& tracer,

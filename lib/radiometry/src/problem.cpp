@@ -132,7 +132,11 @@ std::pair<std::uint64_t, double> solve_into(const PathTracer& tracer, const Prob
                                             std::span<double> radiance) {
     const Convergence c = effective_convergence(batch, problem);
     const StreamKey& k = batch.key;
-    if (!ws.draw.active()) std::fill(ws.sum.begin(), ws.sum.end(), 0.0);  // else kept at 0
+    if (!ws.draw.active()) {
+        std::fill(ws.sum.begin(), ws.sum.end(), 0.0);
+    } else {
+        ws.touched.clear();  // the sums are kept at 0 between problems
+    }
     double weight_sum = 0.0;
     double weight_sq_sum = 0.0;
     WeightedMoments reference;  // at the reference band
@@ -176,14 +180,15 @@ std::pair<std::uint64_t, double> solve_into(const PathTracer& tracer, const Prob
     }
     if (ws.recorder) ws.recorder->end(problem, n);
     if (ws.draw.active()) {
-        // Only the reached bands are not 0 (0 / Σw is 0): divided, and their sums reset.
+        // Only the reached bands are not 0 (0 / Σw is 0): divided, and their sums reset; the
+        // list stays (ascending) for the receiver until the next problem.
+        std::sort(ws.touched.begin(), ws.touched.end());
         std::fill(radiance.begin(), radiance.end(), 0.0);
         for (const std::uint32_t b : ws.touched) {
             radiance[b] = ws.sum[b] / weight_sum;
             ws.sum[b] = 0.0;
             ws.reached[b] = 0;
         }
-        ws.touched.clear();
     } else {
         for (std::size_t b = 0; b < radiance.size(); ++b) radiance[b] = ws.sum[b] / weight_sum;
     }
@@ -230,7 +235,8 @@ Solution solve(const PathTracer& tracer, const ProblemBatch& batch, std::uint64_
 namespace {
 
 /// The parallel loop of both batch solves: problem i's radiance goes into into(i, ws), and
-/// done(i, radiance, samples, error) is called once it is there (on the solving thread).
+/// done(i, radiance, nonzero bands, samples, error) is called once it is there (on the
+/// solving thread).
 template <typename Into, typename Done>
 std::uint64_t solve_batch(const PathTracer& tracer, const ProblemBatch& batch,
                           const Context& context, const Into& into, const Done& done) {
@@ -243,22 +249,23 @@ std::uint64_t solve_batch(const PathTracer& tracer, const ProblemBatch& batch,
     std::mutex progress_mutex;
     const std::uint64_t report_every = std::max<std::uint64_t>(1, batch.count / 100);
     arena.execute([&] {
-        tbb::parallel_for(tbb::blocked_range<std::uint64_t>(0, batch.count, 16),
-                          [&](const tbb::blocked_range<std::uint64_t>& range) {
-                              Workspace& ws = workspaces.local();
-                              for (std::uint64_t i = range.begin(); i != range.end(); ++i) {
-                                  if (context.cancel.cancelled()) return;
-                                  const std::span<double> radiance = into(i, ws);
-                                  const auto [samples, error] = solve_into(
-                                      tracer, batch, batch.first_problem + i, ws, radiance);
-                                  done(i, radiance, samples, error);
-                                  const std::uint64_t finished = ++finished_count;
-                                  if (finished % report_every == 0) {
-                                      const std::lock_guard lock(progress_mutex);
-                                      context.progress.update("radiance", finished, batch.count);
-                                  }
-                              }
-                          });
+        tbb::parallel_for(
+            tbb::blocked_range<std::uint64_t>(0, batch.count, 16),
+            [&](const tbb::blocked_range<std::uint64_t>& range) {
+                Workspace& ws = workspaces.local();
+                for (std::uint64_t i = range.begin(); i != range.end(); ++i) {
+                    if (context.cancel.cancelled()) return;
+                    const std::span<double> radiance = into(i, ws);
+                    const auto [samples, error] =
+                        solve_into(tracer, batch, batch.first_problem + i, ws, radiance);
+                    done(i, radiance, std::span<const std::uint32_t>(ws.touched), samples, error);
+                    const std::uint64_t finished = ++finished_count;
+                    if (finished % report_every == 0) {
+                        const std::lock_guard lock(progress_mutex);
+                        context.progress.update("radiance", finished, batch.count);
+                    }
+                }
+            });
     });
     context.cancel.throw_if_cancelled();
     std::uint64_t rays = 0;
@@ -283,7 +290,8 @@ Solutions solve(const PathTracer& tracer, const ProblemBatch& batch, const Conte
             return std::span<double>(out.radiance_w_per_cm2_sr_um.data() + i * out.bands,
                                      out.bands);
         },
-        [&](std::uint64_t i, std::span<double>, std::uint64_t samples, double error) {
+        [&](std::uint64_t i, std::span<double>, std::span<const std::uint32_t>,
+            std::uint64_t samples, double error) {
             out.samples[i] = samples;
             out.standard_error_w_per_cm2_sr_um[i] = error;
         });
@@ -295,9 +303,15 @@ std::uint64_t solve_each(const PathTracer& tracer, const ProblemBatch& batch,
     return solve_batch(
         tracer, batch, context,
         [](std::uint64_t, Workspace& ws) { return std::span<double>(ws.radiance); },
-        [&](std::uint64_t i, std::span<double> radiance, std::uint64_t samples, double error) {
-            receive(i, radiance, samples, error);
-        });
+        [&](std::uint64_t i, std::span<double> radiance, std::span<const std::uint32_t>,
+            std::uint64_t samples, double error) { receive(i, radiance, samples, error); });
+}
+
+std::uint64_t solve_each(const PathTracer& tracer, const ProblemBatch& batch,
+                         const Context& context, const SparseSolutionReceiver& receive) {
+    return solve_batch(
+        tracer, batch, context,
+        [](std::uint64_t, Workspace& ws) { return std::span<double>(ws.radiance); }, receive);
 }
 
 }  // namespace glint::radiometry

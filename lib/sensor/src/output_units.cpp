@@ -256,6 +256,31 @@ void OutputUnits::apply(std::span<const double> radiance_w_per_cm2_sr_um,
     for (std::size_t c = 0; c < m_channels; ++c) out[c] += m_bias[c];
 }
 
+void OutputUnits::apply(std::span<const double> radiance_w_per_cm2_sr_um,
+                        std::span<const std::uint32_t> bands, std::span<double> out) const {
+    if (bands.empty()) {
+        apply(radiance_w_per_cm2_sr_um, out);
+        return;
+    }
+    if (radiance_w_per_cm2_sr_um.size() != m_bands || out.size() != m_channels ||
+        bands.back() >= m_bands) {
+        throw internal_error("output units: " + std::to_string(radiance_w_per_cm2_sr_um.size()) +
+                             " radiance bands (listed up to " + std::to_string(bands.back()) +
+                             ") and " + std::to_string(out.size()) + " outputs, expected " +
+                             std::to_string(m_bands) + " and " + std::to_string(m_channels));
+    }
+    // The listed bands in ascending order, as apply() takes the non-zero ones.
+    std::fill(out.begin(), out.end(), 0.0);
+    for (const std::uint32_t b : bands) {
+        const double radiance = radiance_w_per_cm2_sr_um[b];
+        if (radiance == 0.0) continue;
+        for (std::size_t j = m_band_start[b]; j < m_band_start[b + 1]; ++j) {
+            out[m_band_channel[j]] += m_band_weight[j] * radiance;
+        }
+    }
+    for (std::size_t c = 0; c < m_channels; ++c) out[c] += m_bias[c];
+}
+
 void OutputUnits::index_by_band() {
     m_band_start.assign(m_bands + 1, 0);
     for (std::size_t c = 0; c < m_channels; ++c) {

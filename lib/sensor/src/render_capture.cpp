@@ -44,17 +44,23 @@ void log_capture_start(const PlannedCapture& p, const schedule::ClockedFocalPlan
 /// values): every channel for the focal plane's one state, its own channel for a split state.
 /// A masked element's radiance is its mean sensitivity's share (active_area.h). `radiance`
 /// is the solving thread's buffer, scaled in place.
+/// `nonzero`: the bands outside of which `radiance` is 0 (ascending; empty: any band).
 void store_channels(const FocalPlaneState& state, const SpectralState& spectral,
-                    std::span<double> radiance, std::span<double> out) {
+                    std::span<double> radiance, std::span<const std::uint32_t> nonzero,
+                    std::span<double> out) {
     const double share = state.mask ? state.mask->mean_sensitivity() : 1.0;
     if (share != 1.0) {
-        for (double& value : radiance) value *= share;
+        if (nonzero.empty()) {
+            for (double& value : radiance) value *= share;
+        } else {
+            for (const std::uint32_t b : nonzero) radiance[b] *= share;
+        }
     }
     if (spectral.channel) {
         out[*spectral.channel] =
             state.units.channel_value(*spectral.channel, spectral.bands.first, radiance);
     } else {
-        state.units.apply(radiance, out);
+        state.units.apply(radiance, nonzero, out);
     }
 }
 
@@ -188,8 +194,9 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
             // Each pixel is reduced to its channels as soon as it is solved, on its thread.
             stats.rays += radiometry::solve_each(
                 tracers[k], batch, quiet,
-                [&](std::uint64_t i, std::span<double> radiance, std::uint64_t n, double) {
-                    store_channels(state, spectral, radiance,
+                [&](std::uint64_t i, std::span<double> radiance,
+                    std::span<const std::uint32_t> nonzero, std::uint64_t n, double) {
+                    store_channels(state, spectral, radiance, nonzero,
                                    std::span<double>(image).subspan(i * channels, channels));
                     samples[i] += n;
                 });

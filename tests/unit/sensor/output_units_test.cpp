@@ -346,15 +346,20 @@ TEST(OutputUnitsChannels, ApplyIsTheWeightedSumPlusBias) {
     }
 }
 
+/// A tophat channel and a tabulated one with a bias, in W/(cm² sr µm), on `grid`.
+OutputUnits tophat_and_tabulated(const SpectralGrid& grid) {
+    model::Channel tab = tabulated("T", {0.45, 0.5, 0.62, 0.66}, {0.0, 0.7, 1.0, 0.0});
+    tab.bias = 0.5;
+    return OutputUnits(method({shaped(model::ChannelShape::tophat, 0.55, 0.05), tab},
+                              FluxUnits::watts, AreaUnits::cm2, 0.0),
+                       no_aperture(), grid);
+}
+
 TEST(OutputUnitsChannels, ChannelValueFromItsSupportEqualsApply) {
     // A split channel's state traces only the bands its weights cover: support() finds them
     // and channel_value() on them gives apply()'s value.
     const SpectralGrid grid = fine_grid();
-    model::Channel tab = tabulated("T", {0.45, 0.5, 0.62, 0.66}, {0.0, 0.7, 1.0, 0.0});
-    tab.bias = 0.5;
-    const OutputUnits units(method({shaped(model::ChannelShape::tophat, 0.55, 0.05), tab},
-                                   FluxUnits::watts, AreaUnits::cm2, 0.0),
-                            no_aperture(), grid);
+    const OutputUnits units = tophat_and_tabulated(grid);
     std::vector<double> radiance(grid.size());
     for (std::size_t b = 0; b < radiance.size(); ++b) {
         radiance[b] = 1.0 + std::sin(37.0 * grid.wavelengths_um()[b]);
@@ -378,6 +383,30 @@ TEST(OutputUnitsChannels, ChannelValueFromItsSupportEqualsApply) {
         EXPECT_THROW(units.channel_value(c, r.first + 1, part.subspan(1)), Error);
     }
     EXPECT_THROW(units.channel_value(2, 0, radiance), Error);
+}
+
+TEST(OutputUnitsChannels, ListedBandsGiveApplysBits) {
+    // A spectrally sampled pixel is 0 outside the bands its samples reached: apply() over
+    // that list gives apply()'s bits over the whole spectrum; an empty list is every band.
+    const SpectralGrid grid = fine_grid();
+    const OutputUnits units = tophat_and_tabulated(grid);
+    std::vector<double> radiance(grid.size(), 0.0);
+    std::vector<std::uint32_t> listed;
+    for (std::size_t b = 0; b < radiance.size(); b += 3) {
+        radiance[b] = 1.0 + std::sin(37.0 * grid.wavelengths_um()[b]);
+        listed.push_back(static_cast<std::uint32_t>(b));
+    }
+    listed.push_back(static_cast<std::uint32_t>(grid.size() - 1));  // a listed zero band
+    std::vector<double> whole(2), sparse(2), empty(2);
+    units.apply(radiance, whole);
+    units.apply(radiance, listed, sparse);
+    units.apply(radiance, {}, empty);
+    for (std::size_t c = 0; c < 2; ++c) {
+        EXPECT_EQ(sparse[c], whole[c]) << c;
+        EXPECT_EQ(empty[c], whole[c]) << c;
+    }
+    const std::vector<std::uint32_t> beyond{static_cast<std::uint32_t>(grid.size())};
+    EXPECT_THROW(units.apply(radiance, beyond, sparse), Error);
 }
 
 TEST(OutputUnitsRaw, OneBandPerGridSampleInTheFluxAndAreaUnits) {

@@ -166,11 +166,22 @@ using SolutionReceiver =
     std::function<void(std::uint64_t index, std::span<double> radiance_w_per_cm2_sr_um,
                        std::uint64_t samples, double standard_error_w_per_cm2_sr_um)>;
 
+/// SolutionReceiver with the bands that may be non-zero: under spectral sampling
+/// (TracerSettings::spectral_samples) the bands the problem's samples reached, ascending
+/// (radiance is exactly 0 at every other band); empty when every band may be non-zero.
+using SparseSolutionReceiver =
+    std::function<void(std::uint64_t index, std::span<double> radiance_w_per_cm2_sr_um,
+                       std::span<const std::uint32_t> nonzero_bands, std::uint64_t samples,
+                       double standard_error_w_per_cm2_sr_um)>;
+
 /// Solves a batch like solve(tracer, batch, context) — the same numbers for every problem —
 /// but hands each problem to `receive` as soon as it is solved instead of keeping it, so the
 /// memory is the threads' buffers (bands values each), whatever the batch's size. Returns
 /// the rays traced.
 std::uint64_t solve_each(const PathTracer& tracer, const ProblemBatch& batch,
                          const Context& context, const SolutionReceiver& receive);
+/// solve_each() that also says which bands may be non-zero (a receiver can skip the rest).
+std::uint64_t solve_each(const PathTracer& tracer, const ProblemBatch& batch,
+                         const Context& context, const SparseSolutionReceiver& receive);
 
 }  // namespace glint::radiometry

@@ -102,6 +102,10 @@ public:
     /// values; `out` holds channels() values). Allocates nothing; throws glint::Error
     /// (internal) when a size differs.
     void apply(std::span<const double> radiance_w_per_cm2_sr_um, std::span<double> out) const;
+    /// apply() for a radiance that is 0 outside `bands` (ascending band indices; empty: any
+    /// band may be non-zero): reads only those bands, and gives apply()'s bits.
+    void apply(std::span<const double> radiance_w_per_cm2_sr_um,
+               std::span<const std::uint32_t> bands, std::span<double> out) const;
     /// The weight of band b in channel c (everything but the bias).
     double weight(std::size_t channel, std::size_t band) const noexcept {
         const BandRange r = m_support[channel];
