@@ -36,6 +36,22 @@ std::optional<ClippedRay> clip(const Bounds& box, const Vec3& origin, const Vec3
     if (!(span > 0.0) || !std::isfinite(span) || !std::isfinite(dot(origin, origin))) {
         return std::nullopt;
     }
+    // An origin inside the box (every bounce and shadow ray) needs no slab test: the interval
+    // starts at tmin (the box entry is behind it) and everything it can hit lies before the
+    // box exit, so Embree may as well search up to tmax.
+    if (tmin_m >= 0.0 && std::isfinite(tmin_m) && origin.x >= box.lower.x &&
+        origin.x <= box.upper.x && origin.y >= box.lower.y && origin.y <= box.upper.y &&
+        origin.z >= box.lower.z && origin.z <= box.upper.z) {
+        ClippedRay ray;
+        ray.shift_m = tmin_m;
+        const Vec3 start = origin + direction * tmin_m;
+        for (std::size_t i = 0; i < 3; ++i) {
+            ray.origin[i] = static_cast<float>(start[i]);
+            ray.direction[i] = static_cast<float>(direction[i]);
+        }
+        ray.tfar = static_cast<float>(tmax_m - tmin_m);
+        return ray;
+    }
     double enter = -kInfinity;
     double leave = kInfinity;
     for (std::size_t i = 0; i < 3; ++i) {
