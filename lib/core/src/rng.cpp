@@ -156,13 +156,54 @@ RandomStream StreamPrefix::stream(std::span<const std::uint64_t> rest) const noe
         chain_finish(chain_absorb(kSaltChainCounter, m_counter_chain, rest), id_count));
 }
 
+namespace {
+
+/// Philox4x32-10 on `Lanes` counters side by side (c0[j] … c3[j] is lane j's counter, replaced
+/// by its output): the rounds of different lanes overlap and vectorize.
+template <std::size_t Lanes>
+void philox_lanes(std::uint32_t (&c0)[Lanes], std::uint32_t (&c1)[Lanes],
+                  std::uint32_t (&c2)[Lanes], std::uint32_t (&c3)[Lanes], PhiloxKey key) noexcept {
+    std::uint32_t k0 = key[0];
+    std::uint32_t k1 = key[1];
+    for (int round = 0; round < 10; ++round) {
+        if (round > 0) {
+            k0 += kPhiloxW0;
+            k1 += kPhiloxW1;
+        }
+        for (std::size_t j = 0; j < Lanes; ++j) {
+            const std::uint64_t p0 = static_cast<std::uint64_t>(kPhiloxM0) * c0[j];
+            const std::uint64_t p1 = static_cast<std::uint64_t>(kPhiloxM1) * c2[j];
+            const auto n0 = static_cast<std::uint32_t>(p1 >> 32) ^ c1[j] ^ k0;
+            const auto n2 = static_cast<std::uint32_t>(p0 >> 32) ^ c3[j] ^ k1;
+            c1[j] = static_cast<std::uint32_t>(p1);
+            c3[j] = static_cast<std::uint32_t>(p0);
+            c0[j] = n0;
+            c2[j] = n2;
+        }
+    }
+}
+
+}  // namespace
+
 void RandomStream::refill() {
-    const std::uint64_t block = m_position >> 2;
-    m_buffer =
-        philox4x32_10({static_cast<std::uint32_t>(block), static_cast<std::uint32_t>(block >> 32),
-                       static_cast<std::uint32_t>(m_counter_high),
-                       static_cast<std::uint32_t>(m_counter_high >> 32)},
-                      m_key);
+    // The four blocks of the 16-word group holding word m_position.
+    constexpr std::size_t kBlocks = kBufferWords / 4;
+    const std::uint64_t first = (m_position / kBufferWords) * kBlocks;
+    std::uint32_t c0[kBlocks], c1[kBlocks], c2[kBlocks], c3[kBlocks];
+    for (std::size_t j = 0; j < kBlocks; ++j) {
+        const std::uint64_t block = first + j;
+        c0[j] = static_cast<std::uint32_t>(block);
+        c1[j] = static_cast<std::uint32_t>(block >> 32);
+        c2[j] = static_cast<std::uint32_t>(m_counter_high);
+        c3[j] = static_cast<std::uint32_t>(m_counter_high >> 32);
+    }
+    philox_lanes(c0, c1, c2, c3, m_key);
+    for (std::size_t j = 0; j < kBlocks; ++j) {
+        m_buffer[4 * j] = c0[j];
+        m_buffer[4 * j + 1] = c1[j];
+        m_buffer[4 * j + 2] = c2[j];
+        m_buffer[4 * j + 3] = c3[j];
+    }
 }
 
 void RandomStream::blocks_at(std::span<const std::uint64_t> word_indices,
@@ -190,31 +231,14 @@ void RandomStream::blocks_at(std::span<const std::uint64_t> word_indices,
             c2[j] = high0;
             c3[j] = high1;
         }
-        std::uint32_t k0 = m_key[0];
-        std::uint32_t k1 = m_key[1];
-        for (int round = 0; round < 10; ++round) {
-            if (round > 0) {
-                k0 += kPhiloxW0;
-                k1 += kPhiloxW1;
-            }
-            for (std::size_t j = 0; j < kLanes; ++j) {
-                const std::uint64_t p0 = static_cast<std::uint64_t>(kPhiloxM0) * c0[j];
-                const std::uint64_t p1 = static_cast<std::uint64_t>(kPhiloxM1) * c2[j];
-                const auto n0 = static_cast<std::uint32_t>(p1 >> 32) ^ c1[j] ^ k0;
-                const auto n2 = static_cast<std::uint32_t>(p0 >> 32) ^ c3[j] ^ k1;
-                c1[j] = static_cast<std::uint32_t>(p1);
-                c3[j] = static_cast<std::uint32_t>(p0);
-                c0[j] = n0;
-                c2[j] = n2;
-            }
-        }
+        philox_lanes(c0, c1, c2, c3, m_key);
         for (std::size_t j = 0; j < n; ++j) out[begin + j] = {c0[j], c1[j], c2[j], c3[j]};
     }
 }
 
 std::uint32_t RandomStream::next_u32() {
-    if ((m_position & 3u) == 0) refill();
-    return m_buffer[m_position++ & 3u];
+    if ((m_position % kBufferWords) == 0) refill();
+    return m_buffer[m_position++ % kBufferWords];
 }
 
 std::uint64_t RandomStream::next_u64() {
@@ -225,7 +249,7 @@ std::uint64_t RandomStream::next_u64() {
 
 void RandomStream::skip_to(std::uint64_t word_index) {
     m_position = word_index;
-    if ((m_position & 3u) != 0) refill();
+    if ((m_position % kBufferWords) != 0) refill();
     m_has_spare_normal = false;
 }
 

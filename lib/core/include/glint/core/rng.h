@@ -97,7 +97,10 @@ private:
     PhiloxKey m_key{};
     std::uint64_t m_counter_high = 0;  ///< counter words 2 and 3: part of the stream identity
     std::uint64_t m_position = 0;      ///< words consumed; block = m_position / 4
-    PhiloxCounter m_buffer{};          ///< output of block (m_position - 1) / 4
+    /// Words drawn at a time: four blocks computed side by side (their rounds overlap).
+    static constexpr std::size_t kBufferWords = 16;
+    /// Words (m_position - 1) / 16 × 16 onwards: blocks 4 (m_position - 1) / 16 … + 3.
+    std::array<std::uint32_t, kBufferWords> m_buffer{};
     bool m_has_spare_normal = false;
     double m_spare_normal = 0.0;
 };
