@@ -57,7 +57,7 @@ struct Workspace {
     std::vector<std::uint8_t> reached = std::vector<std::uint8_t>(draw.active() ? sum.size() : 0);
 };
 
-/// Traces one sample into ws.sum (weighted by `weight`) and returns its radiance at the
+/// Traces one sample into ws.sum (weighted by the ray's weight) and returns its radiance at the
 /// reference band; hands it to the recorder, if any, as a whole spectrum.
 double trace_sample(const PathTracer& tracer, const SampleRay& ray, RandomStream& rng,
                     std::size_t reference_band, double spectral_u, Workspace& ws) {
