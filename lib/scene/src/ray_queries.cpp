@@ -27,6 +27,20 @@ struct ClippedRay {
     float tfar = 0.0f;
 };
 
+/// The ray origin + s · direction, s in [from, to], as Embree traces it: from `from` on.
+ClippedRay clipped(const Vec3& origin, const Vec3& direction, double from, double to) noexcept {
+    ClippedRay ray;
+    ray.shift_m = from;
+    const Vec3 start = origin + direction * from;
+    for (std::size_t i = 0; i < 3; ++i) {
+        ray.origin[i] = static_cast<float>(start[i]);
+        ray.direction[i] = static_cast<float>(direction[i]);
+    }
+    ray.tnear = 0.0f;
+    ray.tfar = static_cast<float>(to - from);
+    return ray;
+}
+
 /// The part of origin + s · direction, s in (tmin, tmax), inside `box`; nullopt when empty.
 std::optional<ClippedRay> clip(const Bounds& box, const Vec3& origin, const Vec3& direction,
                                double tmin_m, double tmax_m) noexcept {
@@ -42,15 +56,7 @@ std::optional<ClippedRay> clip(const Bounds& box, const Vec3& origin, const Vec3
     if (tmin_m >= 0.0 && std::isfinite(tmin_m) && origin.x >= box.lower.x &&
         origin.x <= box.upper.x && origin.y >= box.lower.y && origin.y <= box.upper.y &&
         origin.z >= box.lower.z && origin.z <= box.upper.z) {
-        ClippedRay ray;
-        ray.shift_m = tmin_m;
-        const Vec3 start = origin + direction * tmin_m;
-        for (std::size_t i = 0; i < 3; ++i) {
-            ray.origin[i] = static_cast<float>(start[i]);
-            ray.direction[i] = static_cast<float>(direction[i]);
-        }
-        ray.tfar = static_cast<float>(tmax_m - tmin_m);
-        return ray;
+        return clipped(origin, direction, tmin_m, tmax_m);
     }
     double enter = -kInfinity;
     double leave = kInfinity;
@@ -69,16 +75,7 @@ std::optional<ClippedRay> clip(const Bounds& box, const Vec3& origin, const Vec3
     const double from = std::max(tmin_m, enter);
     const double to = std::min(tmax_m, leave);
     if (!(from <= to) || !std::isfinite(from)) return std::nullopt;
-    ClippedRay ray;
-    ray.shift_m = from;
-    const Vec3 start = origin + direction * from;
-    for (std::size_t i = 0; i < 3; ++i) {
-        ray.origin[i] = static_cast<float>(start[i]);
-        ray.direction[i] = static_cast<float>(direction[i]);
-    }
-    ray.tnear = 0.0f;
-    ray.tfar = static_cast<float>(to - from);
-    return ray;
+    return clipped(origin, direction, from, to);
 }
 
 void fill(RTCRay& out, const ClippedRay& ray, float time01) noexcept {
