@@ -161,7 +161,8 @@ void PathTracer::add_point_lights(const Bands& bands, const scene::RayHit& hit, 
 template <typename Bands>
 void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStream& rng,
                             PathScratch& scratch, std::span<double> radiance,
-                            FirstHit* first_hit) const {
+                            FirstHit* first_hit,
+                            const std::optional<scene::RayHit>* primary_hit) const {
     const Environment& env = m_environment;
     const std::size_t count = bands.size();
     std::fill(radiance.begin(), radiance.end(), 0.0);
@@ -170,7 +171,9 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
     const double* sky = env.sky_radiance_w_per_cm2_sr_um().data();
     const double time = ray.time_s;
 
-    std::optional<scene::RayHit> hit = m_scene.intersect(ray.origin_m, ray.direction, time);
+    std::optional<scene::RayHit> hit = primary_hit != nullptr
+                                           ? *primary_hit
+                                           : m_scene.intersect(ray.origin_m, ray.direction, time);
     ++scratch.rays;
     if (first_hit != nullptr) first_hit->hit = hit.has_value();
     if (!hit) {
@@ -263,19 +266,22 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
 }
 
 void PathTracer::trace(const SampleRay& ray, RandomStream& rng, PathScratch& scratch,
-                       std::span<double> radiance, FirstHit* first_hit) const {
-    trace_path(RangeBands{m_range.first, m_range.count}, ray, rng, scratch, radiance, first_hit);
+                       std::span<double> radiance, FirstHit* first_hit,
+                       const std::optional<scene::RayHit>* primary_hit) const {
+    trace_path(RangeBands{m_range.first, m_range.count}, ray, rng, scratch, radiance, first_hit,
+               primary_hit);
 }
 
 void PathTracer::trace_bands(const SampleRay& ray, RandomStream& rng, PathScratch& scratch,
                              std::span<const std::uint32_t> bands, std::span<double> radiance,
-                             FirstHit* first_hit) const {
+                             FirstHit* first_hit,
+                             const std::optional<scene::RayHit>* primary_hit) const {
     if (bands.size() != radiance.size() || bands.empty() ||
         bands.size() > scratch.throughput.size()) {
         throw internal_error("trace_bands: " + std::to_string(bands.size()) + " bands for " +
                              std::to_string(radiance.size()) + " values");
     }
-    trace_path(ListBands{bands}, ray, rng, scratch, radiance, first_hit);
+    trace_path(ListBands{bands}, ray, rng, scratch, radiance, first_hit, primary_hit);
 }
 
 }  // namespace glint::radiometry

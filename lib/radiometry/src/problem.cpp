@@ -9,9 +9,11 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <mutex>
+#include <optional>
 #include <string>
 
 #include "glint/core/error.h"
@@ -26,65 +28,99 @@ constexpr double kGoldenRatioConjugate = 0.6180339887498948482;
 /// The last stream id of a problem's spectral offset stream (no sample has this index).
 constexpr std::uint64_t kSpectralDrawId = 0x5350454354524100ull;
 
+/// Problems one worker solves side by side: their samples advance in rounds, and each round's
+/// sample rays go to Embree as one packet (GeometryScene::intersect_packet), which traces a
+/// camera's coherent rays about twice as fast as one at a time. Every problem gets the same
+/// bits as when solved alone (its samples, streams and draws are its own).
+constexpr std::size_t kLanes = scene::kPacketSize;
+
+/// One problem's state in a group.
+struct Lane {
+    Lane(const PathTracer& tracer, const ProblemBatch& batch, bool spectral_sampling)
+        : sum(tracer.bands()),
+          recorder(batch.observer != nullptr ? batch.observer->make_recorder() : nullptr),
+          reached(spectral_sampling ? tracer.bands() : 0) {}
+    std::uint64_t problem = 0;
+    Convergence convergence;
+    std::optional<StreamPrefix> pixel;  ///< the streams of the problem's samples
+    std::vector<double> sum;            ///< Σ w L per band
+    double weight_sum = 0.0;
+    double weight_sq_sum = 0.0;
+    WeightedMoments reference;  ///< at the reference band
+    std::uint64_t samples = 0;  ///< traced so far
+    bool active = false;        ///< more samples to trace
+    double spectral_u = 0.0;    ///< the next sample's spectral offset
+    std::unique_ptr<SampleRecorder> recorder;
+    /// Spectral sampling: the bands of `sum` the problem's samples reached so far (each once,
+    /// flagged in `reached`); the others are still 0.
+    std::vector<std::uint32_t> touched;
+    std::vector<std::uint8_t> reached;
+    /// The sample of the current round.
+    std::optional<RandomStream> rng;
+    SampleRay ray;
+};
+
 /// Per-thread buffers of the convergence loop (the "arena" of one worker).
 struct Workspace {
     Workspace(const PathTracer& tracer, const ProblemBatch& batch)
         : path(tracer.environment().bands()),
           sample(tracer.bands()),
-          sum(tracer.bands()),
           radiance(tracer.bands()),
-          recorder(batch.observer != nullptr ? batch.observer->make_recorder() : nullptr),
           wants_first_hit(batch.observer != nullptr && batch.observer->wants_first_hit()),
           draw(tracer.range().first, tracer.range().count, batch.reference_band,
                tracer.settings().spectral_samples),
           grid_bands(draw.active() ? draw.size() : 0),
           bands(grid_bands.size()),
-          values(grid_bands.size()) {}
+          values(grid_bands.size()) {
+        lanes.reserve(kLanes);
+        for (std::size_t k = 0; k < kLanes; ++k) lanes.emplace_back(tracer, batch, draw.active());
+    }
     PathScratch path;
     std::vector<double> sample;    ///< one sample's radiance
-    std::vector<double> sum;       ///< Σ w L per band
-    std::vector<double> radiance;  ///< the problem's result, handed to the receiver
-    std::unique_ptr<SampleRecorder> recorder;
+    std::vector<double> radiance;  ///< a problem's result, handed to the receiver
     bool wants_first_hit = false;
     FirstHit first_hit;
     SpectralDraw draw;                      ///< the wavelengths of a path (spectral sampling)
     std::vector<std::uint32_t> grid_bands;  ///< a path's drawn bands, grid indices
     std::vector<std::uint32_t> bands;       ///< the same, relative to the tracer's range
     std::vector<double> values;             ///< the path's radiance at them
-    /// Spectral sampling: the bands of `sum` the problem's samples reached so far (each once,
-    /// flagged in `reached`); the others are still 0.
-    std::vector<std::uint32_t> touched;
-    std::vector<std::uint8_t> reached = std::vector<std::uint8_t>(draw.active() ? sum.size() : 0);
+    std::vector<Lane> lanes;                ///< the problems of the group being solved
+    std::array<scene::PacketRay, kLanes> packet;           ///< a round's sample rays
+    std::array<std::optional<scene::RayHit>, kLanes> hits;  ///< and their first hits
+    std::array<std::size_t, kLanes> packet_lane{};          ///< the lane of each packet ray
 };
 
-/// Traces one sample into ws.sum (weighted by the ray's weight) and returns its radiance at the
-/// reference band; hands it to the recorder, if any, as a whole spectrum.
-double trace_sample(const PathTracer& tracer, const SampleRay& ray, RandomStream& rng,
-                    std::size_t reference_band, double spectral_u, Workspace& ws) {
+/// Traces one sample of `lane` into its sums (weighted by the ray's weight) and returns its
+/// radiance at the reference band; hands it to the recorder, if any, as a whole spectrum.
+/// `primary_hit` is the ray's first hit, already traced.
+double trace_sample(const PathTracer& tracer, std::size_t reference_band,
+                    const std::optional<scene::RayHit>& primary_hit, Workspace& ws, Lane& lane) {
     FirstHit* first_hit = ws.wants_first_hit ? &ws.first_hit : nullptr;
+    const SampleRay& ray = lane.ray;
+    RandomStream& rng = *lane.rng;
     if (!ws.draw.active()) {
-        tracer.trace(ray, rng, ws.path, ws.sample, first_hit);
-        if (ws.recorder) ws.recorder->add(ray, ws.sample, first_hit);
-        for (std::size_t b = 0; b < ws.sum.size(); ++b) ws.sum[b] += ray.weight * ws.sample[b];
+        tracer.trace(ray, rng, ws.path, ws.sample, first_hit, &primary_hit);
+        if (lane.recorder) lane.recorder->add(ray, ws.sample, first_hit);
+        for (std::size_t b = 0; b < lane.sum.size(); ++b) lane.sum[b] += ray.weight * ws.sample[b];
         return ws.sample[reference_band];
     }
     // Spectral sampling: the reference band (weight 1), then the drawn ones.
-    ws.draw.draw(spectral_u, ws.grid_bands, ws.bands);
-    tracer.trace_bands(ray, rng, ws.path, ws.grid_bands, ws.values, first_hit);
+    ws.draw.draw(lane.spectral_u, ws.grid_bands, ws.bands);
+    tracer.trace_bands(ray, rng, ws.path, ws.grid_bands, ws.values, first_hit, &primary_hit);
     const double drawn = ws.draw.weight();
     for (std::size_t j = 1; j < ws.values.size(); ++j) ws.values[j] *= drawn;
     for (std::size_t j = 0; j < ws.values.size(); ++j) {
         const std::uint32_t b = ws.bands[j];
-        ws.sum[b] += ray.weight * ws.values[j];
-        if (ws.reached[b] == 0) {
-            ws.reached[b] = 1;
-            ws.touched.push_back(b);
+        lane.sum[b] += ray.weight * ws.values[j];
+        if (lane.reached[b] == 0) {
+            lane.reached[b] = 1;
+            lane.touched.push_back(b);
         }
     }
-    if (ws.recorder) {
+    if (lane.recorder) {
         std::fill(ws.sample.begin(), ws.sample.end(), 0.0);
         for (std::size_t j = 0; j < ws.values.size(); ++j) ws.sample[ws.bands[j]] = ws.values[j];
-        ws.recorder->add(ray, ws.sample, first_hit);
+        lane.recorder->add(ray, ws.sample, first_hit);
     }
     return ws.values[0];
 }
@@ -125,74 +161,127 @@ Convergence effective_convergence(const ProblemBatch& batch, std::uint64_t probl
     return c;
 }
 
-/// Solves `problem` into `radiance` (bands values); returns the sample count and the standard
-/// error at the reference band.
-std::pair<std::uint64_t, double> solve_into(const PathTracer& tracer, const ProblemBatch& batch,
-                                            std::uint64_t problem, Workspace& ws,
-                                            std::span<double> radiance) {
-    const Convergence c = effective_convergence(batch, problem);
+/// Starts `problem` in `lane`.
+void begin_problem(const ProblemBatch& batch, std::uint64_t problem, const SpectralDraw& draw,
+                   Lane& lane) {
     const StreamKey& k = batch.key;
-    if (!ws.draw.active()) {
-        std::fill(ws.sum.begin(), ws.sum.end(), 0.0);
+    lane.problem = problem;
+    lane.convergence = effective_convergence(batch, problem);
+    if (!draw.active()) {
+        std::fill(lane.sum.begin(), lane.sum.end(), 0.0);
     } else {
-        ws.touched.clear();  // the sums are kept at 0 between problems
+        lane.touched.clear();  // the sums are kept at 0 between problems
     }
-    double weight_sum = 0.0;
-    double weight_sq_sum = 0.0;
-    WeightedMoments reference;  // at the reference band
-    std::uint64_t n = 0;
-    if (ws.recorder) ws.recorder->begin(problem);
+    lane.weight_sum = 0.0;
+    lane.weight_sq_sum = 0.0;
+    lane.reference = WeightedMoments{};
+    lane.samples = 0;
+    lane.active = lane.convergence.max_samples > 0;
+    if (lane.recorder) lane.recorder->begin(problem);
     // The samples' streams share (seed, plugin, task, capture, problem): keyed once here,
     // each stream is the one sample_stream() gives.
-    const StreamPrefix pixel =
-        StreamPrefix(k.seed, {k.plugin, k.task, k.capture}).extended(problem);
+    lane.pixel = StreamPrefix(k.seed, {k.plugin, k.task, k.capture}).extended(problem);
     // Spectral sampling: sample n's wavelengths come from u_n = (u_0 + n φ) mod 1, u_0 drawn
     // once per problem: each u_n is uniform (so each band is drawn with its probability), and
     // successive samples cover the spectrum evenly instead of at random.
-    double spectral_u = 0.0;
-    if (ws.draw.active()) {
-        RandomStream start = k.spectral_state ? pixel.stream({kSpectralDrawId, *k.spectral_state})
-                                              : pixel.stream({kSpectralDrawId});
-        spectral_u = start.uniform();
+    lane.spectral_u = 0.0;
+    if (draw.active()) {
+        RandomStream start = k.spectral_state
+                                 ? lane.pixel->stream({kSpectralDrawId, *k.spectral_state})
+                                 : lane.pixel->stream({kSpectralDrawId});
+        lane.spectral_u = start.uniform();
     }
-    while (n < c.max_samples) {
-        RandomStream rng =
-            k.spectral_state ? pixel.stream({n, *k.spectral_state}) : pixel.stream({n});
-        const SampleRay ray = batch.source->generate(problem, n, rng);
-        if (!(ray.weight > 0.0) || !std::isfinite(ray.weight)) {
-            throw input_error("sample " + std::to_string(n) + " of problem " +
-                              std::to_string(problem) + " has weight " +
-                              format_shortest(ray.weight) + "; weights must be finite and > 0");
-        }
-        const double at_reference =
-            trace_sample(tracer, ray, rng, batch.reference_band, spectral_u, ws);
-        spectral_u += kGoldenRatioConjugate;
-        if (spectral_u >= 1.0) spectral_u -= 1.0;
-        ++n;
-        const double previous = reference.mean;
-        weight_sum += ray.weight;
-        weight_sq_sum += ray.weight * ray.weight;
-        reference.add(at_reference, ray.weight, weight_sum);
-        if (n >= 2 && n >= c.min_samples && c.threshold_w_per_cm2_sr_um > 0.0 &&
-            std::fabs(reference.mean - previous) < c.threshold_w_per_cm2_sr_um) {
-            break;
-        }
+}
+
+/// Draws the lane's next sample ray (from the sample's own stream).
+void next_ray(const ProblemBatch& batch, Lane& lane) {
+    const std::uint64_t n = lane.samples;
+    const StreamKey& k = batch.key;
+    lane.rng = k.spectral_state ? lane.pixel->stream({n, *k.spectral_state})
+                                : lane.pixel->stream({n});
+    lane.ray = batch.source->generate(lane.problem, n, *lane.rng);
+    if (!(lane.ray.weight > 0.0) || !std::isfinite(lane.ray.weight)) {
+        throw input_error("sample " + std::to_string(n) + " of problem " +
+                          std::to_string(lane.problem) + " has weight " +
+                          format_shortest(lane.ray.weight) + "; weights must be finite and > 0");
     }
-    if (ws.recorder) ws.recorder->end(problem, n);
-    if (ws.draw.active()) {
+}
+
+/// Adds the traced sample (radiance `at_reference` at the reference band) to the lane's
+/// moments and decides whether the problem has converged.
+void count_sample(double at_reference, Lane& lane) {
+    const Convergence& c = lane.convergence;
+    lane.spectral_u += kGoldenRatioConjugate;
+    if (lane.spectral_u >= 1.0) lane.spectral_u -= 1.0;
+    const std::uint64_t n = ++lane.samples;
+    const double previous = lane.reference.mean;
+    lane.weight_sum += lane.ray.weight;
+    lane.weight_sq_sum += lane.ray.weight * lane.ray.weight;
+    lane.reference.add(at_reference, lane.ray.weight, lane.weight_sum);
+    if (n >= c.max_samples ||
+        (n >= 2 && n >= c.min_samples && c.threshold_w_per_cm2_sr_um > 0.0 &&
+         std::fabs(lane.reference.mean - previous) < c.threshold_w_per_cm2_sr_um)) {
+        lane.active = false;
+    }
+}
+
+/// The lane's mean radiance into `radiance` (bands values); returns the sample count and the
+/// standard error at the reference band. With spectral sampling, lane.touched then lists the
+/// bands that are not 0, ascending.
+std::pair<std::uint64_t, double> finish_problem(const SpectralDraw& draw, Lane& lane,
+                                                std::span<double> radiance) {
+    if (lane.recorder) lane.recorder->end(lane.problem, lane.samples);
+    if (draw.active()) {
         // Only the reached bands are not 0 (0 / Σw is 0): divided, and their sums reset; the
-        // list stays (ascending) for the receiver until the next problem.
-        std::sort(ws.touched.begin(), ws.touched.end());
+        // list stays for the receiver until the lane's next problem.
+        std::sort(lane.touched.begin(), lane.touched.end());
         std::fill(radiance.begin(), radiance.end(), 0.0);
-        for (const std::uint32_t b : ws.touched) {
-            radiance[b] = ws.sum[b] / weight_sum;
-            ws.sum[b] = 0.0;
-            ws.reached[b] = 0;
+        for (const std::uint32_t b : lane.touched) {
+            radiance[b] = lane.sum[b] / lane.weight_sum;
+            lane.sum[b] = 0.0;
+            lane.reached[b] = 0;
         }
     } else {
-        for (std::size_t b = 0; b < radiance.size(); ++b) radiance[b] = ws.sum[b] / weight_sum;
+        for (std::size_t b = 0; b < radiance.size(); ++b) {
+            radiance[b] = lane.sum[b] / lane.weight_sum;
+        }
     }
-    return {n, reference.standard_error(weight_sum, weight_sq_sum)};
+    return {lane.samples, lane.reference.standard_error(lane.weight_sum, lane.weight_sq_sum)};
+}
+
+/// Solves the `count` (≤ kLanes) problems first_problem … side by side, in rounds of one
+/// sample each whose rays are traced as one packet; then, in order, problem j's radiance goes
+/// into into(j) and done(j, radiance, nonzero bands, samples, error) is called.
+template <typename Into, typename Done>
+void solve_group(const PathTracer& tracer, const ProblemBatch& batch, std::uint64_t first_problem,
+                 std::size_t count, Workspace& ws, const Into& into, const Done& done) {
+    for (std::size_t j = 0; j < count; ++j) {
+        begin_problem(batch, first_problem + j, ws.draw, ws.lanes[j]);
+    }
+    for (;;) {
+        std::size_t rays = 0;
+        for (std::size_t j = 0; j < count; ++j) {
+            Lane& lane = ws.lanes[j];
+            if (!lane.active) continue;
+            next_ray(batch, lane);
+            ws.packet[rays] = scene::PacketRay{lane.ray.origin_m, lane.ray.direction,
+                                               lane.ray.time_s};
+            ws.packet_lane[rays] = j;
+            ++rays;
+        }
+        if (rays == 0) break;
+        tracer.scene().intersect_packet(std::span(ws.packet).first(rays),
+                                        std::span(ws.hits).first(rays));
+        for (std::size_t r = 0; r < rays; ++r) {
+            Lane& lane = ws.lanes[ws.packet_lane[r]];
+            count_sample(trace_sample(tracer, batch.reference_band, ws.hits[r], ws, lane), lane);
+        }
+    }
+    for (std::size_t j = 0; j < count; ++j) {
+        const std::span<double> radiance = into(j, ws);
+        const auto [samples, error] = finish_problem(ws.draw, ws.lanes[j], radiance);
+        done(j, radiance, std::span<const std::uint32_t>(ws.lanes[j].touched), samples, error);
+    }
 }
 
 }  // namespace
@@ -225,10 +314,14 @@ Solution solve(const PathTracer& tracer, const ProblemBatch& batch, std::uint64_
     Workspace ws(tracer, batch);
     Solution solution;
     solution.radiance_w_per_cm2_sr_um.resize(tracer.bands());
-    const auto [samples, error] =
-        solve_into(tracer, batch, problem, ws, solution.radiance_w_per_cm2_sr_um);
-    solution.samples = samples;
-    solution.standard_error_w_per_cm2_sr_um = error;
+    solve_group(
+        tracer, batch, problem, 1, ws,
+        [&](std::size_t, Workspace&) { return std::span<double>(solution.radiance_w_per_cm2_sr_um); },
+        [&](std::size_t, std::span<double>, std::span<const std::uint32_t>, std::uint64_t samples,
+            double error) {
+            solution.samples = samples;
+            solution.standard_error_w_per_cm2_sr_um = error;
+        });
     return solution;
 }
 
@@ -248,21 +341,29 @@ std::uint64_t solve_batch(const PathTracer& tracer, const ProblemBatch& batch,
     std::atomic<std::uint64_t> finished_count{0};
     std::mutex progress_mutex;
     const std::uint64_t report_every = std::max<std::uint64_t>(1, batch.count / 100);
+    // Groups of kLanes consecutive problems, each solved by one worker: the same groups
+    // whatever the thread count.
+    const std::uint64_t groups = (batch.count + kLanes - 1) / kLanes;
     arena.execute([&] {
         tbb::parallel_for(
-            tbb::blocked_range<std::uint64_t>(0, batch.count, 16),
+            tbb::blocked_range<std::uint64_t>(0, groups, 1),
             [&](const tbb::blocked_range<std::uint64_t>& range) {
                 Workspace& ws = workspaces.local();
-                for (std::uint64_t i = range.begin(); i != range.end(); ++i) {
+                for (std::uint64_t g = range.begin(); g != range.end(); ++g) {
                     if (context.cancel.cancelled()) return;
-                    const std::span<double> radiance = into(i, ws);
-                    const auto [samples, error] =
-                        solve_into(tracer, batch, batch.first_problem + i, ws, radiance);
-                    done(i, radiance, std::span<const std::uint32_t>(ws.touched), samples, error);
-                    const std::uint64_t finished = ++finished_count;
-                    if (finished % report_every == 0) {
+                    const std::uint64_t first = g * kLanes;
+                    const auto count =
+                        static_cast<std::size_t>(std::min<std::uint64_t>(kLanes, batch.count - first));
+                    solve_group(
+                        tracer, batch, batch.first_problem + first, count, ws,
+                        [&](std::size_t j, Workspace& w) { return into(first + j, w); },
+                        [&](std::size_t j, std::span<double> radiance,
+                            std::span<const std::uint32_t> bands, std::uint64_t samples,
+                            double error) { done(first + j, radiance, bands, samples, error); });
+                    const std::uint64_t before = finished_count.fetch_add(count);
+                    if ((before + count) / report_every != before / report_every) {
                         const std::lock_guard lock(progress_mutex);
-                        context.progress.update("radiance", finished, batch.count);
+                        context.progress.update("radiance", before + count, batch.count);
                     }
                 }
             });

@@ -167,6 +167,7 @@ GeometryScene GeometryScene::build(
         any_moving = any_moving || samples[i].poses.size() > 1;
     }
 
+    impl->any_moving = any_moving;
     impl->top = device.new_scene(RTC_SCENE_FLAG_ROBUST,
                                  any_moving ? RTC_BUILD_QUALITY_MEDIUM : RTC_BUILD_QUALITY_HIGH,
                                  "building the top-level scene");

@@ -20,7 +20,8 @@ struct ObjectData {
     /// Embree's own copies of the vertices (x, y, z floats, padded) and triangles.
     const float* vertices = nullptr;
     const std::uint32_t* triangles = nullptr;
-    std::vector<std::uint32_t> materials;  ///< per triangle
+    std::vector<std::uint32_t> materials;  ///< per triangle; empty when all are single_material
+    std::uint32_t single_material = 0;     ///< every triangle's, when `materials` is empty
     std::uint64_t triangle_count = 0;
 };
 
@@ -52,6 +53,9 @@ struct GeometryScene::Impl {
     TimeWindow window;
     std::vector<unsigned> time_steps;
     std::uint64_t instanced_triangles = 0;
+    /// Some instance moves over the window (the top level then holds motion-blurred
+    /// instances, whose packet traversal rounds differently from the single-ray one).
+    bool any_moving = false;
 
     ~Impl() {
         top.reset();

@@ -84,7 +84,14 @@ ObjectData build_object_scene(EmbreeDevice& device, const model::GeometryObject&
     // The scene holds a reference to the geometry, which owns the buffers.
     data.vertices = vertices;
     data.triangles = triangles;
-    data.materials = mesh.triangle_materials;
+    // An object of one material (a terrain, most OBJ parts) keeps no per-triangle list: a hit
+    // then needs no lookup (a cache miss on a large mesh).
+    const auto& m = mesh.triangle_materials;
+    if (!m.empty() && std::all_of(m.begin(), m.end(), [&](std::uint32_t v) { return v == m[0]; })) {
+        data.single_material = m[0];
+    } else {
+        data.materials = m;
+    }
     data.triangle_count = mesh.triangles.size();
     return data;
 }

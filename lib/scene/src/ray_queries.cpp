@@ -10,8 +10,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 #include "geometry_scene_impl.h"
+#include "glint/core/error.h"
 
 namespace glint::scene {
 namespace {
@@ -106,6 +108,69 @@ Vec3 vertex(const detail::ObjectData& object, std::uint32_t index) noexcept {
     return {v[0], v[1], v[2]};
 }
 
+/// The hit Embree reported for `clipped` (the caller's ray origin_m + s · direction): distance
+/// from the caller's origin, position, material and the unit normal in scene ENU.
+RayHit make_hit(const std::vector<detail::InstanceData>& instances,
+                const std::vector<detail::ObjectData>& objects, const Vec3& origin_m, const Vec3& direction,
+                const ClippedRay& clipped, float time01, float tfar, std::uint32_t instance_id,
+                std::uint32_t triangle) {
+    RayHit hit;
+    // The float origin and direction as Embree used them, measured along the caller's ray.
+    const Vec3 float_origin{clipped.origin[0], clipped.origin[1], clipped.origin[2]};
+    const Vec3 float_direction{clipped.direction[0], clipped.direction[1], clipped.direction[2]};
+    hit.distance_m = dot(float_origin - origin_m, direction) +
+                     static_cast<double>(tfar) * dot(float_direction, direction);
+    hit.position_m = origin_m + direction * hit.distance_m;
+    hit.instance = instance_id;
+    hit.triangle = triangle;
+
+    const detail::InstanceData& instance = instances[hit.instance];
+    const detail::ObjectData& object = objects[instance.object];
+    hit.material =
+        object.materials.empty() ? object.single_material : object.materials[hit.triangle];
+    const std::uint32_t* t = object.triangles + 3 * static_cast<std::size_t>(hit.triangle);
+    const Vec3 v0 = vertex(object, t[0]);
+    const Vec3 object_normal = cross(vertex(object, t[1]) - v0, vertex(object, t[2]) - v0);
+    detail::Mat3 normal_matrix = instance.normal_matrix;
+    if (instance.moving) {
+        float xfm[12];
+        rtcGetGeometryTransform(instance.geometry, time01, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
+        normal_matrix = detail::inverse_transpose(detail::from_float3x4(xfm).linear);
+    }
+    hit.normal = normalized(normal_matrix * object_normal);
+    return hit;
+}
+
+/// Embree's packet of kPacketSize rays, 64-byte aligned as rtcIntersect16 requires.
+struct alignas(64) Packet {
+    alignas(64) int valid[kPacketSize];
+    RTCRayHit16 rayhit;
+};
+static_assert(kPacketSize == 16, "the packet queries use Embree's 16-wide calls");
+
+void fill_lane(RTCRay16& out, std::size_t k, const ClippedRay& ray, float time01) noexcept {
+    out.org_x[k] = ray.origin[0];
+    out.org_y[k] = ray.origin[1];
+    out.org_z[k] = ray.origin[2];
+    out.dir_x[k] = ray.direction[0];
+    out.dir_y[k] = ray.direction[1];
+    out.dir_z[k] = ray.direction[2];
+    out.tnear[k] = ray.tnear;
+    out.tfar[k] = ray.tfar;
+    out.time[k] = time01;
+    out.mask[k] = 0xFFFFFFFFu;
+    out.id[k] = 0;
+    out.flags[k] = 0;
+}
+
+void check_packet(std::size_t rays, std::size_t results) {
+    if (rays > kPacketSize || results != rays) {
+        throw internal_error("packet query of " + std::to_string(rays) + " rays into " +
+                             std::to_string(results) + " results (at most " +
+                             std::to_string(kPacketSize) + ")");
+    }
+}
+
 }  // namespace
 
 std::optional<RayHit> GeometryScene::intersect(const Vec3& origin_m, const Vec3& direction,
@@ -124,31 +189,56 @@ std::optional<RayHit> GeometryScene::intersect(const Vec3& origin_m, const Vec3&
     rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(impl.top.get(), &context, &rayhit);
     if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+    return make_hit(impl.instances, impl.objects, origin_m, direction, *clipped, time01, rayhit.ray.tfar,
+                    rayhit.hit.instID[0], rayhit.hit.primID);
+}
 
-    RayHit hit;
-    // The float origin and direction as Embree used them, measured along the caller's ray.
-    const Vec3 float_origin{clipped->origin[0], clipped->origin[1], clipped->origin[2]};
-    const Vec3 float_direction{clipped->direction[0], clipped->direction[1], clipped->direction[2]};
-    hit.distance_m = dot(float_origin - origin_m, direction) +
-                     static_cast<double>(rayhit.ray.tfar) * dot(float_direction, direction);
-    hit.position_m = origin_m + direction * hit.distance_m;
-    hit.instance = rayhit.hit.instID[0];
-    hit.triangle = rayhit.hit.primID;
-
-    const detail::InstanceData& instance = impl.instances[hit.instance];
-    const detail::ObjectData& object = impl.objects[instance.object];
-    hit.material = object.materials[hit.triangle];
-    const std::uint32_t* t = object.triangles + 3 * static_cast<std::size_t>(hit.triangle);
-    const Vec3 v0 = vertex(object, t[0]);
-    const Vec3 object_normal = cross(vertex(object, t[1]) - v0, vertex(object, t[2]) - v0);
-    detail::Mat3 normal_matrix = instance.normal_matrix;
-    if (instance.moving) {
-        float xfm[12];
-        rtcGetGeometryTransform(instance.geometry, time01, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
-        normal_matrix = detail::inverse_transpose(detail::from_float3x4(xfm).linear);
+void GeometryScene::intersect_packet(std::span<const PacketRay> rays,
+                                     std::span<std::optional<RayHit>> hits) const {
+    check_packet(rays.size(), hits.size());
+    const Impl& impl = *m_impl;
+    if (impl.any_moving) {
+        // Embree's packet kernels interpolate moving instances with other roundings than its
+        // single-ray kernel: trace them one by one, for the same bits.
+        for (std::size_t k = 0; k < rays.size(); ++k) {
+            const PacketRay& ray = rays[k];
+            hits[k] = intersect(ray.origin_m, ray.direction, ray.time_s, ray.tmin_m, ray.tmax_m);
+        }
+        return;
     }
-    hit.normal = normalized(normal_matrix * object_normal);
-    return hit;
+    Packet packet;
+    std::optional<ClippedRay> clipped[kPacketSize];
+    float time01[kPacketSize] = {};
+    bool any = false;
+    for (std::size_t k = 0; k < kPacketSize; ++k) {
+        packet.valid[k] = 0;
+        packet.rayhit.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+        packet.rayhit.hit.primID[k] = RTC_INVALID_GEOMETRY_ID;
+        packet.rayhit.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+        if (k >= rays.size()) continue;
+        const PacketRay& ray = rays[k];
+        clipped[k] = clip(impl.clip_bounds, ray.origin_m, ray.direction, ray.tmin_m, ray.tmax_m);
+        if (!clipped[k]) continue;
+        time01[k] = ray_time(impl.window, ray.time_s);
+        fill_lane(packet.rayhit.ray, k, *clipped[k], time01[k]);
+        packet.valid[k] = -1;
+        any = true;
+    }
+    if (any) {
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+        rtcIntersect16(packet.valid, impl.top.get(), &context, &packet.rayhit);
+    }
+    for (std::size_t k = 0; k < rays.size(); ++k) {
+        const RTCHit16& hit = packet.rayhit.hit;
+        if (packet.valid[k] == 0 || hit.geomID[k] == RTC_INVALID_GEOMETRY_ID) {
+            hits[k].reset();
+            continue;
+        }
+        hits[k] = make_hit(impl.instances, impl.objects, rays[k].origin_m, rays[k].direction, *clipped[k], time01[k],
+                           packet.rayhit.ray.tfar[k], hit.instID[0][k], hit.primID[k]);
+    }
 }
 
 bool GeometryScene::occluded(const Vec3& origin_m, const Vec3& direction, double time_s,

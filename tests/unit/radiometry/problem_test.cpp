@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <set>
 
 #include "glint/atmosphere/atmosphere.h"
 #include "glint/core/error.h"
@@ -88,6 +89,39 @@ TEST(Solve, IdenticalBytesForOneAndTwoThreadsAndTwoRuns) {
     // Another seed gives other numbers.
     batch.key.seed = 8;
     EXPECT_NE(bytes_of(solve(rig.tracer, batch, two)), bytes_of(a));
+}
+
+TEST(Solve, EqualsTracingEachSampleAloneFromItsStream) {
+    // solve() traces the samples of 16 problems side by side, their camera rays as one Embree
+    // packet; each problem must still be, bit for bit, its samples traced one by one from
+    // sample_stream() (problem.h's promise). 37 problems: two whole groups and a part; the
+    // threshold makes the problems of a group stop after different sample counts.
+    Rig rig = busy_rig();
+    const Pinhole source;
+    ProblemBatch batch = batch_of(source, 5, 37);
+    batch.convergence = {2, 40, 5e-4};
+    batch.first_problem = 5;
+    const Solutions s = solve(rig.tracer, batch, Context{});
+    PathScratch scratch(3);
+    std::vector<double> radiance(3);
+    std::set<std::uint64_t> counts;
+    for (std::uint64_t i = 0; i < 37; ++i) {
+        const std::uint64_t problem = batch.first_problem + i;
+        std::vector<double> sum(3, 0.0);
+        double weight_sum = 0.0;
+        for (std::uint64_t n = 0; n < s.samples[i]; ++n) {
+            RandomStream rng = sample_stream(batch.key, problem, n);
+            const SampleRay ray = source.generate(problem, n, rng);
+            rig.tracer.trace(ray, rng, scratch, radiance);
+            for (std::size_t b = 0; b < 3; ++b) sum[b] += ray.weight * radiance[b];
+            weight_sum += ray.weight;
+        }
+        for (std::size_t b = 0; b < 3; ++b) {
+            EXPECT_EQ(s.radiance(i)[b], sum[b] / weight_sum) << i << " " << b;
+        }
+        counts.insert(s.samples[i]);
+    }
+    EXPECT_GT(counts.size(), 3u);  // the group's problems stopped at different sample counts
 }
 
 TEST(Solve, ConvergenceStopsWhenTheMeanSettles) {

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <limits>
 #include <regex>
+#include <span>
 #include <string>
 #include <thread>
 #include <vector>
@@ -236,12 +237,116 @@ TEST(GeometryScene, OccludedAgreesWithIntersect) {
     EXPECT_GT(misses, 50);
 }
 
-TEST(GeometryScene, QueriesFromManyThreadsMatchOneThread) {
+/// Every field of two hits, bit for bit.
+void expect_same_hit(const std::optional<RayHit>& a, const std::optional<RayHit>& b,
+                     const std::string& where) {
+    ASSERT_EQ(a.has_value(), b.has_value()) << where;
+    if (!a) return;
+    EXPECT_EQ(a->distance_m, b->distance_m) << where;
+    EXPECT_EQ(a->position_m.x, b->position_m.x) << where;
+    EXPECT_EQ(a->position_m.y, b->position_m.y) << where;
+    EXPECT_EQ(a->position_m.z, b->position_m.z) << where;
+    EXPECT_EQ(a->normal.x, b->normal.x) << where;
+    EXPECT_EQ(a->normal.y, b->normal.y) << where;
+    EXPECT_EQ(a->normal.z, b->normal.z) << where;
+    EXPECT_EQ(a->material, b->material) << where;
+    EXPECT_EQ(a->instance, b->instance) << where;
+    EXPECT_EQ(a->triangle, b->triangle) << where;
+}
+
+/// Packets of `size` rays from `rays`, each answer compared with intersect()'s.
+void expect_packets_match_single_rays(const GeometryScene& geometry,
+                                      const std::vector<PacketRay>& rays, std::size_t size) {
+    std::vector<std::optional<RayHit>> hits(size);
+    for (std::size_t first = 0; first < rays.size(); first += size) {
+        const std::size_t count = std::min(size, rays.size() - first);
+        const std::span<const PacketRay> packet(rays.data() + first, count);
+        geometry.intersect_packet(packet, std::span(hits).first(count));
+        for (std::size_t k = 0; k < count; ++k) {
+            const PacketRay& r = packet[k];
+            expect_same_hit(hits[k],
+                            geometry.intersect(r.origin_m, r.direction, r.time_s, r.tmin_m, r.tmax_m),
+                            "ray " + std::to_string(first + k) + " in packets of " +
+                                std::to_string(size));
+        }
+    }
+}
+
+TEST(GeometryScene, PacketQueriesGiveTheBitsOfSingleQueries) {
+    // Static scene: Embree's packet kernel must give exactly the single-ray answers (the
+    // renderer's bits depend on it). Coherent camera rays from 3 km and 700 km, incoherent
+    // rays from near the surfaces with finite intervals, rays that miss the scene box, and
+    // partial packets (sizes 1, 5, 16).
+    model::Scene scene = scene_with_materials(3);
+    add_static(scene, add_object(scene, ground_plane_mesh(400.0, 0), "ground"));
+    const std::size_t box = add_object(scene, box_mesh({-3, -2, 0}, {3, 2, 8}, 1), "box");
+    for (int i = 0; i < 12; ++i) {
+        model::StaticTransform t = translated({-60.0 + 11.0 * i, 7.0 * (i % 5) - 14.0, 0.0});
+        t.rotation_rad = {0.0, 0.0, 0.3 * i};
+        t.scale = {1.0 + 0.1 * i, 1.0, 0.5 + 0.2 * (i % 3)};
+        add_static(scene, box, t);
+    }
+    add_static(scene, add_object(scene, sphere_mesh(6.0, 24, 12, 2), "ball"),
+               translated({20, -30, 9}));
+    const GeometryScene geometry = build(scene);
+    std::vector<PacketRay> rays;
+    for (const double height_m : {3000.0, 700'000.0}) {
+        for (int y = 0; y < 24; ++y) {
+            for (int x = 0; x < 32; ++x) {
+                const Vec3 d = normalized(Vec3{(x - 15.5) * 0.0015, (y - 11.5) * 0.0015, -1.0});
+                rays.push_back({{3.0, -2.0, height_m}, d, 0.0});
+            }
+        }
+    }
+    for (int k = 0; k < 400; ++k) {
+        const double a = 0.61 * k;
+        const Vec3 origin{-70.0 + 0.35 * k, 40.0 * std::sin(0.3 * k), 0.5 + (k % 9)};
+        const Vec3 d = normalized(Vec3{std::cos(a), std::sin(a), -0.7 + 0.09 * (k % 17)});
+        rays.push_back({origin, d, 0.0, 0.01 * (k % 3), k % 4 == 0 ? 25.0 : std::numeric_limits<double>::infinity()});
+    }
+    rays.push_back({{1e6, 0.0, 10.0}, kUp, 0.0});             // outside the box, away
+    rays.push_back({{0.0, 0.0, 10.0}, kDown, 0.0, 0.0, 5.0});  // stopped short
+    for (const std::size_t size : {1u, 5u, 16u}) {
+        expect_packets_match_single_rays(geometry, rays, size);
+    }
+    std::size_t hits = 0;
+    for (const PacketRay& r : rays) hits += geometry.intersect(r.origin_m, r.direction, 0.0).has_value();
+    EXPECT_GT(hits, rays.size() / 2);  // both outcomes are exercised
+    EXPECT_LT(hits, rays.size());
+
+    // More rays than a packet holds, or a result span of another size: internal errors.
+    std::vector<std::optional<RayHit>> out(17);
+    EXPECT_EQ(error_of([&] {
+                  geometry.intersect_packet(std::span(rays).first(17), out);
+              }).message(),
+              "internal error: packet query of 17 rays into 17 results (at most 16)");
+    EXPECT_EQ(error_of([&] {
+                  geometry.intersect_packet(std::span(rays).first(4), std::span(out).first(3));
+              }).category(),
+              ErrorCategory::internal);
+}
+
+/// A ground plane under a 20 m blade spinning at 90°/s about (0, 0, 5), over [0, 1] s.
+GeometryScene rotor_scene() {
     model::Scene scene = scene_with_materials(1);
     add_static(scene, add_object(scene, ground_plane_mesh(200.0, 0), "ground"));
     const std::size_t blade = add_object(scene, box_mesh({-10, -1, 0}, {10, 1, 1}, 0), "blade");
     add_dynamic(scene, blade, spin_motion({0, 0, 5}, {0, 0, 1}, 90.0), "rotor");
-    const GeometryScene geometry = build(scene, options_over(0.0, 1.0));
+    return build(scene, options_over(0.0, 1.0));
+}
+
+TEST(GeometryScene, PacketQueriesOnAMovingSceneGiveTheBitsOfSingleQueries) {
+    const GeometryScene geometry = rotor_scene();
+    std::vector<PacketRay> rays;
+    for (int k = 0; k < 320; ++k) {
+        const double a = 0.61 * k;
+        rays.push_back({{8.0 * std::cos(a), 8.0 * std::sin(a), 30.0}, kDown, (k % 97) / 96.0});
+    }
+    expect_packets_match_single_rays(geometry, rays, 16);
+}
+
+TEST(GeometryScene, QueriesFromManyThreadsMatchOneThread) {
+    const GeometryScene geometry = rotor_scene();
     const auto trace = [&geometry](int k) {
         const double a = 0.61 * k;
         const Vec3 origin{8.0 * std::cos(a), 8.0 * std::sin(a), 30.0};

@@ -20,6 +20,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -107,9 +108,13 @@ public:
     /// Traces one path for `ray` and writes its at-aperture radiance, W/(cm² sr µm), to
     /// `radiance` (bands() values: the range's; overwritten). Draws from `rng` only.
     /// `scratch` must have been made for environment().bands(). With `first_hit`, records
-    /// the first surface hit there.
+    /// the first surface hit there. With `primary_hit`, the primary ray has already been
+    /// traced: *primary_hit is scene().intersect(ray.origin_m, ray.direction, ray.time_s)'s
+    /// answer (e.g. from GeometryScene::intersect_packet) and is used instead of tracing it
+    /// again; the radiance and draws are the same.
     void trace(const SampleRay& ray, RandomStream& rng, PathScratch& scratch,
-               std::span<double> radiance, FirstHit* first_hit = nullptr) const;
+               std::span<double> radiance, FirstHit* first_hit = nullptr,
+               const std::optional<scene::RayHit>* primary_hit = nullptr) const;
     /// trace() at the bands `bands` only (indices into the environment's grid, inside
     /// range(), at most environment().bands() of them): radiance[j] is what trace() would give
     /// at bands[j] for a path with the same geometry. The path's geometry does not depend on
@@ -117,9 +122,12 @@ public:
     /// Throws glint::Error (internal) when the two spans differ in size or are empty.
     void trace_bands(const SampleRay& ray, RandomStream& rng, PathScratch& scratch,
                      std::span<const std::uint32_t> bands, std::span<double> radiance,
-                     FirstHit* first_hit = nullptr) const;
+                     FirstHit* first_hit = nullptr,
+                     const std::optional<scene::RayHit>* primary_hit = nullptr) const;
     /// The settings.
     const TracerSettings& settings() const noexcept { return m_settings; }
+    /// The scene it traces.
+    const scene::GeometryScene& scene() const noexcept { return m_scene; }
 
 private:
     const scene::GeometryScene& m_scene;
@@ -132,7 +140,8 @@ private:
     /// The path at `bands` (a band range or list, path_tracer.cpp).
     template <typename Bands>
     void trace_path(const Bands& bands, const SampleRay& ray, RandomStream& rng,
-                    PathScratch& scratch, std::span<double> radiance, FirstHit* first_hit) const;
+                    PathScratch& scratch, std::span<double> radiance, FirstHit* first_hit,
+                    const std::optional<scene::RayHit>* primary_hit) const;
     /// Adds the point sources' light reflected at a vertex (next-event estimation).
     template <typename Bands>
     void add_point_lights(const Bands& bands, const scene::RayHit& hit, const Vec3& normal,
