@@ -158,11 +158,38 @@ void PathTracer::add_point_lights(const Bands& bands, const scene::RayHit& hit, 
     }
 }
 
+FirstSun PathTracer::draw_sun(const scene::RayHit& hit, const Vec3& normal, double wo_z,
+                              double time_s, RandomStream& rng) const {
+    const Environment& env = m_environment;
+    const Vec3 sun = env.sun_direction(time_s);
+    const Vec3 local = sample_uniform_cone(rng.uniform(), rng.uniform(), env.sun_half_angle_rad());
+    FirstSun drawn;
+    drawn.wi = Frame::from_normal(sun).to_world(local);
+    drawn.cos_i = dot(normal, drawn.wi);
+    if (drawn.cos_i > 0.0 && wo_z > 0.0) {
+        drawn.query = true;
+        drawn.ray = scene::PacketRay{m_scene.spawn_origin(hit, drawn.wi), drawn.wi, time_s};
+    }
+    return drawn;
+}
+
+FirstSun PathTracer::first_sun(const SampleRay& ray, const std::optional<scene::RayHit>& primary_hit,
+                               RandomStream& rng, bool records_first_hit) const {
+    if (!primary_hit || !m_environment.sun_visible()) return {};
+    const scene::RayHit& hit = *primary_hit;
+    if (!m_materials.reflects(hit.material) && !records_first_hit) return {};
+    // As trace_path's first vertex: the normal facing the ray, the outgoing direction's z.
+    const Vec3 wo = -ray.direction;
+    const Vec3 normal = dot(hit.normal, wo) < 0.0 ? -hit.normal : hit.normal;
+    const double wo_z = Frame::from_normal(normal).to_local(wo).z;
+    return draw_sun(hit, normal, wo_z, ray.time_s, rng);
+}
+
 template <typename Bands>
 void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStream& rng,
                             PathScratch& scratch, std::span<double> radiance,
-                            FirstHit* first_hit,
-                            const std::optional<scene::RayHit>* primary_hit) const {
+                            FirstHit* first_hit, const std::optional<scene::RayHit>* primary_hit,
+                            const FirstSun* sun) const {
     const Environment& env = m_environment;
     const std::size_t count = bands.size();
     std::fill(radiance.begin(), radiance.end(), 0.0);
@@ -202,16 +229,22 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
         FirstHit* record = bounce == 0 ? first_hit : nullptr;
         bool sun_blocked = true;
         if ((reflects || record != nullptr) && env.sun_visible()) {
-            const Vec3 sun = env.sun_direction(time);
-            const Vec3 local =
-                sample_uniform_cone(rng.uniform(), rng.uniform(), env.sun_half_angle_rad());
-            const Vec3 wi = Frame::from_normal(sun).to_world(local);
-            const double cos_i = dot(normal, wi);
-            if (cos_i > 0.0 && wo_local.z > 0.0) {
+            FirstSun drawn;
+            if (bounce == 0 && sun != nullptr) {
+                drawn = *sun;  // drawn, and its shadow ray answered, before the path
+            } else {
+                drawn = draw_sun(*hit, normal, wo_local.z, time, rng);
+                if (drawn.query) {
+                    const scene::PacketRay& q = drawn.ray;
+                    drawn.blocked = m_scene.occluded(q.origin_m, q.direction, q.time_s);
+                }
+            }
+            if (drawn.query) {
                 ++scratch.rays;
-                sun_blocked = m_scene.occluded(m_scene.spawn_origin(*hit, wi), wi, time);
+                sun_blocked = drawn.blocked;
                 if (!sun_blocked && reflects) {
-                    sun_factor = m_materials.shape(m).eval(wo_local, frame.to_local(wi)) * cos_i;
+                    sun_factor =
+                        m_materials.shape(m).eval(wo_local, frame.to_local(drawn.wi)) * drawn.cos_i;
                 }
             }
         }
@@ -267,21 +300,22 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
 
 void PathTracer::trace(const SampleRay& ray, RandomStream& rng, PathScratch& scratch,
                        std::span<double> radiance, FirstHit* first_hit,
-                       const std::optional<scene::RayHit>* primary_hit) const {
+                       const std::optional<scene::RayHit>* primary_hit, const FirstSun* sun) const {
     trace_path(RangeBands{m_range.first, m_range.count}, ray, rng, scratch, radiance, first_hit,
-               primary_hit);
+               primary_hit, sun);
 }
 
 void PathTracer::trace_bands(const SampleRay& ray, RandomStream& rng, PathScratch& scratch,
                              std::span<const std::uint32_t> bands, std::span<double> radiance,
                              FirstHit* first_hit,
-                             const std::optional<scene::RayHit>* primary_hit) const {
+                             const std::optional<scene::RayHit>* primary_hit,
+                             const FirstSun* sun) const {
     if (bands.size() != radiance.size() || bands.empty() ||
         bands.size() > scratch.throughput.size()) {
         throw internal_error("trace_bands: " + std::to_string(bands.size()) + " bands for " +
                              std::to_string(radiance.size()) + " values");
     }
-    trace_path(ListBands{bands}, ray, rng, scratch, radiance, first_hit, primary_hit);
+    trace_path(ListBands{bands}, ray, rng, scratch, radiance, first_hit, primary_hit, sun);
 }
 
 }  // namespace glint::radiometry

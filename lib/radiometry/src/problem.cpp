@@ -30,7 +30,8 @@ constexpr std::uint64_t kSpectralDrawId = 0x5350454354524100ull;
 
 /// Problems one worker solves side by side: their samples advance in rounds, and each round's
 /// sample rays go to Embree as one packet (GeometryScene::intersect_packet), which traces a
-/// camera's coherent rays about twice as fast as one at a time. Every problem gets the same
+/// camera's coherent rays about twice as fast as one at a time, and so do the sun shadow rays
+/// of their first hits (GeometryScene::occluded_packet). Every problem gets the same
 /// bits as when solved alone (its samples, streams and draws are its own).
 constexpr std::size_t kLanes = scene::kPacketSize;
 
@@ -88,25 +89,31 @@ struct Workspace {
     std::array<scene::PacketRay, kLanes> packet;           ///< a round's sample rays
     std::array<std::optional<scene::RayHit>, kLanes> hits;  ///< and their first hits
     std::array<std::size_t, kLanes> packet_lane{};          ///< the lane of each packet ray
+    std::array<FirstSun, kLanes> suns;              ///< the first vertices' sun draws
+    std::array<scene::PacketRay, kLanes> shadows;   ///< the shadow rays they ask for
+    std::array<bool, kLanes> blocked{};             ///< and the answers
+    std::array<std::size_t, kLanes> shadow_ray{};   ///< the packet ray of each shadow ray
 };
 
 /// Traces one sample of `lane` into its sums (weighted by the ray's weight) and returns its
 /// radiance at the reference band; hands it to the recorder, if any, as a whole spectrum.
-/// `primary_hit` is the ray's first hit, already traced.
+/// `primary_hit` is the ray's first hit and `sun` its first vertex's sun, already traced.
 double trace_sample(const PathTracer& tracer, std::size_t reference_band,
-                    const std::optional<scene::RayHit>& primary_hit, Workspace& ws, Lane& lane) {
+                    const std::optional<scene::RayHit>& primary_hit, const FirstSun& sun,
+                    Workspace& ws, Lane& lane) {
     FirstHit* first_hit = ws.wants_first_hit ? &ws.first_hit : nullptr;
     const SampleRay& ray = lane.ray;
     RandomStream& rng = *lane.rng;
     if (!ws.draw.active()) {
-        tracer.trace(ray, rng, ws.path, ws.sample, first_hit, &primary_hit);
+        tracer.trace(ray, rng, ws.path, ws.sample, first_hit, &primary_hit, &sun);
         if (lane.recorder) lane.recorder->add(ray, ws.sample, first_hit);
         for (std::size_t b = 0; b < lane.sum.size(); ++b) lane.sum[b] += ray.weight * ws.sample[b];
         return ws.sample[reference_band];
     }
     // Spectral sampling: the reference band (weight 1), then the drawn ones.
     ws.draw.draw(lane.spectral_u, ws.grid_bands, ws.bands);
-    tracer.trace_bands(ray, rng, ws.path, ws.grid_bands, ws.values, first_hit, &primary_hit);
+    tracer.trace_bands(ray, rng, ws.path, ws.grid_bands, ws.values, first_hit, &primary_hit,
+                       &sun);
     const double drawn = ws.draw.weight();
     for (std::size_t j = 1; j < ws.values.size(); ++j) ws.values[j] *= drawn;
     for (std::size_t j = 0; j < ws.values.size(); ++j) {
@@ -270,11 +277,28 @@ void solve_group(const PathTracer& tracer, const ProblemBatch& batch, std::uint6
             ++rays;
         }
         if (rays == 0) break;
-        tracer.scene().intersect_packet(std::span(ws.packet).first(rays),
-                                        std::span(ws.hits).first(rays));
+        const scene::GeometryScene& scene = tracer.scene();
+        scene.intersect_packet(std::span(ws.packet).first(rays), std::span(ws.hits).first(rays));
+        // The first vertices' sun shadow rays (towards one direction from neighbouring points)
+        // as a second packet.
+        std::size_t shadows = 0;
         for (std::size_t r = 0; r < rays; ++r) {
             Lane& lane = ws.lanes[ws.packet_lane[r]];
-            count_sample(trace_sample(tracer, batch.reference_band, ws.hits[r], ws, lane), lane);
+            ws.suns[r] = tracer.first_sun(lane.ray, ws.hits[r], *lane.rng, ws.wants_first_hit);
+            if (!ws.suns[r].query) continue;
+            ws.shadows[shadows] = ws.suns[r].ray;
+            ws.shadow_ray[shadows] = r;
+            ++shadows;
+        }
+        if (shadows > 0) {
+            scene.occluded_packet(std::span(ws.shadows).first(shadows),
+                                  std::span(ws.blocked).first(shadows));
+            for (std::size_t q = 0; q < shadows; ++q) ws.suns[ws.shadow_ray[q]].blocked = ws.blocked[q];
+        }
+        for (std::size_t r = 0; r < rays; ++r) {
+            Lane& lane = ws.lanes[ws.packet_lane[r]];
+            count_sample(
+                trace_sample(tracer, batch.reference_band, ws.hits[r], ws.suns[r], ws, lane), lane);
         }
     }
     for (std::size_t j = 0; j < count; ++j) {

@@ -163,6 +163,15 @@ void fill_lane(RTCRay16& out, std::size_t k, const ClippedRay& ray, float time01
     out.flags[k] = 0;
 }
 
+/// An inactive lane: a finite ray with an empty interval (Embree reads every lane's numbers,
+/// whatever the valid mask says).
+void fill_inactive_lane(RTCRay16& out, std::size_t k) noexcept {
+    ClippedRay idle;
+    idle.direction[2] = 1.0f;
+    idle.tfar = -std::numeric_limits<float>::infinity();
+    fill_lane(out, k, idle, 0.0f);
+}
+
 void check_packet(std::size_t rays, std::size_t results) {
     if (rays > kPacketSize || results != rays) {
         throw internal_error("packet query of " + std::to_string(rays) + " rays into " +
@@ -215,6 +224,7 @@ void GeometryScene::intersect_packet(std::span<const PacketRay> rays,
         packet.rayhit.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
         packet.rayhit.hit.primID[k] = RTC_INVALID_GEOMETRY_ID;
         packet.rayhit.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+        fill_inactive_lane(packet.rayhit.ray, k);
         if (k >= rays.size()) continue;
         const PacketRay& ray = rays[k];
         clipped[k] = clip(impl.clip_bounds, ray.origin_m, ray.direction, ray.tmin_m, ray.tmax_m);
@@ -227,7 +237,8 @@ void GeometryScene::intersect_packet(std::span<const PacketRay> rays,
     if (any) {
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
-        context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+        // Not RTC_INTERSECT_CONTEXT_FLAG_COHERENT: Embree 3.13.5's coherent packet kernels
+        // never returned from rtcOccluded16 on shadow rays with an infinite tfar here.
         rtcIntersect16(packet.valid, impl.top.get(), &context, &packet.rayhit);
     }
     for (std::size_t k = 0; k < rays.size(); ++k) {
@@ -238,6 +249,39 @@ void GeometryScene::intersect_packet(std::span<const PacketRay> rays,
         }
         hits[k] = make_hit(impl.instances, impl.objects, rays[k].origin_m, rays[k].direction, *clipped[k], time01[k],
                            packet.rayhit.ray.tfar[k], hit.instID[0][k], hit.primID[k]);
+    }
+}
+
+void GeometryScene::occluded_packet(std::span<const PacketRay> rays, std::span<bool> blocked) const {
+    check_packet(rays.size(), blocked.size());
+    const Impl& impl = *m_impl;
+    if (impl.any_moving) {
+        for (std::size_t k = 0; k < rays.size(); ++k) {
+            const PacketRay& ray = rays[k];
+            blocked[k] = occluded(ray.origin_m, ray.direction, ray.time_s, ray.tmin_m, ray.tmax_m);
+        }
+        return;
+    }
+    Packet packet;
+    bool any = false;
+    for (std::size_t k = 0; k < kPacketSize; ++k) {
+        packet.valid[k] = 0;
+        fill_inactive_lane(packet.rayhit.ray, k);
+        if (k >= rays.size()) continue;
+        const PacketRay& ray = rays[k];
+        const auto clipped = clip(impl.clip_bounds, ray.origin_m, ray.direction, ray.tmin_m, ray.tmax_m);
+        if (!clipped) continue;
+        fill_lane(packet.rayhit.ray, k, *clipped, ray_time(impl.window, ray.time_s));
+        packet.valid[k] = -1;
+        any = true;
+    }
+    if (any) {
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        rtcOccluded16(packet.valid, impl.top.get(), &context, &packet.rayhit.ray);
+    }
+    for (std::size_t k = 0; k < rays.size(); ++k) {
+        blocked[k] = packet.valid[k] != 0 && packet.rayhit.ray.tfar[k] < 0.0f;
     }
 }
 

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <regex>
@@ -254,20 +255,27 @@ void expect_same_hit(const std::optional<RayHit>& a, const std::optional<RayHit>
     EXPECT_EQ(a->triangle, b->triangle) << where;
 }
 
-/// Packets of `size` rays from `rays`, each answer compared with intersect()'s.
+/// Packets of `size` rays from `rays`, each answer compared with intersect()'s and
+/// occluded()'s.
 void expect_packets_match_single_rays(const GeometryScene& geometry,
                                       const std::vector<PacketRay>& rays, std::size_t size) {
     std::vector<std::optional<RayHit>> hits(size);
+    std::array<bool, kPacketSize> blocked{};
     for (std::size_t first = 0; first < rays.size(); first += size) {
         const std::size_t count = std::min(size, rays.size() - first);
         const std::span<const PacketRay> packet(rays.data() + first, count);
         geometry.intersect_packet(packet, std::span(hits).first(count));
+        geometry.occluded_packet(packet, std::span(blocked).first(count));
         for (std::size_t k = 0; k < count; ++k) {
             const PacketRay& r = packet[k];
+            const std::string where =
+                "ray " + std::to_string(first + k) + " in packets of " + std::to_string(size);
             expect_same_hit(hits[k],
                             geometry.intersect(r.origin_m, r.direction, r.time_s, r.tmin_m, r.tmax_m),
-                            "ray " + std::to_string(first + k) + " in packets of " +
-                                std::to_string(size));
+                            where);
+            EXPECT_EQ(blocked[k],
+                      geometry.occluded(r.origin_m, r.direction, r.time_s, r.tmin_m, r.tmax_m))
+                << where;
         }
     }
 }
@@ -324,6 +332,9 @@ TEST(GeometryScene, PacketQueriesGiveTheBitsOfSingleQueries) {
                   geometry.intersect_packet(std::span(rays).first(4), std::span(out).first(3));
               }).category(),
               ErrorCategory::internal);
+    std::array<bool, 17> flags{};
+    EXPECT_EQ(error_of([&] { geometry.occluded_packet(std::span(rays).first(17), flags); }).message(),
+              "internal error: packet query of 17 rays into 17 results (at most 16)");
 }
 
 /// A ground plane under a 20 m blade spinning at 90°/s about (0, 0, 5), over [0, 1] s.

@@ -58,6 +58,17 @@ struct FirstHit {
     bool sun_blocked = false;
 };
 
+/// The sun's next-event estimate at a path's first vertex, prepared before the path is
+/// traced (PathTracer::first_sun), so that a renderer can trace many paths' shadow rays
+/// together (GeometryScene::occluded_packet) and hand each answer to trace().
+struct FirstSun {
+    bool query = false;     ///< a shadow ray is needed: `ray`, whose answer goes in `blocked`
+    scene::PacketRay ray;   ///< from the first hit towards the drawn point of the sun's disc
+    bool blocked = true;    ///< the answer (true when no ray is needed)
+    Vec3 wi;                ///< the drawn direction towards the sun
+    double cos_i = 0.0;     ///< its cosine with the facing normal
+};
+
 /// Path tracer settings.
 struct TracerSettings {
     unsigned max_bounces = 8;            ///< surface scatterings after the first hit
@@ -114,7 +125,16 @@ public:
     /// again; the radiance and draws are the same.
     void trace(const SampleRay& ray, RandomStream& rng, PathScratch& scratch,
                std::span<double> radiance, FirstHit* first_hit = nullptr,
-               const std::optional<scene::RayHit>* primary_hit = nullptr) const;
+               const std::optional<scene::RayHit>* primary_hit = nullptr,
+               const FirstSun* sun = nullptr) const;
+    /// What trace() draws and asks at the first vertex for the sun, given the primary ray's
+    /// hit (`primary_hit`, as for trace()) and whether trace() will record the first hit.
+    /// Draws from `rng` exactly what trace() would at that point; then trace(…, primary_hit,
+    /// &sun) with sun.blocked set to the shadow ray's answer (when sun.query) goes on from
+    /// there and gives the radiance trace() gives alone. Nothing to ask (no hit, no sun, a
+    /// black surface not recorded): query false.
+    FirstSun first_sun(const SampleRay& ray, const std::optional<scene::RayHit>& primary_hit,
+                       RandomStream& rng, bool records_first_hit) const;
     /// trace() at the bands `bands` only (indices into the environment's grid, inside
     /// range(), at most environment().bands() of them): radiance[j] is what trace() would give
     /// at bands[j] for a path with the same geometry. The path's geometry does not depend on
@@ -123,7 +143,8 @@ public:
     void trace_bands(const SampleRay& ray, RandomStream& rng, PathScratch& scratch,
                      std::span<const std::uint32_t> bands, std::span<double> radiance,
                      FirstHit* first_hit = nullptr,
-                     const std::optional<scene::RayHit>* primary_hit = nullptr) const;
+                     const std::optional<scene::RayHit>* primary_hit = nullptr,
+                     const FirstSun* sun = nullptr) const;
     /// The settings.
     const TracerSettings& settings() const noexcept { return m_settings; }
     /// The scene it traces.
@@ -141,7 +162,11 @@ private:
     template <typename Bands>
     void trace_path(const Bands& bands, const SampleRay& ray, RandomStream& rng,
                     PathScratch& scratch, std::span<double> radiance, FirstHit* first_hit,
-                    const std::optional<scene::RayHit>* primary_hit) const;
+                    const std::optional<scene::RayHit>* primary_hit, const FirstSun* sun) const;
+    /// The sun's direction drawn at a vertex (two draws) and, when it lights the surface from
+    /// the side the path came from, the shadow ray to ask.
+    FirstSun draw_sun(const scene::RayHit& hit, const Vec3& normal, double wo_z, double time_s,
+                      RandomStream& rng) const;
     /// Adds the point sources' light reflected at a vertex (next-event estimation).
     template <typename Bands>
     void add_point_lights(const Bands& bands, const scene::RayHit& hit, const Vec3& normal,

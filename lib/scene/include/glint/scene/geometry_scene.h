@@ -156,6 +156,11 @@ public:
     /// rays.size().
     void intersect_packet(std::span<const PacketRay> rays,
                           std::span<std::optional<RayHit>> hits) const;
+    /// occluded() for each of up to kPacketSize rays, traced together (rtcOccluded16):
+    /// blocked[i] is what occluded() gives for rays[i], under the same rules as
+    /// intersect_packet. Throws glint::Error (internal) for more than kPacketSize rays or
+    /// blocked.size() != rays.size().
+    void occluded_packet(std::span<const PacketRay> rays, std::span<bool> blocked) const;
     /// Whether anything lies on the ray for s in (tmin_m, tmax_m) at `time_s`.
     bool occluded(const Vec3& origin_m, const Vec3& direction, double time_s, double tmin_m = 0.0,
                   double tmax_m = std::numeric_limits<double>::infinity()) const;
