@@ -173,8 +173,9 @@ FirstSun PathTracer::draw_sun(const scene::RayHit& hit, const Vec3& normal, doub
     return drawn;
 }
 
-FirstSun PathTracer::first_sun(const SampleRay& ray, const std::optional<scene::RayHit>& primary_hit,
-                               RandomStream& rng, bool records_first_hit) const {
+FirstSun PathTracer::first_sun(const SampleRay& ray,
+                               const std::optional<scene::RayHit>& primary_hit, RandomStream& rng,
+                               bool records_first_hit) const {
     if (!primary_hit || !m_environment.sun_visible()) return {};
     const scene::RayHit& hit = *primary_hit;
     if (!m_materials.reflects(hit.material) && !records_first_hit) return {};
@@ -187,8 +188,8 @@ FirstSun PathTracer::first_sun(const SampleRay& ray, const std::optional<scene::
 
 template <typename Bands>
 void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStream& rng,
-                            PathScratch& scratch, std::span<double> radiance,
-                            FirstHit* first_hit, const std::optional<scene::RayHit>* primary_hit,
+                            PathScratch& scratch, std::span<double> radiance, FirstHit* first_hit,
+                            const std::optional<scene::RayHit>* primary_hit,
                             const FirstSun* sun) const {
     const Environment& env = m_environment;
     const std::size_t count = bands.size();
@@ -307,8 +308,7 @@ void PathTracer::trace(const SampleRay& ray, RandomStream& rng, PathScratch& scr
 
 void PathTracer::trace_bands(const SampleRay& ray, RandomStream& rng, PathScratch& scratch,
                              std::span<const std::uint32_t> bands, std::span<double> radiance,
-                             FirstHit* first_hit,
-                             const std::optional<scene::RayHit>* primary_hit,
+                             FirstHit* first_hit, const std::optional<scene::RayHit>* primary_hit,
                              const FirstSun* sun) const {
     if (bands.size() != radiance.size() || bands.empty() ||
         bands.size() > scratch.throughput.size()) {

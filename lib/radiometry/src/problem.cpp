@@ -81,18 +81,18 @@ struct Workspace {
     std::vector<double> radiance;  ///< a problem's result, handed to the receiver
     bool wants_first_hit = false;
     FirstHit first_hit;
-    SpectralDraw draw;                      ///< the wavelengths of a path (spectral sampling)
-    std::vector<std::uint32_t> grid_bands;  ///< a path's drawn bands, grid indices
-    std::vector<std::uint32_t> bands;       ///< the same, relative to the tracer's range
-    std::vector<double> values;             ///< the path's radiance at them
-    std::vector<Lane> lanes;                ///< the problems of the group being solved
-    std::array<scene::PacketRay, kLanes> packet;           ///< a round's sample rays
+    SpectralDraw draw;                            ///< the wavelengths of a path (spectral sampling)
+    std::vector<std::uint32_t> grid_bands;        ///< a path's drawn bands, grid indices
+    std::vector<std::uint32_t> bands;             ///< the same, relative to the tracer's range
+    std::vector<double> values;                   ///< the path's radiance at them
+    std::vector<Lane> lanes;                      ///< the problems of the group being solved
+    std::array<scene::PacketRay, kLanes> packet;  ///< a round's sample rays
     std::array<std::optional<scene::RayHit>, kLanes> hits;  ///< and their first hits
     std::array<std::size_t, kLanes> packet_lane{};          ///< the lane of each packet ray
-    std::array<FirstSun, kLanes> suns;              ///< the first vertices' sun draws
-    std::array<scene::PacketRay, kLanes> shadows;   ///< the shadow rays they ask for
-    std::array<bool, kLanes> blocked{};             ///< and the answers
-    std::array<std::size_t, kLanes> shadow_ray{};   ///< the packet ray of each shadow ray
+    std::array<FirstSun, kLanes> suns;                      ///< the first vertices' sun draws
+    std::array<scene::PacketRay, kLanes> shadows;           ///< the shadow rays they ask for
+    std::array<bool, kLanes> blocked{};                     ///< and the answers
+    std::array<std::size_t, kLanes> shadow_ray{};           ///< the packet ray of each shadow ray
 };
 
 /// Traces one sample of `lane` into its sums (weighted by the ray's weight) and returns its
@@ -112,8 +112,7 @@ double trace_sample(const PathTracer& tracer, std::size_t reference_band,
     }
     // Spectral sampling: the reference band (weight 1), then the drawn ones.
     ws.draw.draw(lane.spectral_u, ws.grid_bands, ws.bands);
-    tracer.trace_bands(ray, rng, ws.path, ws.grid_bands, ws.values, first_hit, &primary_hit,
-                       &sun);
+    tracer.trace_bands(ray, rng, ws.path, ws.grid_bands, ws.values, first_hit, &primary_hit, &sun);
     const double drawn = ws.draw.weight();
     for (std::size_t j = 1; j < ws.values.size(); ++j) ws.values[j] *= drawn;
     for (std::size_t j = 0; j < ws.values.size(); ++j) {
@@ -204,8 +203,8 @@ void begin_problem(const ProblemBatch& batch, std::uint64_t problem, const Spect
 void next_ray(const ProblemBatch& batch, Lane& lane) {
     const std::uint64_t n = lane.samples;
     const StreamKey& k = batch.key;
-    lane.rng = k.spectral_state ? lane.pixel->stream({n, *k.spectral_state})
-                                : lane.pixel->stream({n});
+    lane.rng =
+        k.spectral_state ? lane.pixel->stream({n, *k.spectral_state}) : lane.pixel->stream({n});
     lane.ray = batch.source->generate(lane.problem, n, *lane.rng);
     if (!(lane.ray.weight > 0.0) || !std::isfinite(lane.ray.weight)) {
         throw input_error("sample " + std::to_string(n) + " of problem " +
@@ -271,8 +270,8 @@ void solve_group(const PathTracer& tracer, const ProblemBatch& batch, std::uint6
             Lane& lane = ws.lanes[j];
             if (!lane.active) continue;
             next_ray(batch, lane);
-            ws.packet[rays] = scene::PacketRay{lane.ray.origin_m, lane.ray.direction,
-                                               lane.ray.time_s};
+            ws.packet[rays] =
+                scene::PacketRay{lane.ray.origin_m, lane.ray.direction, lane.ray.time_s};
             ws.packet_lane[rays] = j;
             ++rays;
         }
@@ -293,7 +292,8 @@ void solve_group(const PathTracer& tracer, const ProblemBatch& batch, std::uint6
         if (shadows > 0) {
             scene.occluded_packet(std::span(ws.shadows).first(shadows),
                                   std::span(ws.blocked).first(shadows));
-            for (std::size_t q = 0; q < shadows; ++q) ws.suns[ws.shadow_ray[q]].blocked = ws.blocked[q];
+            for (std::size_t q = 0; q < shadows; ++q)
+                ws.suns[ws.shadow_ray[q]].blocked = ws.blocked[q];
         }
         for (std::size_t r = 0; r < rays; ++r) {
             Lane& lane = ws.lanes[ws.packet_lane[r]];
@@ -340,7 +340,9 @@ Solution solve(const PathTracer& tracer, const ProblemBatch& batch, std::uint64_
     solution.radiance_w_per_cm2_sr_um.resize(tracer.bands());
     solve_group(
         tracer, batch, problem, 1, ws,
-        [&](std::size_t, Workspace&) { return std::span<double>(solution.radiance_w_per_cm2_sr_um); },
+        [&](std::size_t, Workspace&) {
+            return std::span<double>(solution.radiance_w_per_cm2_sr_um);
+        },
         [&](std::size_t, std::span<double>, std::span<const std::uint32_t>, std::uint64_t samples,
             double error) {
             solution.samples = samples;
@@ -376,8 +378,8 @@ std::uint64_t solve_batch(const PathTracer& tracer, const ProblemBatch& batch,
                 for (std::uint64_t g = range.begin(); g != range.end(); ++g) {
                     if (context.cancel.cancelled()) return;
                     const std::uint64_t first = g * kLanes;
-                    const auto count =
-                        static_cast<std::size_t>(std::min<std::uint64_t>(kLanes, batch.count - first));
+                    const auto count = static_cast<std::size_t>(
+                        std::min<std::uint64_t>(kLanes, batch.count - first));
                     solve_group(
                         tracer, batch, batch.first_problem + first, count, ws,
                         [&](std::size_t j, Workspace& w) { return into(first + j, w); },

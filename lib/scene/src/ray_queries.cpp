@@ -111,9 +111,9 @@ Vec3 vertex(const detail::ObjectData& object, std::uint32_t index) noexcept {
 /// The hit Embree reported for `clipped` (the caller's ray origin_m + s · direction): distance
 /// from the caller's origin, position, material and the unit normal in scene ENU.
 RayHit make_hit(const std::vector<detail::InstanceData>& instances,
-                const std::vector<detail::ObjectData>& objects, const Vec3& origin_m, const Vec3& direction,
-                const ClippedRay& clipped, float time01, float tfar, std::uint32_t instance_id,
-                std::uint32_t triangle) {
+                const std::vector<detail::ObjectData>& objects, const Vec3& origin_m,
+                const Vec3& direction, const ClippedRay& clipped, float time01, float tfar,
+                std::uint32_t instance_id, std::uint32_t triangle) {
     RayHit hit;
     // The float origin and direction as Embree used them, measured along the caller's ray.
     const Vec3 float_origin{clipped.origin[0], clipped.origin[1], clipped.origin[2]};
@@ -141,10 +141,18 @@ RayHit make_hit(const std::vector<detail::InstanceData>& instances,
     return hit;
 }
 
-/// Embree's packet of kPacketSize rays, 64-byte aligned as rtcIntersect16 requires.
+/// Embree's packet of kPacketSize rays, 64-byte aligned as rtcIntersect16 requires, with
+/// each lane's clipped ray and time.
 struct alignas(64) Packet {
     alignas(64) int valid[kPacketSize];
     RTCRayHit16 rayhit;
+    std::optional<ClippedRay> clipped[kPacketSize];
+    float time01[kPacketSize] = {};
+
+    /// Loads `rays`, each clipped to `box` (a ray that misses it leaves its lane inactive);
+    /// returns whether any lane is active.
+    bool load(const Bounds& box, const TimeWindow& window,
+              std::span<const PacketRay> rays) noexcept;
 };
 static_assert(kPacketSize == 16, "the packet queries use Embree's 16-wide calls");
 
@@ -170,6 +178,27 @@ void fill_inactive_lane(RTCRay16& out, std::size_t k) noexcept {
     idle.direction[2] = 1.0f;
     idle.tfar = -std::numeric_limits<float>::infinity();
     fill_lane(out, k, idle, 0.0f);
+}
+
+bool Packet::load(const Bounds& box, const TimeWindow& window,
+                  std::span<const PacketRay> rays) noexcept {
+    bool any = false;
+    for (std::size_t k = 0; k < kPacketSize; ++k) {
+        valid[k] = 0;
+        rayhit.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
+        rayhit.hit.primID[k] = RTC_INVALID_GEOMETRY_ID;
+        rayhit.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
+        fill_inactive_lane(rayhit.ray, k);
+        if (k >= rays.size()) continue;
+        const PacketRay& ray = rays[k];
+        clipped[k] = clip(box, ray.origin_m, ray.direction, ray.tmin_m, ray.tmax_m);
+        if (!clipped[k]) continue;
+        time01[k] = ray_time(window, ray.time_s);
+        fill_lane(rayhit.ray, k, *clipped[k], time01[k]);
+        valid[k] = -1;
+        any = true;
+    }
+    return any;
 }
 
 void check_packet(std::size_t rays, std::size_t results) {
@@ -198,8 +227,8 @@ std::optional<RayHit> GeometryScene::intersect(const Vec3& origin_m, const Vec3&
     rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(impl.top.get(), &context, &rayhit);
     if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
-    return make_hit(impl.instances, impl.objects, origin_m, direction, *clipped, time01, rayhit.ray.tfar,
-                    rayhit.hit.instID[0], rayhit.hit.primID);
+    return make_hit(impl.instances, impl.objects, origin_m, direction, *clipped, time01,
+                    rayhit.ray.tfar, rayhit.hit.instID[0], rayhit.hit.primID);
 }
 
 void GeometryScene::intersect_packet(std::span<const PacketRay> rays,
@@ -216,24 +245,7 @@ void GeometryScene::intersect_packet(std::span<const PacketRay> rays,
         return;
     }
     Packet packet;
-    std::optional<ClippedRay> clipped[kPacketSize];
-    float time01[kPacketSize] = {};
-    bool any = false;
-    for (std::size_t k = 0; k < kPacketSize; ++k) {
-        packet.valid[k] = 0;
-        packet.rayhit.hit.geomID[k] = RTC_INVALID_GEOMETRY_ID;
-        packet.rayhit.hit.primID[k] = RTC_INVALID_GEOMETRY_ID;
-        packet.rayhit.hit.instID[0][k] = RTC_INVALID_GEOMETRY_ID;
-        fill_inactive_lane(packet.rayhit.ray, k);
-        if (k >= rays.size()) continue;
-        const PacketRay& ray = rays[k];
-        clipped[k] = clip(impl.clip_bounds, ray.origin_m, ray.direction, ray.tmin_m, ray.tmax_m);
-        if (!clipped[k]) continue;
-        time01[k] = ray_time(impl.window, ray.time_s);
-        fill_lane(packet.rayhit.ray, k, *clipped[k], time01[k]);
-        packet.valid[k] = -1;
-        any = true;
-    }
+    const bool any = packet.load(impl.clip_bounds, impl.window, rays);
     if (any) {
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
@@ -247,12 +259,14 @@ void GeometryScene::intersect_packet(std::span<const PacketRay> rays,
             hits[k].reset();
             continue;
         }
-        hits[k] = make_hit(impl.instances, impl.objects, rays[k].origin_m, rays[k].direction, *clipped[k], time01[k],
-                           packet.rayhit.ray.tfar[k], hit.instID[0][k], hit.primID[k]);
+        hits[k] = make_hit(impl.instances, impl.objects, rays[k].origin_m, rays[k].direction,
+                           *packet.clipped[k], packet.time01[k], packet.rayhit.ray.tfar[k],
+                           hit.instID[0][k], hit.primID[k]);
     }
 }
 
-void GeometryScene::occluded_packet(std::span<const PacketRay> rays, std::span<bool> blocked) const {
+void GeometryScene::occluded_packet(std::span<const PacketRay> rays,
+                                    std::span<bool> blocked) const {
     check_packet(rays.size(), blocked.size());
     const Impl& impl = *m_impl;
     if (impl.any_moving) {
@@ -263,18 +277,7 @@ void GeometryScene::occluded_packet(std::span<const PacketRay> rays, std::span<b
         return;
     }
     Packet packet;
-    bool any = false;
-    for (std::size_t k = 0; k < kPacketSize; ++k) {
-        packet.valid[k] = 0;
-        fill_inactive_lane(packet.rayhit.ray, k);
-        if (k >= rays.size()) continue;
-        const PacketRay& ray = rays[k];
-        const auto clipped = clip(impl.clip_bounds, ray.origin_m, ray.direction, ray.tmin_m, ray.tmax_m);
-        if (!clipped) continue;
-        fill_lane(packet.rayhit.ray, k, *clipped, ray_time(impl.window, ray.time_s));
-        packet.valid[k] = -1;
-        any = true;
-    }
+    const bool any = packet.load(impl.clip_bounds, impl.window, rays);
     if (any) {
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);

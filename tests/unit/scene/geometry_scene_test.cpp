@@ -270,9 +270,9 @@ void expect_packets_match_single_rays(const GeometryScene& geometry,
             const PacketRay& r = packet[k];
             const std::string where =
                 "ray " + std::to_string(first + k) + " in packets of " + std::to_string(size);
-            expect_same_hit(hits[k],
-                            geometry.intersect(r.origin_m, r.direction, r.time_s, r.tmin_m, r.tmax_m),
-                            where);
+            expect_same_hit(
+                hits[k], geometry.intersect(r.origin_m, r.direction, r.time_s, r.tmin_m, r.tmax_m),
+                where);
             EXPECT_EQ(blocked[k],
                       geometry.occluded(r.origin_m, r.direction, r.time_s, r.tmin_m, r.tmax_m))
                 << where;
@@ -310,31 +310,33 @@ TEST(GeometryScene, PacketQueriesGiveTheBitsOfSingleQueries) {
         const double a = 0.61 * k;
         const Vec3 origin{-70.0 + 0.35 * k, 40.0 * std::sin(0.3 * k), 0.5 + (k % 9)};
         const Vec3 d = normalized(Vec3{std::cos(a), std::sin(a), -0.7 + 0.09 * (k % 17)});
-        rays.push_back({origin, d, 0.0, 0.01 * (k % 3), k % 4 == 0 ? 25.0 : std::numeric_limits<double>::infinity()});
+        rays.push_back({origin, d, 0.0, 0.01 * (k % 3),
+                        k % 4 == 0 ? 25.0 : std::numeric_limits<double>::infinity()});
     }
-    rays.push_back({{1e6, 0.0, 10.0}, kUp, 0.0});             // outside the box, away
+    rays.push_back({{1e6, 0.0, 10.0}, kUp, 0.0});              // outside the box, away
     rays.push_back({{0.0, 0.0, 10.0}, kDown, 0.0, 0.0, 5.0});  // stopped short
     for (const std::size_t size : {1u, 5u, 16u}) {
         expect_packets_match_single_rays(geometry, rays, size);
     }
     std::size_t hits = 0;
-    for (const PacketRay& r : rays) hits += geometry.intersect(r.origin_m, r.direction, 0.0).has_value();
+    for (const PacketRay& r : rays)
+        hits += geometry.intersect(r.origin_m, r.direction, 0.0).has_value();
     EXPECT_GT(hits, rays.size() / 2);  // both outcomes are exercised
     EXPECT_LT(hits, rays.size());
 
     // More rays than a packet holds, or a result span of another size: internal errors.
     std::vector<std::optional<RayHit>> out(17);
-    EXPECT_EQ(error_of([&] {
-                  geometry.intersect_packet(std::span(rays).first(17), out);
-              }).message(),
-              "internal error: packet query of 17 rays into 17 results (at most 16)");
+    EXPECT_EQ(
+        error_of([&] { geometry.intersect_packet(std::span(rays).first(17), out); }).message(),
+        "internal error: packet query of 17 rays into 17 results (at most 16)");
     EXPECT_EQ(error_of([&] {
                   geometry.intersect_packet(std::span(rays).first(4), std::span(out).first(3));
               }).category(),
               ErrorCategory::internal);
     std::array<bool, 17> flags{};
-    EXPECT_EQ(error_of([&] { geometry.occluded_packet(std::span(rays).first(17), flags); }).message(),
-              "internal error: packet query of 17 rays into 17 results (at most 16)");
+    EXPECT_EQ(
+        error_of([&] { geometry.occluded_packet(std::span(rays).first(17), flags); }).message(),
+        "internal error: packet query of 17 rays into 17 results (at most 16)");
 }
 
 /// A ground plane under a 20 m blade spinning at 90°/s about (0, 0, 5), over [0, 1] s.
@@ -554,8 +556,8 @@ TEST(GeometryScene, InstanceTrajectoriesFollowTheInstances) {
 
     // A motion with neither kind is refused at the instance.
     scene.instances[1].motion = std::make_shared<const model::PlatformMotion>();
-    const Error e =
-        error_of([&] { motion::make_instance_trajectories(scene, motion::SceneFrame(), DateTime{}); });
+    const Error e = error_of(
+        [&] { motion::make_instance_trajectories(scene, motion::SceneFrame(), DateTime{}); });
     EXPECT_EQ(e.category(), ErrorCategory::input);
     EXPECT_THAT(e.message(), HasSubstr("instance \"car\": no motion was read"));
     EXPECT_EQ(e.context().file, "test.yaml");

@@ -62,11 +62,11 @@ struct FirstHit {
 /// traced (PathTracer::first_sun), so that a renderer can trace many paths' shadow rays
 /// together (GeometryScene::occluded_packet) and hand each answer to trace().
 struct FirstSun {
-    bool query = false;     ///< a shadow ray is needed: `ray`, whose answer goes in `blocked`
-    scene::PacketRay ray;   ///< from the first hit towards the drawn point of the sun's disc
-    bool blocked = true;    ///< the answer (true when no ray is needed)
-    Vec3 wi;                ///< the drawn direction towards the sun
-    double cos_i = 0.0;     ///< its cosine with the facing normal
+    bool query = false;    ///< a shadow ray is needed: `ray`, whose answer goes in `blocked`
+    scene::PacketRay ray;  ///< from the first hit towards the drawn point of the sun's disc
+    bool blocked = true;   ///< the answer (true when no ray is needed)
+    Vec3 wi;               ///< the drawn direction towards the sun
+    double cos_i = 0.0;    ///< its cosine with the facing normal
 };
 
 /// Path tracer settings.
