@@ -201,6 +201,14 @@ bool Packet::load(const Bounds& box, const TimeWindow& window,
     return any;
 }
 
+/// A packet query on a scene with moving instances: each ray answered alone. Embree's packet
+/// kernels interpolate moving instances with other roundings than its single-ray kernel, so
+/// this keeps the packet queries' bits those of the single queries.
+template <typename Answer, typename Single>
+void one_by_one(std::span<const PacketRay> rays, std::span<Answer> out, const Single& single) {
+    for (std::size_t k = 0; k < rays.size(); ++k) out[k] = single(rays[k]);
+}
+
 void check_packet(std::size_t rays, std::size_t results) {
     if (rays > kPacketSize || results != rays) {
         throw internal_error("packet query of " + std::to_string(rays) + " rays into " +
@@ -236,12 +244,9 @@ void GeometryScene::intersect_packet(std::span<const PacketRay> rays,
     check_packet(rays.size(), hits.size());
     const Impl& impl = *m_impl;
     if (impl.any_moving) {
-        // Embree's packet kernels interpolate moving instances with other roundings than its
-        // single-ray kernel: trace them one by one, for the same bits.
-        for (std::size_t k = 0; k < rays.size(); ++k) {
-            const PacketRay& ray = rays[k];
-            hits[k] = intersect(ray.origin_m, ray.direction, ray.time_s, ray.tmin_m, ray.tmax_m);
-        }
+        one_by_one(rays, hits, [this](const PacketRay& r) {
+            return intersect(r.origin_m, r.direction, r.time_s, r.tmin_m, r.tmax_m);
+        });
         return;
     }
     Packet packet;
@@ -270,10 +275,9 @@ void GeometryScene::occluded_packet(std::span<const PacketRay> rays,
     check_packet(rays.size(), blocked.size());
     const Impl& impl = *m_impl;
     if (impl.any_moving) {
-        for (std::size_t k = 0; k < rays.size(); ++k) {
-            const PacketRay& ray = rays[k];
-            blocked[k] = occluded(ray.origin_m, ray.direction, ray.time_s, ray.tmin_m, ray.tmax_m);
-        }
+        one_by_one(rays, blocked, [this](const PacketRay& r) {
+            return occluded(r.origin_m, r.direction, r.time_s, r.tmin_m, r.tmax_m);
+        });
         return;
     }
     Packet packet;
