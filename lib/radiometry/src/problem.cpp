@@ -16,6 +16,7 @@
 #include <optional>
 #include <string>
 
+#include "glint/core/cancel.h"
 #include "glint/core/error.h"
 #include "glint/core/text.h"
 #include "glint/radiometry/spectral_draw.h"
@@ -257,14 +258,18 @@ std::pair<std::uint64_t, double> finish_problem(const SpectralDraw& draw, Lane& 
 
 /// Solves the `count` (≤ kLanes) problems first_problem … side by side, in rounds of one
 /// sample each whose rays are traced as one packet; then, in order, problem j's radiance goes
-/// into into(j) and done(j, radiance, nonzero bands, samples, error) is called.
+/// into into(j) and done(j, radiance, nonzero bands, samples, error) is called. `cancel` (may
+/// be null) is polled every round: once raised, the group returns with no problem done, so a
+/// stop never waits for 16 long problems to converge.
 template <typename Into, typename Done>
 void solve_group(const PathTracer& tracer, const ProblemBatch& batch, std::uint64_t first_problem,
-                 std::size_t count, Workspace& ws, const Into& into, const Done& done) {
+                 std::size_t count, Workspace& ws, const CancelToken* cancel, const Into& into,
+                 const Done& done) {
     for (std::size_t j = 0; j < count; ++j) {
         begin_problem(batch, first_problem + j, ws.draw, ws.lanes[j]);
     }
     for (;;) {
+        if (cancel != nullptr && cancel->cancelled()) return;
         std::size_t rays = 0;
         for (std::size_t j = 0; j < count; ++j) {
             Lane& lane = ws.lanes[j];
@@ -339,7 +344,7 @@ Solution solve(const PathTracer& tracer, const ProblemBatch& batch, std::uint64_
     Solution solution;
     solution.radiance_w_per_cm2_sr_um.resize(tracer.bands());
     solve_group(
-        tracer, batch, problem, 1, ws,
+        tracer, batch, problem, 1, ws, nullptr,
         [&](std::size_t, Workspace&) {
             return std::span<double>(solution.radiance_w_per_cm2_sr_um);
         },
@@ -381,7 +386,7 @@ std::uint64_t solve_batch(const PathTracer& tracer, const ProblemBatch& batch,
                     const auto count = static_cast<std::size_t>(
                         std::min<std::uint64_t>(kLanes, batch.count - first));
                     solve_group(
-                        tracer, batch, batch.first_problem + first, count, ws,
+                        tracer, batch, batch.first_problem + first, count, ws, &context.cancel,
                         [&](std::size_t j, Workspace& w) { return into(first + j, w); },
                         [&](std::size_t j, std::span<double> radiance,
                             std::span<const std::uint32_t> bands, std::uint64_t samples,

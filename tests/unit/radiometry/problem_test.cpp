@@ -5,11 +5,14 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <set>
+#include <utility>
 
 #include "glint/atmosphere/atmosphere.h"
+#include "glint/core/cancel.h"
 #include "glint/core/error.h"
 #include "glint/core/spectral.h"
 #include "tracer_fixture.h"
@@ -254,6 +257,46 @@ TEST(Solve, CancellationStopsTheBatch) {
     } catch (const Error& e) {
         EXPECT_EQ(e.category(), ErrorCategory::cancelled);
     }
+}
+
+/// The Pinhole that raises `cancel` at its `cancel_at`-th ray and refuses to go past
+/// `give_up_at` rays (so a solve that ignores the flag fails instead of running for hours).
+class CancellingPinhole final : public RaySource {
+public:
+    CancellingPinhole(CancelToken cancel, std::uint64_t cancel_at, std::uint64_t give_up_at)
+        : m_cancel(std::move(cancel)), m_cancel_at(cancel_at), m_give_up_at(give_up_at) {}
+    SampleRay generate(std::uint64_t problem, std::uint64_t sample,
+                       RandomStream& rng) const override {
+        const std::uint64_t n = ++m_rays;
+        if (n == m_cancel_at) m_cancel.cancel();
+        if (n > m_give_up_at) throw Error(ErrorCategory::internal, "the solve ignored the stop");
+        return m_pinhole.generate(problem, sample, rng);
+    }
+    std::uint64_t rays() const { return m_rays.load(); }
+
+private:
+    Pinhole m_pinhole;
+    CancelToken m_cancel;
+    std::uint64_t m_cancel_at;
+    std::uint64_t m_give_up_at;
+    mutable std::atomic<std::uint64_t> m_rays{0};
+};
+
+TEST(Solve, CancellationStopsWithinAGroupOfLongProblems) {
+    // 16 problems of 10⁹ samples each: one group of lanes. The stop raised at the 100th ray
+    // must end the solve within the round under way (at most 16 more rays), not after the
+    // group converges (a SIGINT must not wait for 16 long pixels).
+    Rig rig = busy_rig();
+    Context context;
+    context.threads = 1;
+    const CancellingPinhole source(context.cancel, 100, 10000);
+    try {
+        solve(rig.tracer, batch_of(source, 1000000000, 16), context);
+        FAIL() << "not cancelled";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.category(), ErrorCategory::cancelled) << e.what();
+    }
+    EXPECT_LE(source.rays(), 100u + 16u);
 }
 
 TEST(Solve, HypersampledProblemsTakeMoreSamples) {
