@@ -16,10 +16,7 @@ namespace detail {
 
 /// One object's Embree scene and what a hit on it needs.
 struct ObjectData {
-    ScenePtr scene;  ///< null for an object no instance uses
-    /// Embree's own copies of the vertices (x, y, z floats, padded) and triangles.
-    const float* vertices = nullptr;
-    const std::uint32_t* triangles = nullptr;
+    ScenePtr scene;                        ///< null for an object no instance uses
     std::vector<std::uint32_t> materials;  ///< per triangle; empty when all are single_material
     std::uint32_t single_material = 0;     ///< every triangle's, when `materials` is empty
     std::uint64_t triangle_count = 0;

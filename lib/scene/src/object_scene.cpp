@@ -81,9 +81,8 @@ ObjectData build_object_scene(EmbreeDevice& device, const model::GeometryObject&
     rtcCommitScene(data.scene.get());
     device.check(what);
 
-    // The scene holds a reference to the geometry, which owns the buffers.
-    data.vertices = vertices;
-    data.triangles = triangles;
+    // The scene holds a reference to the geometry, which owns the buffers; a hit reads
+    // neither (its normal is Embree's).
     // An object of one material (a terrain, most OBJ parts) keeps no per-triangle list: a hit
     // then needs no lookup (a cache miss on a large mesh).
     const auto& m = mesh.triangle_materials;

@@ -103,17 +103,16 @@ float ray_time(const TimeWindow& window, double time_s) noexcept {
     return static_cast<float>((time_s - window.begin_s) / length_s);
 }
 
-Vec3 vertex(const detail::ObjectData& object, std::uint32_t index) noexcept {
-    const float* v = object.vertices + 3 * static_cast<std::size_t>(index);
-    return {v[0], v[1], v[2]};
-}
-
 /// The hit Embree reported for `clipped` (the caller's ray origin_m + s · direction): distance
 /// from the caller's origin, position, material and the unit normal in scene ENU.
+/// `object_normal` is Embree's geometric normal (unnormalised, in the object's frame: the
+/// cross product (v1 − v0) × (v2 − v0) of the triangle's float vertices, computed in float),
+/// so a hit reads none of the triangle's indices or vertices — on a large mesh those loads
+/// miss the cache.
 RayHit make_hit(const std::vector<detail::InstanceData>& instances,
                 const std::vector<detail::ObjectData>& objects, const Vec3& origin_m,
                 const Vec3& direction, const ClippedRay& clipped, float time01, float tfar,
-                std::uint32_t instance_id, std::uint32_t triangle) {
+                std::uint32_t instance_id, std::uint32_t triangle, const Vec3& object_normal) {
     RayHit hit;
     // The float origin and direction as Embree used them, measured along the caller's ray.
     const Vec3 float_origin{clipped.origin[0], clipped.origin[1], clipped.origin[2]};
@@ -128,9 +127,6 @@ RayHit make_hit(const std::vector<detail::InstanceData>& instances,
     const detail::ObjectData& object = objects[instance.object];
     hit.material =
         object.materials.empty() ? object.single_material : object.materials[hit.triangle];
-    const std::uint32_t* t = object.triangles + 3 * static_cast<std::size_t>(hit.triangle);
-    const Vec3 v0 = vertex(object, t[0]);
-    const Vec3 object_normal = cross(vertex(object, t[1]) - v0, vertex(object, t[2]) - v0);
     detail::Mat3 normal_matrix = instance.normal_matrix;
     if (instance.moving) {
         float xfm[12];
@@ -236,7 +232,8 @@ std::optional<RayHit> GeometryScene::intersect(const Vec3& origin_m, const Vec3&
     rtcIntersect1(impl.top.get(), &context, &rayhit);
     if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
     return make_hit(impl.instances, impl.objects, origin_m, direction, *clipped, time01,
-                    rayhit.ray.tfar, rayhit.hit.instID[0], rayhit.hit.primID);
+                    rayhit.ray.tfar, rayhit.hit.instID[0], rayhit.hit.primID,
+                    Vec3{rayhit.hit.Ng_x, rayhit.hit.Ng_y, rayhit.hit.Ng_z});
 }
 
 void GeometryScene::intersect_packet(std::span<const PacketRay> rays,
@@ -264,9 +261,10 @@ void GeometryScene::intersect_packet(std::span<const PacketRay> rays,
             hits[k].reset();
             continue;
         }
-        hits[k] = make_hit(impl.instances, impl.objects, rays[k].origin_m, rays[k].direction,
-                           *packet.clipped[k], packet.time01[k], packet.rayhit.ray.tfar[k],
-                           hit.instID[0][k], hit.primID[k]);
+        hits[k] =
+            make_hit(impl.instances, impl.objects, rays[k].origin_m, rays[k].direction,
+                     *packet.clipped[k], packet.time01[k], packet.rayhit.ray.tfar[k],
+                     hit.instID[0][k], hit.primID[k], Vec3{hit.Ng_x[k], hit.Ng_y[k], hit.Ng_z[k]});
     }
 }
 

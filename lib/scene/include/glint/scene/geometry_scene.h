@@ -93,7 +93,9 @@ struct RayHit {
     double distance_m = 0.0;  ///< along the (unit) direction, from the caller's origin
     Vec3 position_m;          ///< origin + distance · direction, scene ENU
     /// Unit geometric normal in scene ENU at the ray's time, on the side of the triangle's
-    /// front face (counter-clockwise vertices); not flipped towards the ray.
+    /// front face (counter-clockwise vertices); not flipped towards the ray. It is Embree's
+    /// (the edges' cross product in single precision, relative error ~1e-7), normalized in
+    /// double after the instance's normal matrix.
     Vec3 normal;
     std::uint32_t material = 0;  ///< index into model::Scene::materials
     std::uint32_t instance = 0;  ///< index into model::Scene::instances
