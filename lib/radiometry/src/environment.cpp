@@ -120,6 +120,7 @@ Environment::Environment(const SpectralGrid& grid)
     : m_grid(grid),
       m_bands(grid.size()),
       m_sun_half_angle_rad(kSunAngularRadiusRad),
+      m_sun_cone_one_minus_cos(cone_one_minus_cos(kSunAngularRadiusRad)),
       m_sun(grid.size(), 0.0),
       m_sky(grid.size(), 0.0) {}
 

@@ -162,7 +162,8 @@ FirstSun PathTracer::draw_sun(const scene::RayHit& hit, const Vec3& normal, doub
                               double time_s, RandomStream& rng) const {
     const Environment& env = m_environment;
     const Vec3 sun = env.sun_direction(time_s);
-    const Vec3 local = sample_uniform_cone(rng.uniform(), rng.uniform(), env.sun_half_angle_rad());
+    const Vec3 local =
+        sample_uniform_cone_1mc(rng.uniform(), rng.uniform(), env.sun_cone_one_minus_cos());
     FirstSun drawn;
     drawn.wi = Frame::from_normal(sun).to_world(local);
     drawn.cos_i = dot(normal, drawn.wi);

@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <optional>
+#include <vector>
 
 #include "chi_square.h"
 #include "glint/core/rng.h"
@@ -79,6 +80,69 @@ TEST(Pdfs, IntegrateToOne) {
         cone.theta_max_rad = a;
         const auto e = cone.expected(1.0, [a](const Vec3&) { return uniform_cone_pdf_per_sr(a); });
         EXPECT_NEAR(1.0 - e.back(), 1.0, 1e-9) << half_deg;
+    }
+}
+
+/// Units in the last place of `reference` (its gap to the next double away from zero).
+double ulp(double reference) {
+    const double a = std::abs(reference);
+    return std::nextafter(a, INFINITY) - a;
+}
+
+TEST(CosSin, QuarterIsWithinTwoUlpOfLibm) {
+    // 400,001 evenly spaced angles over [−π/4, π/4] and tiny ones: the Taylor sums against
+    // glibc's cos and sin (correctly rounded in practice); 2 ulp allows the Horner sums'
+    // rounding.
+    std::vector<double> angles{0.0, 1e-300, -1e-300, 1e-8, -1e-8, kPi / 4.0, -kPi / 4.0};
+    for (int i = 0; i <= 400000; ++i) angles.push_back((kPi / 4.0) * (i / 200000.0 - 1.0));
+    for (const double x : angles) {
+        const CosSin r = cos_sin_quarter(x);
+        EXPECT_LE(std::abs(r.cos - std::cos(x)), 2.0 * ulp(std::cos(x))) << x;
+        EXPECT_LE(std::abs(r.sin - std::sin(x)), 2.0 * ulp(std::sin(x))) << x;
+    }
+}
+
+TEST(CosSin, TurnMatchesLibmOnEveryOctant) {
+    // cos 2πt and sin 2πt against libm's of the rounded 2πt: that argument alone carries
+    // up to ½ ulp of 2π ≈ 4.4e-16 rad of error, so the bound is absolute, 1e-15; exact
+    // values at the quarter turns; cos² + sin² = 1 within 4 ulp of 1.
+    RandomStream rng(kSeed, {21});
+    std::vector<double> turns{0.0,
+                              0.125,
+                              0.25,
+                              0.375,
+                              0.5,
+                              0.625,
+                              0.75,
+                              0.875,
+                              std::nextafter(1.0, 0.0),
+                              std::nextafter(0.25, 0.0)};
+    for (int i = 0; i < 200000; ++i) turns.push_back(rng.uniform());
+    for (const double t : turns) {
+        const CosSin r = cos_sin_turn(t);
+        EXPECT_NEAR(r.cos, std::cos(2.0 * kPi * t), 1e-15) << t;
+        EXPECT_NEAR(r.sin, std::sin(2.0 * kPi * t), 1e-15) << t;
+        EXPECT_NEAR(r.cos * r.cos + r.sin * r.sin, 1.0, 4.0 * ulp(1.0)) << t;
+    }
+    EXPECT_EQ(cos_sin_turn(0.0).cos, 1.0);
+    EXPECT_EQ(cos_sin_turn(0.0).sin, 0.0);
+    EXPECT_EQ(cos_sin_turn(0.25).cos, 0.0);
+    EXPECT_EQ(cos_sin_turn(0.25).sin, 1.0);
+    EXPECT_EQ(cos_sin_turn(0.5).cos, -1.0);
+    EXPECT_EQ(cos_sin_turn(0.75).sin, -1.0);
+}
+
+TEST(Cone, OneMinusCosGivesTheSameDirections) {
+    RandomStream rng(kSeed, {22});
+    const double one_minus_cos = cone_one_minus_cos(kSunAngularRadiusRad);
+    for (int i = 0; i < 1000; ++i) {
+        const double u1 = rng.uniform();
+        const double u2 = rng.uniform();
+        const Vec3 a = sample_uniform_cone(u1, u2, kSunAngularRadiusRad);
+        const Vec3 b = sample_uniform_cone_1mc(u1, u2, one_minus_cos);
+        EXPECT_EQ(a.x, b.x);
+        EXPECT_EQ(a.y, b.y);
+        EXPECT_EQ(a.z, b.z);
     }
 }
 

@@ -111,6 +111,8 @@ public:
     Vec3 sun_direction(double time_s) const noexcept;
     /// Angular radius of the sun disk, rad.
     double sun_half_angle_rad() const noexcept { return m_sun_half_angle_rad; }
+    /// 1 − cos of sun_half_angle_rad() (cone_one_minus_cos), for sample_uniform_cone_1mc.
+    double sun_cone_one_minus_cos() const noexcept { return m_sun_cone_one_minus_cos; }
     /// E_sun(λ) at the surface, normal to the beam, W/(cm² µm) (0 with the sun below the
     /// horizon).
     std::span<const double> sun_irradiance_w_per_cm2_um() const noexcept { return m_sun; }
@@ -163,6 +165,7 @@ private:
     double m_window_begin_s = 0.0;
     double m_window_end_s = 0.0;
     double m_sun_half_angle_rad = 0.0;
+    double m_sun_cone_one_minus_cos = 0.0;
     std::vector<double> m_sun;
     std::vector<double> m_sky;
     bool m_sun_visible = false;
