@@ -49,12 +49,14 @@ std::string out_of_memory(const detail::Prepared& prepared, const detail::Planne
     const std::uint64_t lines =
         std::min<std::uint64_t>(detail::block_lines(source), source.lines_per_capture());
     const std::uint64_t values = detail::band_values(state);
+    const bool two = detail::bands_held(source) == 2;
     return "out of memory in capture " + std::to_string(p.capture.index) + " of focal plane \"" +
-           source.focal_plane->name + "\": a band of " + std::to_string(lines) + " of its " +
-           std::to_string(source.lines_per_capture()) + " lines of " +
-           std::to_string(source.problems_per_capture / source.lines_per_capture()) + " pixels x " +
-           std::to_string(values) + " values x 8 bytes needs about " +
-           mebibytes(static_cast<double>(detail::band_bytes(source, state))) +
+           source.focal_plane->name +
+           "\": " + (two ? "two bands (one written while the next is solved)" : "a band") + " of " +
+           std::to_string(lines) + " of its " + std::to_string(source.lines_per_capture()) +
+           " lines of " + std::to_string(source.problems_per_capture / source.lines_per_capture()) +
+           " pixels x " + std::to_string(values) + " values x 8 bytes " + (two ? "need" : "needs") +
+           " about " + mebibytes(static_cast<double>(detail::band_bytes(source, state))) +
            ", and the render as planned about " +
            mebibytes(static_cast<double>(prepared.report.memory_estimate_bytes)) +
            " (glint-render --dry-run shows the plan; --scale_resolution lowers the pixel counts)";

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <future>
 #include <string>
 
 #include "glint/core/datetime.h"
@@ -157,7 +158,8 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
                              capture.index};
     // The capture is solved, reduced and written a band of lines at a time (about
     // kBlockPixels pixels): a pixel's spectrum lives only while its thread reduces it to
-    // channels, and only the band's channels and truth are held, whatever the frame's size.
+    // channels, and only two bands' channels and truth are held, whatever the frame's size:
+    // one band is detected and written on a thread of its own while the next is solved.
     const std::uint64_t per_line = source.problems_per_capture / source.lines_per_capture();
     const std::uint64_t band_lines = block_lines(source);
     const radiometry::ProblemBatch capture_batch = batch;
@@ -167,7 +169,34 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
     double total = 0.0;
     std::vector<std::uint64_t> samples;  // per pixel of the band, over the states
     std::vector<double> truth;
+    // The band being detected and written while the next is solved: its values, truth, first
+    // line and line count, and the job (declared after its buffers, so that an error
+    // unwinding from a solve waits for the job before they go).
+    std::vector<double> out_image;
+    std::vector<double> out_truth;
     std::vector<double> detected;
+    std::future<void> writing;
+    const auto write_band = [&](std::uint64_t first, std::uint64_t lines) {
+        if (state.detection) {
+            // Detection line by line, keyed like glint-detect: (capture index, line in
+            // capture).
+            const detect::DetectionChain& chain = *state.detection;
+            detected.assign(chain.output_values_per_line() * lines, 0.0);
+            for (std::size_t line = 0; line < lines; ++line) {
+                chain.process_line(
+                    {capture.index, first + line},
+                    std::span<const double>(out_image).subspan(line * chain.input_values_per_line(),
+                                                               chain.input_values_per_line()),
+                    std::span<double>(detected).subspan(line * chain.output_values_per_line(),
+                                                        chain.output_values_per_line()));
+            }
+        }
+        prepared.outputs.write_lines(p.file, state.detection ? detected : out_image);
+        for (std::size_t t = 0; t < p.truth_files.size(); ++t) {
+            prepared.outputs.write_lines(
+                p.truth_files[t], truth_file_values(state.truth, state.truth.files[t], out_truth));
+        }
+    };
     for (std::uint64_t first = p.first_line; first < p.end_line; first += band_lines) {
         const std::uint64_t lines = std::min(band_lines, p.end_line - first);
         batch.first_problem = first * per_line;
@@ -206,27 +235,14 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
             most = std::max(most, n);
             total += static_cast<double>(n);
         }
-        if (state.detection) {
-            // Detection line by line, keyed like glint-detect: (capture index, line in
-            // capture).
-            const detect::DetectionChain& chain = *state.detection;
-            detected.assign(chain.output_values_per_line() * lines, 0.0);
-            for (std::size_t line = 0; line < lines; ++line) {
-                chain.process_line(
-                    {capture.index, first + line},
-                    std::span<const double>(image).subspan(line * chain.input_values_per_line(),
-                                                           chain.input_values_per_line()),
-                    std::span<double>(detected).subspan(line * chain.output_values_per_line(),
-                                                        chain.output_values_per_line()));
-            }
-            image.swap(detected);
-        }
-        prepared.outputs.write_lines(p.file, image);
-        for (std::size_t t = 0; t < p.truth_files.size(); ++t) {
-            prepared.outputs.write_lines(
-                p.truth_files[t], truth_file_values(state.truth, state.truth.files[t], truth));
-        }
+        // The previous band's write must be done (its error, if any, surfaces here) before
+        // this band takes its buffers.
+        if (writing.valid()) writing.get();
+        image.swap(out_image);
+        truth.swap(out_truth);
+        writing = std::async(std::launch::async, write_band, first, lines);
     }
+    if (writing.valid()) writing.get();
     prepared.outputs.end_capture(p.file, stamp);
     for (const auto& file : p.truth_files) prepared.outputs.end_capture(file, stamp);
     stats.index = capture.index;

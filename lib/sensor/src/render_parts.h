@@ -275,14 +275,20 @@ inline std::uint64_t band_values(const FocalPlaneState& state) {
     return state.units.channels() * (state.detection ? 2 : 1) + state.truth.bands.size();
 }
 
-/// The memory of one band of lines of an image capture of `source` (band_values × 8 bytes per
-/// pixel).
+/// The bands of lines an image capture of `source` holds at once: two when it has more than
+/// one (one is written while the next is solved), else one.
+inline std::uint64_t bands_held(const schedule::ClockedFocalPlane& source) {
+    return block_lines(source) < source.lines_per_capture() ? 2 : 1;
+}
+
+/// The memory of the bands of lines an image capture of `source` holds at once (bands_held ×
+/// band_values × 8 bytes per pixel).
 inline std::uint64_t band_bytes(const schedule::ClockedFocalPlane& source,
                                 const FocalPlaneState& state) {
     const std::uint64_t per_line = source.problems_per_capture / source.lines_per_capture();
     const std::uint64_t lines =
         std::min<std::uint64_t>(block_lines(source), source.lines_per_capture());
-    return per_line * lines * band_values(state) * 8;
+    return bands_held(source) * per_line * lines * band_values(state) * 8;
 }
 
 /// The environment of a capture on `grid` (the sun at both ends of its window seen from the
