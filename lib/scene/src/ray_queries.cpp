@@ -5,8 +5,8 @@
 // entry, or tmin when that is later), which keeps the single-precision trace short and its
 // coordinates at the scene's own magnitude; distances are then reported from the caller's
 // origin, corrected for the rounding of the moved origin to float. The hit normal is
-// computed in double from the triangle's vertices (counter-clockwise front face) and taken
-// to scene ENU by the instance's normal matrix, at the ray's time for moving instances.
+// Embree's geometric normal (counter-clockwise front face), taken to scene ENU by the
+// instance's normal matrix (at the ray's time for moving instances) and normalized in double.
 #include <algorithm>
 #include <cmath>
 #include <limits>
