@@ -49,6 +49,8 @@ done
 config=$(find "$prefix" -path '*/cmake/glint/glintConfig.cmake' | head -1)
 [ -n "$config" ] || fail "glintConfig.cmake not installed under $prefix"
 [ -e "$(dirname "$config")/glintConfigVersion.cmake" ] || fail "glintConfigVersion.cmake not installed"
+find "$prefix" -path '*/glint/glint-image-oiio.so' | grep -q . ||
+    fail "the image module lib/glint/glint-image-oiio.so not installed under $prefix"
 for c in core model motion scene radiometry atmosphere inputs; do
     find "$prefix" -name "libglint_$c.a" | grep -q . || fail "libglint_$c.a not installed"
 done

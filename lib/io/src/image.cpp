@@ -1,10 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// Image reading and writing through OpenImageIO. OIIO's errors are collected right after
-// each failing call and rethrown as glint::Error naming the file.
+// Image reading and writing through OpenImageIO, whose calls live in a module loaded on the
+// first image (image_backend.h). OIIO's errors are collected right after each failing call
+// and rethrown as glint::Error naming the file.
 #include "glint/io/image.h"
-#include "glint/io/line_memory.h"
-
-#include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cctype>
@@ -18,6 +16,8 @@
 #include "glint/core/datetime.h"
 #include "glint/core/error.h"
 #include "glint/core/text.h"
+#include "glint/io/line_memory.h"
+#include "image_backend.h"
 
 namespace glint::io {
 namespace {
@@ -60,45 +60,66 @@ const char* oiio_format_name(ImageFormat format) {
     return "png";
 }
 
-OIIO::TypeDesc oiio_type(PixelType type) {
+using detail::RawType;
+
+RawType raw_type(PixelType type) {
     switch (type) {
         case PixelType::uint8:
-            return OIIO::TypeDesc::UINT8;
+            return RawType::uint8;
         case PixelType::uint16:
-            return OIIO::TypeDesc::UINT16;
+            return RawType::uint16;
         case PixelType::half:
-            return OIIO::TypeDesc::HALF;
+            return RawType::half;
         case PixelType::float32:
-            return OIIO::TypeDesc::FLOAT;
+            return RawType::float32;
     }
-    return OIIO::TypeDesc::UINT8;
+    return RawType::uint8;
 }
 
-/// The sample type glint reports for an OIIO spec, and the type it reads the pixels as.
-std::pair<SampleType, OIIO::TypeDesc> sample_type_of(const OIIO::ImageSpec& spec) {
-    if (!spec.channelformats.empty()) {
-        return {SampleType::float64, OIIO::TypeDesc::DOUBLE};  // mixed per-channel types
+/// The sample type glint reports for an image's storage, and the type it reads the pixels as.
+std::pair<SampleType, RawType> sample_type_of(const detail::InputSpec& spec) {
+    if (spec.mixed_types) return {SampleType::float64, RawType::float64};  // per-channel types
+    switch (spec.type) {
+        case RawType::uint8:
+            return {SampleType::uint8, RawType::uint8};
+        case RawType::int8:
+            return {SampleType::int8, RawType::int8};
+        case RawType::uint16:
+            return {SampleType::uint16, RawType::uint16};
+        case RawType::int16:
+            return {SampleType::int16, RawType::int16};
+        case RawType::uint32:
+            return {SampleType::uint32, RawType::uint32};
+        case RawType::int32:
+            return {SampleType::int32, RawType::int32};
+        case RawType::half:
+            return {SampleType::half, RawType::float32};
+        case RawType::float32:
+            return {SampleType::float32, RawType::float32};
+        case RawType::float64:
+            break;
     }
-    switch (spec.format.basetype) {
-        case OIIO::TypeDesc::UINT8:
-            return {SampleType::uint8, OIIO::TypeDesc::UINT8};
-        case OIIO::TypeDesc::INT8:
-            return {SampleType::int8, OIIO::TypeDesc::INT8};
-        case OIIO::TypeDesc::UINT16:
-            return {SampleType::uint16, OIIO::TypeDesc::UINT16};
-        case OIIO::TypeDesc::INT16:
-            return {SampleType::int16, OIIO::TypeDesc::INT16};
-        case OIIO::TypeDesc::UINT32:
-            return {SampleType::uint32, OIIO::TypeDesc::UINT32};
-        case OIIO::TypeDesc::INT32:
-            return {SampleType::int32, OIIO::TypeDesc::INT32};
-        case OIIO::TypeDesc::HALF:
-            return {SampleType::half, OIIO::TypeDesc::FLOAT};
-        case OIIO::TypeDesc::FLOAT:
-            return {SampleType::float32, OIIO::TypeDesc::FLOAT};
-        default:
-            return {SampleType::float64, OIIO::TypeDesc::DOUBLE};
+    return {SampleType::float64, RawType::float64};
+}
+
+/// Bytes of one value stored as `type`.
+std::size_t raw_size(RawType type) {
+    switch (type) {
+        case RawType::uint8:
+        case RawType::int8:
+            return 1;
+        case RawType::uint16:
+        case RawType::int16:
+        case RawType::half:
+            return 2;
+        case RawType::uint32:
+        case RawType::int32:
+        case RawType::float32:
+            return 4;
+        case RawType::float64:
+            return 8;
     }
+    return 8;
 }
 
 template <typename T>
@@ -286,9 +307,8 @@ GreyImage read_grey_image(const fs::path& path) {
     return image;
 }
 
-std::optional<std::string> weight_image_problem(std::span<const double> values,
-                                                std::size_t width, std::size_t height,
-                                                double max_value) {
+std::optional<std::string> weight_image_problem(std::span<const double> values, std::size_t width,
+                                                std::size_t height, double max_value) {
     if (width == 0 || height == 0 || values.size() != width * height) return "the image is empty";
     bool any = false;
     for (const double v : values) {
@@ -309,8 +329,8 @@ std::optional<std::string> weight_image_problem(std::span<const double> values,
 // Reading
 
 struct ImageReader::Impl {
-    std::unique_ptr<OIIO::ImageInput> input;
-    OIIO::TypeDesc read_type;
+    std::unique_ptr<detail::InputBackend> input;
+    RawType read_type = RawType::float64;
     int y_origin = 0;
     std::vector<unsigned char> scratch;
 };
@@ -322,39 +342,32 @@ ImageReader::ImageReader(const fs::path& path, std::size_t max_memory_bytes)
     if (fs::is_directory(path, ec)) {
         throw input_error("is a folder, not an image", at_file(path));
     }
-    // Bands are data: a fourth channel must not premultiply the first three on the way in.
-    OIIO::ImageSpec config;
-    config.attribute("oiio:UnassociatedAlpha", 1);
-    m_impl->input = OIIO::ImageInput::open(path.string(), &config);
-    if (!m_impl->input) {
-        throw input_error("cannot read image: " + one_line(OIIO::geterror()), at_file(path));
-    }
-    const OIIO::ImageSpec& spec = m_impl->input->spec();
-    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.depth > 1) {
+    std::string why;
+    m_impl->input = detail::image_backend().open_input(path.string(), why);
+    if (!m_impl->input) throw input_error("cannot read image: " + one_line(why), at_file(path));
+    const detail::InputSpec& spec = m_impl->input->spec();
+    if (spec.width <= 0 || spec.height <= 0 || spec.channels <= 0 || spec.depth > 1) {
         throw input_error("unsupported image layout (size, channels or volume)", at_file(path));
     }
     m_info.width = static_cast<std::size_t>(spec.width);
     m_info.height = static_cast<std::size_t>(spec.height);
-    m_info.channels = static_cast<std::size_t>(spec.nchannels);
-    for (int c = 0; c < spec.nchannels; ++c) {
-        m_info.channel_names.push_back(c < static_cast<int>(spec.channelnames.size())
-                                           ? spec.channelnames[static_cast<std::size_t>(c)]
+    m_info.channels = static_cast<std::size_t>(spec.channels);
+    for (int c = 0; c < spec.channels; ++c) {
+        m_info.channel_names.push_back(c < static_cast<int>(spec.channel_names.size())
+                                           ? spec.channel_names[static_cast<std::size_t>(c)]
                                            : "channel" + std::to_string(c));
     }
     auto [sample, read_type] = sample_type_of(spec);
     m_info.sample_type = sample;
-    m_info.format_name = m_impl->input->format_name();
+    m_info.format_name = spec.format_name;
     m_impl->read_type = read_type;
-    m_impl->y_origin = spec.y;
+    m_impl->y_origin = spec.y_origin;
     check_line_memory(m_info.width, m_info.channels, max_memory_bytes, path);
-    m_impl->scratch.resize(m_info.width * m_info.channels * read_type.size());
+    m_impl->scratch.resize(m_info.width * m_info.channels * raw_size(read_type));
 }
 
 ImageReader::~ImageReader() {
-    if (m_impl && m_impl->input) {
-        m_impl->input->close();
-        (void)m_impl->input->geterror();
-    }
+    if (m_impl && m_impl->input) m_impl->input->close();
 }
 
 ImageReader::ImageReader(ImageReader&&) noexcept = default;
@@ -365,37 +378,35 @@ void ImageReader::read_line(std::size_t y, std::span<double> out) {
                              m_path.string());
     }
     const int line = m_impl->y_origin + static_cast<int>(y);
-    if (!m_impl->input->read_scanlines(0, 0, line, line + 1, 0, 0,
-                                       static_cast<int>(m_info.channels), m_impl->read_type,
-                                       m_impl->scratch.data())) {
+    if (!m_impl->input->read_line(line, m_impl->read_type, m_impl->scratch.data())) {
         throw input_error(
-            "cannot read line " + std::to_string(y) + ": " + one_line(m_impl->input->geterror()),
+            "cannot read line " + std::to_string(y) + ": " + one_line(m_impl->input->error()),
             at_file(m_path));
     }
     const unsigned char* bytes = m_impl->scratch.data();
-    switch (m_impl->read_type.basetype) {
-        case OIIO::TypeDesc::UINT8:
+    switch (m_impl->read_type) {
+        case RawType::uint8:
             widen<std::uint8_t>(bytes, out);
             break;
-        case OIIO::TypeDesc::INT8:
+        case RawType::int8:
             widen<std::int8_t>(bytes, out);
             break;
-        case OIIO::TypeDesc::UINT16:
+        case RawType::uint16:
             widen<std::uint16_t>(bytes, out);
             break;
-        case OIIO::TypeDesc::INT16:
+        case RawType::int16:
             widen<std::int16_t>(bytes, out);
             break;
-        case OIIO::TypeDesc::UINT32:
+        case RawType::uint32:
             widen<std::uint32_t>(bytes, out);
             break;
-        case OIIO::TypeDesc::INT32:
+        case RawType::int32:
             widen<std::int32_t>(bytes, out);
             break;
-        case OIIO::TypeDesc::FLOAT:
+        case RawType::float32:
             widen<float>(bytes, out);
             break;
-        default:
+        default:  // read as double (half is read as float)
             widen<double>(bytes, out);
             break;
     }
@@ -420,7 +431,8 @@ Image read_image(const fs::path& path) {
 // Writing
 
 struct ImageWriter::Impl {
-    std::unique_ptr<OIIO::ImageOutput> output;
+    std::unique_ptr<detail::OutputBackend> output;
+    RawType file_type = RawType::uint8;
     std::vector<unsigned char> scratch;
     bool open = false;
     int next_line = 0;
@@ -433,12 +445,10 @@ struct ImageWriter::Impl {
         if (!output || !open) return;
         std::fill(scratch.begin(), scratch.end(), 0);
         for (; next_line < height; ++next_line) {
-            if (!output->write_scanline(next_line, 0, output->spec().format, scratch.data())) {
-                break;
-            }
+            if (!output->write_line(next_line, file_type, scratch.data())) break;
         }
         output->close();
-        (void)output->geterror();
+        (void)output->error();
     }
 };
 
@@ -469,35 +479,35 @@ ImageWriter::ImageWriter(const fs::path& path, std::size_t width, std::size_t he
                           " channels (" + name + "); select 1 or 3 bands");
     }
 
-    m_file.release_for_external_writer();
-    m_impl->output = OIIO::ImageOutput::create(oiio_format_name(options.format));
-    if (!m_impl->output) {
-        throw io_error(
-            "cannot create a " + std::string(format) + " writer: " + one_line(OIIO::geterror()),
-            name);
-    }
-    OIIO::ImageSpec spec(static_cast<int>(width), static_cast<int>(height),
-                         static_cast<int>(channels), oiio_type(options.pixel_type));
-    if (options.channel_names.size() == channels) {
-        for (std::size_t c = 0; c < channels; ++c) spec.channelnames[c] = options.channel_names[c];
-    }
-    // Bands are data, not colour with alpha: no (un)premultiplication on the way out.
-    spec.attribute("oiio:UnassociatedAlpha", 1);
-    if (!options.software.empty()) spec.attribute("Software", options.software);
-    if (!options.description.empty()) spec.attribute("ImageDescription", options.description);
-    // An empty DateTime keeps the writers from recording the current time.
-    spec.attribute("DateTime", options.date_time_s ? exif_date_time(*options.date_time_s) : "");
+    detail::OutputSpec spec;
+    spec.format = oiio_format_name(options.format);
+    spec.width = static_cast<int>(width);
+    spec.height = static_cast<int>(height);
+    spec.channels = static_cast<int>(channels);
+    spec.type = raw_type(options.pixel_type);
+    if (options.channel_names.size() == channels) spec.channel_names = options.channel_names;
+    spec.software = options.software;
+    spec.description = options.description;
+    spec.date_time = options.date_time_s ? exif_date_time(*options.date_time_s) : "";
     if (options.format == ImageFormat::jpeg) {
-        spec.attribute("Compression",
-                       "jpeg:" + std::to_string(std::clamp(options.jpeg_quality, 1, 100)));
+        spec.compression = "jpeg:" + std::to_string(std::clamp(options.jpeg_quality, 1, 100));
     }
-    if (!m_impl->output->open(m_file.temp_path().string(), spec)) {
-        throw io_error("cannot write image: " + one_line(m_impl->output->geterror()), name);
+    const detail::ImageBackend& backend = detail::image_backend();
+    m_file.release_for_external_writer();
+    std::string why;
+    m_impl->output = backend.create_output(spec, why);
+    if (!m_impl->output) {
+        throw io_error("cannot create a " + std::string(format) + " writer: " + one_line(why),
+                       name);
+    }
+    if (!m_impl->output->open(m_file.temp_path().string())) {
+        throw io_error("cannot write image: " + one_line(m_impl->output->error()), name);
     }
     m_impl->open = true;
+    m_impl->file_type = spec.type;
     m_impl->height = static_cast<int>(height);
     m_impl->scratch.resize(width * channels *
-                           std::max<std::size_t>(sizeof(float), spec.format.size()));
+                           std::max<std::size_t>(sizeof(float), raw_size(spec.type)));
 }
 
 ImageWriter::~ImageWriter() = default;
@@ -509,22 +519,22 @@ void ImageWriter::write_line(std::span<const double> values) {
                              name);
     }
     unsigned char* bytes = m_impl->scratch.data();
-    OIIO::TypeDesc type = OIIO::TypeDesc::FLOAT;
+    RawType type = RawType::float32;
     if (m_type == PixelType::uint8) {
         narrow_integer<std::uint8_t>(values, bytes);
-        type = OIIO::TypeDesc::UINT8;
+        type = RawType::uint8;
     } else if (m_type == PixelType::uint16) {
         narrow_integer<std::uint16_t>(values, bytes);
-        type = OIIO::TypeDesc::UINT16;
+        type = RawType::uint16;
     } else {
         for (std::size_t i = 0; i < values.size(); ++i) {
             const float f = static_cast<float>(values[i]);
             std::memcpy(bytes + i * sizeof(float), &f, sizeof(float));
         }
     }
-    if (!m_impl->output->write_scanline(static_cast<int>(m_lines_written), 0, type, bytes)) {
+    if (!m_impl->output->write_line(static_cast<int>(m_lines_written), type, bytes)) {
         throw io_error("cannot write line " + std::to_string(m_lines_written) + ": " +
-                           one_line(m_impl->output->geterror()),
+                           one_line(m_impl->output->error()),
                        name);
     }
     ++m_lines_written;
@@ -539,7 +549,7 @@ void ImageWriter::commit() {
     }
     m_impl->open = false;
     if (!m_impl->output->close()) {
-        throw io_error("cannot finish image: " + one_line(m_impl->output->geterror()), name);
+        throw io_error("cannot finish image: " + one_line(m_impl->output->error()), name);
     }
     m_file.commit();
 }
