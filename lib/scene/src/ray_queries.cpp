@@ -30,8 +30,8 @@ struct ClippedRay {
 };
 
 /// The ray origin + s · direction, s in [from, to], as Embree traces it: from `from` on.
-ClippedRay clipped(const Vec3& origin, const Vec3& direction, double from, double to) noexcept {
-    ClippedRay ray;
+void set_clipped(const Vec3& origin, const Vec3& direction, double from, double to,
+                 ClippedRay& ray) noexcept {
     ray.shift_m = from;
     const Vec3 start = origin + direction * from;
     for (std::size_t i = 0; i < 3; ++i) {
@@ -40,17 +40,18 @@ ClippedRay clipped(const Vec3& origin, const Vec3& direction, double from, doubl
     }
     ray.tnear = 0.0f;
     ray.tfar = static_cast<float>(to - from);
-    return ray;
 }
 
-/// The part of origin + s · direction, s in (tmin, tmax), inside `box`; nullopt when empty.
-std::optional<ClippedRay> clip(const Bounds& box, const Vec3& origin, const Vec3& direction,
-                               double tmin_m, double tmax_m) noexcept {
-    if (box.empty() || !(tmin_m < tmax_m)) return std::nullopt;
+/// The part of origin + s · direction, s in (tmin, tmax), inside `box`, into `out`; false
+/// (and `out` unspecified) when empty. Written in place: returning the 40-byte ray by value
+/// cost a block copy per ray.
+bool clip(const Bounds& box, const Vec3& origin, const Vec3& direction, double tmin_m,
+          double tmax_m, ClippedRay& out) noexcept {
+    if (box.empty() || !(tmin_m < tmax_m)) return false;
     // A ray Embree could not trace sensibly (NaN, infinite or zero) hits nothing.
     const double span = dot(direction, direction);
     if (!(span > 0.0) || !std::isfinite(span) || !std::isfinite(dot(origin, origin))) {
-        return std::nullopt;
+        return false;
     }
     // An origin inside the box (every bounce and shadow ray) needs no slab test: the interval
     // starts at tmin (the box entry is behind it) and everything it can hit lies before the
@@ -58,13 +59,14 @@ std::optional<ClippedRay> clip(const Bounds& box, const Vec3& origin, const Vec3
     if (tmin_m >= 0.0 && std::isfinite(tmin_m) && origin.x >= box.lower.x &&
         origin.x <= box.upper.x && origin.y >= box.lower.y && origin.y <= box.upper.y &&
         origin.z >= box.lower.z && origin.z <= box.upper.z) {
-        return clipped(origin, direction, tmin_m, tmax_m);
+        set_clipped(origin, direction, tmin_m, tmax_m, out);
+        return true;
     }
     double enter = -kInfinity;
     double leave = kInfinity;
     for (std::size_t i = 0; i < 3; ++i) {
         if (direction[i] == 0.0) {
-            if (!(origin[i] >= box.lower[i] && origin[i] <= box.upper[i])) return std::nullopt;
+            if (!(origin[i] >= box.lower[i] && origin[i] <= box.upper[i])) return false;
             continue;
         }
         const double inverse = 1.0 / direction[i];
@@ -76,8 +78,9 @@ std::optional<ClippedRay> clip(const Bounds& box, const Vec3& origin, const Vec3
     }
     const double from = std::max(tmin_m, enter);
     const double to = std::min(tmax_m, leave);
-    if (!(from <= to) || !std::isfinite(from)) return std::nullopt;
-    return clipped(origin, direction, from, to);
+    if (!(from <= to) || !std::isfinite(from)) return false;
+    set_clipped(origin, direction, from, to, out);
+    return true;
 }
 
 void fill(RTCRay& out, const ClippedRay& ray, float time01) noexcept {
@@ -142,7 +145,7 @@ RayHit make_hit(const std::vector<detail::InstanceData>& instances,
 struct alignas(64) Packet {
     alignas(64) int valid[kPacketSize];
     RTCRayHit16 rayhit;
-    std::optional<ClippedRay> clipped[kPacketSize];
+    ClippedRay clipped[kPacketSize];  ///< lane k's, where valid[k]
     float time01[kPacketSize] = {};
 
     /// Loads `rays`, each clipped to `box` (a ray that misses it leaves its lane inactive);
@@ -187,10 +190,9 @@ bool Packet::load(const Bounds& box, const TimeWindow& window,
         fill_inactive_lane(rayhit.ray, k);
         if (k >= rays.size()) continue;
         const PacketRay& ray = rays[k];
-        clipped[k] = clip(box, ray.origin_m, ray.direction, ray.tmin_m, ray.tmax_m);
-        if (!clipped[k]) continue;
+        if (!clip(box, ray.origin_m, ray.direction, ray.tmin_m, ray.tmax_m, clipped[k])) continue;
         time01[k] = ray_time(window, ray.time_s);
-        fill_lane(rayhit.ray, k, *clipped[k], time01[k]);
+        fill_lane(rayhit.ray, k, clipped[k], time01[k]);
         valid[k] = -1;
         any = true;
     }
@@ -218,20 +220,20 @@ void check_packet(std::size_t rays, std::size_t results) {
 std::optional<RayHit> GeometryScene::intersect(const Vec3& origin_m, const Vec3& direction,
                                                double time_s, double tmin_m, double tmax_m) const {
     const Impl& impl = *m_impl;
-    const auto clipped = clip(impl.clip_bounds, origin_m, direction, tmin_m, tmax_m);
-    if (!clipped) return std::nullopt;
+    ClippedRay clipped;
+    if (!clip(impl.clip_bounds, origin_m, direction, tmin_m, tmax_m, clipped)) return std::nullopt;
     const float time01 = ray_time(impl.window, time_s);
 
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRayHit rayhit;
-    fill(rayhit.ray, *clipped, time01);
+    fill(rayhit.ray, clipped, time01);
     rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
     rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(impl.top.get(), &context, &rayhit);
     if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
-    return make_hit(impl.instances, impl.objects, origin_m, direction, *clipped, time01,
+    return make_hit(impl.instances, impl.objects, origin_m, direction, clipped, time01,
                     rayhit.ray.tfar, rayhit.hit.instID[0], rayhit.hit.primID,
                     Vec3{rayhit.hit.Ng_x, rayhit.hit.Ng_y, rayhit.hit.Ng_z});
 }
@@ -263,7 +265,7 @@ void GeometryScene::intersect_packet(std::span<const PacketRay> rays,
         }
         hits[k] =
             make_hit(impl.instances, impl.objects, rays[k].origin_m, rays[k].direction,
-                     *packet.clipped[k], packet.time01[k], packet.rayhit.ray.tfar[k],
+                     packet.clipped[k], packet.time01[k], packet.rayhit.ray.tfar[k],
                      hit.instID[0][k], hit.primID[k], Vec3{hit.Ng_x[k], hit.Ng_y[k], hit.Ng_z[k]});
     }
 }
@@ -293,12 +295,12 @@ void GeometryScene::occluded_packet(std::span<const PacketRay> rays,
 bool GeometryScene::occluded(const Vec3& origin_m, const Vec3& direction, double time_s,
                              double tmin_m, double tmax_m) const {
     const Impl& impl = *m_impl;
-    const auto clipped = clip(impl.clip_bounds, origin_m, direction, tmin_m, tmax_m);
-    if (!clipped) return false;
+    ClippedRay clipped;
+    if (!clip(impl.clip_bounds, origin_m, direction, tmin_m, tmax_m, clipped)) return false;
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRay ray;
-    fill(ray, *clipped, ray_time(impl.window, time_s));
+    fill(ray, clipped, ray_time(impl.window, time_s));
     rtcOccluded1(impl.top.get(), &context, &ray);
     return ray.tfar < 0.0f;  // Embree sets tfar to −inf on a hit
 }
