@@ -208,9 +208,9 @@ double CameraModel::blur_diameter_px(double depth_m) const noexcept {
            (depth_m * m_lens->focus_distance_m * m_pitch_m[0]);
 }
 
-std::array<double, 2> CameraModel::focal_plane_point(std::size_t column, std::size_t row, double u,
-                                                     double v,
-                                                     std::array<double, 2> offset_px) const noexcept {
+std::array<double, 2> CameraModel::focal_plane_point(
+    std::size_t column, std::size_t row, double u, double v,
+    std::array<double, 2> offset_px) const noexcept {
     const double half_columns = 0.5 * static_cast<double>(m_columns);
     const double half_rows = 0.5 * static_cast<double>(m_rows);
     // Relative to the array centre, before the flips (exact zero at the centre of odd arrays).
@@ -223,10 +223,15 @@ std::array<double, 2> CameraModel::focal_plane_point(std::size_t column, std::si
     return {x + m_offset_m[0], y + m_offset_m[1]};
 }
 
-Vec3 CameraModel::direction(const std::array<double, 2>& focal_plane_m) const noexcept {
+Vec3 CameraModel::direction_unnormalized(
+    const std::array<double, 2>& focal_plane_m) const noexcept {
     Normalised p{focal_plane_m[0] / m_focal_length_m, focal_plane_m[1] / m_focal_length_m};
     if (m_distortion) p = undistort(*m_distortion, p);
-    return motion::normalized(Vec3{p.x, p.y, -1.0});
+    return Vec3{p.x, p.y, -1.0};
+}
+
+Vec3 CameraModel::direction(const std::array<double, 2>& focal_plane_m) const noexcept {
+    return motion::normalized(direction_unnormalized(focal_plane_m));
 }
 
 std::optional<std::array<double, 2>> CameraModel::project(const Vec3& d) const noexcept {

@@ -82,7 +82,9 @@ radiometry::SampleRay PixelRaySource::generate(std::uint64_t problem, std::uint6
     const double t_s = m_timing.t0_s + static_cast<double>(row) * m_timing.rolling_line_time_s +
                        tau * (m_timing.t1_s - m_timing.t0_s);
 
-    Vec3 d_instrument = m_camera.direction(m_camera.focal_plane_point(
+    // Not unit length: the ray's direction is normalized once, in the scene frame (the thin
+    // lens's focus point below does not depend on the length).
+    Vec3 d_instrument = m_camera.direction_unnormalized(m_camera.focal_plane_point(
         static_cast<std::size_t>(column), static_cast<std::size_t>(row), u, v, offset_px));
     Vec3 origin_instrument{};
     if (const std::optional<ThinLens>& lens = m_camera.thin_lens()) {
@@ -94,7 +96,7 @@ radiometry::SampleRay PixelRaySource::generate(std::uint64_t problem, std::uint6
         const double angle = 2.0 * std::numbers::pi * r_b;
         origin_instrument = Vec3{radius * std::cos(angle), radius * std::sin(angle), 0.0};
         const Vec3 focus = d_instrument * (lens->focus_distance_m / -d_instrument.z);
-        d_instrument = motion::normalized(focus - origin_instrument);
+        d_instrument = focus - origin_instrument;
     }
     const motion::Rigid pose =
         m_fixed_pose ? *m_fixed_pose : m_poses.instrument_to_scene(m_instrument, t_s);

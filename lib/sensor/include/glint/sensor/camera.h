@@ -80,6 +80,10 @@ public:
                                             std::array<double, 2> offset_px = {}) const noexcept;
     /// Unit direction in the instrument frame that the focal-plane point looks along.
     Vec3 direction(const std::array<double, 2>& focal_plane_m) const noexcept;
+    /// The same direction before normalization: (x, y, −1) with (x, y) the undistorted
+    /// normalised image point (a caller that normalizes later saves a square root and three
+    /// divisions).
+    Vec3 direction_unnormalized(const std::array<double, 2>& focal_plane_m) const noexcept;
     /// The fractional pixel position (column, row; pixel centres at .5, edges at integers)
     /// where the instrument-frame direction `d` (any length) lands; nullopt when d does not
     /// point into the camera's hemisphere (d.z ≥ 0, or NaN). The position may lie outside the
