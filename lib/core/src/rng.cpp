@@ -26,7 +26,6 @@ constexpr std::uint64_t kSaltChainCounter = 0xBB67AE8584CAA73Bull;
 constexpr std::uint64_t kSaltId = 0x3C6EF372FE94F82Bull;
 constexpr std::uint64_t kSaltFinal = 0xA54FF53A5F1D36F1ull;
 
-constexpr double kTwoPow53Inv = 1.0 / 9007199254740992.0;  // 2^-53
 constexpr double kTwoPow52Inv = 1.0 / 4503599627370496.0;  // 2^-52
 
 constexpr double kPoissonInversionLimit = 10.0;
@@ -236,24 +235,11 @@ void RandomStream::blocks_at(std::span<const std::uint64_t> word_indices,
     }
 }
 
-std::uint32_t RandomStream::next_u32() {
-    if ((m_position % kBufferWords) == 0) refill();
-    return m_buffer[m_position++ % kBufferWords];
-}
-
-std::uint64_t RandomStream::next_u64() {
-    const std::uint64_t low = next_u32();
-    const std::uint64_t high = next_u32();
-    return (high << 32) | low;
-}
-
 void RandomStream::skip_to(std::uint64_t word_index) {
     m_position = word_index;
     if ((m_position % kBufferWords) != 0) refill();
     m_has_spare_normal = false;
 }
-
-double RandomStream::uniform() { return static_cast<double>(next_u64() >> 11) * kTwoPow53Inv; }
 
 double RandomStream::uniform_open() {
     return (static_cast<double>(next_u64() >> 12) + 0.5) * kTwoPow52Inv;

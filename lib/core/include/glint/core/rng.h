@@ -45,13 +45,21 @@ public:
     /// A stream keyed by `seed` and the ordered `stream_ids`.
     RandomStream(std::uint64_t seed, std::span<const std::uint64_t> stream_ids);
 
-    /// The next 32 random bits.
-    std::uint32_t next_u32();
+    /// The next 32 random bits. (These three are inline: the path tracer draws a few dozen
+    /// numbers per path.)
+    std::uint32_t next_u32() {
+        if ((m_position % kBufferWords) == 0) refill();
+        return m_buffer[m_position++ % kBufferWords];
+    }
     /// The next 64 random bits (two words; the first drawn is the low half).
-    std::uint64_t next_u64();
+    std::uint64_t next_u64() {
+        const std::uint64_t low = next_u32();
+        const std::uint64_t high = next_u32();
+        return (high << 32) | low;
+    }
 
     /// Uniform on [0, 1) with 53 random bits (multiples of 2⁻⁵³); consumes two words.
-    double uniform();
+    double uniform() { return static_cast<double>(next_u64() >> 11) * 0x1p-53; }
     /// Uniform on the open interval (0, 1): (k + 0.5)·2⁻⁵², never 0 or 1; consumes two words.
     double uniform_open();
     /// Uniform on [a, b); throws glint::Error (input) unless a and b are finite and a <= b.
