@@ -53,6 +53,44 @@ void add_vertex_light(const Bands& bands, std::span<double> radiance,
     }
 }
 
+/// The first vertex's contribution, where L = 0 and β = 1: L = 0 + (emission + ρ ⊙ E_sun ·
+/// sun_factor), 0 where both terms are off. The same numbers as add_vertex_light from L = 0,
+/// β = 1 (1 · x is exact, and the 0 + keeps the sign of zero), without filling or reading
+/// either span first.
+template <typename Bands>
+void first_vertex_light(const Bands& bands, std::span<double> radiance, const double* emission,
+                        const double* reflectance, const double* sun, double sun_factor) {
+    const std::size_t n = radiance.size();
+    if (emission != nullptr && sun != nullptr) {
+        for (std::size_t j = 0; j < n; ++j) {
+            const std::size_t b = bands[j];
+            radiance[j] = 0.0 + (emission[b] + reflectance[b] * sun[b] * sun_factor);
+        }
+    } else if (emission != nullptr) {
+        for (std::size_t j = 0; j < n; ++j) radiance[j] = 0.0 + emission[bands[j]];
+    } else if (sun != nullptr) {
+        for (std::size_t j = 0; j < n; ++j) {
+            const std::size_t b = bands[j];
+            radiance[j] = 0.0 + reflectance[b] * sun[b] * sun_factor;
+        }
+    } else {
+        std::fill(radiance.begin(), radiance.end(), 0.0);
+    }
+}
+
+/// The first scattering's throughput, where β = 1: β ← ρ · weight (as scale_throughput from
+/// β = 1: 1 · x is exact); returns max β.
+template <typename Bands>
+double first_throughput(const Bands& bands, std::span<double> throughput, const double* reflectance,
+                        double weight) {
+    double largest = 0.0;
+    for (std::size_t j = 0; j < throughput.size(); ++j) {
+        throughput[j] = reflectance[bands[j]] * weight;
+        largest = std::max(largest, throughput[j]);
+    }
+    return largest;
+}
+
 /// β ← β ⊙ ρ · weight; returns max β.
 template <typename Bands>
 double scale_throughput(const Bands& bands, std::span<double> throughput, const double* reflectance,
@@ -194,9 +232,11 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
                             const FirstSun* sun) const {
     const Environment& env = m_environment;
     const std::size_t count = bands.size();
-    std::fill(radiance.begin(), radiance.end(), 0.0);
+    // L = 0 and β = 1 until the first vertex: first_vertex_light and first_throughput write
+    // them without these fills (a pass over the bands each); β is stored as ones only when a
+    // point light needs it first.
     std::span<double> beta = std::span<double>(scratch.throughput).first(count);
-    std::fill(beta.begin(), beta.end(), 1.0);
+    bool beta_is_one = true;
     const double* sky = env.sky_radiance_w_per_cm2_sr_um().data();
     const double time = ray.time_s;
 
@@ -208,6 +248,8 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
     if (!hit) {
         if (ray.direction.z > 0.0 && !env.sky_black()) {
             for (std::size_t j = 0; j < count; ++j) radiance[j] = sky[bands[j]];
+        } else {
+            std::fill(radiance.begin(), radiance.end(), 0.0);
         }
         return;
     }
@@ -258,10 +300,18 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
             record->instance = hit->instance;
             record->sun_blocked = sun_blocked;
         }
-        add_vertex_light(bands, radiance, beta, emission, rho,
-                         sun_factor > 0.0 ? env.sun_irradiance_w_per_cm2_um().data() : nullptr,
-                         sun_factor);
+        const double* sun_irradiance =
+            sun_factor > 0.0 ? env.sun_irradiance_w_per_cm2_um().data() : nullptr;
+        if (bounce == 0) {
+            first_vertex_light(bands, radiance, emission, rho, sun_irradiance, sun_factor);
+        } else {
+            add_vertex_light(bands, radiance, beta, emission, rho, sun_irradiance, sun_factor);
+        }
         if (m_lights != nullptr && reflects && wo_local.z > 0.0) {
+            if (beta_is_one) {
+                std::fill(beta.begin(), beta.end(), 1.0);
+                beta_is_one = false;
+            }
             add_point_lights(bands, *hit, normal, wo_local, frame, m, time, beta, radiance,
                              scratch);
         }
@@ -274,7 +324,9 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
         const auto sample = m_materials.shape(m).sample(wo_local, u_lobe, u1, u2);
         if (!sample || !(sample->weight > 0.0)) break;
         const Vec3 wi = normalized(frame.to_world(sample->wi));
-        const double largest = scale_throughput(bands, beta, rho, sample->weight);
+        const double largest = beta_is_one ? first_throughput(bands, beta, rho, sample->weight)
+                                           : scale_throughput(bands, beta, rho, sample->weight);
+        beta_is_one = false;
         if (!(largest > 0.0)) break;
         if (bounce + 1 >= m_settings.roulette_start_bounce) {
             const double survive = std::min(1.0, largest);
