@@ -240,12 +240,18 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
     const double* sky = env.sky_radiance_w_per_cm2_sr_um().data();
     const double time = ray.time_s;
 
-    std::optional<scene::RayHit> hit = primary_hit != nullptr
-                                           ? *primary_hit
-                                           : m_scene.intersect(ray.origin_m, ray.direction, time);
+    // The current vertex: the given primary hit, or the one traced into `traced` (pointers,
+    // not copies of the 80-byte hit, from one bounce to the next).
+    scene::RayHit traced;
+    const scene::RayHit* hit = nullptr;
+    if (primary_hit != nullptr) {
+        hit = primary_hit->has_value() ? &**primary_hit : nullptr;
+    } else if (m_scene.intersect_into(ray.origin_m, ray.direction, time, traced)) {
+        hit = &traced;
+    }
     ++scratch.rays;
-    if (first_hit != nullptr) first_hit->hit = hit.has_value();
-    if (!hit) {
+    if (first_hit != nullptr) first_hit->hit = hit != nullptr;
+    if (hit == nullptr) {
         if (ray.direction.z > 0.0 && !env.sky_black()) {
             for (std::size_t j = 0; j < count; ++j) radiance[j] = sky[bands[j]];
         } else {
@@ -336,9 +342,9 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
             }
         }
         const Vec3 origin = m_scene.spawn_origin(*hit, wi);
-        hit = m_scene.intersect(origin, wi, time);
+        hit = m_scene.intersect_into(origin, wi, time, traced) ? &traced : nullptr;
         ++scratch.rays;
-        if (!hit) {
+        if (hit == nullptr) {
             if (wi.z > 0.0 && !env.sky_black()) {
                 for (std::size_t j = 0; j < count; ++j) radiance[j] += beta[j] * sky[bands[j]];
             }

@@ -112,11 +112,11 @@ float ray_time(const TimeWindow& window, double time_s) noexcept {
 /// cross product (v1 − v0) × (v2 − v0) of the triangle's float vertices, computed in float),
 /// so a hit reads none of the triangle's indices or vertices — on a large mesh those loads
 /// miss the cache.
-RayHit make_hit(const std::vector<detail::InstanceData>& instances,
-                const std::vector<detail::ObjectData>& objects, const Vec3& origin_m,
-                const Vec3& direction, const ClippedRay& clipped, float time01, float tfar,
-                std::uint32_t instance_id, std::uint32_t triangle, const Vec3& object_normal) {
-    RayHit hit;
+void make_hit(const std::vector<detail::InstanceData>& instances,
+              const std::vector<detail::ObjectData>& objects, const Vec3& origin_m,
+              const Vec3& direction, const ClippedRay& clipped, float time01, float tfar,
+              std::uint32_t instance_id, std::uint32_t triangle, const Vec3& object_normal,
+              RayHit& hit) {
     // The float origin and direction as Embree used them, measured along the caller's ray.
     const Vec3 float_origin{clipped.origin[0], clipped.origin[1], clipped.origin[2]};
     const Vec3 float_direction{clipped.direction[0], clipped.direction[1], clipped.direction[2]};
@@ -137,7 +137,6 @@ RayHit make_hit(const std::vector<detail::InstanceData>& instances,
         normal_matrix = detail::inverse_transpose(detail::from_float3x4(xfm).linear);
     }
     hit.normal = normalized(normal_matrix * object_normal);
-    return hit;
 }
 
 /// Embree's packet of kPacketSize rays, 64-byte aligned as rtcIntersect16 requires, with
@@ -219,9 +218,16 @@ void check_packet(std::size_t rays, std::size_t results) {
 
 std::optional<RayHit> GeometryScene::intersect(const Vec3& origin_m, const Vec3& direction,
                                                double time_s, double tmin_m, double tmax_m) const {
+    RayHit hit;
+    if (!intersect_into(origin_m, direction, time_s, hit, tmin_m, tmax_m)) return std::nullopt;
+    return hit;
+}
+
+bool GeometryScene::intersect_into(const Vec3& origin_m, const Vec3& direction, double time_s,
+                                   RayHit& hit, double tmin_m, double tmax_m) const {
     const Impl& impl = *m_impl;
     ClippedRay clipped;
-    if (!clip(impl.clip_bounds, origin_m, direction, tmin_m, tmax_m, clipped)) return std::nullopt;
+    if (!clip(impl.clip_bounds, origin_m, direction, tmin_m, tmax_m, clipped)) return false;
     const float time01 = ray_time(impl.window, time_s);
 
     RTCIntersectContext context;
@@ -232,10 +238,11 @@ std::optional<RayHit> GeometryScene::intersect(const Vec3& origin_m, const Vec3&
     rayhit.hit.primID = RTC_INVALID_GEOMETRY_ID;
     rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(impl.top.get(), &context, &rayhit);
-    if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
-    return make_hit(impl.instances, impl.objects, origin_m, direction, clipped, time01,
-                    rayhit.ray.tfar, rayhit.hit.instID[0], rayhit.hit.primID,
-                    Vec3{rayhit.hit.Ng_x, rayhit.hit.Ng_y, rayhit.hit.Ng_z});
+    if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+    make_hit(impl.instances, impl.objects, origin_m, direction, clipped, time01, rayhit.ray.tfar,
+             rayhit.hit.instID[0], rayhit.hit.primID,
+             Vec3{rayhit.hit.Ng_x, rayhit.hit.Ng_y, rayhit.hit.Ng_z}, hit);
+    return true;
 }
 
 void GeometryScene::intersect_packet(std::span<const PacketRay> rays,
@@ -263,10 +270,9 @@ void GeometryScene::intersect_packet(std::span<const PacketRay> rays,
             hits[k].reset();
             continue;
         }
-        hits[k] =
-            make_hit(impl.instances, impl.objects, rays[k].origin_m, rays[k].direction,
-                     packet.clipped[k], packet.time01[k], packet.rayhit.ray.tfar[k],
-                     hit.instID[0][k], hit.primID[k], Vec3{hit.Ng_x[k], hit.Ng_y[k], hit.Ng_z[k]});
+        make_hit(impl.instances, impl.objects, rays[k].origin_m, rays[k].direction,
+                 packet.clipped[k], packet.time01[k], packet.rayhit.ray.tfar[k], hit.instID[0][k],
+                 hit.primID[k], Vec3{hit.Ng_x[k], hit.Ng_y[k], hit.Ng_z[k]}, hits[k].emplace());
     }
 }
 

@@ -147,6 +147,11 @@ public:
     std::optional<RayHit> intersect(const Vec3& origin_m, const Vec3& direction, double time_s,
                                     double tmin_m = 0.0,
                                     double tmax_m = std::numeric_limits<double>::infinity()) const;
+    /// intersect() into `hit` (left unspecified on a miss); returns whether the ray hit. For
+    /// loops that keep one hit and would otherwise copy it out of an optional every bounce.
+    bool intersect_into(const Vec3& origin_m, const Vec3& direction, double time_s, RayHit& hit,
+                        double tmin_m = 0.0,
+                        double tmax_m = std::numeric_limits<double>::infinity()) const;
     /// intersect() for each of up to kPacketSize rays, traced together by Embree's packet
     /// kernel (rtcIntersect16): hits[i] is what intersect() gives for rays[i]. Faster than
     /// single queries for coherent rays (a camera's rays through neighbouring pixels). The
