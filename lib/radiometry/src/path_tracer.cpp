@@ -278,24 +278,26 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
         // path ends here, so the numbers drawn for it change nothing after).
         FirstHit* record = bounce == 0 ? first_hit : nullptr;
         bool sun_blocked = true;
+        // The sun's draw is read where it lies (the 120-byte draw is not copied).
+        const auto take_sun = [&](const FirstSun& drawn) {
+            if (!drawn.query) return;
+            ++scratch.rays;
+            sun_blocked = drawn.blocked;
+            if (!sun_blocked && reflects) {
+                sun_factor =
+                    m_materials.shape(m).eval(wo_local, frame.to_local(drawn.wi)) * drawn.cos_i;
+            }
+        };
         if ((reflects || record != nullptr) && env.sun_visible()) {
-            FirstSun drawn;
             if (bounce == 0 && sun != nullptr) {
-                drawn = *sun;  // drawn, and its shadow ray answered, before the path
+                take_sun(*sun);  // drawn, and its shadow ray answered, before the path
             } else {
-                drawn = draw_sun(*hit, normal, wo_local.z, time, rng);
+                FirstSun drawn = draw_sun(*hit, normal, wo_local.z, time, rng);
                 if (drawn.query) {
                     const scene::PacketRay& q = drawn.ray;
                     drawn.blocked = m_scene.occluded(q.origin_m, q.direction, q.time_s);
                 }
-            }
-            if (drawn.query) {
-                ++scratch.rays;
-                sun_blocked = drawn.blocked;
-                if (!sun_blocked && reflects) {
-                    sun_factor =
-                        m_materials.shape(m).eval(wo_local, frame.to_local(drawn.wi)) * drawn.cos_i;
-                }
+                take_sun(drawn);
             }
         }
         if (record != nullptr) {
