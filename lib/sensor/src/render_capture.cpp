@@ -169,9 +169,9 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
     double total = 0.0;
     std::vector<std::uint64_t> samples;  // per pixel of the band, over the states
     std::vector<double> truth;
-    // The band being detected and written while the next is solved: its values, truth, first
-    // line and line count, and the job (declared after its buffers, so that an error
-    // unwinding from a solve waits for the job before they go).
+    // The band being detected and written while the next is solved: its values and truth,
+    // the detection's output, and the job (declared after the buffers it uses, so that an
+    // error unwinding from a solve waits for the job before they go).
     std::vector<double> out_image;
     std::vector<double> out_truth;
     std::vector<double> detected;
