@@ -240,7 +240,11 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
         if (writing.valid()) writing.get();
         image.swap(out_image);
         truth.swap(out_truth);
-        writing = std::async(std::launch::async, write_band, first, lines);
+        if (first + lines >= p.end_line) {
+            write_band(first, lines);  // the last band: nothing left to overlap with
+        } else {
+            writing = std::async(std::launch::async, write_band, first, lines);
+        }
     }
     if (writing.valid()) writing.get();
     prepared.outputs.end_capture(p.file, stamp);
