@@ -35,18 +35,20 @@ std::vector<fs::path> module_candidates() {
 
 const ImageBackend* load_backend() {
     std::string tried;
+    const auto refuse = [&tried](const fs::path& path, const std::string& why) {
+        tried += (tried.empty() ? "" : ", ") + path.lexically_normal().string() + " (" + why + ")";
+    };
     for (const fs::path& path : module_candidates()) {
         std::error_code ec;
         if (!fs::exists(path, ec)) {
-            tried += (tried.empty() ? "" : ", ") + path.lexically_normal().string() + " (missing)";
+            refuse(path, "missing");
             continue;
         }
         // Kept open for the life of the process: images may be read or written at any time.
         void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
         if (handle == nullptr) {
             const char* why = ::dlerror();
-            tried += (tried.empty() ? "" : ", ") + path.lexically_normal().string() + " (" +
-                     (why != nullptr ? why : "cannot be loaded") + ")";
+            refuse(path, why != nullptr ? why : "cannot be loaded");
             continue;
         }
         using Entry = const ImageBackend* (*)();
@@ -54,8 +56,7 @@ const ImageBackend* load_backend() {
         const ImageBackend* backend = entry != nullptr ? entry() : nullptr;
         if (backend == nullptr || backend->version != kImageBackendVersion) {
             ::dlclose(handle);
-            tried += (tried.empty() ? "" : ", ") + path.lexically_normal().string() +
-                     " (not this build's image module)";
+            refuse(path, "not this build's image module");
             continue;
         }
         return backend;
