@@ -32,10 +32,12 @@ constexpr double kCameraHalfFovDeg = 29.0;
 /// The band counts of the band-cost runs: 2,100 is a real hyperspectral bandpass (0.4-2.5 µm
 /// at 1 nm).
 constexpr unsigned kBandCounts[] = {1, 16, 256, 2100};
-/// The targets of the requirement.
-constexpr double kRatioTarget = 0.5;
-constexpr double kRatioStretch = 0.65;
-constexpr double kBandCostTarget = 1.5;
+/// The targets of the performance requirement: the tracer's ray rate against bare Embree's
+/// (primary and incoherent baselines), and the cost per path at 256 and 2,100 bands against
+/// 1 band, with every band on every path and with spectral sampling.
+constexpr double kRatioPrimaryTarget = 0.65;
+constexpr double kRatioIncoherentTarget = 0.75;
+constexpr double kBandCostTarget = 1.2;
 constexpr double kHyperspectralCostTarget = 2.0;
 constexpr double kScalingTarget = 0.95;
 /// Above this share of the machine taken by other processes a figure is flagged unreliable.
@@ -399,11 +401,13 @@ Json run_benchmark(const BenchOptions& options, const Context& context) {
     report["render_path"] = render_path;
     const double band_cost = ratio(per_path(by_bands.at(256)), one_band_per_path);
     const double hyperspectral_cost = ratio(per_path(by_bands.at(2100)), one_band_per_path);
+    const double sampled_band_cost = ratio(per_path(sampled.at(256)), one_band_reduced);
     const double sampled_cost = ratio(per_path(sampled.at(2100)), one_band_reduced);
     report["targets"] = {
-        {"ratio_primary", target(ratio_primary, kRatioTarget, true)},
-        {"ratio_primary_stretch", target(ratio_primary, kRatioStretch, true)},
+        {"ratio_primary", target(ratio_primary, kRatioPrimaryTarget, true)},
+        {"ratio_incoherent", target(ratio_incoherent, kRatioIncoherentTarget, true)},
         {"band_cost_256", target(band_cost, kBandCostTarget, false)},
+        {"band_cost_256_sampled", target(sampled_band_cost, kBandCostTarget, false)},
         {"band_cost_2100", target(hyperspectral_cost, kHyperspectralCostTarget, false)},
         {"band_cost_2100_sampled", target(sampled_cost, kHyperspectralCostTarget, false)},
         {"thread_scaling", target(relative_scaling, kScalingTarget, true)}};
