@@ -110,7 +110,7 @@ int main(int argc, char** argv) try {
     // 3. Spectral grid, materials, atmosphere, sun, and this capture's environment.
     const glint::SpectralGrid grid = glint::SpectralGrid::regular(0.40, 0.90, 0.01);
     const glint::radiometry::MaterialTable materials(sim.scene.materials, grid, log);
-    const auto atmosphere = glint::atmosphere::make_atmosphere_model(sim.atmosphere);
+    const auto atmosphere = glint::atmosphere::load_atmosphere_model(sim.atmosphere, data_dir);
     const auto solar_file = data_dir / glint::atmosphere::SolarSpectrum::kAstmRelativePath;
     const auto sun = glint::atmosphere::SolarSpectrum::load_astm_g173(solar_file);
     const glint::motion::SunPosition sun_at = glint::motion::sun_position(when, frame);

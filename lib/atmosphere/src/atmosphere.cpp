@@ -37,6 +37,14 @@ double rayleigh_sea_level(const model::ParametricAtmosphere& p, double wavelengt
     return sea_level * (p.sea_level_pressure_hpa / kStandardPressureHpa);
 }
 
+/// Slant amounts: the vertical amounts between two altitudes (`above_low` − `above_high`)
+/// times the air mass `m`.
+GasAmounts slant(const GasAmounts& above_low, const GasAmounts& above_high, double m) {
+    return GasAmounts{std::max(above_low.water_cm - above_high.water_cm, 0.0) * m,
+                      std::max(above_low.ozone_atm_cm - above_high.ozone_atm_cm, 0.0) * m,
+                      std::max(above_low.mixed_air_masses - above_high.mixed_air_masses, 0.0) * m};
+}
+
 /// The aerosol optical depth above sea level at λ (Ångström's law from τ(550 nm)); at
 /// altitude z it is this × e^(−z/H_A).
 double aerosol_sea_level(const model::ParametricAtmosphere& p, double wavelength_um) {
@@ -196,8 +204,9 @@ std::vector<double> SimpleAtmosphereModel::thermal_sky_radiance_w_per_cm2_sr_um(
 
 // ---- parametric ----
 
-ParametricAtmosphereModel::ParametricAtmosphereModel(model::ParametricAtmosphere parameters)
-    : m_parameters(parameters) {
+ParametricAtmosphereModel::ParametricAtmosphereModel(model::ParametricAtmosphere parameters,
+                                                     std::shared_ptr<const GasBandModel> gases)
+    : m_parameters(parameters), m_gases(std::move(gases)) {
     const auto& p = m_parameters;
     const auto bad = [](double v) { return !std::isfinite(v); };
     if (bad(p.aerosol_optical_depth_550) || p.aerosol_optical_depth_550 < 0.0) {
@@ -220,6 +229,43 @@ ParametricAtmosphereModel::ParametricAtmosphereModel(model::ParametricAtmosphere
         p.water_vapor_pressure_hpa < 0.0) {
         throw input_error("pressures and temperatures must be >= 0");
     }
+    if (bad(p.water_vapor_cm) || p.water_vapor_cm < 0.0 || bad(p.ozone_atm_cm) ||
+        p.ozone_atm_cm < 0.0) {
+        throw input_error("water_vapor_cm and ozone_atm_cm must be >= 0");
+    }
+    if (p.gas_absorption && !m_gases) {
+        throw input_error(std::string("gas absorption needs the band-model table (") +
+                          GasBandModel::kRelativePath + " in glint's data folder)");
+    }
+}
+
+GasAmounts ParametricAtmosphereModel::gas_amounts_above(double altitude_m) const noexcept {
+    if (!m_parameters.gas_absorption) return {};
+    const double z = std::max(altitude_m, 0.0);
+    const double ozone_share =
+        std::clamp((kOzoneTopM - z) / (kOzoneTopM - kOzoneBottomM), 0.0, 1.0);
+    return GasAmounts{
+        m_parameters.water_vapor_cm * std::exp(-z / kWaterScaleHeightM),
+        m_parameters.ozone_atm_cm * ozone_share,
+        m_parameters.sea_level_pressure_hpa / kStandardPressureHpa *
+            std::exp(-z / m_parameters.rayleigh_scale_height_m)};
+}
+
+std::shared_ptr<const GasTransmittance> ParametricAtmosphereModel::gases_on(
+    const SpectralGrid& grid) const {
+    if (!m_parameters.gas_absorption) return nullptr;
+    const std::vector<double> key(grid.wavelengths_um().begin(), grid.wavelengths_um().end());
+    const std::lock_guard<std::mutex> lock(m_grids_mutex);
+    auto& slot = m_grids[key];
+    if (!slot) slot = std::make_shared<const GasTransmittance>(*m_gases, grid);
+    return slot;
+}
+
+std::vector<double> ParametricAtmosphereModel::gas_transmittance(
+    const SpectralGrid& grid, const GasAmounts& amounts) const {
+    const auto gases = gases_on(grid);
+    if (!gases) return filled(grid, 1.0);
+    return gases->transmittance(amounts);
 }
 
 double ParametricAtmosphereModel::rayleigh_optical_depth(double wavelength_um,
@@ -247,11 +293,10 @@ std::vector<double> ParametricAtmosphereModel::sun_transmittance(
     if (!sun_up(geometry)) return filled(grid, 0.0);
     const double m = relative_air_mass(geometry.sun_zenith_deg);
     const double z = geometry.surface_altitude_m;
-    std::vector<double> out;
-    out.reserve(grid.size());
-    for (double wl : grid.wavelengths_um()) {
-        out.push_back(
-            std::exp(-(rayleigh_optical_depth(wl, z) + aerosol_optical_depth(wl, z)) * m));
+    std::vector<double> out = gas_transmittance(grid, slant(gas_amounts_above(z), {}, m));
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+        const double wl = grid.wavelength_um(i);
+        out[i] *= std::exp(-(rayleigh_optical_depth(wl, z) + aerosol_optical_depth(wl, z)) * m);
     }
     return out;
 }
@@ -262,12 +307,13 @@ std::vector<double> ParametricAtmosphereModel::sensor_transmittance(
     const double m = relative_air_mass(geometry.view_zenith_deg);
     const double z0 = geometry.surface_altitude_m;
     const double z1 = std::max(z0, geometry.sensor_altitude_m);
-    std::vector<double> out;
-    out.reserve(grid.size());
-    for (double wl : grid.wavelengths_um()) {
+    std::vector<double> out =
+        gas_transmittance(grid, slant(gas_amounts_above(z0), gas_amounts_above(z1), m));
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+        const double wl = grid.wavelength_um(i);
         const double tau = rayleigh_optical_depth(wl, z0) - rayleigh_optical_depth(wl, z1) +
                            aerosol_optical_depth(wl, z0) - aerosol_optical_depth(wl, z1);
-        out.push_back(std::exp(-tau * m));
+        out[i] *= std::exp(-tau * m);
     }
     return out;
 }
@@ -337,6 +383,30 @@ std::vector<std::vector<double>> ParametricAtmosphereModel::path_radiance_at_azi
         }
     }
     const Level top = level(z1);
+    // Gas transmittances of each layer's midpoint from the sun and to the sensor, per band
+    // ([layer][band]); none without gas absorption.
+    const std::shared_ptr<const GasTransmittance> gases = gases_on(grid);
+    std::vector<double> gas_sun;
+    std::vector<double> gas_view;
+    if (gases) {
+        const std::size_t n = grid.size();
+        gas_sun.assign(layers * n, 1.0);
+        gas_view.assign(layers * n, 1.0);
+        const GasAmounts at_sensor = gas_amounts_above(z1);
+        double za = z0;
+        for (std::size_t k = 0; k < layers; ++k) {
+            const double f = static_cast<double>(k + 1) / kPathLayers;
+            const double zb = z0 + (z1 - z0) * f * f;
+            const GasAmounts at_layer = gas_amounts_above(0.5 * (za + zb));
+            za = zb;
+            const std::span<double> view(&gas_view[k * n], n);
+            gases->transmittance(slant(at_layer, at_sensor, m_view), view);
+            if (sunlit) {
+                gases->transmittance(slant(at_layer, {}, m_sun),
+                                     std::span<double>(&gas_sun[k * n], n));
+            }
+        }
+    }
     // Per layer of one band: its Rayleigh and aerosol optical depths and its transmittances
     // from the sun and to the sensor, the same at every azimuth.
     std::vector<double> d_r(layers), d_a(layers), sun(layers), to_sensor(layers);
@@ -358,6 +428,10 @@ std::vector<std::vector<double>> ParametricAtmosphereModel::path_radiance_at_azi
             const double tau_m = tau_r(middles[k]) + tau_a(middles[k]);
             to_sensor[k] = std::exp(-(tau_m - tau_sensor) * m_view);
             if (sunlit) sun[k] = std::exp(-tau_m * m_sun);
+            if (gases) {
+                to_sensor[k] *= gas_view[k * grid.size() + i];
+                if (sunlit) sun[k] *= gas_sun[k * grid.size() + i];
+            }
             tau_r_a = tau_r_b;
             tau_a_a = tau_a_b;
         }
@@ -389,6 +463,9 @@ std::vector<double> ParametricAtmosphereModel::diffuse_sky_irradiance_w_per_cm2_
     const double z = geometry.surface_altitude_m;
     const double omega = m_parameters.aerosol_single_scatter_albedo;
     const double forward = hg_forward_fraction(m_parameters.aerosol_asymmetry);
+    // Gas absorption of the diffuse light: the direct beam's, at the sun's air mass (the
+    // Bird–Riordan approximation).
+    const std::vector<double> gas = gas_transmittance(grid, slant(gas_amounts_above(z), {}, m));
     for (std::size_t i = 0; i < grid.size(); ++i) {
         const double wl = grid.wavelength_um(i);
         const double tau_r = rayleigh_optical_depth(wl, z);
@@ -396,7 +473,7 @@ std::vector<double> ParametricAtmosphereModel::diffuse_sky_irradiance_w_per_cm2_
         const double t_r = std::exp(-tau_r * m);
         const double t_as = std::exp(-omega * tau_a * m);
         const double t_aa = std::exp(-(1.0 - omega) * tau_a * m);
-        out[i] = toa[i] * mu * t_aa * (0.5 * (1.0 - t_r) + forward * (1.0 - t_as));
+        out[i] = toa[i] * mu * gas[i] * t_aa * (0.5 * (1.0 - t_r) + forward * (1.0 - t_as));
     }
     return out;
 }
@@ -497,13 +574,15 @@ std::vector<double> TabulatedAtmosphereModel::thermal_sky_radiance_w_per_cm2_sr_
     return out;
 }
 
-std::unique_ptr<AtmosphereModel> make_atmosphere_model(const model::Atmosphere& atmosphere) {
+std::unique_ptr<AtmosphereModel> make_atmosphere_model(const model::Atmosphere& atmosphere,
+                                                       std::shared_ptr<const GasBandModel> gases) {
     try {
         switch (atmosphere.kind) {
             case model::AtmosphereKind::none:
                 return std::make_unique<NoAtmosphere>();
             case model::AtmosphereKind::parametric:
-                return std::make_unique<ParametricAtmosphereModel>(atmosphere.parametric);
+                return std::make_unique<ParametricAtmosphereModel>(atmosphere.parametric,
+                                                                   std::move(gases));
             case model::AtmosphereKind::tabulated:
                 return std::make_unique<TabulatedAtmosphereModel>(atmosphere.tabulated);
             case model::AtmosphereKind::simple:
@@ -513,6 +592,17 @@ std::unique_ptr<AtmosphereModel> make_atmosphere_model(const model::Atmosphere& 
         throw e.with_file(atmosphere.where.file, atmosphere.where.line);
     }
     throw internal_error("unknown atmosphere kind");
+}
+
+std::unique_ptr<AtmosphereModel> load_atmosphere_model(const model::Atmosphere& atmosphere,
+                                                       const std::filesystem::path& data_dir) {
+    std::shared_ptr<const GasBandModel> gases;
+    if (atmosphere.kind == model::AtmosphereKind::parametric &&
+        atmosphere.parametric.gas_absorption) {
+        const std::filesystem::path table = data_dir / GasBandModel::kRelativePath;
+        gases = std::make_shared<const GasBandModel>(GasBandModel::load(table, table.string()));
+    }
+    return make_atmosphere_model(atmosphere, std::move(gases));
 }
 
 }  // namespace glint::atmosphere

@@ -29,15 +29,9 @@ SolarSpectrum SolarSpectrum::load_astm_g173(const std::filesystem::path& csv_pat
     std::vector<double> wavelengths_um;
     std::vector<double> values;
     int line_number = 0;
-    std::size_t start = 0;
-    while (start < text.size()) {
-        std::size_t end = text.find('\n', start);
-        if (end == std::string::npos) end = text.size();
-        std::string_view line(text.data() + start, end - start);
-        start = end + 1;
+    for (const std::string_view line : split_lines(text)) {
         ++line_number;
         if (line_number <= 2) continue;  // title and column names
-        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
         if (line.find_first_not_of(" \t") == std::string_view::npos) continue;
         const std::vector<std::string> fields = split_list(line, ',');
         const ErrorContext where{file, line_number, {}};

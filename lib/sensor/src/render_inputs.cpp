@@ -21,7 +21,8 @@ void build_all(RenderInputs& in, model::SimulationInputs loaded, const RenderOpt
     in.simulation = std::move(loaded.simulation);
     in.scene = std::move(loaded.scene);
     in.atmosphere = std::move(loaded.atmosphere);
-    in.atmosphere_model = glint::atmosphere::make_atmosphere_model(in.atmosphere);
+    in.atmosphere_model =
+        glint::atmosphere::load_atmosphere_model(in.atmosphere, options.data_dir);
     in.frame = in.schedule->frame();
     const std::filesystem::path solar =
         options.data_dir / glint::atmosphere::SolarSpectrum::kAstmRelativePath;

@@ -79,6 +79,16 @@ void read_parametric(const YAML::Node& root, const std::string& file,
     read_number(root, "air_temperature_k", file, kNonNegative, p.air_temperature_k, diagnostics);
     read_number(root, "water_vapor_pressure_hpa", file, kNonNegative, p.water_vapor_pressure_hpa,
                 diagnostics);
+    read_number(root, "water_vapor_cm", file, kNonNegative, p.water_vapor_cm, diagnostics);
+    read_number(root, "ozone_atm_cm", file, kNonNegative, p.ozone_atm_cm, diagnostics);
+    if (const YAML::Node node = root["gas_absorption"]) {
+        const auto value = node.IsScalar() ? parse_bool(node.Scalar()) : std::nullopt;
+        if (value) {
+            p.gas_absorption = *value;
+        } else {
+            diagnostics.error(at(file, node, "gas_absorption"), "expected true or false");
+        }
+    }
 }
 
 model::Atmosphere read_yaml(const std::string& text, const std::filesystem::path& path,
@@ -113,7 +123,8 @@ model::Atmosphere read_yaml(const std::string& text, const std::filesystem::path
                 known.end(),
                 {"aerosol_optical_depth_550", "angstrom_exponent", "aerosol_scale_height_m",
                  "aerosol_asymmetry", "aerosol_single_scatter_albedo", "rayleigh_scale_height_m",
-                 "sea_level_pressure_hpa", "air_temperature_k", "water_vapor_pressure_hpa"});
+                 "sea_level_pressure_hpa", "air_temperature_k", "water_vapor_pressure_hpa",
+                 "gas_absorption", "water_vapor_cm", "ozone_atm_cm"});
             read_parametric(root, file, atmosphere.parametric, diagnostics);
         } else if (name == "tabulated") {
             atmosphere.kind = model::AtmosphereKind::tabulated;

@@ -30,9 +30,12 @@ AtmosphereGeometry nadir(double sun_zenith_deg, double sensor_altitude_m) {
     return g;
 }
 
+/// Rayleigh and aerosol only: these tests check the scattering formulas, the gases have
+/// their own tests (gas_absorption_test.cpp).
 model::ParametricAtmosphere with_aod(double tau_550) {
     model::ParametricAtmosphere p;
     p.aerosol_optical_depth_550 = tau_550;
+    p.gas_absorption = false;
     return p;
 }
 
@@ -187,6 +190,7 @@ TEST(ParametricAtmosphere, TendsToNoneAsOpticalDepthVanishes) {
     }
     const ParametricAtmosphereModel zero([] {
         model::ParametricAtmosphere p;
+        p.gas_absorption = false;
         p.aerosol_optical_depth_550 = 0.0;
         p.sea_level_pressure_hpa = 0.0;
         p.air_temperature_k = 0.0;
@@ -268,6 +272,7 @@ TEST(AtmosphereFactory, BuildsTheSelectedModel) {
     a.kind = model::AtmosphereKind::none;
     EXPECT_NE(dynamic_cast<NoAtmosphere*>(make_atmosphere_model(a).get()), nullptr);
     a.kind = model::AtmosphereKind::parametric;
+    a.parametric.gas_absorption = false;
     EXPECT_NE(dynamic_cast<ParametricAtmosphereModel*>(make_atmosphere_model(a).get()), nullptr);
     a.kind = model::AtmosphereKind::simple;
     EXPECT_NE(dynamic_cast<SimpleAtmosphereModel*>(make_atmosphere_model(a).get()), nullptr);

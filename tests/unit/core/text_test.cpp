@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
-// Tests of the message helpers in glint/core/text.h: quote and the UTF-8 checks.
+// Tests of the helpers in glint/core/text.h: quote, the UTF-8 checks, byte sizes and lines.
 #include <gtest/gtest.h>
 
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "glint/core/text.h"
 
@@ -81,6 +83,15 @@ TEST(ByteSize, FormatsThreeSignificantDigits) {
     EXPECT_EQ(format_byte_size(256.0 * 1024 * 1024), "256 MiB");
     EXPECT_EQ(format_byte_size(8e9), "7.45 GiB");
     EXPECT_EQ(format_byte_size(3.0 * 0x1p50), "3072 TiB");
+}
+
+TEST(SplitLines, LinesWithoutTheirEndings) {
+    using V = std::vector<std::string_view>;
+    EXPECT_EQ(split_lines(""), V{});
+    EXPECT_EQ(split_lines("a"), V{"a"});
+    EXPECT_EQ(split_lines("a\n"), V{"a"});
+    EXPECT_EQ(split_lines("a\r\n\nb\r\nc"), (V{"a", "", "b", "c"}));
+    EXPECT_EQ(split_lines("\n\n"), (V{"", ""}));
 }
 
 }  // namespace

@@ -137,6 +137,34 @@ TEST(AtmosphereReader, NegativeOpticalDepthIsAnError) {
               "number >= 0");
 }
 
+TEST(AtmosphereReader, GasKeys) {
+    test::TempDir dir;
+    Diagnostics diagnostics;
+    const auto a = read_atmosphere(
+        write(dir, "g.yaml",
+              "model: parametric\ngas_absorption: false\nwater_vapor_cm: 1.42\nozone_atm_cm: 0.34\n"),
+        {}, diagnostics, "g.yaml");
+    EXPECT_EQ(diagnostics.items().size(), 0u) << first_error(diagnostics);
+    EXPECT_FALSE(a.parametric.gas_absorption);
+    EXPECT_DOUBLE_EQ(a.parametric.water_vapor_cm, 1.42);
+    EXPECT_DOUBLE_EQ(a.parametric.ozone_atm_cm, 0.34);
+    // Defaults: gases on, a mid-latitude summer column.
+    const model::ParametricAtmosphere defaults;
+    EXPECT_TRUE(defaults.gas_absorption);
+    EXPECT_DOUBLE_EQ(defaults.water_vapor_cm, 2.924);
+    EXPECT_DOUBLE_EQ(defaults.ozone_atm_cm, 0.332);
+
+    Diagnostics bad;
+    (void)read_atmosphere(write(dir, "b.yaml", "model: parametric\ngas_absorption: maybe\n"), {},
+                          bad, "b.yaml");
+    EXPECT_EQ(first_error(bad), "b.yaml:2: gas_absorption: expected true or false");
+    Diagnostics negative;
+    (void)read_atmosphere(write(dir, "n.yaml", "model: parametric\nwater_vapor_cm: -1\n"), {},
+                          negative, "n.yaml");
+    EXPECT_EQ(first_error(negative),
+              "n.yaml:2: water_vapor_cm: value -1 out of range, expected a number >= 0");
+}
+
 TEST(AtmosphereReader, NonNumberAndUnknownKey) {
     test::TempDir dir;
     const auto path =

@@ -238,7 +238,9 @@ TEST(PathTracer, MovingBoxMotionBlurMatchesTheCoveredFraction) {
 /// The default parametric atmosphere on `grid`: sun at zenith 40°, azimuth 160°, a sensor at
 /// 3000 m, a made-up solar spectrum.
 Environment parametric_environment(const SpectralGrid& grid) {
-    const glint::atmosphere::ParametricAtmosphereModel atmosphere(model::ParametricAtmosphere{});
+    model::ParametricAtmosphere parameters;
+    parameters.gas_absorption = false;  // scattering only: the gases have their own tests
+    const glint::atmosphere::ParametricAtmosphereModel atmosphere(parameters);
     const glint::atmosphere::SolarSpectrum sun(SpectralCurve({0.3, 1.0, 4.0}, {0.2, 0.1, 0.001}));
     EnvironmentInputs inputs;
     inputs.sun_direction_begin = inputs.sun_direction_end = direction_from(40.0, 160.0);

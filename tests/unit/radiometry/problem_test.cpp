@@ -8,6 +8,8 @@
 #include <atomic>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
+#include <memory>
 #include <set>
 #include <utility>
 
@@ -27,6 +29,13 @@ using test::flat_material;
 using test::ground_plane;
 using test::Rig;
 using ::testing::HasSubstr;
+
+/// glint's gas band-model table (data/atmosphere/gas_band_model.csv).
+std::shared_ptr<const glint::atmosphere::GasBandModel> gas_table() {
+    return std::make_shared<const glint::atmosphere::GasBandModel>(
+        glint::atmosphere::GasBandModel::load(std::filesystem::path(GLINT_SOURCE_DIR) / "data" /
+                                              glint::atmosphere::GasBandModel::kRelativePath));
+}
 
 const SpectralGrid kGrid({0.45, 0.55, 0.65});
 const std::vector<double> kSun{0.20, 0.19, 0.16};
@@ -393,8 +402,8 @@ TEST(Environment, NoAtmosphereIsTheExoAtmosphericSunAndABlackSky) {
 }
 
 TEST(Environment, SensorPathInterpolatesTheAtmosphereAtItsNodes) {
-    const model::ParametricAtmosphere parameters;
-    const glint::atmosphere::ParametricAtmosphereModel atmosphere(parameters);
+    const model::ParametricAtmosphere parameters;  // with gas absorption
+    const glint::atmosphere::ParametricAtmosphereModel atmosphere(parameters, gas_table());
     const glint::atmosphere::SolarSpectrum sun(SpectralCurve({0.3, 1.0, 4.0}, {0.2, 0.1, 0.001}));
     EnvironmentInputs inputs;
     inputs.sun_direction_begin = inputs.sun_direction_end = direction_from(30.0, 90.0);
@@ -431,6 +440,7 @@ TEST(Environment, ParametricTendsToNoneAsTheOpticalDepthVanishes) {
     clear.aerosol_optical_depth_550 = 0.0;
     clear.sea_level_pressure_hpa = 0.0;
     clear.air_temperature_k = 0.0;
+    clear.gas_absorption = false;
     const glint::atmosphere::ParametricAtmosphereModel atmosphere(clear);
     const glint::atmosphere::SolarSpectrum sun(SpectralCurve({0.3, 1.0, 4.0}, {0.2, 0.1, 0.001}));
     EnvironmentInputs inputs;
@@ -451,8 +461,8 @@ TEST(Environment, ParametricTendsToNoneAsTheOpticalDepthVanishes) {
 }
 
 TEST(Environment, SensorPathTablesAreSharedByRoundedGeometry) {
-    const model::ParametricAtmosphere parameters;
-    const glint::atmosphere::ParametricAtmosphereModel atmosphere(parameters);
+    const model::ParametricAtmosphere parameters;  // with gas absorption
+    const glint::atmosphere::ParametricAtmosphereModel atmosphere(parameters, gas_table());
     const glint::atmosphere::SolarSpectrum sun(SpectralCurve({0.3, 1.0, 4.0}, {0.2, 0.1, 0.001}));
     EnvironmentInputs a;
     a.sun_direction_begin = a.sun_direction_end = direction_from(30.0, 90.0);

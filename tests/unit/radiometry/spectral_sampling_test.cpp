@@ -41,7 +41,9 @@ SpectralGrid even_grid(double first_um, double last_um, std::size_t bands) {
 }
 
 Environment parametric_environment(const SpectralGrid& grid) {
-    const glint::atmosphere::ParametricAtmosphereModel atmosphere(model::ParametricAtmosphere{});
+    model::ParametricAtmosphere parameters;
+    parameters.gas_absorption = false;  // scattering only: the gases have their own tests
+    const glint::atmosphere::ParametricAtmosphereModel atmosphere(parameters);
     const glint::atmosphere::SolarSpectrum sun(
         SpectralCurve({0.3, 0.5, 1.0, 2.5}, {0.15, 0.2, 0.1, 0.01}));
     EnvironmentInputs inputs;

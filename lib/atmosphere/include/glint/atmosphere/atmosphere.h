@@ -8,10 +8,14 @@
 // sr µm), irradiance W/(cm² µm), altitudes m, angles degrees.
 #pragma once
 
+#include <filesystem>
+#include <map>
 #include <memory>
+#include <mutex>
 #include <span>
 #include <vector>
 
+#include "glint/atmosphere/gas_absorption.h"
 #include "glint/core/spectral.h"
 #include "glint/model/atmosphere.h"
 
@@ -117,11 +121,29 @@ private:
 
 /// Rayleigh + aerosol extinction with exponential scale heights, Kasten–Young air mass,
 /// single-scatter path radiance (Rayleigh and Henyey–Greenstein phase functions), a
-/// Bird–Hulstrom-type diffuse sky and a grey Brutsaert clear-sky emission.
+/// Bird–Hulstrom-type diffuse sky, a grey Brutsaert clear-sky emission and (with
+/// gas_absorption) molecular absorption from the gas band model on every path.
 class ParametricAtmosphereModel final : public AtmosphereModel {
 public:
-    /// Throws glint::Error (input) for parameters out of the ranges of model/atmosphere.h.
-    explicit ParametricAtmosphereModel(model::ParametricAtmosphere parameters);
+    /// Scale height of water vapour, m: the water above altitude z is W·e^(−z/H).
+    static constexpr double kWaterScaleHeightM = 2000.0;
+    /// Ozone: all of the column lies above kOzoneBottomM, none above kOzoneTopM, and the
+    /// share above z falls linearly between.
+    static constexpr double kOzoneBottomM = 10'000.0;
+    static constexpr double kOzoneTopM = 40'000.0;
+
+    /// `gases` is the band-model table; required when parameters.gas_absorption is set.
+    /// Throws glint::Error (input) for parameters out of the ranges of model/atmosphere.h or
+    /// gas absorption without a table.
+    explicit ParametricAtmosphereModel(model::ParametricAtmosphere parameters,
+                                       std::shared_ptr<const GasBandModel> gases = nullptr);
+
+    /// The vertical absorber amounts above `altitude_m` (zero without gas absorption).
+    GasAmounts gas_amounts_above(double altitude_m) const noexcept;
+    /// Gas transmittance of every band of `grid` for slant amounts `amounts` (1 without gas
+    /// absorption).
+    std::vector<double> gas_transmittance(const SpectralGrid& grid,
+                                          const GasAmounts& amounts) const;
 
     /// Vertical Rayleigh optical depth above `altitude_m` at `wavelength_um`.
     double rayleigh_optical_depth(double wavelength_um, double altitude_m) const noexcept;
@@ -150,7 +172,13 @@ public:
         const SpectralGrid& grid, const AtmosphereGeometry& geometry) const override;
 
 private:
+    /// The band model on `grid`, computed once per grid (null without gas absorption).
+    std::shared_ptr<const GasTransmittance> gases_on(const SpectralGrid& grid) const;
+
     model::ParametricAtmosphere m_parameters;
+    std::shared_ptr<const GasBandModel> m_gases;
+    mutable std::mutex m_grids_mutex;
+    mutable std::map<std::vector<double>, std::shared_ptr<const GasTransmittance>> m_grids;
 };
 
 /// A user table for one geometry: the geometry is ignored, values are linearly interpolated
@@ -181,7 +209,15 @@ private:
 /// the horizon, capped there for larger angles).
 double relative_air_mass(double zenith_deg) noexcept;
 
-/// The model an atmosphere description selects.
-std::unique_ptr<AtmosphereModel> make_atmosphere_model(const model::Atmosphere& atmosphere);
+/// The model an atmosphere description selects; `gases` is the band-model table the
+/// parametric model needs when its gas absorption is on (glint/atmosphere/gas_absorption.h).
+std::unique_ptr<AtmosphereModel> make_atmosphere_model(
+    const model::Atmosphere& atmosphere, std::shared_ptr<const GasBandModel> gases = nullptr);
+
+/// make_atmosphere_model with the data its model needs read from glint's data folder
+/// `data_dir` (the gas band-model table, GasBandModel::kRelativePath, when the parametric
+/// model's gas absorption is on). Throws glint::Error (io) when that file is unreadable.
+std::unique_ptr<AtmosphereModel> load_atmosphere_model(const model::Atmosphere& atmosphere,
+                                                       const std::filesystem::path& data_dir);
 
 }  // namespace glint::atmosphere

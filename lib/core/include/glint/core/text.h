@@ -71,4 +71,8 @@ std::optional<bool> parse_bool(std::string_view text);
 /// Splits "a, b,c" on commas (or `separator`), trimming each item; empty items dropped.
 std::vector<std::string> split_list(std::string_view text, char separator = ',');
 
+/// The lines of `text` (split at '\n', each without its '\n' or a trailing '\r'; no line
+/// after a final '\n'). Line k of the result is line k + 1 of the file.
+std::vector<std::string_view> split_lines(std::string_view text);
+
 }  // namespace glint

@@ -18,6 +18,9 @@
 // | `sea_level_pressure_hpa` | number ≥ 0 | hPa | 1013.25 | parametric (0: no Rayleigh) |
 // | `air_temperature_k` | number ≥ 0 | K | 288.15 | parametric (thermal sky) |
 // | `water_vapor_pressure_hpa` | number ≥ 0 | hPa | 10 | parametric (sky emissivity) |
+// | `gas_absorption` | true, false | – | true | parametric (H₂O, O₃, O₂, CO₂, CH₄, … bands) |
+// | `water_vapor_cm` | number ≥ 0 | cm | 2.924 | parametric (precipitable water, vertical) |
+// | `ozone_atm_cm` | number ≥ 0 | atm-cm | 0.332 | parametric (ozone column, vertical) |
 // | `table` | path | – | (required) | tabulated (relative to the YAML file) |
 // | `sky_temperature_k` | number ≥ 0 | K | 0 (black) | tabulated without a thermal column |
 //
@@ -51,6 +54,13 @@ struct ParametricAtmosphere {
     double sea_level_pressure_hpa = 1013.25;      ///< Rayleigh optical depth ∝ pressure
     double air_temperature_k = 288.15;            ///< effective air temperature of the sky
     double water_vapor_pressure_hpa = 10.0;       ///< for the Brutsaert clear-sky emissivity
+    /// Molecular absorption from the gas band model (glint/atmosphere/gas_absorption.h).
+    bool gas_absorption = true;
+    /// Precipitable water of the vertical column above sea level, cm (default: the AFGL
+    /// mid-latitude summer atmosphere's).
+    double water_vapor_cm = 2.924;
+    /// Ozone column, atm-cm (default: mid-latitude summer).
+    double ozone_atm_cm = 0.332;
 };
 
 /// A tabulated atmosphere for one sun/sensor geometry; every column has one entry per row.
