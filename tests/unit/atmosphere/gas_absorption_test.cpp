@@ -276,8 +276,8 @@ TEST(ParametricAtmosphereGases, DirectNormalMatchesAstmG173AtAirMassOnePointFive
     // Every 10 nm bin 300-2500 nm outside the saturated bands (ASTM's direct/extraterrestrial
     // >= 0.05): direct/extraterrestrial within 0.05 in at least 85 % of the bins and within
     // 0.13 in all. The bins beyond 0.05 are where LOWTRAN 7's band strengths differ from
-    // SMARTS's (its 0.94 and 1.13 um water bands are weaker, its 2.0 um CO2 bands
-    // stronger): measured 172 of 199 bins within 0.05, worst 0.118 at 950 nm; band
+    // SMARTS's (its 0.94 um water band is weaker; parts of 1.1, 1.3 and 2.0-2.5 um absorb
+    // more): measured 172 of 199 bins within 0.05, worst 0.118 at 950 nm; band
     // integral 899.4 against 900.1 W/m2 (docs/physics.md, "Gas absorption"). The model is
     // deterministic, so these figures do not move between runs.
     int bins = 0;
