@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: Apache-2.0
+// Multiple scattering in a plane-parallel atmosphere by successive orders of scattering:
+// homogeneous layers (optical depth, single-scatter albedo, Legendre moments of the phase
+// function) over a Lambertian ground, lit by a parallel beam. Scalar radiance (polarization
+// ignored), Gauss–Legendre directions in each hemisphere, a Fourier series in azimuth, the
+// direct beam's first scattering integrated exactly through each sublayer and the diffuse
+// sources linear in optical depth within sublayers of at most max_sublayer_depth.
+// Formulas and tests: docs/physics.md ("Multiple scattering").
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+namespace glint::atmosphere {
+
+/// One homogeneous layer.
+struct ScatteringLayer {
+    double optical_depth = 0.0;          ///< vertical extinction optical depth, ≥ 0
+    double single_scatter_albedo = 0.0;  ///< [0, 1]
+    /// Legendre moments χ_l of the phase function, P(cos Θ) = Σ_l (2l + 1) χ_l P_l(cos Θ),
+    /// normalized so that χ_0 = 1 (Rayleigh: {1, 0, 0.1}; Henyey–Greenstein: χ_l = g^l).
+    std::vector<double> moments{1.0};
+};
+
+/// A problem; the beam's irradiance is 1 on a surface normal to it at the top.
+struct ScatteringProblem {
+    std::vector<ScatteringLayer> layers;  ///< from the top of the atmosphere down
+    double sun_cos_zenith = 1.0;          ///< μ₀ in (0, 1]
+    double ground_albedo = 0.0;           ///< Lambertian, [0, 1]
+    int streams = 8;                      ///< Gauss–Legendre directions per hemisphere
+    int azimuth_modes = 1;                ///< Fourier terms cos(mφ), m < azimuth_modes
+    double max_sublayer_depth = 0.02;     ///< optical depth of the integration sublayers
+    double tolerance = 1e-6;              ///< stop when the rest of the series is below this
+                                          ///< share of the field (geometric estimate)
+    int max_orders = 2000;
+};
+
+/// The solution. Levels are the layer boundaries: 0 at the top, layers.size() at the ground.
+/// Fluxes are per unit beam irradiance normal to the beam at the top.
+class ScatteringSolution {
+public:
+    std::size_t levels() const noexcept { return m_level_boundary.size(); }
+    /// Optical depth from the top to `level`.
+    double optical_depth(std::size_t level) const noexcept;
+    /// Direct-beam flux on a horizontal surface at `level`: μ₀ e^(−τ/μ₀).
+    double direct_flux(std::size_t level) const noexcept;
+    /// Downward and upward diffuse fluxes at `level` (hemispheric integrals of μ·I).
+    double diffuse_down_flux(std::size_t level) const noexcept;
+    double diffuse_up_flux(std::size_t level) const noexcept;
+    /// Upward radiance at `level` in direction cos(zenith) = `mu` (> 0), at azimuth
+    /// `relative_azimuth_rad` from the beam's direction of travel (0: light travelling away
+    /// from the sun), from all scattering except the direct beam's first: the diffuse field,
+    /// including the light the ground reflected, scattered once more between the ground and
+    /// `level`. The light reflected by the ground reaching `level` unscattered is not in it.
+    double multiple_scatter_up_radiance(std::size_t level, double mu,
+                                        double relative_azimuth_rad) const;
+    /// The same radiance from the first scattering of the direct beam alone, with the
+    /// truncated phase function of the problem (for checks against the exact one).
+    double single_scatter_up_radiance(std::size_t level, double mu,
+                                      double relative_azimuth_rad) const;
+    /// Orders of scattering summed, per azimuth mode.
+    const std::vector<int>& orders() const noexcept { return m_orders; }
+
+private:
+    friend ScatteringSolution solve_scattering_orders(const ScatteringProblem& problem);
+    double up_radiance(std::size_t level, double mu, double relative_azimuth_rad,
+                       bool diffuse) const;
+
+    ScatteringProblem m_problem;
+    std::vector<double> m_mu;      ///< Gauss nodes in (0, 1)
+    std::vector<double> m_weight;  ///< Gauss weights (sum 1)
+    std::vector<double> m_tau;     ///< sublayer boundaries, top (0) to ground
+    std::vector<std::size_t> m_layer_of;        ///< layer of each sublayer
+    std::vector<std::size_t> m_level_boundary;  ///< sublayer boundary of each level
+    /// Total field per mode: [mode][boundary][direction], directions 0..N−1 upward (+μᵢ),
+    /// N..2N−1 downward (−μᵢ).
+    std::vector<std::vector<double>> m_field;
+    std::vector<int> m_orders;
+};
+
+/// Solves `problem`. Throws glint::Error (input) for an empty layer list, a negative or
+/// non-finite optical depth, an albedo or single-scatter albedo outside [0, 1], μ₀ outside
+/// (0, 1], streams < 2, azimuth_modes < 1, a moment list without χ_0 = 1.
+ScatteringSolution solve_scattering_orders(const ScatteringProblem& problem);
+
+}  // namespace glint::atmosphere

@@ -1,0 +1,139 @@
+// SPDX-License-Identifier: Apache-2.0
+// Tests of the successive-orders-of-scattering solver (glint/atmosphere/scattering_orders.h)
+// against published plane-parallel tables: Rayleigh scattering (R. D. Sweigart, "Radiative
+// transfer in atmospheres scattering according to the Rayleigh phase function with
+// absorption", Astrophysical Journal Supplement 22, 1970, 1–80, Table 1) and
+// Henyey–Greenstein scattering (H. C. van de Hulst, "Multiple Light Scattering", Academic
+// Press, 1980, Table 37), both as reproduced by DISORT's test problems 2 and 3 (K. Stamnes,
+// S.-C. Tsay, W. Wiscombe, K. Jayaweera, Applied Optics 27, 1988, 2502–2509), and energy
+// conservation.
+#include "glint/atmosphere/scattering_orders.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <vector>
+
+#include "glint/core/error.h"
+
+namespace glint::atmosphere {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+ScatteringProblem one_layer(double tau, double omega, std::vector<double> moments, double mu0) {
+    ScatteringProblem p;
+    p.layers = {ScatteringLayer{tau, omega, std::move(moments)}};
+    p.sun_cos_zenith = mu0;
+    p.streams = 16;
+    p.azimuth_modes = 1;
+    p.max_sublayer_depth = 0.01;
+    p.tolerance = 1e-7;
+    return p;
+}
+
+const std::vector<double> kRayleigh{1.0, 0.0, 0.1};
+
+std::vector<double> henyey_greenstein(double g, int count) {
+    std::vector<double> out;
+    for (int l = 0; l < count; ++l) out.push_back(std::pow(g, l));
+    return out;
+}
+
+/// The published values are for a beam of irradiance π (fluxes in units of π·F); ours are
+/// for 1. Measured: every flux within 0.05 % (the tables give 5-6 digits; the rest is the
+/// solver's discretization, 16 streams and sublayers of 0.01). Tolerance 0.5 %, a quarter
+/// of the 2 % asked of the atmosphere model.
+void expect_flux(double ours, double published_for_pi, const char* what) {
+    std::printf("%s: %.6g vs %.6g (%+.3f %%)\n", what, ours * kPi, published_for_pi,
+                100.0 * (ours * kPi / published_for_pi - 1.0));
+    EXPECT_NEAR(ours, published_for_pi / kPi, 0.005 * published_for_pi / kPi) << what;
+}
+
+TEST(ScatteringOrders, RayleighThinAtmosphereLowSunMatchesSweigart) {
+    // τ = 0.2, μ₀ = 0.080442, black ground (Sweigart Table 1; DISORT test 2b and 2a).
+    const auto b = solve_scattering_orders(one_layer(0.2, 1.0, kRayleigh, 0.080442));
+    expect_flux(b.direct_flux(1), 2.10311e-2, "direct at the ground");
+    expect_flux(b.diffuse_down_flux(1), 1.06123e-1, "diffuse down at the ground");
+    expect_flux(b.diffuse_up_flux(0), 1.25561e-1, "up at the top");
+    const auto a = solve_scattering_orders(one_layer(0.2, 0.5, kRayleigh, 0.080442));
+    expect_flux(a.diffuse_down_flux(1), 4.41791e-2, "diffuse down, omega 0.5");
+    expect_flux(a.diffuse_up_flux(0), 5.35063e-2, "up, omega 0.5");
+}
+
+TEST(ScatteringOrders, RayleighThickAtmosphereMatchesSweigart) {
+    // τ = 5 (DISORT test 2d and 2c).
+    const auto d = solve_scattering_orders(one_layer(5.0, 1.0, kRayleigh, 0.080442));
+    expect_flux(d.diffuse_down_flux(1), 2.68008e-2, "diffuse down at the ground");
+    expect_flux(d.diffuse_up_flux(0), 2.25915e-1, "up at the top");
+    const auto c = solve_scattering_orders(one_layer(5.0, 0.5, kRayleigh, 0.080442));
+    expect_flux(c.diffuse_down_flux(1), 2.51683e-4, "diffuse down, omega 0.5");
+    expect_flux(c.diffuse_up_flux(0), 6.24730e-2, "up, omega 0.5");
+}
+
+TEST(ScatteringOrders, HenyeyGreensteinMatchesVanDeHulst) {
+    // g = 0.75, τ = 1, overhead sun (van de Hulst Table 37; DISORT test 3a), 32 moments.
+    const auto s = solve_scattering_orders(one_layer(1.0, 1.0, henyey_greenstein(0.75, 32), 1.0));
+    expect_flux(s.direct_flux(1), 1.15573, "direct at the ground");
+    expect_flux(s.diffuse_down_flux(1), 1.73849, "diffuse down at the ground");
+    expect_flux(s.diffuse_up_flux(0), 2.47374e-1, "up at the top");
+}
+
+TEST(ScatteringOrders, ConservesEnergyAndCouplesToTheGround) {
+    // Conservative scattering: what enters leaves at the top or reaches the ground, where an
+    // albedo A sends A times it back up.
+    for (double albedo : {0.0, 0.3, 0.8}) {
+        ScatteringProblem p;
+        p.layers = {ScatteringLayer{0.3, 1.0, kRayleigh},
+                    ScatteringLayer{0.2, 1.0, henyey_greenstein(0.7, 16)}};
+        p.sun_cos_zenith = 0.6;
+        p.ground_albedo = albedo;
+        p.tolerance = 1e-9;
+        const auto s = solve_scattering_orders(p);
+        const double down = s.direct_flux(2) + s.diffuse_down_flux(2);
+        EXPECT_NEAR(s.diffuse_up_flux(2), albedo * down, 1e-6);
+        EXPECT_NEAR(s.diffuse_up_flux(0) + down - s.diffuse_up_flux(2), 0.6, 2e-4) << albedo;
+    }
+}
+
+TEST(ScatteringOrders, FirstOrderMatchesTheSingleScatterFormula) {
+    // Rayleigh, sensor above the atmosphere looking down at μ: single scattering gives
+    // P(Θ) μ₀ (1 − e^{−τ(1/μ₀ + 1/μ)}) / (4π (μ₀ + μ)) per unit beam.
+    const double tau = 0.3;
+    const double mu0 = 0.7;
+    ScatteringProblem p = one_layer(tau, 1.0, kRayleigh, mu0);
+    p.azimuth_modes = 3;  // the Rayleigh phase function has modes 0-2
+    const auto s = solve_scattering_orders(p);
+    for (double mu : {0.2, 0.6, 1.0}) {
+        for (double phi : {0.0, 1.0, kPi}) {
+            const double cos_theta =
+                -mu * mu0 + std::sqrt(1 - mu * mu) * std::sqrt(1 - mu0 * mu0) * std::cos(phi);
+            const double phase = 0.75 * (1.0 + cos_theta * cos_theta);
+            const double expected = phase * mu0 * -std::expm1(-tau * (1 / mu0 + 1 / mu)) /
+                                    (4.0 * kPi * (mu0 + mu));
+            EXPECT_NEAR(s.single_scatter_up_radiance(0, mu, phi), expected, 1e-12);
+            // Multiple scattering adds to it, less than single scattering at this depth.
+            const double ms = s.multiple_scatter_up_radiance(0, mu, phi);
+            EXPECT_GT(ms, 0.0);
+            EXPECT_LT(ms, expected * 1.2);
+        }
+    }
+}
+
+TEST(ScatteringOrders, BadProblemsAreRefused) {
+    ScatteringProblem p;
+    EXPECT_THROW((void)solve_scattering_orders(p), Error);
+    p = one_layer(0.1, 1.0, kRayleigh, 0.0);
+    EXPECT_THROW((void)solve_scattering_orders(p), Error);
+    p = one_layer(-0.1, 1.0, kRayleigh, 0.5);
+    EXPECT_THROW((void)solve_scattering_orders(p), Error);
+    p = one_layer(0.1, 1.5, kRayleigh, 0.5);
+    EXPECT_THROW((void)solve_scattering_orders(p), Error);
+    p = one_layer(0.1, 1.0, {0.5}, 0.5);
+    EXPECT_THROW((void)solve_scattering_orders(p), Error);
+}
+
+}  // namespace
+}  // namespace glint::atmosphere
