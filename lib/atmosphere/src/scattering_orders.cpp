@@ -23,8 +23,19 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-/// Gauss–Legendre nodes and weights on (0, 1) (weights sum to 1).
-void gauss_half(int n, std::vector<double>& nodes, std::vector<double>& weights) {
+/// Σ_m terms[m] cos(mφ).
+double sum_modes(const std::vector<double>& terms, double phi) {
+    if (!std::isfinite(phi)) throw input_error("non-finite azimuth");
+    double sum = 0.0;
+    for (std::size_t m = 0; m < terms.size(); ++m) {
+        sum += terms[m] * std::cos(static_cast<double>(m) * phi);
+    }
+    return sum;
+}
+
+}  // namespace
+
+void gauss_legendre_unit(int n, std::vector<double>& nodes, std::vector<double>& weights) {
     nodes.assign(static_cast<std::size_t>(n), 0.0);
     weights.assign(static_cast<std::size_t>(n), 0.0);
     for (int i = 0; i < n; ++i) {
@@ -48,6 +59,8 @@ void gauss_half(int n, std::vector<double>& nodes, std::vector<double>& weights)
         weights[static_cast<std::size_t>(i)] = 0.5 * w;
     }
 }
+
+namespace {
 
 /// Λ_l^m(μ) for l = m … lmax (index l − m); sign conventions cancel in the products used.
 std::vector<double> normalized_legendre(int m, int lmax, double mu) {
@@ -126,7 +139,7 @@ ScatteringSolution solve_scattering_orders(const ScatteringProblem& problem) {
     s.m_problem = problem;
     const int n = problem.streams;
     const std::size_t nd = static_cast<std::size_t>(2 * n);
-    gauss_half(n, s.m_mu, s.m_weight);
+    gauss_legendre_unit(n, s.m_mu, s.m_weight);
     // Sublayers.
     s.m_tau.push_back(0.0);
     s.m_level_boundary.push_back(0);
@@ -315,17 +328,21 @@ double ScatteringSolution::diffuse_up_flux(std::size_t level) const noexcept {
 
 double ScatteringSolution::multiple_scatter_up_radiance(std::size_t level, double mu,
                                                         double relative_azimuth_rad) const {
-    return up_radiance(level, mu, relative_azimuth_rad, true);
+    return sum_modes(up_modes(level, mu, true), relative_azimuth_rad);
+}
+
+std::vector<double> ScatteringSolution::multiple_scatter_up_modes(std::size_t level,
+                                                                  double mu) const {
+    return up_modes(level, mu, true);
 }
 
 double ScatteringSolution::single_scatter_up_radiance(std::size_t level, double mu,
                                                       double relative_azimuth_rad) const {
-    return up_radiance(level, mu, relative_azimuth_rad, false);
+    return sum_modes(up_modes(level, mu, false), relative_azimuth_rad);
 }
 
-double ScatteringSolution::up_radiance(std::size_t level, double mu, double relative_azimuth_rad,
-                                       bool diffuse) const {
-    if (!(mu > 0.0) || mu > 1.0 || !std::isfinite(relative_azimuth_rad)) {
+std::vector<double> ScatteringSolution::up_modes(std::size_t level, double mu, bool diffuse) const {
+    if (!(mu > 0.0) || mu > 1.0) {
         throw input_error("upward radiance needs a direction cosine in (0, 1]");
     }
     const std::size_t n = m_mu.size();
@@ -334,7 +351,7 @@ double ScatteringSolution::up_radiance(std::size_t level, double mu, double rela
     const double mu0 = m_problem.sun_cos_zenith;
     const std::size_t stop = m_level_boundary.at(level);
     const std::size_t sublayers = m_layer_of.size();
-    double radiance = 0.0;
+    std::vector<double> terms(m_field.size(), 0.0);
     for (std::size_t m = 0; m < m_field.size(); ++m) {
         const int mi = static_cast<int>(m);
         const std::vector<double> lambda_view = normalized_legendre(mi, lmax, mu);
@@ -379,9 +396,9 @@ double ScatteringSolution::up_radiance(std::size_t level, double mu, double rela
                 value = value * e + beam[k] * integral;
             }
         }
-        radiance += value * std::cos(static_cast<double>(m) * relative_azimuth_rad);
+        terms[m] = value;
     }
-    return radiance;
+    return terms;
 }
 
 }  // namespace glint::atmosphere

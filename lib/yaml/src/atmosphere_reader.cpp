@@ -56,6 +56,18 @@ void read_number(const YAML::Node& map, const char* key, const std::string& file
     value = v;
 }
 
+void read_flag(const YAML::Node& map, const char* key, const std::string& file, bool& value,
+               Diagnostics& diagnostics) {
+    const YAML::Node node = map[key];
+    if (!node) return;
+    const auto parsed = node.IsScalar() ? parse_bool(node.Scalar()) : std::nullopt;
+    if (parsed) {
+        value = *parsed;
+    } else {
+        diagnostics.error(at(file, node, key), "expected true or false");
+    }
+}
+
 const Bounds kNonNegative{0.0, std::nullopt, false, false, "a number >= 0"};
 const Bounds kPositive{0.0, std::nullopt, true, false, "a number > 0"};
 const Bounds kAny{std::nullopt, std::nullopt, false, false, "a number"};
@@ -81,14 +93,9 @@ void read_parametric(const YAML::Node& root, const std::string& file,
                 diagnostics);
     read_number(root, "water_vapor_cm", file, kNonNegative, p.water_vapor_cm, diagnostics);
     read_number(root, "ozone_atm_cm", file, kNonNegative, p.ozone_atm_cm, diagnostics);
-    if (const YAML::Node node = root["gas_absorption"]) {
-        const auto value = node.IsScalar() ? parse_bool(node.Scalar()) : std::nullopt;
-        if (value) {
-            p.gas_absorption = *value;
-        } else {
-            diagnostics.error(at(file, node, "gas_absorption"), "expected true or false");
-        }
-    }
+    read_number(root, "ground_albedo", file, kFraction, p.ground_albedo, diagnostics);
+    read_flag(root, "gas_absorption", file, p.gas_absorption, diagnostics);
+    read_flag(root, "multiple_scattering", file, p.multiple_scattering, diagnostics);
 }
 
 model::Atmosphere read_yaml(const std::string& text, const std::filesystem::path& path,
@@ -124,7 +131,8 @@ model::Atmosphere read_yaml(const std::string& text, const std::filesystem::path
                 {"aerosol_optical_depth_550", "angstrom_exponent", "aerosol_scale_height_m",
                  "aerosol_asymmetry", "aerosol_single_scatter_albedo", "rayleigh_scale_height_m",
                  "sea_level_pressure_hpa", "air_temperature_k", "water_vapor_pressure_hpa",
-                 "gas_absorption", "water_vapor_cm", "ozone_atm_cm"});
+                 "gas_absorption", "water_vapor_cm", "ozone_atm_cm", "multiple_scattering",
+                 "ground_albedo"});
             read_parametric(root, file, atmosphere.parametric, diagnostics);
         } else if (name == "tabulated") {
             atmosphere.kind = model::AtmosphereKind::tabulated;

@@ -30,12 +30,14 @@ AtmosphereGeometry nadir(double sun_zenith_deg, double sensor_altitude_m) {
     return g;
 }
 
-/// Rayleigh and aerosol only: these tests check the scattering formulas, the gases have
-/// their own tests (gas_absorption_test.cpp).
+/// Rayleigh and aerosol, single scattering and the Bird–Hulstrom sky: these tests check
+/// those formulas; the gases and multiple scattering have their own tests
+/// (gas_absorption_test.cpp, multiple_scattering_test.cpp).
 model::ParametricAtmosphere with_aod(double tau_550) {
     model::ParametricAtmosphere p;
     p.aerosol_optical_depth_550 = tau_550;
     p.gas_absorption = false;
+    p.multiple_scattering = false;
     return p;
 }
 
@@ -191,6 +193,7 @@ TEST(ParametricAtmosphere, TendsToNoneAsOpticalDepthVanishes) {
     const ParametricAtmosphereModel zero([] {
         model::ParametricAtmosphere p;
         p.gas_absorption = false;
+        p.multiple_scattering = false;
         p.aerosol_optical_depth_550 = 0.0;
         p.sea_level_pressure_hpa = 0.0;
         p.air_temperature_k = 0.0;

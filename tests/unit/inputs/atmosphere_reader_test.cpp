@@ -137,22 +137,27 @@ TEST(AtmosphereReader, NegativeOpticalDepthIsAnError) {
               "number >= 0");
 }
 
-TEST(AtmosphereReader, GasKeys) {
+TEST(AtmosphereReader, GasAndScatteringKeys) {
     test::TempDir dir;
     Diagnostics diagnostics;
     const auto a = read_atmosphere(
         write(dir, "g.yaml",
-              "model: parametric\ngas_absorption: false\nwater_vapor_cm: 1.42\nozone_atm_cm: 0.34\n"),
+              "model: parametric\ngas_absorption: false\nwater_vapor_cm: 1.42\nozone_atm_cm: 0.34\n"
+              "multiple_scattering: no\nground_albedo: 0.35\n"),
         {}, diagnostics, "g.yaml");
     EXPECT_EQ(diagnostics.items().size(), 0u) << first_error(diagnostics);
     EXPECT_FALSE(a.parametric.gas_absorption);
     EXPECT_DOUBLE_EQ(a.parametric.water_vapor_cm, 1.42);
     EXPECT_DOUBLE_EQ(a.parametric.ozone_atm_cm, 0.34);
-    // Defaults: gases on, a mid-latitude summer column.
+    EXPECT_FALSE(a.parametric.multiple_scattering);
+    EXPECT_DOUBLE_EQ(a.parametric.ground_albedo, 0.35);
+    // Defaults: gases and multiple scattering on, a mid-latitude summer column, albedo 0.2.
     const model::ParametricAtmosphere defaults;
     EXPECT_TRUE(defaults.gas_absorption);
     EXPECT_DOUBLE_EQ(defaults.water_vapor_cm, 2.924);
     EXPECT_DOUBLE_EQ(defaults.ozone_atm_cm, 0.332);
+    EXPECT_TRUE(defaults.multiple_scattering);
+    EXPECT_DOUBLE_EQ(defaults.ground_albedo, 0.2);
 
     Diagnostics bad;
     (void)read_atmosphere(write(dir, "b.yaml", "model: parametric\ngas_absorption: maybe\n"), {},
@@ -163,6 +168,11 @@ TEST(AtmosphereReader, GasKeys) {
                           negative, "n.yaml");
     EXPECT_EQ(first_error(negative),
               "n.yaml:2: water_vapor_cm: value -1 out of range, expected a number >= 0");
+    Diagnostics albedo;
+    (void)read_atmosphere(write(dir, "a.yaml", "model: parametric\nground_albedo: 1.5\n"), {},
+                          albedo, "a.yaml");
+    EXPECT_EQ(first_error(albedo),
+              "a.yaml:2: ground_albedo: value 1.5 out of range, expected a number in [0, 1]");
 }
 
 TEST(AtmosphereReader, NonNumberAndUnknownKey) {

@@ -171,14 +171,35 @@ public:
     std::vector<double> thermal_sky_radiance_w_per_cm2_sr_um(
         const SpectralGrid& grid, const AtmosphereGeometry& geometry) const override;
 
+    /// Wavelength nodes of the multiple-scattering solutions: a grid of at most this many
+    /// bands is solved at its own wavelengths, a larger one at this many nodes spaced evenly
+    /// in ln λ across it (interpolated linearly in ln λ between them).
+    static constexpr std::size_t kScatteringNodes = 24;
+    /// Layers of the multiple-scattering atmosphere between the surface and 100 km (and
+    /// the sensor's altitude as one more boundary).
+    static constexpr int kScatteringLayers = 24;
+
 private:
+    struct Scattering;
+
     /// The band model on `grid`, computed once per grid (null without gas absorption).
     std::shared_ptr<const GasTransmittance> gases_on(const SpectralGrid& grid) const;
+    /// The multiple-scattering solutions of `geometry` at the nodes of `grid` (null without
+    /// multiple scattering or with the sun down); the last few are kept.
+    std::shared_ptr<const Scattering> scattering(const SpectralGrid& grid,
+                                                 const AtmosphereGeometry& geometry) const;
+    /// Adds the multiple-scatter path radiance to `out` (one spectrum per azimuth).
+    void add_multiple_scattering(const SpectralGrid& grid, const AtmosphereGeometry& geometry,
+                                 std::span<const double> toa,
+                                 std::span<const double> view_azimuths_deg,
+                                 std::vector<std::vector<double>>& out) const;
 
     model::ParametricAtmosphere m_parameters;
     std::shared_ptr<const GasBandModel> m_gases;
     mutable std::mutex m_grids_mutex;
     mutable std::map<std::vector<double>, std::shared_ptr<const GasTransmittance>> m_grids;
+    mutable std::mutex m_scattering_mutex;
+    mutable std::vector<std::shared_ptr<const Scattering>> m_scattering;  ///< most recent last
 };
 
 /// A user table for one geometry: the geometry is ignored, values are linearly interpolated

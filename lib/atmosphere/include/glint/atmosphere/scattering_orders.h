@@ -58,13 +58,15 @@ public:
     /// truncated phase function of the problem (for checks against the exact one).
     double single_scatter_up_radiance(std::size_t level, double mu,
                                       double relative_azimuth_rad) const;
+    /// The Fourier terms of multiple_scatter_up_radiance at `level` and `mu`: the radiance at
+    /// azimuth φ is Σ_m terms[m] cos(mφ).
+    std::vector<double> multiple_scatter_up_modes(std::size_t level, double mu) const;
     /// Orders of scattering summed, per azimuth mode.
     const std::vector<int>& orders() const noexcept { return m_orders; }
 
 private:
     friend ScatteringSolution solve_scattering_orders(const ScatteringProblem& problem);
-    double up_radiance(std::size_t level, double mu, double relative_azimuth_rad,
-                       bool diffuse) const;
+    std::vector<double> up_modes(std::size_t level, double mu, bool diffuse) const;
 
     ScatteringProblem m_problem;
     std::vector<double> m_mu;      ///< Gauss nodes in (0, 1)
@@ -77,6 +79,9 @@ private:
     std::vector<std::vector<double>> m_field;
     std::vector<int> m_orders;
 };
+
+/// The n-point Gauss–Legendre rule on (0, 1), weights summing to 1 (exact for polynomials of degree ≤ 2n − 1).
+void gauss_legendre_unit(int n, std::vector<double>& nodes, std::vector<double>& weights);
 
 /// Solves `problem`. Throws glint::Error (input) for an empty layer list, a negative or
 /// non-finite optical depth, an albedo or single-scatter albedo outside [0, 1], μ₀ outside

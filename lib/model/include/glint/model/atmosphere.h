@@ -21,6 +21,8 @@
 // | `gas_absorption` | true, false | – | true | parametric (H₂O, O₃, O₂, CO₂, CH₄, … bands) |
 // | `water_vapor_cm` | number ≥ 0 | cm | 2.924 | parametric (precipitable water, vertical) |
 // | `ozone_atm_cm` | number ≥ 0 | atm-cm | 0.332 | parametric (ozone column, vertical) |
+// | `multiple_scattering` | true, false | – | true | parametric (sky and path radiance) |
+// | `ground_albedo` | number in [0, 1] | – | 0.2 | parametric (Lambertian ground of the sky) |
 // | `table` | path | – | (required) | tabulated (relative to the YAML file) |
 // | `sky_temperature_k` | number ≥ 0 | K | 0 (black) | tabulated without a thermal column |
 //
@@ -61,6 +63,12 @@ struct ParametricAtmosphere {
     double water_vapor_cm = 2.924;
     /// Ozone column, atm-cm (default: mid-latitude summer).
     double ozone_atm_cm = 0.332;
+    /// Multiple scattering (successive orders) for the diffuse sky and the path radiance;
+    /// false: the single-scatter path radiance and the Bird–Hulstrom diffuse sky.
+    bool multiple_scattering = true;
+    /// Lambertian albedo of the ground under the plane-parallel atmosphere: the light it
+    /// sends back up that the sky scatters down again, and into the path radiance.
+    double ground_albedo = 0.2;
 };
 
 /// A tabulated atmosphere for one sun/sensor geometry; every column has one entry per row.
