@@ -299,13 +299,24 @@ struct ParametricAtmosphereModel::Scattering {
 std::shared_ptr<const ParametricAtmosphereModel::Scattering> ParametricAtmosphereModel::scattering(
     const SpectralGrid& grid, const AtmosphereGeometry& geometry) const {
     if (!m_parameters.multiple_scattering || !sun_up(geometry)) return nullptr;
-    const double z0 = geometry.surface_altitude_m;
-    const double z1 = std::max(z0, geometry.sensor_altitude_m);
+    // The solutions are computed for the geometry rounded (sun zenith to
+    // kScatteringZenithStepDeg, altitudes to kScatteringAltitudeStepM), always, so that the
+    // captures of a sequence share them and what a cached entry holds never depends on which
+    // query made it.
+    const double sun_zenith_deg =
+        std::min(std::round(geometry.sun_zenith_deg / kScatteringZenithStepDeg) *
+                     kScatteringZenithStepDeg,
+                 89.95);
+    const double z0 = std::round(geometry.surface_altitude_m / kScatteringAltitudeStepM) *
+                      kScatteringAltitudeStepM;
+    const double z1 = std::max(
+        z0, std::round(geometry.sensor_altitude_m / kScatteringAltitudeStepM) *
+                kScatteringAltitudeStepM);
     const std::vector<double> wavelengths(grid.wavelengths_um().begin(),
                                           grid.wavelengths_um().end());
     const std::lock_guard<std::mutex> lock(m_scattering_mutex);
     for (const auto& cached : m_scattering) {
-        if (cached->sun_zenith_deg == geometry.sun_zenith_deg &&
+        if (cached->sun_zenith_deg == sun_zenith_deg &&
             cached->surface_altitude_m == z0 && cached->sensor_altitude_m == z1 &&
             cached->grid == wavelengths) {
             return cached;
@@ -313,7 +324,7 @@ std::shared_ptr<const ParametricAtmosphereModel::Scattering> ParametricAtmospher
     }
     auto out = std::make_shared<Scattering>();
     out->grid = wavelengths;
-    out->sun_zenith_deg = geometry.sun_zenith_deg;
+    out->sun_zenith_deg = sun_zenith_deg;
     out->surface_altitude_m = z0;
     out->sensor_altitude_m = z1;
     // Nodes.
@@ -359,7 +370,7 @@ std::shared_ptr<const ParametricAtmosphereModel::Scattering> ParametricAtmospher
     const double omega_a = m_parameters.aerosol_single_scatter_albedo;
     for (const double wl : nodes) {
         ScatteringProblem problem;
-        problem.sun_cos_zenith = std::min(1.0, 1.0 / relative_air_mass(geometry.sun_zenith_deg));
+        problem.sun_cos_zenith = std::min(1.0, 1.0 / relative_air_mass(sun_zenith_deg));
         problem.ground_albedo = m_parameters.ground_albedo;
         problem.streams = 8;
         problem.azimuth_modes = 6;
