@@ -74,8 +74,58 @@ const Bounds kAny{std::nullopt, std::nullopt, false, false, "a number"};
 const Bounds kFraction{0.0, 1.0, false, false, "a number in [0, 1]"};
 const Bounds kAsymmetry{-1.0, 1.0, true, true, "a number in (-1, 1)"};
 
+/// aerosol_model: the type's Ångström exponent, single-scatter albedo and asymmetry (keys
+/// given explicitly are read after, and win).
+void read_aerosol_model(const YAML::Node& root, const std::string& file,
+                        model::ParametricAtmosphere& p, Diagnostics& diagnostics) {
+    const YAML::Node node = root["aerosol_model"];
+    if (!node) return;
+    const std::string name = node.IsScalar() ? node.Scalar() : std::string{};
+    for (const model::AerosolType& type : model::kAerosolTypes) {
+        if (name == type.name) {
+            p.angstrom_exponent = type.angstrom_exponent;
+            p.aerosol_single_scatter_albedo = type.single_scatter_albedo;
+            p.aerosol_asymmetry = type.asymmetry;
+            return;
+        }
+    }
+    diagnostics.error(at(file, node, "aerosol_model"),
+                      "expected rural, urban, maritime or desert, got '" + name + "'");
+}
+
+/// visibility_km: the aerosol optical depth at 550 nm from Koschmieder's law,
+/// τ₅₅₀ = (3.912/V − β_Rayleigh) · H_a.
+void read_visibility(const YAML::Node& root, const std::string& file,
+                     model::ParametricAtmosphere& p, Diagnostics& diagnostics) {
+    const YAML::Node node = root["visibility_km"];
+    if (!node) return;
+    const ErrorContext where = at(file, node, "visibility_km");
+    if (root["aerosol_optical_depth_550"]) {
+        diagnostics.error(where, "give aerosol_optical_depth_550 or visibility_km, not both");
+        return;
+    }
+    double visibility_km = 0.0;
+    const Bounds positive{0.0, std::nullopt, true, false, "a number > 0"};
+    const std::size_t errors = diagnostics.error_count();
+    read_number(root, "visibility_km", file, positive, visibility_km, diagnostics);
+    if (diagnostics.error_count() != errors) return;
+    const double extinction_per_km =
+        model::kKoschmieder / visibility_km - model::kRayleighExtinction550PerKm;
+    if (!(extinction_per_km > 0.0)) {
+        diagnostics.error(where, "visibility " + num(visibility_km) +
+                                     " km is beyond that of aerosol-free air (" +
+                                     std::to_string(static_cast<int>(
+                                         model::kKoschmieder /
+                                         model::kRayleighExtinction550PerKm)) +
+                                     " km)");
+        return;
+    }
+    p.aerosol_optical_depth_550 = extinction_per_km * p.aerosol_scale_height_m / 1000.0;
+}
+
 void read_parametric(const YAML::Node& root, const std::string& file,
                      model::ParametricAtmosphere& p, Diagnostics& diagnostics) {
+    read_aerosol_model(root, file, p, diagnostics);
     read_number(root, "aerosol_optical_depth_550", file, kNonNegative, p.aerosol_optical_depth_550,
                 diagnostics);
     read_number(root, "angstrom_exponent", file, kAny, p.angstrom_exponent, diagnostics);
@@ -94,6 +144,7 @@ void read_parametric(const YAML::Node& root, const std::string& file,
     read_number(root, "water_vapor_cm", file, kNonNegative, p.water_vapor_cm, diagnostics);
     read_number(root, "ozone_atm_cm", file, kNonNegative, p.ozone_atm_cm, diagnostics);
     read_number(root, "ground_albedo", file, kFraction, p.ground_albedo, diagnostics);
+    read_visibility(root, file, p, diagnostics);  // after the aerosol scale height
     read_flag(root, "gas_absorption", file, p.gas_absorption, diagnostics);
     read_flag(root, "multiple_scattering", file, p.multiple_scattering, diagnostics);
 }
@@ -132,7 +183,7 @@ model::Atmosphere read_yaml(const std::string& text, const std::filesystem::path
                  "aerosol_asymmetry", "aerosol_single_scatter_albedo", "rayleigh_scale_height_m",
                  "sea_level_pressure_hpa", "air_temperature_k", "water_vapor_pressure_hpa",
                  "gas_absorption", "water_vapor_cm", "ozone_atm_cm", "multiple_scattering",
-                 "ground_albedo"});
+                 "ground_albedo", "aerosol_model", "visibility_km"});
             read_parametric(root, file, atmosphere.parametric, diagnostics);
         } else if (name == "tabulated") {
             atmosphere.kind = model::AtmosphereKind::tabulated;

@@ -175,10 +175,41 @@ TEST(AtmosphereReader, GasAndScatteringKeys) {
               "a.yaml:2: ground_albedo: value 1.5 out of range, expected a number in [0, 1]");
 }
 
+TEST(AtmosphereReader, AerosolModelAndVisibility) {
+    test::TempDir dir;
+    Diagnostics diagnostics;
+    const auto a = read_atmosphere(
+        write(dir, "m.yaml",
+              "model: parametric\naerosol_model: maritime\naerosol_asymmetry: 0.8\n"
+              "visibility_km: 23\naerosol_scale_height_m: 1000\n"),
+        {}, diagnostics, "m.yaml");
+    EXPECT_EQ(diagnostics.items().size(), 0u) << first_error(diagnostics);
+    EXPECT_DOUBLE_EQ(a.parametric.angstrom_exponent, 0.35);            // maritime
+    EXPECT_DOUBLE_EQ(a.parametric.aerosol_single_scatter_albedo, 0.99);  // maritime
+    EXPECT_DOUBLE_EQ(a.parametric.aerosol_asymmetry, 0.8);              // the explicit key wins
+    // Koschmieder: β = 3.912/23 − 0.01159 = 0.15850 km⁻¹ over a 1 km scale height.
+    EXPECT_NEAR(a.parametric.aerosol_optical_depth_550, 3.912 / 23.0 - 0.01159, 1e-12);
+
+    const auto error_of = [&](const std::string& text) {
+        Diagnostics d;
+        (void)read_atmosphere(write(dir, "e.yaml", text), {}, d, "e.yaml");
+        return first_error(d);
+    };
+    EXPECT_EQ(error_of("model: parametric\naerosol_model: volcanic\n"),
+              "e.yaml:2: aerosol_model: expected rural, urban, maritime or desert, got 'volcanic'");
+    EXPECT_EQ(error_of("model: parametric\naerosol_optical_depth_550: 0.1\nvisibility_km: 20\n"),
+              "e.yaml:3: visibility_km: give aerosol_optical_depth_550 or visibility_km, not both");
+    EXPECT_EQ(error_of("model: parametric\nvisibility_km: 400\n"),
+              "e.yaml:2: visibility_km: visibility 400 km is beyond that of aerosol-free air "
+              "(337 km)");
+    EXPECT_EQ(error_of("model: parametric\nvisibility_km: 0\n"),
+              "e.yaml:2: visibility_km: value 0 out of range, expected a number > 0");
+}
+
 TEST(AtmosphereReader, NonNumberAndUnknownKey) {
     test::TempDir dir;
     const auto path =
-        write(dir, "bad.yaml", "model: parametric\nangstrom_exponent: big\nvisibility_km: 23\n");
+        write(dir, "bad.yaml", "model: parametric\nangstrom_exponent: big\ncloud_cover: 0.3\n");
     Diagnostics diagnostics;
     (void)read_atmosphere(path, {}, diagnostics, "bad.yaml");
     EXPECT_EQ(first_error(diagnostics), "bad.yaml:2: angstrom_exponent: expected a number");

@@ -21,6 +21,8 @@
 // | `gas_absorption` | true, false | – | true | parametric (H₂O, O₃, O₂, CO₂, CH₄, … bands) |
 // | `water_vapor_cm` | number ≥ 0 | cm | 2.924 | parametric (precipitable water, vertical) |
 // | `ozone_atm_cm` | number ≥ 0 | atm-cm | 0.332 | parametric (ozone column, vertical) |
+// | `aerosol_model` | rural, urban, maritime, desert | – | (none) | parametric: sets the next three |
+// | `visibility_km` | number > 0 | km | – | parametric: τ₅₅₀ by Koschmieder (not with τ₅₅₀) |
 // | `multiple_scattering` | true, false | – | true | parametric (sky and path radiance) |
 // | `ground_albedo` | number in [0, 1] | – | 0.2 | parametric (Lambertian ground of the sky) |
 // | `table` | path | – | (required) | tabulated (relative to the YAML file) |
@@ -70,6 +72,29 @@ struct ParametricAtmosphere {
     /// sends back up that the sky scatters down again, and into the path radiance.
     double ground_albedo = 0.2;
 };
+
+/// Representative optical properties of an aerosol type at 70-80 % relative humidity:
+/// rural, urban and maritime after E. P. Shettle and R. W. Fenn, "Models for the aerosols of
+/// the lower atmosphere and the effects of humidity variations on their optical properties",
+/// AFGL-TR-79-0214, 1979; desert after J. D. Longtin, E. P. Shettle, J. R. Hummel,
+/// J. D. Pryce, "A wind dependent desert aerosol model", AFGL-TR-88-0112, 1988. Values
+/// for 0.4-1 µm (docs/physics.md, "Aerosol types").
+struct AerosolType {
+    const char* name;
+    double angstrom_exponent;
+    double single_scatter_albedo;
+    double asymmetry;
+};
+inline constexpr AerosolType kAerosolTypes[] = {
+    {"rural", 1.25, 0.95, 0.68},
+    {"urban", 1.15, 0.80, 0.67},
+    {"maritime", 0.35, 0.99, 0.76},
+    {"desert", 0.30, 0.90, 0.72},
+};
+/// Koschmieder's constant: visibility V = 3.912 / β_ext(550 nm) at the ground (2 % contrast).
+inline constexpr double kKoschmieder = 3.912;
+/// Rayleigh extinction of sea-level air at 550 nm, km⁻¹ (removed from 3.912/V).
+inline constexpr double kRayleighExtinction550PerKm = 0.01159;
 
 /// A tabulated atmosphere for one sun/sensor geometry; every column has one entry per row.
 struct TabulatedAtmosphere {
