@@ -162,7 +162,20 @@ Environment Environment::make(const SpectralGrid& grid,
     geometry.surface_altitude_m = in.surface_altitude_m;
     geometry.sensor_altitude_m = std::max(in.sensor_altitude_m, in.surface_altitude_m);
 
-    const std::vector<double> toa = sun.resample(grid, in.sun_distance_au);
+    if (!(in.source_irradiance_scale > 0.0) || !std::isfinite(in.source_irradiance_scale) ||
+        !(in.source_half_angle_rad > 0.0) || !(in.source_half_angle_rad < 0.1)) {
+        throw input_error("the source's irradiance scale must be > 0 and its angular radius in "
+                          "(0, 0.1) rad");
+    }
+    env.m_sun_half_angle_rad = in.source_half_angle_rad;
+    env.m_sun_cone_one_minus_cos = cone_one_minus_cos(in.source_half_angle_rad);
+    // The source's scale, rounded as the sensor-path key rounds it (log steps of
+    // kSourceScaleStep): the sun's is exactly 1.
+    const long long scale_key =
+        std::llround(std::log(in.source_irradiance_scale) / SensorPathCache::kSourceScaleStep);
+    const double scale = std::exp(static_cast<double>(scale_key) * SensorPathCache::kSourceScaleStep);
+    std::vector<double> toa = sun.resample(grid, in.sun_distance_au);
+    for (double& v : toa) v *= scale;
     const std::vector<double> t_sun = atmosphere.sun_transmittance(grid, geometry);
     for (std::size_t b = 0; b < env.m_bands; ++b) env.m_sun[b] = toa[b] * t_sun[b];
     env.m_sky = atmosphere.sky_radiance_w_per_cm2_sr_um(grid, geometry, toa);
@@ -175,7 +188,7 @@ Environment Environment::make(const SpectralGrid& grid,
         std::llround(geometry.sun_azimuth_deg / SensorPathCache::kAngleStepDeg),
         std::llround(geometry.surface_altitude_m / SensorPathCache::kAltitudeStepM),
         std::llround(geometry.sensor_altitude_m / SensorPathCache::kAltitudeStepM),
-        std::llround(in.sun_distance_au / SensorPathCache::kSunDistanceStepAu)};
+        std::llround(in.sun_distance_au / SensorPathCache::kSunDistanceStepAu), scale_key};
     if (cache != nullptr) env.m_paths = cache->find(key);
     if (!env.m_paths) {
         glint::atmosphere::AtmosphereGeometry rounded = geometry;
@@ -185,8 +198,9 @@ Environment Environment::make(const SpectralGrid& grid,
         rounded.sensor_altitude_m = static_cast<double>(key[3]) * SensorPathCache::kAltitudeStepM;
         // The exo-atmospheric sun at the rounded distance too: the tables are a function of
         // the key alone (a shard renders the bytes of the whole run).
-        const std::vector<double> rounded_toa =
+        std::vector<double> rounded_toa =
             sun.resample(grid, static_cast<double>(key[4]) * SensorPathCache::kSunDistanceStepAu);
+        for (double& v : rounded_toa) v *= scale;
         env.m_paths = sensor_path_tables(grid, atmosphere, rounded, rounded_toa, in.threads);
         if (cache != nullptr) cache->insert(key, env.m_paths);
     }

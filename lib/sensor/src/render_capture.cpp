@@ -9,6 +9,8 @@
 
 #include "glint/core/datetime.h"
 #include "glint/core/text.h"
+#include "glint/atmosphere/lunar.h"
+#include "glint/motion/moon.h"
 #include "glint/motion/sun.h"
 #include "render_parts.h"
 
@@ -23,10 +25,30 @@ std::string bandpass_line(const SpectralGrid& grid) {
     return text;
 }
 
+/// The sun's and the moon's state at the run's first capture, as DIRSIG's console shows it
+/// before its first capture (its "declination" column is the zenith angle;
+/// docs/tools/glint-render.md).
+void log_ephemeris(const DateTime& when, const motion::SceneFrame& frame, const Context& context) {
+    const motion::SunPosition sun = motion::sun_position(when, frame);
+    const motion::MoonPosition moon = motion::moon_position(when, frame);
+    char line[128];
+    context.log.info("Solar state update notification from 'glint ephemeris (NREL SPA)'");
+    std::snprintf(line, sizeof line, "    %.3f [degrees, declination], %.3f [degrees, East of North]",
+                  sun.zenith_deg, sun.azimuth_deg);
+    context.log.info(line);
+    context.log.info("Lunar state update notification from 'glint ephemeris (Meeus)'");
+    std::snprintf(line, sizeof line, "    %.3f [degrees, declination], %.3f [degrees, East of North]",
+                  moon.zenith_deg, moon.azimuth_deg);
+    context.log.info(line);
+    std::snprintf(line, sizeof line, "    %.3f [phase fraction]", moon.phase_fraction);
+    context.log.info(line);
+}
+
 void log_capture_start(const PlannedCapture& p, const schedule::ClockedFocalPlane& source,
                        const FocalPlaneState& state, const DateTime& reference,
-                       const Context& context) {
+                       const motion::SceneFrame& frame, const Context& context) {
     if (!context.log.enabled(LogLevel::info)) return;
+    if (p.event_number == 1) log_ephemeris(add_seconds(reference, p.capture.t0_s), frame, context);
     char relative[64];
     std::snprintf(relative, sizeof relative, "%e", p.capture.t0_s);
     context.log.info("Starting capture: Task #" + std::to_string(p.capture.task_index + 1) +
@@ -85,6 +107,18 @@ radiometry::Environment capture_environment(const RenderInputs& in, const Spectr
     env.window_begin_s = capture.t0_s;
     env.window_end_s = capture.t1_s;
     env.sun_distance_au = sun0.distance_au;
+    if (0.5 * (sun0.zenith_deg + sun1.zenith_deg) >= 90.0) {
+        // Night: the moon is the directional source (docs/physics.md, "The moon").
+        const motion::MoonPosition moon0 =
+            motion::moon_position(add_seconds(reference, capture.t0_s), in.frame);
+        const motion::MoonPosition moon1 =
+            motion::moon_position(add_seconds(reference, capture.t1_s), in.frame);
+        env.sun_direction_begin = moon0.direction_enu;
+        env.sun_direction_end = moon1.direction_enu;
+        env.source_irradiance_scale =
+            glint::atmosphere::lunar_irradiance_ratio(moon0.phase_angle_deg, moon0.distance_km);
+        env.source_half_angle_rad = glint::atmosphere::lunar_angular_radius_rad(moon0.distance_km);
+    }
     env.surface_altitude_m = in.frame.origin().altitude_m;
     env.sensor_altitude_m = in.frame.origin().altitude_m + pose.translation_m.z;
     env.threads = threads;
@@ -103,7 +137,7 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
     const schedule::ClockedFocalPlane& source = in.schedule->sources()[capture.source];
     const schedule::PluginSchedule& plugin = in.schedule->plugins()[source.plugin];
     const FocalPlaneState& state = prepared.states.at(capture.source);
-    log_capture_start(p, source, state, plugin.tasks.reference, context);
+    log_capture_start(p, source, state, plugin.tasks.reference, in.frame, context);
 
     const radiometry::Environment environment =
         capture_environment(in, state.grid, capture, source, path_cache, context.threads);

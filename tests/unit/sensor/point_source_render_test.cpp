@@ -11,13 +11,17 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "../../../lib/sensor/src/render_parts.h"
+#include "glint/atmosphere/lunar.h"
 #include "glint/core/error.h"
 #include "glint/io/envi.h"
+#include "glint/motion/moon.h"
 #include "glint/motion/rigid.h"
+#include "glint/motion/sun.h"
 #include "glint/sensor/render.h"
 #include "glint/test/temp_dir.h"
 #include "render_fixture.h"
@@ -82,7 +86,8 @@ TEST(PointSources, StreetSourcesArePlacedAtTheCaptureTimeWithTheirMaterialsInten
 /// A DIRSIG scene folder in `dir`: a grey ground plane ρ = `rho` and one lamp of constant
 /// intensity `intensity` at `lamp_m`, rendered by the render fixture's camera 1000 m up at
 /// night (the sun well below the horizon) with no atmosphere.
-void write_lamp_scene(const fs::path& dir, double rho, double intensity, motion::Vec3 lamp_m) {
+void write_lamp_scene(const fs::path& dir, double rho, double intensity, motion::Vec3 lamp_m,
+                      const std::string& when = "2020-06-21T00:00:00.0000-04:00") {
     write_text(dir / "plate.scene",
                "<classicscene>\n"
                "  <sceneorigin><location frame=\"geodetic\"><latitude>43.0</latitude>"
@@ -108,7 +113,7 @@ void write_lamp_scene(const fs::path& dir, double rho, double intensity, motion:
                    "</z></point></translation></staticinstance></object>\n"
                    "</geometrylist>\n");
     write_text(dir / "night.tasks",
-               "<tasklist><reference><datetime type=\"absolute\">2020-06-21T00:00:00.0000-04:00"
+               "<tasklist><reference><datetime type=\"absolute\">" + when +
                "</datetime></reference><task><start><datetime type=\"relative\">0</datetime>"
                "</start><stop><datetime type=\"relative\">0</datetime></stop></task></tasklist>\n");
     write_text(dir / "plate.jsim",
@@ -183,6 +188,61 @@ TEST(PointSources, PlateUnderALampFollowsIntensityCosineOverDistanceSquared) {
         EXPECT_NEAR(image[i], expected[i], 0.01 * expected[i]) << "pixel " << i;
     }
     EXPECT_LT(lowest, 0.85 * highest) << "the image spans a range of cos θ / r² worth testing";
+}
+
+TEST(Moonlight, TheMoonLightsTheNightScene) {
+    // 2020-12-30 00:00 EST at 43° N, 77.6° W: the sun far below the horizon, the moon a day
+    // before full, high in the south. With no atmosphere the moon is the directional
+    // source: E_moon = E_sun · lunar_irradiance_ratio, and the grey plate's radiance is
+    // ρ E_moon cos z / π (the lamp is off).
+    constexpr double kRho = 0.25;
+    test::TempDir dir;
+    write_lamp_scene(dir.path(), kRho, 0.0, {0.0, 0.0, 3.0}, "2020-12-30T00:00:00.0000-05:00");
+    const fs::path out = dir / "out";
+    RenderOptions options = options_into(out);
+    options.convergence = radiometry::Convergence{16, 16, 0.0};
+    const auto prepared = detail::prepare(load(dir / "plate.jsim"), options, {});
+    const detail::RenderInputs& in = prepared->inputs;
+    const detail::FocalPlaneState& state = prepared->states.at(0);
+    const DateTime when = in.schedule->plugins()[0].tasks.reference;
+    ASSERT_GT(motion::sun_position(when, in.frame).zenith_deg, 120.0);
+    const motion::MoonPosition moon = motion::moon_position(when, in.frame);
+    ASSERT_LT(moon.zenith_deg, 30.0);
+    ASSERT_GT(moon.phase_fraction, 0.95);
+
+    radiometry::SensorPathCache cache;
+    const std::optional<schedule::Capture> first = in.schedule->captures().next();
+    ASSERT_TRUE(first.has_value());
+    const schedule::Capture& capture = *first;
+    const radiometry::Environment env = detail::capture_environment(
+        in, state.grid, capture, in.schedule->sources()[capture.source], cache, 1);
+    const double ratio = glint::atmosphere::lunar_irradiance_ratio(moon.phase_angle_deg,
+                                                                   moon.distance_km);
+    EXPECT_GT(ratio, 2e-6);
+    EXPECT_LT(ratio, 3e-6);
+    const motion::Vec3 d = env.sun_direction(capture.t0_s);
+    EXPECT_NEAR(motion::dot(d, moon.direction_enu), 1.0, 1e-12);
+    EXPECT_NEAR(env.sun_half_angle_rad(), glint::atmosphere::lunar_angular_radius_rad(moon.distance_km),
+                1e-15);
+    const std::vector<double> toa =
+        in.sun->resample(state.grid, motion::sun_position(when, in.frame).distance_au);
+    double mean = 0.0;
+    for (std::size_t b = 0; b < state.grid.size(); ++b) {
+        EXPECT_NEAR(env.sun_irradiance_w_per_cm2_um()[b], toa[b] * ratio, 1e-6 * toa[b] * ratio);
+        mean += env.sun_irradiance_w_per_cm2_um()[b] / static_cast<double>(state.grid.size());
+    }
+
+    const RenderReport report = render(load(dir / "plate.jsim"), options, Context{});
+    ASSERT_EQ(report.files, std::vector<fs::path>{out / "frame.img"});
+    io::EnviHeader header;
+    const std::vector<double> image = io::read_envi_bip(out / "frame.img", &header);
+    const double expected = kRho * mean * std::cos(moon.zenith_deg * std::numbers::pi / 180.0) /
+                            std::numbers::pi;
+    for (std::size_t i = 0; i < image.size(); ++i) {
+        // 3 %: the channel's weights against the bands' plain mean over a solar spectrum that
+        // varies by a few per cent across 0.50-0.60 um, and the disk's spread of cos z.
+        EXPECT_NEAR(image[i], expected, 0.03 * expected) << "pixel " << i;
+    }
 }
 
 TEST(PointSources, ANonFinitePositionIsAnInputErrorAtTheSource) {

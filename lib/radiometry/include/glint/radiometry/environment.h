@@ -26,6 +26,7 @@
 #include "glint/atmosphere/solar.h"
 #include "glint/core/spectral.h"
 #include "glint/motion/geometry.h"
+#include "glint/radiometry/sampling.h"
 
 namespace glint::radiometry {
 
@@ -46,13 +47,16 @@ struct SensorPathTables {
 class SensorPathCache {
 public:
     /// The key of a geometry: sun zenith and azimuth rounded to kAngleStepDeg, sensor and
-    /// surface altitude to kAltitudeStepM, the sun's distance to kSunDistanceStepAu. The
+    /// surface altitude to kAltitudeStepM, the sun's distance to kSunDistanceStepAu, the
+    /// source's irradiance scale to kSourceScaleStep of itself (in log). The
     /// tables are computed from the rounded values alone, so what a key holds never depends
     /// on which capture filled it.
     static constexpr double kAngleStepDeg = 0.05;
     static constexpr double kAltitudeStepM = 1.0;
     static constexpr double kSunDistanceStepAu = 1e-5;
-    using Key = std::array<long long, 5>;
+    /// The source's irradiance scale (1 for the sun) is rounded to this relative step.
+    static constexpr double kSourceScaleStep = 1e-6;
+    using Key = std::array<long long, 6>;
     std::shared_ptr<const SensorPathTables> find(const Key& key) const;
     void insert(const Key& key, std::shared_ptr<const SensorPathTables> tables);
     std::size_t size() const noexcept { return m_tables.size(); }
@@ -69,6 +73,11 @@ struct EnvironmentInputs {
     double window_begin_s = 0.0;
     double window_end_s = 0.0;
     double sun_distance_au = 1.0;
+    /// The directional source: the sun (1, its angular radius), or the moon at night (its
+    /// irradiance as a fraction of the sun's, glint/atmosphere/lunar.h, and its radius).
+    /// The source's light passes through the atmosphere as the sun's does.
+    double source_irradiance_scale = 1.0;
+    double source_half_angle_rad = kSunAngularRadiusRad;
     double surface_altitude_m = 0.0;  ///< the scene origin's altitude
     double sensor_altitude_m = 0.0;   ///< the sensor's altitude (≥ surface; clamped to it)
     /// Threads that compute the sensor-path tables, one view zenith each (0: all cores); the
