@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -262,6 +263,15 @@ TEST(ParametricAtmosphereGases, DirectNormalMatchesAstmG173AtAirMassOnePointFive
             n = 1;
         }
         glint[k] = astm.extraterrestrial[k] * sum / n;
+    }
+    // For the documentation's plot (scripts/atmosphere_plots.py): the two spectra.
+    if (const char* plots = std::getenv("GLINT_ATMOSPHERE_PLOT_DIR")) {
+        std::ofstream csv(std::filesystem::path(plots) / "direct.csv");
+        csv << "wavelength_nm,extraterrestrial,glint_direct,astm_direct\n";
+        for (std::size_t k = 0; k < astm.nm.size(); ++k) {
+            csv << astm.nm[k] << ',' << astm.extraterrestrial[k] << ',' << glint[k] << ','
+                << astm.direct[k] << '\n';
+        }
     }
     // Band-integrated 300-4000 nm (trapezoid on ASTM's nodes): within 3 %.
     double ours = 0.0;

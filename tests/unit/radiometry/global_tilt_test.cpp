@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -146,6 +147,14 @@ TEST(GlobalTilt, WhitePlateTiltedTowardsTheSunMatchesAstmG173) {
     }
     std::vector<double> ours(grid.size());
     for (std::size_t i = 0; i < grid.size(); ++i) ours[i] = kPi * s.radiance_w_per_cm2_sr_um[i] * 10.0;
+    // For the documentation's plot (scripts/atmosphere_plots.py): the two spectra.
+    if (const char* plots = std::getenv("GLINT_ATMOSPHERE_PLOT_DIR")) {
+        std::ofstream csv(std::filesystem::path(plots) / "global_tilt.csv");
+        csv << "wavelength_nm,glint_pi_l,astm_global_tilt\n";
+        for (std::size_t i = 0; i < grid.size(); ++i) {
+            csv << grid.wavelength_um(i) * 1000.0 << ',' << ours[i] << ',' << theirs[i] << '\n';
+        }
+    }
     // Band-integrated 300-2500 nm: within 5 %.
     double total_ours = 0.0;
     double total_theirs = 0.0;
