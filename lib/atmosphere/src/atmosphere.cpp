@@ -522,15 +522,15 @@ std::vector<std::vector<double>> ParametricAtmosphereModel::path_radiance_at_azi
         }
     }
     const Level top = level(z1);
-    // Gas transmittances of each layer's midpoint from the sun and to the sensor, per band
-    // ([layer][band]); none without gas absorption.
+    // ln of the gas transmittances of each layer's midpoint from the sun and to the sensor,
+    // per band ([layer][band]); none without gas absorption.
     const std::shared_ptr<const GasTransmittance> gases = gases_on(grid);
     std::vector<double> gas_sun;
     std::vector<double> gas_view;
     if (gases) {
         const std::size_t n = grid.size();
-        gas_sun.assign(layers * n, 1.0);
-        gas_view.assign(layers * n, 1.0);
+        gas_sun.assign(layers * n, 0.0);
+        gas_view.assign(layers * n, 0.0);
         const GasAmounts at_sensor = gas_amounts_above(z1);
         double za = z0;
         for (std::size_t k = 0; k < layers; ++k) {
@@ -539,10 +539,10 @@ std::vector<std::vector<double>> ParametricAtmosphereModel::path_radiance_at_azi
             const GasAmounts at_layer = gas_amounts_above(0.5 * (za + zb));
             za = zb;
             const std::span<double> view(&gas_view[k * n], n);
-            gases->transmittance(slant(at_layer, at_sensor, m_view), view);
+            gases->log_transmittance(slant(at_layer, at_sensor, m_view), view);
             if (sunlit) {
-                gases->transmittance(slant(at_layer, {}, m_sun),
-                                     std::span<double>(&gas_sun[k * n], n));
+                gases->log_transmittance(slant(at_layer, {}, m_sun),
+                                         std::span<double>(&gas_sun[k * n], n));
             }
         }
     }
@@ -565,12 +565,10 @@ std::vector<std::vector<double>> ParametricAtmosphereModel::path_radiance_at_azi
             d_r[k] = tau_r_a - tau_r_b;
             d_a[k] = tau_a_a - tau_a_b;
             const double tau_m = tau_r(middles[k]) + tau_a(middles[k]);
-            to_sensor[k] = std::exp(-(tau_m - tau_sensor) * m_view);
-            if (sunlit) sun[k] = std::exp(-tau_m * m_sun);
-            if (gases) {
-                to_sensor[k] *= gas_view[k * grid.size() + i];
-                if (sunlit) sun[k] *= gas_sun[k * grid.size() + i];
-            }
+            const double log_gas_view = gases ? gas_view[k * grid.size() + i] : 0.0;
+            const double log_gas_sun = gases ? gas_sun[k * grid.size() + i] : 0.0;
+            to_sensor[k] = std::exp(-(tau_m - tau_sensor) * m_view + log_gas_view);
+            if (sunlit) sun[k] = std::exp(-tau_m * m_sun + log_gas_sun);
             tau_r_a = tau_r_b;
             tau_a_a = tau_a_b;
         }

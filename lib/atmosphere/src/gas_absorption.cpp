@@ -153,6 +153,12 @@ GasTransmittance::GasTransmittance(const GasBandModel& table, const SpectralGrid
 
 void GasTransmittance::transmittance(const GasAmounts& amounts,
                                      std::span<double> out) const noexcept {
+    log_transmittance(amounts, out);
+    for (double& v : out) v = std::exp(v);
+}
+
+void GasTransmittance::log_transmittance(const GasAmounts& amounts,
+                                         std::span<double> out) const noexcept {
     const double group_amounts[GasBandModel::kGroups] = {amounts.water_cm, amounts.ozone_atm_cm,
                                                          amounts.mixed_air_masses};
     std::fill(out.begin(), out.end(), 0.0);  // ln T, summed over the groups
@@ -184,7 +190,6 @@ void GasTransmittance::transmittance(const GasAmounts& amounts,
             out[i] += log_t;
         }
     }
-    for (double& v : out) v = std::exp(v);
 }
 
 std::vector<double> GasTransmittance::transmittance(const GasAmounts& amounts) const {

@@ -74,6 +74,9 @@ public:
     /// Writes the transmittance of every band for `amounts` into `out` (size bands()).
     void transmittance(const GasAmounts& amounts, std::span<double> out) const noexcept;
     std::vector<double> transmittance(const GasAmounts& amounts) const;
+    /// ln of transmittance(), without the exponential (for callers that add it to an
+    /// optical depth they exponentiate anyway).
+    void log_transmittance(const GasAmounts& amounts, std::span<double> out) const noexcept;
 
 private:
     std::size_t m_bands = 0;
