@@ -133,15 +133,27 @@ std::string describe(const model::Scene& scene) {
            plural(scene.instances.size(), "instance") + ", " + plural(triangles, "triangle");
 }
 
-/// "parametric, aerosol optical depth 0.1 at 0.55 um" and the like.
+/// "parametric, aerosol optical depth 0.1 at 0.55 um, gases (water 2.924 cm, ozone 0.332
+/// atm-cm), multiple scattering over ground albedo 0.2" and the like.
 std::string describe(const model::Atmosphere& atmosphere) {
     const std::string kind = model::to_string(atmosphere.kind);
     switch (atmosphere.kind) {
         case model::AtmosphereKind::none:
             return kind;
-        case model::AtmosphereKind::parametric:
+        case model::AtmosphereKind::parametric: {
+            const model::ParametricAtmosphere& p = atmosphere.parametric;
             return kind + ", aerosol optical depth " +
-                   format_shortest(atmosphere.parametric.aerosol_optical_depth_550) + " at 0.55 um";
+                   format_shortest(p.aerosol_optical_depth_550) + " at 0.55 um, " +
+                   (p.gas_absorption ? "gases (water " + format_shortest(p.water_vapor_cm) +
+                                           " cm, ozone " + format_shortest(p.ozone_atm_cm) +
+                                           " atm-cm)"
+                                     : std::string("no gas absorption")) +
+                   ", " +
+                   (p.multiple_scattering
+                        ? "multiple scattering over ground albedo " +
+                              format_shortest(p.ground_albedo)
+                        : std::string("single scattering"));
+        }
         case model::AtmosphereKind::tabulated: {
             const std::vector<double>& w = atmosphere.tabulated.wavelengths_um;
             std::string text = kind + ", " + plural(w.size(), "row");

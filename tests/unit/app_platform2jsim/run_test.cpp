@@ -330,7 +330,9 @@ TEST_F(Platform2JsimTest, CheckWarnsAboutEntriesThatWriteTheSameFiles) {
                "output_prefix ''"))
         << log_text();
     EXPECT_EQ(m_out.str(), "atmosphere (default: " + (in / "twice.jsim").string() +
-                               " names none): parametric, aerosol optical depth 0.1 at 0.55 um\n"
+                               " names none): parametric, aerosol optical depth 0.1 at 0.55 "
+                               "um, gases (water 2.924 cm, ozone 0.332 atm-cm), multiple "
+                               "scattering over ground albedo 0.2\n"
                                "check: 0 errors, 1 warning in 6 files\n");
 }
 
