@@ -3,6 +3,11 @@
 // stop signals → cancellation, and the mapping from outcomes to exit statuses.
 #include "glint/core/runner.h"
 
+#if defined(__linux__)
+#include <sched.h>
+#endif
+
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <csignal>
@@ -12,6 +17,7 @@
 #include <limits>
 #include <memory>
 #include <new>
+#include <thread>
 
 #include "glint/core/error.h"
 #include "glint/core/progress.h"
@@ -178,6 +184,18 @@ CLI::Validator byte_size() {
         "", "size");
 }
 
+unsigned available_cpus() {
+#if defined(__linux__)
+    cpu_set_t set;
+    CPU_ZERO(&set);
+    if (sched_getaffinity(0, sizeof set, &set) == 0) {
+        const int count = CPU_COUNT(&set);
+        if (count > 0) return static_cast<unsigned>(count);
+    }
+#endif
+    return std::max(1u, std::thread::hardware_concurrency());
+}
+
 void add_common_flags(CLI::App& app, CommonOptions& options, unsigned which) {
     app.add_flag("-v,--verbose", options.verbosity, "More messages on stderr (-v info, -vv debug)");
     app.add_flag("-q,--quiet", options.quiet, "Only errors on stderr; no progress line");
@@ -282,6 +300,16 @@ int run_tool(const ToolSpec& spec, int argc, const char* const* argv, const Tool
             }
         },
         threshold);
+
+    // More threads than the CPUs this process may use: the thread pool would drop the extra
+    // workers with a message of its own; say it once here and use the CPUs there are (the
+    // bytes written never depend on the thread count).
+    if (const unsigned cpus = available_cpus(); context.threads > cpus) {
+        context.log.warning("--threads " + std::to_string(context.threads) + ": this process may run on " +
+                            std::to_string(cpus) + (cpus == 1 ? " CPU" : " CPUs") + "; using " +
+                            std::to_string(cpus) + (cpus == 1 ? " thread" : " threads"));
+        context.threads = cpus;
+    }
 
     std::ofstream progress_file;
     if (!common.progress_file.empty()) {

@@ -6,6 +6,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <csignal>
 #include <fstream>
 #include <sstream>
@@ -17,6 +19,7 @@ namespace glint {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 struct Outcome {
     int status;
@@ -110,6 +113,28 @@ TEST(Runner, ErrorsMapToExitStatuses) {
     EXPECT_EQ(run({}, [](Context&) { return kExitFailure; }).status, kExitFailure);
 }
 
+TEST(Runner, MoreThreadsThanCpusAreSaidOnceAndClamped) {
+    // The thread pool cannot run more workers than the CPUs the process may use: glint says
+    // so in its own words and uses those CPUs (the bytes do not depend on the count).
+    const unsigned cpus = available_cpus();
+    ASSERT_GE(cpus, 1u);
+    Context seen;
+    const Outcome o = run({"--threads", std::to_string(cpus + 5)}, [&](Context& c) {
+        seen = c;
+        return 0;
+    });
+    EXPECT_EQ(o.status, 0);
+    EXPECT_EQ(seen.threads, cpus);
+    EXPECT_THAT(o.err, HasSubstr("warning: --threads " + std::to_string(cpus + 5) +
+                                 ": this process may run on " + std::to_string(cpus)));
+    const Outcome fits = run({"--threads", std::to_string(cpus)}, [&](Context& c) {
+        seen = c;
+        return 0;
+    });
+    EXPECT_EQ(seen.threads, cpus);
+    EXPECT_THAT(fits.err, Not(HasSubstr("warning")));
+}
+
 TEST(Runner, CommonFlagsReachTheContext) {
     Context seen;
     const Outcome o = run({"--seed", "42", "--threads", "3"}, [&](Context& c) {
@@ -118,7 +143,7 @@ TEST(Runner, CommonFlagsReachTheContext) {
     });
     EXPECT_EQ(o.status, 0);
     EXPECT_EQ(seen.seed, 42u);
-    EXPECT_EQ(seen.threads, 3u);
+    EXPECT_EQ(seen.threads, std::min(3u, available_cpus()));
     run({}, [&](Context& c) {
         seen = c;
         return 0;

@@ -52,6 +52,10 @@ CLI::Validator whole_number(std::uint64_t max = UINT64_MAX);
 /// usage error naming the value and an example.
 CLI::Validator byte_size();
 
+/// The CPUs this process may run on (its affinity mask; the hardware's threads where there
+/// is none), at least 1.
+unsigned available_cpus();
+
 /// Adds -v/--verbose, -q/--quiet, --progress and, per `which`, --threads, --seed and
 /// --max-memory.
 void add_common_flags(CLI::App& app, CommonOptions& options, unsigned which);
