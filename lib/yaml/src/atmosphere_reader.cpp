@@ -123,6 +123,28 @@ void read_visibility(const YAML::Node& root, const std::string& file,
     p.aerosol_optical_depth_550 = extinction_per_km * p.aerosol_scale_height_m / 1000.0;
 }
 
+/// Keys whose value the settings given with them leave without effect: one warning each at
+/// its line (nothing a user wrote is dropped silently).
+void warn_unused(const YAML::Node& root, const std::string& file,
+                 const model::ParametricAtmosphere& p, Diagnostics& diagnostics) {
+    const auto warn = [&](const char* key, const std::string& why) {
+        if (const YAML::Node node = root[key]) {
+            diagnostics.warning(at(file, node, key), "has no effect: " + why);
+        }
+    };
+    if (!p.gas_absorption) {
+        warn("water_vapor_cm", "gas_absorption is false");
+        warn("ozone_atm_cm", "gas_absorption is false");
+    }
+    if (!p.multiple_scattering) warn("ground_albedo", "multiple_scattering is false");
+    if (root["angstrom_exponent"] && root["aerosol_single_scatter_albedo"] &&
+        root["aerosol_asymmetry"]) {
+        warn("aerosol_model",
+             "angstrom_exponent, aerosol_single_scatter_albedo and aerosol_asymmetry are all "
+             "given");
+    }
+}
+
 void read_parametric(const YAML::Node& root, const std::string& file,
                      model::ParametricAtmosphere& p, Diagnostics& diagnostics) {
     read_aerosol_model(root, file, p, diagnostics);
@@ -147,6 +169,7 @@ void read_parametric(const YAML::Node& root, const std::string& file,
     read_visibility(root, file, p, diagnostics);  // after the aerosol scale height
     read_flag(root, "gas_absorption", file, p.gas_absorption, diagnostics);
     read_flag(root, "multiple_scattering", file, p.multiple_scattering, diagnostics);
+    warn_unused(root, file, p, diagnostics);
 }
 
 model::Atmosphere read_yaml(const std::string& text, const std::filesystem::path& path,

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "glint/inputs/simulation_inputs.h"
 #include "glint/test/temp_dir.h"
@@ -137,20 +138,34 @@ TEST(AtmosphereReader, NegativeOpticalDepthIsAnError) {
               "number >= 0");
 }
 
+/// Every diagnostic of reading `text` as e.yaml in `dir`, as "file:line: key: message" texts.
+std::vector<std::string> messages_of(const test::TempDir& dir, const std::string& text) {
+    Diagnostics d;
+    (void)read_atmosphere(write(dir, "e.yaml", text), {}, d, "e.yaml");
+    std::vector<std::string> out;
+    for (const auto& item : d.items()) out.push_back(item.text());
+    return out;
+}
+
 TEST(AtmosphereReader, GasAndScatteringKeys) {
     test::TempDir dir;
     Diagnostics diagnostics;
     const auto a = read_atmosphere(
         write(dir, "g.yaml",
-              "model: parametric\ngas_absorption: false\nwater_vapor_cm: 1.42\nozone_atm_cm: 0.34\n"
-              "multiple_scattering: no\nground_albedo: 0.35\n"),
+              "model: parametric\ngas_absorption: true\nwater_vapor_cm: 1.42\nozone_atm_cm: 0.34\n"
+              "multiple_scattering: yes\nground_albedo: 0.35\n"),
         {}, diagnostics, "g.yaml");
     EXPECT_EQ(diagnostics.items().size(), 0u) << first_error(diagnostics);
-    EXPECT_FALSE(a.parametric.gas_absorption);
+    EXPECT_TRUE(a.parametric.gas_absorption);
     EXPECT_DOUBLE_EQ(a.parametric.water_vapor_cm, 1.42);
     EXPECT_DOUBLE_EQ(a.parametric.ozone_atm_cm, 0.34);
-    EXPECT_FALSE(a.parametric.multiple_scattering);
+    EXPECT_TRUE(a.parametric.multiple_scattering);
     EXPECT_DOUBLE_EQ(a.parametric.ground_albedo, 0.35);
+    const auto off = read_atmosphere(
+        write(dir, "o.yaml", "model: parametric\ngas_absorption: false\nmultiple_scattering: no\n"),
+        {}, diagnostics, "o.yaml");
+    EXPECT_FALSE(off.parametric.gas_absorption);
+    EXPECT_FALSE(off.parametric.multiple_scattering);
     // Defaults: gases and multiple scattering on, a mid-latitude summer column, albedo 0.2.
     const model::ParametricAtmosphere defaults;
     EXPECT_TRUE(defaults.gas_absorption);
@@ -159,20 +174,32 @@ TEST(AtmosphereReader, GasAndScatteringKeys) {
     EXPECT_TRUE(defaults.multiple_scattering);
     EXPECT_DOUBLE_EQ(defaults.ground_albedo, 0.2);
 
-    Diagnostics bad;
-    (void)read_atmosphere(write(dir, "b.yaml", "model: parametric\ngas_absorption: maybe\n"), {},
-                          bad, "b.yaml");
-    EXPECT_EQ(first_error(bad), "b.yaml:2: gas_absorption: expected true or false");
-    Diagnostics negative;
-    (void)read_atmosphere(write(dir, "n.yaml", "model: parametric\nwater_vapor_cm: -1\n"), {},
-                          negative, "n.yaml");
-    EXPECT_EQ(first_error(negative),
-              "n.yaml:2: water_vapor_cm: value -1 out of range, expected a number >= 0");
-    Diagnostics albedo;
-    (void)read_atmosphere(write(dir, "a.yaml", "model: parametric\nground_albedo: 1.5\n"), {},
-                          albedo, "a.yaml");
-    EXPECT_EQ(first_error(albedo),
-              "a.yaml:2: ground_albedo: value 1.5 out of range, expected a number in [0, 1]");
+    using V = std::vector<std::string>;
+    EXPECT_EQ(messages_of(dir, "model: parametric\ngas_absorption: maybe\n"),
+              V{"e.yaml:2: gas_absorption: expected true or false"});
+    EXPECT_EQ(messages_of(dir, "model: parametric\nwater_vapor_cm: -1\n"),
+              V{"e.yaml:2: water_vapor_cm: value -1 out of range, expected a number >= 0"});
+    EXPECT_EQ(messages_of(dir, "model: parametric\nground_albedo: 1.5\n"),
+              V{"e.yaml:2: ground_albedo: value 1.5 out of range, expected a number in [0, 1]"});
+}
+
+TEST(AtmosphereReader, KeysLeftWithoutEffectAreWarnedAtTheirLine) {
+    test::TempDir dir;
+    using V = std::vector<std::string>;
+    EXPECT_EQ(messages_of(dir, "model: parametric\ngas_absorption: false\nwater_vapor_cm: 1\n"
+                               "ozone_atm_cm: 0.3\nmultiple_scattering: false\n"
+                               "ground_albedo: 0.4\n"),
+              (V{"e.yaml:3: water_vapor_cm: has no effect: gas_absorption is false",
+                 "e.yaml:4: ozone_atm_cm: has no effect: gas_absorption is false",
+                 "e.yaml:6: ground_albedo: has no effect: multiple_scattering is false"}));
+    EXPECT_EQ(messages_of(dir, "model: parametric\naerosol_model: urban\nangstrom_exponent: 1\n"
+                               "aerosol_single_scatter_albedo: 0.9\naerosol_asymmetry: 0.6\n"),
+              V{"e.yaml:2: aerosol_model: has no effect: angstrom_exponent, "
+                "aerosol_single_scatter_albedo and aerosol_asymmetry are all given"});
+    // Two of the three given: the model still sets the third, so no warning.
+    EXPECT_EQ(messages_of(dir, "model: parametric\naerosol_model: urban\nangstrom_exponent: 1\n"
+                               "aerosol_asymmetry: 0.6\n"),
+              V{});
 }
 
 TEST(AtmosphereReader, AerosolModelAndVisibility) {
@@ -190,20 +217,16 @@ TEST(AtmosphereReader, AerosolModelAndVisibility) {
     // Koschmieder: β = 3.912/23 − 0.01159 = 0.15850 km⁻¹ over a 1 km scale height.
     EXPECT_NEAR(a.parametric.aerosol_optical_depth_550, 3.912 / 23.0 - 0.01159, 1e-12);
 
-    const auto error_of = [&](const std::string& text) {
-        Diagnostics d;
-        (void)read_atmosphere(write(dir, "e.yaml", text), {}, d, "e.yaml");
-        return first_error(d);
-    };
-    EXPECT_EQ(error_of("model: parametric\naerosol_model: volcanic\n"),
-              "e.yaml:2: aerosol_model: expected rural, urban, maritime or desert, got 'volcanic'");
-    EXPECT_EQ(error_of("model: parametric\naerosol_optical_depth_550: 0.1\nvisibility_km: 20\n"),
-              "e.yaml:3: visibility_km: give aerosol_optical_depth_550 or visibility_km, not both");
-    EXPECT_EQ(error_of("model: parametric\nvisibility_km: 400\n"),
-              "e.yaml:2: visibility_km: visibility 400 km is beyond that of aerosol-free air "
-              "(337 km)");
-    EXPECT_EQ(error_of("model: parametric\nvisibility_km: 0\n"),
-              "e.yaml:2: visibility_km: value 0 out of range, expected a number > 0");
+    using V = std::vector<std::string>;
+    EXPECT_EQ(messages_of(dir, "model: parametric\naerosol_model: volcanic\n"),
+              V{"e.yaml:2: aerosol_model: expected rural, urban, maritime or desert, got 'volcanic'"});
+    EXPECT_EQ(messages_of(dir, "model: parametric\naerosol_optical_depth_550: 0.1\nvisibility_km: 20\n"),
+              V{"e.yaml:3: visibility_km: give aerosol_optical_depth_550 or visibility_km, not both"});
+    EXPECT_EQ(messages_of(dir, "model: parametric\nvisibility_km: 400\n"),
+              V{"e.yaml:2: visibility_km: visibility 400 km is beyond that of aerosol-free air "
+                "(337 km)"});
+    EXPECT_EQ(messages_of(dir, "model: parametric\nvisibility_km: 0\n"),
+              V{"e.yaml:2: visibility_km: value 0 out of range, expected a number > 0"});
 }
 
 TEST(AtmosphereReader, NonNumberAndUnknownKey) {
