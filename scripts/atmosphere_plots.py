@@ -30,6 +30,21 @@ def read(path):
     return {k: [float(r[k]) for r in rows] for k in rows[0]}
 
 
+def draw(path, wavelengths_nm, x_range, title, curves):
+    """One spectral plot: `curves` are (values, colour, line width, label)."""
+    fig, ax = plt.subplots(figsize=(9, 4.2), dpi=110)
+    for values, colour, width, label in curves:
+        ax.plot(wavelengths_nm, values, color=colour, lw=width, label=label)
+    ax.set_xlim(*x_range)
+    ax.set_xlabel("wavelength (nm)")
+    ax.set_ylabel("irradiance (W m$^{-2}$ nm$^{-1}$)")
+    ax.set_title(title)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--build", default=str(REPO / "build" / "release"))
@@ -47,33 +62,17 @@ def main():
         tilt = read(pathlib.Path(work) / "global_tilt.csv")
 
     out = pathlib.Path(args.output)
-    fig, ax = plt.subplots(figsize=(9, 4.2), dpi=110)
-    ax.plot(direct["wavelength_nm"], direct["extraterrestrial"], color="0.75", lw=0.8,
-            label="extraterrestrial (ASTM G173)")
-    ax.plot(direct["wavelength_nm"], direct["astm_direct"], color="tab:orange", lw=0.9,
-            label="direct normal, SMARTS 2.9.2 (ASTM G173)")
-    ax.plot(direct["wavelength_nm"], direct["glint_direct"], color="tab:blue", lw=0.7,
-            label="direct normal, glint (LOWTRAN 7 gas bands)")
-    ax.set_xlim(280, 2500)
-    ax.set_xlabel("wavelength (nm)")
-    ax.set_ylabel("irradiance (W m$^{-2}$ nm$^{-1}$)")
-    ax.set_title("Direct sun at air mass 1.5, 1976 U.S. Standard Atmosphere, rural aerosol")
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(out / "atmosphere_direct.png")
-
-    fig, ax = plt.subplots(figsize=(9, 4.2), dpi=110)
-    ax.plot(tilt["wavelength_nm"], tilt["astm_global_tilt"], color="tab:orange", lw=0.9,
-            label="global on a 37° tilt, SMARTS 2.9.2 (ASTM G173)")
-    ax.plot(tilt["wavelength_nm"], tilt["glint_pi_l"], color="tab:blue", lw=0.7,
-            label="π·L of a rendered white plate, glint (5 nm bands)")
-    ax.set_xlim(300, 2500)
-    ax.set_xlabel("wavelength (nm)")
-    ax.set_ylabel("irradiance (W m$^{-2}$ nm$^{-1}$)")
-    ax.set_title("Global tilt: plate tilted 37° towards the sun, ground albedo 0.2")
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(out / "atmosphere_global.png")
+    draw(out / "atmosphere_direct.png", direct["wavelength_nm"], (280, 2500),
+         "Direct sun at air mass 1.5, 1976 U.S. Standard Atmosphere, rural aerosol",
+         [(direct["extraterrestrial"], "0.75", 0.8, "extraterrestrial (ASTM G173)"),
+          (direct["astm_direct"], "tab:orange", 0.9, "direct normal, SMARTS 2.9.2 (ASTM G173)"),
+          (direct["glint_direct"], "tab:blue", 0.7, "direct normal, glint (LOWTRAN 7 gas bands)")])
+    draw(out / "atmosphere_global.png", tilt["wavelength_nm"], (300, 2500),
+         "Global tilt: plate tilted 37° towards the sun, ground albedo 0.2",
+         [(tilt["astm_global_tilt"], "tab:orange", 0.9,
+           "global on a 37° tilt, SMARTS 2.9.2 (ASTM G173)"),
+          (tilt["glint_pi_l"], "tab:blue", 0.7,
+           "π·L of a rendered white plate, glint (5 nm bands)")])
     print("wrote", out / "atmosphere_direct.png", "and", out / "atmosphere_global.png")
 
 

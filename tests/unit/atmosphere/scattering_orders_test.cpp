@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include "glint/core/error.h"
@@ -123,16 +124,28 @@ TEST(ScatteringOrders, FirstOrderMatchesTheSingleScatterFormula) {
 }
 
 TEST(ScatteringOrders, BadProblemsAreRefused) {
-    ScatteringProblem p;
-    EXPECT_THROW((void)solve_scattering_orders(p), Error);
-    p = one_layer(0.1, 1.0, kRayleigh, 0.0);
-    EXPECT_THROW((void)solve_scattering_orders(p), Error);
-    p = one_layer(-0.1, 1.0, kRayleigh, 0.5);
-    EXPECT_THROW((void)solve_scattering_orders(p), Error);
-    p = one_layer(0.1, 1.5, kRayleigh, 0.5);
-    EXPECT_THROW((void)solve_scattering_orders(p), Error);
-    p = one_layer(0.1, 1.0, {0.5}, 0.5);
-    EXPECT_THROW((void)solve_scattering_orders(p), Error);
+    const auto message = [](const ScatteringProblem& p) {
+        try {
+            (void)solve_scattering_orders(p);
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    EXPECT_EQ(message(ScatteringProblem{}), "scattering problem without layers");
+    EXPECT_EQ(message(one_layer(0.1, 1.0, kRayleigh, 0.0)),
+              "scattering problem: sun cos zenith must lie in (0, 1]");
+    ScatteringProblem albedo = one_layer(0.1, 1.0, kRayleigh, 0.5);
+    albedo.ground_albedo = 1.2;
+    EXPECT_EQ(message(albedo), "scattering problem: ground albedo must lie in [0, 1]");
+    const std::string layer = "scattering layer needs an optical depth >= 0, a single-scatter "
+                              "albedo in [0, 1] and moments starting with 1";
+    EXPECT_EQ(message(one_layer(-0.1, 1.0, kRayleigh, 0.5)), layer);
+    EXPECT_EQ(message(one_layer(0.1, 1.5, kRayleigh, 0.5)), layer);
+    EXPECT_EQ(message(one_layer(0.1, 1.0, {0.5}, 0.5)), layer);
+    ScatteringProblem streams = one_layer(0.1, 1.0, kRayleigh, 0.5);
+    streams.streams = 1;
+    EXPECT_NE(message(streams).find("streams >= 2"), std::string::npos);
 }
 
 }  // namespace
