@@ -100,6 +100,21 @@ double relative_air_mass(double zenith_deg) noexcept {
     return 1.0 / (std::cos(z * kDegToRad) + 0.50572 * std::pow(96.07995 - z, -1.6364));
 }
 
+double zenith_for_relative_air_mass(double air_mass) {
+    if (!(air_mass >= relative_air_mass(0.0)) || !(air_mass <= relative_air_mass(90.0))) {
+        throw input_error("air mass " + format_shortest(air_mass) + " is outside " +
+                          format_shortest(relative_air_mass(0.0)) + "-" +
+                          format_shortest(relative_air_mass(90.0)));
+    }
+    double lo = 0.0;
+    double hi = 90.0;
+    while (hi - lo > 1e-12) {  // relative_air_mass grows with the zenith angle
+        const double mid = 0.5 * (lo + hi);
+        (relative_air_mass(mid) < air_mass ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi);
+}
+
 std::vector<double> AtmosphereModel::sky_radiance_w_per_cm2_sr_um(
     const SpectralGrid& grid, const AtmosphereGeometry& geometry,
     std::span<const double> toa_irradiance_w_per_cm2_um) const {

@@ -270,6 +270,20 @@ TEST(TabulatedAtmosphere, InterpolatesTheTableAndRefusesToExtrapolate) {
     EXPECT_THROW((void)model->sun_transmittance(SpectralGrid({0.3, 0.5}), g), Error);
 }
 
+TEST(ParametricAtmosphere, AirMassInverse) {
+    // Air mass 1.5 at 48.26° by Kasten–Young (ASTM G173 quotes 48.236° from another air-mass
+    // formula), and the inverse of every value: the air mass at the angle found is the one
+    // asked for. (Kasten–Young has a shallow minimum, 0.99966, 0.03° from the zenith.)
+    EXPECT_NEAR(zenith_for_relative_air_mass(1.5), 48.26, 0.01);
+    for (double z : {0.0, 10.0, 48.2, 70.0, 85.0, 89.5, 90.0}) {
+        const double m = relative_air_mass(z);
+        EXPECT_NEAR(relative_air_mass(zenith_for_relative_air_mass(m)), m, 1e-9 * m) << z;
+    }
+    EXPECT_THROW((void)zenith_for_relative_air_mass(0.5), Error);
+    EXPECT_THROW((void)zenith_for_relative_air_mass(40.0), Error);
+    EXPECT_THROW((void)zenith_for_relative_air_mass(NAN), Error);
+}
+
 TEST(AtmosphereFactory, BuildsTheSelectedModel) {
     model::Atmosphere a;
     a.kind = model::AtmosphereKind::none;

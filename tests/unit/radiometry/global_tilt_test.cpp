@@ -50,17 +50,6 @@ void read_astm(std::vector<double>& nm, std::vector<double>& exo, std::vector<do
     }
 }
 
-/// The zenith angle, degrees, at which the Kasten–Young air mass is `m`.
-double zenith_for_air_mass(double m) {
-    double lo = 0.0;
-    double hi = 89.0;
-    for (int i = 0; i < 100; ++i) {
-        const double mid = 0.5 * (lo + hi);
-        (glint::atmosphere::relative_air_mass(mid) < m ? lo : hi) = mid;
-    }
-    return 0.5 * (lo + hi);
-}
-
 /// A 2 m square plate at 1.5 m, its normal `n`, as a mesh of material `material`.
 void add_plate(model::Scene& scene, const Vec3& n, std::uint32_t material) {
     // Two in-plane axes: east, and n × east.
@@ -86,7 +75,7 @@ void add_plate(model::Scene& scene, const Vec3& n, std::uint32_t material) {
 }
 
 TEST(GlobalTilt, WhitePlateTiltedTowardsTheSunMatchesAstmG173) {
-    const double sun_zenith = zenith_for_air_mass(1.5);  // 48.2°
+    const double sun_zenith = glint::atmosphere::zenith_for_relative_air_mass(1.5);  // 48.2°
     const double tilt_deg = 37.0;
     const Vec3 to_sun = direction_from(sun_zenith, 180.0);
     const Vec3 normal = direction_from(tilt_deg, 180.0);

@@ -235,6 +235,11 @@ private:
 /// the horizon, capped there for larger angles).
 double relative_air_mass(double zenith_deg) noexcept;
 
+/// A zenith angle, degrees, at which relative_air_mass is `air_mass` (its inverse, by
+/// bisection to 1e-12°; 48.26° for air mass 1.5). Throws glint::Error (input) outside
+/// [relative_air_mass(0), relative_air_mass(90)].
+double zenith_for_relative_air_mass(double air_mass);
+
 /// The model an atmosphere description selects; `gases` is the band-model table the
 /// parametric model needs when its gas absorption is on (glint/atmosphere/gas_absorption.h).
 std::unique_ptr<AtmosphereModel> make_atmosphere_model(
