@@ -17,6 +17,8 @@ const char* log_level_name(LogLevel level) {
             return "error";
         case LogLevel::warning:
             return "warning";
+        case LogLevel::notice:
+            return "notice";
         case LogLevel::info:
             return "info";
         case LogLevel::debug:

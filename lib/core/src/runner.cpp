@@ -147,6 +147,21 @@ const char* version() { return GLINT_VERSION_STRING; }
 
 std::string format_diagnostic(const std::string& program, const std::string& level,
                               const std::string& message, bool colour) {
+    return program + ": " + diagnostic_label(level, colour) + " " + printable_message(message);
+}
+
+std::string printable_message(const std::string& message) {
+    const std::string safe = terminal_safe(message);
+    std::string out;
+    out.reserve(safe.size());
+    for (char c : safe) {
+        out += c;
+        if (c == '\n') out += "  ";
+    }
+    return out;
+}
+
+std::string diagnostic_label(const std::string& level, bool colour) {
     std::string label = level + ":";
     if (colour) {
         const char* code = level == "error"     ? "\033[1;31m"
@@ -154,7 +169,7 @@ std::string format_diagnostic(const std::string& program, const std::string& lev
                                                 : "\033[1m";
         label = code + label + "\033[0m";
     }
-    return program + ": " + label + " " + message;
+    return label;
 }
 
 CLI::Validator whole_number(std::uint64_t max) {
@@ -288,13 +303,13 @@ int run_tool(const ToolSpec& spec, int argc, const char* const* argv, const Tool
     const LogLevel threshold = common.quiet            ? LogLevel::error
                                : common.verbosity >= 2 ? LogLevel::debug
                                : common.verbosity == 1 ? LogLevel::info
-                                                       : LogLevel::warning;
+                                                       : LogLevel::notice;
     const bool terminal_progress = !common.quiet && streams.err_is_terminal;
     context.log = Log(
         [&](LogLevel level, const std::string& message) {
             if (terminal_progress) err << "\r\033[K";
-            if (level == LogLevel::info) {
-                err << program << ": " << message << '\n';
+            if (level == LogLevel::notice || level == LogLevel::info) {
+                err << program << ": " << printable_message(message) << '\n';
             } else {
                 report(log_level_name(level), message);
             }

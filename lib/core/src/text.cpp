@@ -73,6 +73,92 @@ std::string join(std::span<const std::string> items, std::string_view separator,
     return join_items(items, separator, last_separator);
 }
 
+namespace {
+
+/// The code point of the valid UTF-8 sequence of `length` bytes at `text[at]`.
+char32_t decode_utf8(std::string_view text, std::size_t at, std::size_t length) noexcept {
+    const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[at + k]); };
+    switch (length) {
+        case 1: return byte(0);
+        case 2: return ((byte(0) & 0x1Fu) << 6) | (byte(1) & 0x3Fu);
+        case 3: return ((byte(0) & 0x0Fu) << 12) | ((byte(1) & 0x3Fu) << 6) | (byte(2) & 0x3Fu);
+        default:
+            return ((byte(0) & 0x07u) << 18) | ((byte(1) & 0x3Fu) << 12) |
+                   ((byte(2) & 0x3Fu) << 6) | (byte(3) & 0x3Fu);
+    }
+}
+
+/// True for the code points a terminal acts on or that reorder what it shows: C0 and C1
+/// controls and DEL (escape sequences), the bidirectional controls (U+061C, U+200E, U+200F,
+/// U+202A-U+202E, U+2066-U+2069: "Trojan Source") and the line and paragraph separators.
+bool is_terminal_control(char32_t c) noexcept {
+    return c < 0x20 || (c >= 0x7F && c <= 0x9F) || c == 0x061C || c == 0x200E || c == 0x200F ||
+           (c >= 0x202A && c <= 0x202E) || (c >= 0x2066 && c <= 0x2069) || c == 0x2028 ||
+           c == 0x2029;
+}
+
+/// Appends the escape of a byte that is not UTF-8 (\xNN) or of a code point (\xNN below
+/// U+0080, \uNNNN above: both as bash's $'...' reads them).
+void append_escape(std::string& out, char32_t c, bool as_byte) {
+    char escape[12];
+    if (as_byte || c < 0x80) {
+        std::snprintf(escape, sizeof escape, "\\x%02X", static_cast<unsigned>(c));
+    } else {
+        std::snprintf(escape, sizeof escape, "\\u%04X", static_cast<unsigned>(c));
+    }
+    out += escape;
+}
+
+/// `text` with what a terminal would act on escaped (`keep` lists the controls kept).
+std::string escape_controls(std::string_view text, std::string_view keep) {
+    std::string out;
+    out.reserve(text.size());
+    for (std::size_t i = 0; i < text.size();) {
+        const std::size_t length = utf8_sequence_length(text, i);
+        if (length == 0) {  // not UTF-8: the byte itself
+            append_escape(out, static_cast<unsigned char>(text[i]), true);
+            ++i;
+            continue;
+        }
+        const char32_t c = decode_utf8(text, i, length);
+        if (is_terminal_control(c) && !(length == 1 && keep.find(text[i]) != keep.npos)) {
+            append_escape(out, c, false);
+        } else {
+            out.append(text.substr(i, length));
+        }
+        i += length;
+    }
+    return out;
+}
+
+/// `text` for bash's $'...': controls escaped as above, `\\` and `'` backslashed.
+std::string escape_controls_for_bash(std::string_view text) {
+    std::string out;
+    for (std::size_t i = 0; i < text.size();) {
+        const std::size_t length = utf8_sequence_length(text, i);
+        if (length == 0) {
+            append_escape(out, static_cast<unsigned char>(text[i]), true);
+            ++i;
+            continue;
+        }
+        const char32_t c = decode_utf8(text, i, length);
+        if (is_terminal_control(c) && c != '\t') {
+            append_escape(out, c, false);
+        } else {
+            if (c == '\\' || c == '\'') out += '\\';
+            out.append(text.substr(i, length));
+        }
+        i += length;
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string terminal_safe(std::string_view text) { return escape_controls(text, "\n\t"); }
+
+std::string terminal_safe_line(std::string_view text) { return escape_controls(text, "\t"); }
+
 std::string format_command_line(std::span<const std::string> argv) {
     std::string line;
     for (const auto& arg : argv) {
@@ -82,6 +168,12 @@ std::string format_command_line(std::span<const std::string> argv) {
                                                "wxyz0123456789_./=:,+%@-") == std::string::npos;
         if (plain) {
             line += arg;
+            continue;
+        }
+        // Controls (a newline, an escape sequence, a bidi override) are written the way bash
+        // reads them back, $'\n', so the line shows what runs and cannot redraw the terminal.
+        if (escape_controls(arg, "\t") != arg) {
+            line += "$'" + escape_controls_for_bash(arg) + "'";
             continue;
         }
         line += '\'';
@@ -271,14 +363,17 @@ std::string quote(std::string_view text, std::size_t max_bytes) {
             out += "\\t";
         } else if (c == '\r') {
             out += "\\r";
-        } else if (length == 0 || byte < 0x20 || byte == 0x7F) {
-            char escape[8];
-            std::snprintf(escape, sizeof escape, "\\x%02X", byte);
-            out += escape;
+        } else if (length == 0) {
+            append_escape(out, byte, true);
             ++i;
             continue;
         } else {
-            out.append(shown.substr(i, length));
+            const char32_t code_point = decode_utf8(shown, i, length);
+            if (is_terminal_control(code_point)) {
+                append_escape(out, code_point, false);
+            } else {
+                out.append(shown.substr(i, length));
+            }
             i += length;
             continue;
         }

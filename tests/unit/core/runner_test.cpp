@@ -189,13 +189,17 @@ TEST(Runner, VerbosityAndQuietSetTheLogThreshold) {
     auto chatty = [](Context& c) {
         c.log.debug("a debug line");
         c.log.info("an info line");
+        c.log.notice("a notice line");
         c.log.warning("a warning line");
         return 0;
     };
+    // A notice (the commands a run starts) is shown at normal verbosity, without a label.
     Outcome o = run({}, chatty);
-    EXPECT_EQ(o.err, "glint-demo: warning: a warning line\n");
+    EXPECT_EQ(o.err, "glint-demo: a notice line\nglint-demo: warning: a warning line\n");
     o = run({"-v"}, chatty);
-    EXPECT_EQ(o.err, "glint-demo: an info line\nglint-demo: warning: a warning line\n");
+    EXPECT_EQ(o.err,
+              "glint-demo: an info line\nglint-demo: a notice line\nglint-demo: warning: a "
+              "warning line\n");
     o = run({"-vv"}, chatty);
     EXPECT_THAT(o.err, HasSubstr("glint-demo: debug: a debug line"));
     o = run({"-q"}, chatty);
@@ -316,6 +320,16 @@ TEST(ProgressPrinter, RendersTerminalLineAndMachineLines) {
 TEST(Diagnostic, ColourOnlyWhenAsked) {
     EXPECT_EQ(format_diagnostic("glint-x", "error", "bad", false), "glint-x: error: bad");
     EXPECT_THAT(format_diagnostic("glint-x", "error", "bad", true), HasSubstr("\033[1;31m"));
+}
+
+TEST(Diagnostic, TextFromAFileCannotDrawOnTheTerminalNorPassForGlintsOwnLine) {
+    // A <message> or a file name holding an escape sequence, a bidi override and a newline
+    // followed by a forged diagnostic.
+    EXPECT_EQ(format_diagnostic("glint-x", "warning",
+                                "a.platform:3: \x1B[2Jdone\xE2\x80\xAE\nglint-x: error: forged",
+                                false),
+              "glint-x: warning: a.platform:3: \\x1B[2Jdone\\u202E\n  glint-x: error: forged");
+    EXPECT_EQ(printable_message("one\ntwo\n"), "one\n  two\n  ");
 }
 
 }  // namespace

@@ -26,6 +26,36 @@ TEST(Quote, EscapesWhatATerminalWouldMisread) {
     EXPECT_EQ(quote("\xFF\xFE"), "\"\\xFF\\xFE\"");
 }
 
+TEST(Quote, EscapesBidiAndC1Controls) {
+    // U+202E RIGHT-TO-LEFT OVERRIDE ("Trojan Source") and U+0085 NEXT LINE, as UTF-8.
+    EXPECT_EQ(quote("a\xE2\x80\xAE" "gpj.exe"), "\"a\\u202Egpj.exe\"");
+    EXPECT_EQ(quote("a\xC2\x85" "b"), "\"a\\u0085b\"");
+}
+
+TEST(TerminalSafe, EscapesWhatATerminalActsOn) {
+    EXPECT_EQ(terminal_safe("plain caf\xC3\xA9\tand\nlines"), "plain caf\xC3\xA9\tand\nlines");
+    EXPECT_EQ(terminal_safe("\x1B]0;title\x07\x1B[2J"), "\\x1B]0;title\\x07\\x1B[2J");
+    EXPECT_EQ(terminal_safe("x\ry"), "x\\x0Dy");  // a carriage return would redraw the line
+    EXPECT_EQ(terminal_safe("\x7F\xC2\x9B"), "\\x7F\\u009B");  // DEL, the C1 CSI
+    for (const char* bidi : {"\xD8\x9C", "\xE2\x80\x8E", "\xE2\x80\x8F", "\xE2\x80\xAA",
+                             "\xE2\x80\xAE", "\xE2\x81\xA6", "\xE2\x81\xA9", "\xE2\x80\xA8",
+                             "\xE2\x80\xA9"}) {
+        const std::string shown = terminal_safe(bidi);
+        EXPECT_EQ(shown.substr(0, 2), "\\u") << shown;
+    }
+    EXPECT_EQ(terminal_safe("Latin-1 \xE9"), "Latin-1 \\xE9");
+    EXPECT_EQ(terminal_safe_line("a\nb\tc"), "a\\x0Ab\tc");
+}
+
+TEST(FormatCommandLine, ShowsWhatRunsAsBashWouldReadIt) {
+    const std::vector<std::string> plain{"/usr/bin/ffmpeg", "-y", "-i", "a%04d.png"};
+    EXPECT_EQ(format_command_line(plain), "/usr/bin/ffmpeg -y -i a%04d.png");
+    const std::vector<std::string> quoted{"x", "a b", "it's", "$(y)"};
+    EXPECT_EQ(format_command_line(quoted), "x 'a b' 'it'\\''s' '$(y)'");
+    const std::vector<std::string> controls{"x", "a\nb", "\x1B[2J'\\", "r\xE2\x80\xAEl"};
+    EXPECT_EQ(format_command_line(controls), "x $'a\\x0Ab' $'\\x1B[2J\\'\\\\' $'r\\u202El'");
+}
+
 TEST(Quote, LongTextIsCutWithItsSize) {
     const std::string token(20'000'000, 'x');  // the 20 MB OBJ token of a fuzzed input
     const std::string shown = quote(token);

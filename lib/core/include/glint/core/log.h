@@ -8,10 +8,12 @@
 
 namespace glint {
 
-/// Severity of a log message, most severe first.
-enum class LogLevel { error = 0, warning = 1, info = 2, debug = 3 };
+/// Severity of a log message, most severe first. `notice` is shown at normal verbosity
+/// without a label (what a run does that a user must see: the commands it starts); `info`
+/// needs -v, `debug` -vv.
+enum class LogLevel { error = 0, warning = 1, notice = 2, info = 3, debug = 4 };
 
-/// Name of a level as printed in diagnostics ("error", "warning", "info", "debug").
+/// Name of a level as printed in diagnostics ("error", "warning", "notice", "info", "debug").
 const char* log_level_name(LogLevel level);
 
 /// A cheap-to-copy handle that forwards messages at or above a threshold to a sink.
@@ -29,6 +31,7 @@ public:
     }
     void error(const std::string& message) const { write(LogLevel::error, message); }
     void warning(const std::string& message) const { write(LogLevel::warning, message); }
+    void notice(const std::string& message) const { write(LogLevel::notice, message); }
     void info(const std::string& message) const { write(LogLevel::info, message); }
     void debug(const std::string& message) const { write(LogLevel::debug, message); }
 

@@ -86,8 +86,17 @@ int run_tool(const ToolSpec& spec, int argc, const char* const* argv, const Tool
              const std::function<void(CLI::App&)>& configure,
              const std::function<int(Context&)>& execute);
 
-/// Formats a diagnostic line "glint-<tool>: <level>: <message>" (colour when `colour`).
+/// Formats a diagnostic line "glint-<tool>: <level>: <message>" (colour when `colour`), the
+/// message through printable_message.
 std::string format_diagnostic(const std::string& program, const std::string& level,
                               const std::string& message, bool colour);
+
+/// "error:", "warning:" (bold and coloured when `colour`).
+std::string diagnostic_label(const std::string& level, bool colour);
+
+/// A message as the tools print it on stderr: terminal_safe (glint/core/text.h: no control
+/// or bidi character from an input file reaches the terminal) and every line after the
+/// first indented by two spaces, so no text a file holds can pass for a line of glint's own.
+std::string printable_message(const std::string& message);
 
 }  // namespace glint

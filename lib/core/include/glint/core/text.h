@@ -30,9 +30,18 @@ std::string join(std::span<const std::string_view> items, std::string_view separ
 std::string join(std::span<const std::string> items, std::string_view separator,
                  std::string_view last_separator = {});
 
-/// Quotes an argv for a log line (single quotes where needed). For display only: nothing
-/// glint runs goes through a shell.
+/// Quotes an argv for a log line (single quotes where needed; an argument holding a control
+/// character as bash's $'...' with the control escaped). For display only: nothing glint
+/// runs goes through a shell.
 std::string format_command_line(std::span<const std::string> argv);
+
+/// `text` safe to print on a terminal, whatever an input file held: C0 and C1 control
+/// characters but newline and tab, DEL, the bidirectional controls (U+061C, U+200E, U+200F,
+/// U+202A-U+202E, U+2066-U+2069), U+2028 and U+2029 written as \xNN or \uNNNN, and bytes
+/// that are not UTF-8 as \xNN. The tool runner passes every message through it.
+std::string terminal_safe(std::string_view text);
+/// The same with newlines escaped too (\x0A): for text that must stay one line.
+std::string terminal_safe_line(std::string_view text);
 
 /// `text` in double quotes for a message: control characters, `"`, `\\` and bytes that are
 /// not UTF-8 written as escapes (\n, \", \xFF), and cut after `max_bytes` bytes of input
