@@ -14,6 +14,7 @@
 #include "glint/core/units.h"
 #include "glint/io/envi.h"
 #include "glint/io/output_kind.h"
+#include "glint/io/regular_file.h"
 
 namespace glint::app_envi {
 namespace {
@@ -184,6 +185,7 @@ void write_range_image(const fs::path& out, const fs::path& input, const io::Bin
 }  // namespace
 
 bool is_lidar_bin(const fs::path& path) {
+    if (io::not_a_regular_file(path)) return false;  // opening a FIFO would block
     std::ifstream in(path, std::ios::binary);
     char magic[11] = {};
     return in.read(magic, sizeof magic) && std::string(magic, sizeof magic) == "DIRSIGPROTO";

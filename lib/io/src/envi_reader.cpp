@@ -18,6 +18,7 @@
 #include "glint/core/error.h"
 #include "glint/io/envi.h"
 #include "glint/io/input_files.h"
+#include "glint/io/regular_file.h"
 
 namespace glint::io {
 namespace {
@@ -150,7 +151,8 @@ EnviReader::EnviReader(const std::filesystem::path& path, LineUse line_use,
 
     m_header = parse_envi_header(read_header_text(m_header_path), m_header_path.string());
 
-    m_impl->fd = ::open(m_data_path.c_str(), O_RDONLY | O_CLOEXEC);
+    require_regular_file(m_data_path, m_data_path.string(), "data file");
+    m_impl->fd = ::open(m_data_path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
     if (m_impl->fd < 0) {
         const int code = errno;
         throw io_error("cannot open data file: " + errno_text(code), m_data_path.string());

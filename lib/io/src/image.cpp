@@ -17,6 +17,7 @@
 #include "glint/core/error.h"
 #include "glint/core/text.h"
 #include "glint/io/line_memory.h"
+#include "glint/io/regular_file.h"
 #include "image_backend.h"
 
 namespace glint::io {
@@ -341,6 +342,10 @@ ImageReader::ImageReader(const fs::path& path, std::size_t max_memory_bytes)
     if (!fs::exists(path, ec)) throw input_error("no such file", at_file(path));
     if (fs::is_directory(path, ec)) {
         throw input_error("is a folder, not an image", at_file(path));
+    }
+    // A FIFO, /dev/zero or a socket would make the image library block or read forever.
+    if (const auto what = not_a_regular_file(path)) {
+        throw input_error(*what + ", not an image file", at_file(path));
     }
     std::string why;
     m_impl->input = detail::image_backend().open_input(path.string(), why);

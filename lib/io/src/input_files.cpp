@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "glint/core/error.h"
+#include "glint/io/regular_file.h"
 
 namespace glint::io {
 namespace {
@@ -72,23 +73,19 @@ std::string read_standard_input(std::size_t max_bytes, std::string_view kind) {
 std::string read_input_file(const std::filesystem::path& path, const std::string& display_name,
                             std::size_t max_bytes, std::string_view kind) {
     const std::string& name = display_name.empty() ? path.string() : display_name;
-    // Checked before opening: opening a device can block or have side effects.
-    std::error_code ec;
-    const auto status = std::filesystem::status(path, ec);
-    if (!ec && std::filesystem::is_directory(status)) {
-        throw io_error("is a folder, expected a file", name);
-    }
-    if (!ec &&
-        (std::filesystem::is_character_file(status) || std::filesystem::is_block_file(status))) {
-        throw io_error("is a device, expected a file", name);
-    }
-    const FileDescriptor fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
+    // Checked before opening: opening a FIFO blocks until it has a writer, and a device can
+    // block, never end or have side effects.
+    require_regular_file(path, name);
+    const FileDescriptor fd(::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK));
     if (fd.get() < 0) {
         const int code = errno;
         throw io_error("cannot open " + std::string(kind) + ": " + errno_text(code), name);
     }
     std::size_t reserve = 0;
     struct stat info {};
+    if (::fstat(fd.get(), &info) == 0 && !S_ISREG(info.st_mode)) {  // replaced since checked
+        throw io_error("is not a regular file, expected a file", name);
+    }
     if (::fstat(fd.get(), &info) == 0 && S_ISREG(info.st_mode) && info.st_size > 0) {
         const auto size = static_cast<std::uintmax_t>(info.st_size);
         if (size > max_bytes) throw too_large(max_bytes, name);

@@ -14,6 +14,7 @@
 
 #include "glint/core/atomic_file.h"
 #include "glint/core/error.h"
+#include "glint/io/regular_file.h"
 
 namespace glint::io {
 namespace {
@@ -197,6 +198,7 @@ BinPulse read_pulse(Cursor& c, const BinFileHeader& h, bool swap) {
 }  // namespace
 
 BinFile read_bin(const fs::path& path) {
+    require_regular_file(path, path.string(), "BIN file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw io_error("cannot open the BIN file", path.string());
     const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

@@ -25,10 +25,11 @@ inline constexpr std::size_t kMaxInputBytes = std::size_t{256} << 20;
 /// Reads a whole input file as text, at most `max_bytes` bytes. The cap counts the bytes
 /// actually read (a device, a pipe or a /proc file reports no useful size), so no input can
 /// exhaust memory. Throws glint::Error naming `display_name` (default: the path): io when it
-/// cannot be opened or read ("cannot open <kind>: <errno text>"), is a folder, or is a
-/// character or block device (`/dev/zero`, `/dev/urandom`, a terminal: "is a device,
-/// expected a file"); input when it holds more than `max_bytes` ("larger than N bytes (a
-/// device or not a text file?)"). Regular files and FIFOs (pipes, `<(…)`) are read.
+/// cannot be opened or read ("cannot open <kind>: <errno text>"), or is not a regular file
+/// (glint/io/regular_file.h: a folder, a FIFO or `<(…)`, a socket, a device such as
+/// `/dev/zero`: "is a FIFO (a named pipe), expected a file"), checked before opening; input
+/// when it holds more than `max_bytes` ("larger than N bytes (a device or not a text
+/// file?)").
 std::string read_input_file(const std::filesystem::path& path, const std::string& display_name = {},
                             std::size_t max_bytes = kMaxInputBytes, std::string_view kind = "file");
 
