@@ -5,6 +5,7 @@
 #include "glint/core/error.h"
 #include "glint/core/runner.h"
 #include "glint/core/stdio_name.h"
+#include "glint/core/text.h"
 
 namespace glint::app_envi {
 
@@ -63,7 +64,9 @@ int run(const Options& options, Context& ctx, std::ostream& out) {
             encode_frames(options.encode, ctx);
             return kExitSuccess;
         case Subcommand::merge:
-            for (const auto& file : merge_parts(options.merge, ctx)) out << file.string() << "\n";
+            for (const auto& file : merge_parts(options.merge, ctx)) {
+                out << terminal_safe_line(file.string()) << "\n";
+            }
             return kExitSuccess;
     }
     throw internal_error("unknown glint-envi subcommand");

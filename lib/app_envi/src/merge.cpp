@@ -3,7 +3,10 @@
 // files, then write each whole file.
 #include "glint/app_envi/merge.h"
 
+#include <stdlib.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <fstream>
 #include <map>
@@ -13,6 +16,7 @@
 #include <string>
 #include <utility>
 
+#include "glint/app_envi/lidar_bin.h"
 #include "glint/core/atomic_file.h"
 #include "glint/core/error.h"
 #include "glint/core/folder_lock.h"
@@ -325,7 +329,19 @@ void resolve(WholeFile& file, const fs::path& shown, Problems& problems) {
     h.set_extra(kDatetimesKey, io::envi_brace_list(datetimes));
 }
 
-/// Every image and truth file a glint-schedule JSON lists, as absolute normal paths.
+/// `path` as merge compares output paths: absolute (a relative one counts from `base`), then
+/// with every symbolic link of its existing part resolved (a cluster's /home -> /gpfs), so
+/// the --expect list and the output folder name the same file the same way.
+fs::path comparable(const fs::path& path, const fs::path& base) {
+    const fs::path absolute = (path.is_absolute() ? path : base / path).lexically_normal();
+    std::error_code ec;
+    const fs::path canonical = fs::weakly_canonical(absolute, ec);
+    return ec ? absolute : canonical;
+}
+
+/// Every image and truth file a glint-schedule JSON lists, as comparable() paths: relative
+/// ones count from the folder glint-schedule ran in (provenance.working_folder), else, for a
+/// JSON without it, from the JSON's own folder.
 std::set<fs::path> expected_files(const fs::path& schedule) {
     const std::string text =
         io::read_input_file(schedule, schedule.string(), kMaxScheduleBytes, "schedule file");
@@ -338,17 +354,23 @@ std::set<fs::path> expected_files(const fs::path& schedule) {
             "SIM --output-folder OUT -o FILE)",
             where);
     }
+    fs::path base = fs::absolute(schedule).parent_path();
+    if (j.contains("provenance") && j["provenance"].is_object()) {
+        const nlohmann::json& made_in = j["provenance"].value("working_folder", nlohmann::json());
+        if (made_in.is_string() && fs::path(made_in.get<std::string>()).is_absolute()) {
+            base = made_in.get<std::string>();
+        }
+    }
     std::set<fs::path> files;
     for (const nlohmann::json& capture : j["captures"]) {
         if (!capture.is_object() || !capture.contains("files")) continue;
         const nlohmann::json& f = capture["files"];
         if (f.contains("image") && f["image"].is_string()) {
-            files.insert(fs::absolute(f["image"].get<std::string>()).lexically_normal());
+            files.insert(comparable(f["image"].get<std::string>(), base));
         }
         if (f.contains("truth") && f["truth"].is_array()) {
             for (const nlohmann::json& t : f["truth"]) {
-                if (t.is_string())
-                    files.insert(fs::absolute(t.get<std::string>()).lexically_normal());
+                if (t.is_string()) files.insert(comparable(t.get<std::string>(), base));
             }
         }
     }
@@ -377,6 +399,7 @@ void write_whole(const WholeFile& file, const fs::path& target, Context& ctx) {
             const std::uint64_t chunk_lines =
                 std::max<std::uint64_t>(1, kCopyChunkBytes / std::max<std::size_t>(line_bytes, 1));
             while (left > 0) {
+                ctx.cancel.throw_if_cancelled();  // a one-capture file is all one segment
                 const std::uint64_t n = std::min(left, chunk_lines);
                 buffer.resize(static_cast<std::size_t>(n) * line_bytes);
                 in.seekg(static_cast<std::streamoff>(p.header.header_offset + line * line_bytes));
@@ -393,6 +416,7 @@ void write_whole(const WholeFile& file, const fs::path& target, Context& ctx) {
         }
     }
     writer.set_extra(kCommandLineKey, ctx.command_line());
+    ctx.cancel.throw_if_cancelled();
     writer.commit();
 }
 
@@ -409,6 +433,28 @@ void copy_file(const fs::path& from, const fs::path& to, Context& ctx) {
     if (in.bad()) throw io_error("cannot read the part", from.string());
     out.commit();
 }
+
+/// A folder `.merge.tmp-XXXXXX` inside `parent`, removed with what it holds when it goes.
+class StagingFolder {
+public:
+    explicit StagingFolder(const fs::path& parent) {
+        std::string name = (parent / ".merge.tmp-XXXXXX").string();
+        if (::mkdtemp(name.data()) == nullptr) {
+            throw io_error("cannot create a staging folder: " + errno_text(errno), parent.string());
+        }
+        m_path = name;
+    }
+    ~StagingFolder() {
+        std::error_code ec;
+        fs::remove_all(m_path, ec);
+    }
+    StagingFolder(const StagingFolder&) = delete;
+    StagingFolder& operator=(const StagingFolder&) = delete;
+    const fs::path& path() const { return m_path; }
+
+private:
+    fs::path m_path;
+};
 
 bool inside(const fs::path& path, const fs::path& folder) {
     const fs::path rel = path.lexically_relative(folder);
@@ -489,7 +535,7 @@ std::vector<fs::path> merge_parts(const MergeOptions& options, Context& ctx) {
             if (claimed.contains(rel)) continue;
             if (rel.extension() == ".hdr") {
                 others.push_back(part / rel);
-            } else if (rel.extension() == ".bin") {
+            } else if (rel.extension() == ".bin" && is_lidar_bin(part / rel)) {
                 bins[rel].push_back(part / rel);
             } else {
                 others.push_back(part / rel);
@@ -510,8 +556,8 @@ std::vector<fs::path> merge_parts(const MergeOptions& options, Context& ctx) {
     if (!options.expect.empty()) {
         const std::set<fs::path> expected = expected_files(options.expect);
         std::set<fs::path> produced;
-        for (const auto& [rel, file] : images) produced.insert((out / rel).lexically_normal());
-        for (const auto& [rel, copies] : bins) produced.insert((out / rel).lexically_normal());
+        for (const auto& [rel, file] : images) produced.insert(comparable(out / rel, out));
+        for (const auto& [rel, copies] : bins) produced.insert(comparable(out / rel, out));
         for (const fs::path& f : expected) {
             if (!produced.contains(f)) {
                 problems.add(f, "listed in " + options.expect.string() + " but in no part");
@@ -541,23 +587,39 @@ std::vector<fs::path> merge_parts(const MergeOptions& options, Context& ctx) {
                         list);
     }
 
-    // Write: every file atomically, into the locked output folder.
+    // Write every file into a staging folder inside the locked output folder, then publish
+    // them all by renames: an interrupt or a full disk leaves none of them under its name.
     std::error_code ec;
     fs::create_directories(out, ec);
     if (ec) throw io_error("cannot create the output folder: " + ec.message(), out.string());
     const FolderLock lock(out);
-    std::vector<fs::path> written;
+    const StagingFolder staging(out);
+    struct Staged {
+        fs::path from, to;
+        bool listed = true;  ///< a data file (listed on stdout), not a header
+    };
+    std::vector<Staged> staged;  // data before its header, as glint-render publishes
+    const auto stage = [&](const fs::path& rel) {
+        const fs::path path = staging.path() / rel;
+        fs::create_directories(path.parent_path(), ec);
+        if (ec) throw io_error("cannot create a folder: " + ec.message(), path.parent_path().string());
+        staged.push_back({path, options.output_folder / rel});
+        return path;
+    };
     for (const auto& [rel, file] : images) {
-        const fs::path target = options.output_folder / rel;
-        fs::create_directories(target.parent_path(), ec);
-        write_whole(file, target, ctx);
-        written.push_back(target);
+        const fs::path path = stage(rel);
+        write_whole(file, path, ctx);
+        staged.push_back({fs::path(path.string() + ".hdr"),
+                          fs::path((options.output_folder / rel).string() + ".hdr"), false});
     }
-    for (const auto& [rel, copies] : bins) {
-        const fs::path target = options.output_folder / rel;
-        fs::create_directories(target.parent_path(), ec);
-        copy_file(copies.front(), target, ctx);
-        written.push_back(target);
+    for (const auto& [rel, copies] : bins) copy_file(copies.front(), stage(rel), ctx);
+    ctx.cancel.throw_if_cancelled();
+    std::vector<fs::path> written;
+    for (const Staged& file : staged) {
+        fs::create_directories(file.to.parent_path(), ec);
+        fs::rename(file.from, file.to, ec);
+        if (ec) throw io_error("cannot publish the merged file: " + ec.message(), file.to.string());
+        if (file.listed) written.push_back(file.to);
     }
     std::sort(written.begin(), written.end());
     return written;

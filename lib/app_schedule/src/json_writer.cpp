@@ -4,6 +4,9 @@
 // per line; totals at the end) and DIRSIG's --log_info_filename view (capture_list,
 // run_info). Field by field in docs/tools/glint-schedule.md.
 
+#include <filesystem>
+#include <system_error>
+
 #include "glint/core/json_text.h"
 #include "glint/core/runner.h"
 #include "glint/model/names.h"
@@ -184,6 +187,11 @@ Json provenance_json(const RunInfo& info) {
     j["glint_version"] = version();
     j["arguments"] = *info.arguments;
     j["seed"] = info.seed;
+    // The folder relative paths in `files` count from (glint-envi merge --expect reads them
+    // wherever it runs).
+    std::error_code ec;
+    const std::filesystem::path working = std::filesystem::current_path(ec);
+    j["working_folder"] = ec ? Json(nullptr) : Json(working.generic_string());
     return j;
 }
 

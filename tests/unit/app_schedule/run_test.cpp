@@ -80,6 +80,7 @@ TEST_F(ScheduleToolTest, JsonHeaderAndTotals) {
     EXPECT_EQ(j["provenance"]["seed"], 1);
     EXPECT_EQ(j["provenance"]["arguments"], Json::array({"glint-schedule", "small.jsim"}));
     EXPECT_FALSE(j["provenance"]["glint_version"].get<std::string>().empty());
+    EXPECT_EQ(j["provenance"]["working_folder"], std::filesystem::current_path().generic_string());
     EXPECT_EQ(j["reference_datetime"], "2020-06-21T16:00:00.000000Z");  // 12:00-04:00
     ASSERT_EQ(j["plugins"].size(), 2u);
     const Json& first = j["plugins"][0];
