@@ -74,7 +74,7 @@ step "5. PNG previews: the RGB frames (made during the render), the pushbroom as
 # them into demo.mp4 when the collection completed: the render's log shows their messages.
 grep -m1 -e 'Converting radiance image to PNG' "$out/render/render.log" >&2
 grep -m1 -e 'Encoding frames into video' "$out/render/render.log" >&2
-printf '%d frames converted to PNG (render/rgb-t0000-cNNNN.png), video demo.mp4\n' \
+printf '%d frames converted to PNG (render/rgb-t0000-cNNNN.png), video render/demo.mp4\n' \
     "$(ls "$out"/render/rgb-t0000-c*.png | wc -l)" >&2
 # NIR, red, green as red, green, blue: vegetation shows red. The first line (south) is at
 # the top: a pushbroom image is stacked in acquisition order.
@@ -82,7 +82,7 @@ run "$envi" convert --bands 4,2,1 --per-band --percent 1 --gamma 2.2 \
     "$out/render/msi.img" "$out/render/msi-false-colour.png"
 
 step "6. the video: encoded by ffmpeg, the RGB focal plane's collection_completed task"
-run ls -l "$out/demo.mp4" >&2
+run ls -l "$out/render/demo.mp4" >&2
 
 step "7. the Bayer camera: digital counts from in-render detection, demosaiced to colour"
 # glint-render applied the focal plane's detector model (QE, shot/dark/read noise, 12-bit
@@ -118,5 +118,5 @@ glint demo finished. Outputs in $out/:
   render/rgb_truth-t0000-c0010-material.png  frame 10's material map
   render/render.log, files.txt       glint-render's log (-v) and the files it wrote
   render/*.stats.*, msi.info.txt     glint-envi stats and info reports
-  demo.mp4                           the RGB frames as a ${fps} fps video
+  render/demo.mp4                    the RGB frames as a ${fps} fps video
 MSG

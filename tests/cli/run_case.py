@@ -136,6 +136,9 @@ def main():
               "python": "/usr/bin/python3"}
     base_env = dict(os.environ)
     base_env.pop("NO_COLOR", None)
+    # The processing allow-list of whoever runs the tests must not change what a case sees:
+    # none exists unless the case makes one (and names it in its env).
+    base_env["GLINT_ALLOWED_PROGRAMS"] = os.path.join(work, ".no-allowed-programs")
 
     try:
         for step in case.get("setup", []):

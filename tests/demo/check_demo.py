@@ -175,7 +175,7 @@ def main():
 
     # 1. the files
     frames = [os.path.join(render, f"rgb-t0000-c{c:04d}") for c in range(FRAMES)]
-    expected = ["demo.jsim", "demo.platform.json", "demo.schedule.json", "demo.mp4",
+    expected = ["demo.jsim", "demo.platform.json", "demo.schedule.json", "render/demo.mp4",
                 "render/msi.img", "render/msi.img.hdr", "render/msi-false-colour.png"]
     expected += [os.path.relpath(f + ext, out) for f in frames
                  for ext in (".img", ".img.hdr", ".png")]
@@ -192,7 +192,7 @@ def main():
           + (f" (missing or empty: {', '.join(missing)})" if missing else ""))
     if missing:
         return 1
-    video = os.path.join(out, "demo.mp4")
+    video = os.path.join(render, "demo.mp4")
     if shutil.which("ffprobe"):
         probe = subprocess.run(
             ["ffprobe", "-v", "error", "-select_streams", "v:0", "-count_frames",

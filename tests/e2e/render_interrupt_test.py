@@ -97,7 +97,7 @@ def interrupt_processing_task(args):
     os.makedirs(work)
     command = [os.path.join(args.bin, "glint-render"),
                os.path.join(args.data, "processing", "hang.jsim"),
-               "--output-folder", out, "--convergence", "1,1,0"]
+               "--output-folder", out, "--convergence", "1,1,0", "--allow-processing"]
     env = dict(os.environ)
     env["PATH"] = os.path.join(args.data, "processing", "bin") + ":/usr/bin:/bin"
     process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env)

@@ -60,6 +60,9 @@ void Platform2JsimCli::configure(CLI::App& app) {
                    "reference; print a summary")
         ->type_name("FILE")
         ->expected(1, -1);
+    app.add_flag("--allow-processing", m_options.allow_processing,
+                 "With --check: count every program a <processing> task names as allowed, as "
+                 "glint-render --allow-processing does");
     app.add_option("--dump-platform", m_dump,
                    "Print a .platform (or each platform of a .sim/.jsim) as normalized JSON")
         ->type_name("FILE");
@@ -78,6 +81,9 @@ void Platform2JsimCli::choose_mode() {
         o.mode = Mode::check;
         o.check_files.assign(m_check.begin(), m_check.end());
         return;
+    }
+    if (m_options.allow_processing) {
+        throw usage_error("--allow-processing goes with --check (glint-render takes it for a run)");
     }
     if (app.count("--dump-platform") > 0) {
         forbid(app,

@@ -90,10 +90,21 @@ void RenderCli::configure(CLI::App& app) {
     app.add_flag("--keep-going", m_options.processing.keep_going,
                  "A processing task that fails (or whose program is missing) is a warning, not "
                  "an error: the render goes on");
+    app.add_flag("--allow-processing", m_options.processing.allow_all,
+                 "Run every program the focal planes' <processing> tasks name, with any "
+                 "arguments (by default only image_tool, demosaic, ffmpeg and glint's tools, with "
+                 "arguments inside the output folder, and what the allow-list file allows)");
     app.add_option("--processing-timeout", m_processing_timeout_s,
                    "Seconds one processing task may run before it is killed (0: no limit)")
         ->type_name("SECONDS")
-        ->check(CLI::NonNegativeNumber)
+        ->check(CLI::Validator(
+            [](const std::string& text) -> std::string {
+                const std::optional<double> seconds = parse_double(text);
+                return seconds && *seconds >= 0.0
+                           ? ""
+                           : quote(text) + " is not a number of seconds >= 0 (0: no limit)";
+            },
+            ""))
         ->capture_default_str();
     app.add_option("--data-dir", m_options.render.data_dir,
                    "glint's data folder (solar spectrum); default $GLINT_DATA_DIR, else "

@@ -11,11 +11,15 @@
 #include "glint/app_platform2jsim/platform_json.h"
 #include "glint/core/atomic_file.h"
 #include "glint/core/error.h"
+#include "glint/core/install_paths.h"
 #include "glint/core/stdio_name.h"
 #include "glint/core/json_text.h"
 #include "glint/core/text.h"
 #include "glint/dirsig/readers.h"
+#include "glint/model/names.h"
+#include "glint/model/output_folder.h"
 #include "glint/model/output_name.h"
+#include "glint/process/processing.h"
 
 namespace glint::app_platform2jsim {
 namespace {
@@ -235,13 +239,72 @@ int run_append(const Options& options, Context& ctx, std::ostream& /*out*/) {
     return 0;
 }
 
+/// A line for every processing task of the platforms read — the command a run would start,
+/// $$IMG_BASENAME$$ in place — and an error for each that glint-render would refuse (a
+/// program found nowhere, one the user has not allowed).
+void list_processing(LoadedInputs& inputs, const Options& options, const Context& ctx) {
+    process::ProcessingOptions processing;
+    processing.tools_dir = executable_path().parent_path();
+    processing.allow_all = options.allow_processing;
+    if (!processing.allow_all) processing.allow_list = process::allow_list_from_environment();
+    process::ProcessingRunner runner(processing, ctx);
+    for (const auto& [file, platform] : inputs.platforms) {
+        for (const model::InstrumentPath& path : model::list_instruments(platform)) {
+            for (const model::FocalPlane& fp : path.instrument->focal_planes) {
+                for (const model::ProcessingTask& task : fp.capture_method.processing) {
+                    std::string line = "processing: " + std::string(model::name_of(task.schedule)) +
+                                       " " + path.instrument->name + " -> " + fp.name + ": ";
+                    try {
+                        const process::TaskCommand command = runner.command_template(task);
+                        line += format_command_line(command.argv);
+                        if (command.refusal) {
+                            line += " (refused: not allowed)";
+                            inputs.diagnostics.error(task.where,
+                                                     *command.refusal);
+                        }
+                    } catch (const Error& error) {
+                        line += "(" + terminal_safe_line(error.message()) + ")";
+                        inputs.diagnostics.add(error);
+                    }
+                    inputs.contents.push_back(line + " (" + task.where.file + ":" +
+                                              std::to_string(task.where.line) + ")");
+                }
+            }
+        }
+    }
+}
+
+/// A line for the output folder of every BasicPlatform of the simulations read that names
+/// its own (the others write where glint-render's --output-folder says, else into the
+/// working folder), and a warning where one lies outside both the simulation's folder and
+/// the working folder.
+void list_output_folders(LoadedInputs& inputs) {
+    std::error_code ec;
+    const fs::path working = fs::current_path(ec);
+    if (ec) return;
+    for (const model::Simulation& simulation : inputs.simulations) {
+        for (const model::OutputFolder& output :
+             model::output_folders(simulation, std::nullopt, working)) {
+            if (!output.from_simulation) continue;
+            inputs.contents.push_back("output folder " + output.folder.string() +
+                                      ": plugin_list[" + std::to_string(output.plugin_index) +
+                                      "] of " + simulation.file);
+            if (auto why = model::unexpected_output_folder(output, simulation, working)) {
+                inputs.diagnostics.warning(output.where, *why);
+            }
+        }
+    }
+}
+
 int run_check(const Options& options, Context& ctx, std::ostream& out) {
     if (options.check_files.empty()) throw usage_error("--check needs at least one FILE");
     LoadedInputs inputs;
     for (const fs::path& file : options.check_files) check_file(file, inputs, options.read_options);
     check_truth_targets(inputs);
+    list_output_folders(inputs);
+    list_processing(inputs, options, ctx);
     report(inputs, ctx, false);
-    for (const std::string& line : inputs.contents) out << line << '\n';
+    for (const std::string& line : inputs.contents) out << terminal_safe_line(line) << '\n';
     out << "check: "
         << summary_text(inputs.diagnostics.error_count(), inputs.diagnostics.warning_count(),
                         inputs.files.size())

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // glint-render: option parsing helpers, the dry-run plan and the render report.
+#include <algorithm>
 #include <cctype>
 #include <cstdlib>
 #include <ostream>
@@ -14,6 +15,7 @@
 #include "glint/core/text.h"
 #include "glint/inputs/load.h"
 #include "glint/model/names.h"
+#include "glint/model/output_folder.h"
 
 namespace glint::app_render {
 namespace {
@@ -41,6 +43,26 @@ private:
     process::ProcessingRunner& m_runner;
 };
 
+/// The folders the run writes into, each once, in plugin order; a warning for each the
+/// simulation chose outside both its own folder and the working folder.
+std::vector<std::filesystem::path> output_folders(const model::SimulationInputs& loaded,
+                                                  const sensor::RenderOptions& render,
+                                                  const Context& ctx) {
+    std::error_code ec;
+    const std::filesystem::path working = std::filesystem::current_path(ec);
+    std::vector<std::filesystem::path> folders;
+    if (ec) return folders;
+    for (const model::OutputFolder& output :
+         model::output_folders(loaded.simulation, render.schedule.output_folder, working)) {
+        if (std::find(folders.begin(), folders.end(), output.folder) != folders.end()) continue;
+        folders.push_back(output.folder);
+        if (auto why = model::unexpected_output_folder(output, loaded.simulation, working)) {
+            ctx.log.warning(format_located(output.where, *why));
+        }
+    }
+    return folders;
+}
+
 /// The number of tasks the events run.
 std::size_t task_count(const std::vector<model::ProcessingEvent>& events) {
     std::size_t n = 0;
@@ -56,9 +78,11 @@ void print_events(const std::vector<model::ProcessingEvent>& events,
             out << "processing: " << model::name_of(e.kind) << " " << e.focal_plane << " task "
                 << e.task + 1 << " capture " << e.capture + 1 << ": ";
             try {
-                out << format_command_line(runner.command(task, e).argv);
+                const process::TaskCommand command = runner.command(task, e);
+                out << format_command_line(command.argv);
+                if (command.refusal) out << " (refused: not allowed)";
             } catch (const Error& error) {
-                out << "(" << error.message() << ")";
+                out << "(" << terminal_safe_line(error.message()) << ")";
             }
             if (task.remove_file) out << " (then removes " << e.file.filename().string() << ")";
             out << "\n";
@@ -131,14 +155,28 @@ int run(const Options& options, Context& ctx, std::ostream& out) {
     model::SimulationInputs loaded = inputs::load_logged(options.input, load_options, ctx.log);
     process::ProcessingOptions processing = options.processing;
     if (processing.tools_dir.empty()) processing.tools_dir = executable_path().parent_path();
+    if (processing.allow_list.empty() && !processing.allow_all) {
+        processing.allow_list = process::allow_list_from_environment();
+    }
     process::ProcessingRunner runner(processing, ctx);
+    const std::vector<std::filesystem::path> folders = output_folders(loaded, render, ctx);
     if (options.dry_run) {
         const sensor::RenderReport plan = sensor::plan(std::move(loaded), render, ctx);
         out << "captures: " << plan.captures.size() << "\n";
         out << "pixels: " << plan.pixels << "\n";
         out << "memory estimate: " << mebibytes(plan.memory_estimate_bytes) << "\n";
-        for (const auto& file : plan.files) out << "output: " << file.string() << "\n";
-        if (!options.no_processing) print_events(plan.events, runner, out);
+        for (const auto& folder : folders) {
+            out << "output folder: " << terminal_safe_line(folder.string()) << "\n";
+        }
+        for (const auto& file : plan.files) {
+            out << "output: " << terminal_safe_line(file.string()) << "\n";
+        }
+        if (!options.no_processing) {
+            print_events(plan.events, runner, out);
+            out.flush();
+            // What the run would refuse before tracing, the dry run refuses too.
+            runner.check(plan.events);
+        }
         return kExitSuccess;
     }
     // A band of lines is part of its images: processing tasks would see parts, so they run on
@@ -158,7 +196,7 @@ int run(const Options& options, Context& ctx, std::ostream& out) {
                         " events were skipped");
     }
     for (const auto& file : report.files) {
-        if (runner.removed().count(file) == 0) out << file.string() << "\n";
+        if (runner.removed().count(file) == 0) out << terminal_safe_line(file.string()) << "\n";
     }
     return kExitSuccess;
 }

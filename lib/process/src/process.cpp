@@ -213,6 +213,13 @@ ProcessResult run_process(const ProcessOptions& options) {
     if (options.argv.empty() || options.argv.front().empty()) {
         throw usage_error("no program to run");
     }
+    for (std::size_t i = 0; i < options.argv.size(); ++i) {
+        // The kernel would cut the argument at the NUL: the program would see another one.
+        if (options.argv[i].find('\0') != std::string::npos) {
+            throw input_error((i == 0 ? std::string("the program name") : "argument " + std::to_string(i)) +
+                              " holds a NUL byte, which no program can be given");
+        }
+    }
     const std::string& program_name = options.argv.front();
     const auto program = find_program(program_name);
     if (!program) {

@@ -4,6 +4,8 @@
 // an event's tasks through run_process.
 #include "glint/process/processing.h"
 
+#include <unistd.h>
+
 #include <sstream>
 #include <system_error>
 #include <utility>
@@ -68,6 +70,35 @@ std::string last_line(const std::string& text) {
                        end + 1 - (begin == std::string::npos ? 0 : begin + 1));
 }
 
+/// Linux's limit on one argument (MAX_ARG_STRLEN: 32 pages of 4 KiB).
+constexpr std::size_t kMaxArgumentBytes = 32 * 4096;
+
+/// Why the kernel would refuse (E2BIG) or cut an argv, or nullopt: an argument holding a NUL
+/// byte or longer than kMaxArgumentBytes, or all of them with the environment beyond a
+/// quarter of ARG_MAX.
+std::optional<std::string> argv_problem(const std::vector<std::string>& argv) {
+    std::size_t total = 0;
+    for (std::size_t i = 0; i < argv.size(); ++i) {
+        const std::string what = i == 0 ? std::string("the program") : "argument " + std::to_string(i);
+        if (argv[i].find('\0') != std::string::npos) {
+            return what + " holds a NUL byte, which no program can be given";
+        }
+        if (argv[i].size() >= kMaxArgumentBytes) {
+            return what + " is " + format_byte_size(static_cast<double>(argv[i].size())) +
+                   "; the system passes at most 128 KiB in one argument";
+        }
+        total += argv[i].size() + 1 + sizeof(char*);
+    }
+    const long arg_max = ::sysconf(_SC_ARG_MAX);
+    const std::size_t limit = arg_max > 0 ? static_cast<std::size_t>(arg_max) / 4 : 512 * 1024;
+    if (total > limit) {
+        return "its arguments are " + format_byte_size(static_cast<double>(total)) +
+               " in all; the system passes at most " + format_byte_size(static_cast<double>(limit)) +
+               " (a quarter of ARG_MAX, the rest left to the environment)";
+    }
+    return std::nullopt;
+}
+
 }  // namespace
 
 std::string substitute_basename(const std::string& text, const std::string& basename) {
@@ -113,10 +144,32 @@ std::optional<TaskCommand> ProcessingRunner::find(const std::string& program) {
     return command;
 }
 
+const ProcessingTrust& ProcessingRunner::trust() {
+    if (!m_trust) {
+        if (m_options.allow_all) {
+            m_trust.emplace();
+            m_trust->allow_all = true;
+        } else {
+            m_trust = read_allow_list(m_options.allow_list);
+        }
+    }
+    return *m_trust;
+}
+
 TaskCommand ProcessingRunner::command(const model::ProcessingTask& task,
                                       const model::ProcessingEvent& event) {
     const std::string basename = event.file.stem().string();
-    const std::string program = substitute_basename(task.program, basename);
+    return build(task, basename, basename);
+}
+
+TaskCommand ProcessingRunner::command_template(const model::ProcessingTask& task) {
+    // Judged with a plain stand-in name: the run's own basenames are checked at each event.
+    return build(task, kImageBasename, "IMG_BASENAME");
+}
+
+TaskCommand ProcessingRunner::build(const model::ProcessingTask& task, const std::string& shown,
+                                    const std::string& judged) {
+    const std::string program = substitute_basename(task.program, shown);
     std::optional<TaskCommand> command = find(program);
     if (!command) {
         throw input_error("program " + quote(program) +
@@ -131,9 +184,13 @@ TaskCommand ProcessingRunner::command(const model::ProcessingTask& task,
                           task.where);
     }
     command->argv.push_back(command->program.string());
+    std::vector<std::string> judged_arguments;
     for (const std::string& argument : task.arguments) {
-        command->argv.push_back(substitute_basename(argument, basename));
+        command->argv.push_back(substitute_basename(argument, shown));
+        judged_arguments.push_back(substitute_basename(argument, judged));
     }
+    command->refusal = refusal(substitute_basename(task.program, judged), command->program,
+                               judged_arguments, trust());
     if (!command->stands_for.empty() && m_stand_ins_said.insert(command->stands_for).second) {
         m_context.log.info("Processing: no program " + quote(command->stands_for) +
                            " on PATH; running " + command->program.string() + " in its place");
@@ -146,6 +203,7 @@ void ProcessingRunner::check(const std::vector<model::ProcessingEvent>& events) 
     std::set<std::pair<std::string, int>> warned;  // task file:line warned about the basename
     std::set<std::pair<std::string, int>> missing;  // task file:line whose program is missing
     std::set<std::pair<std::string, int>> early_removal;  // removefile before completion
+    std::set<std::pair<std::string, int>> refused;  // task file:line the user has not allowed
     for (const model::ProcessingEvent& event : events) {
         for (const model::ProcessingTask& task : event.tasks) {
             const auto key = std::make_pair(task.where.file, task.where.line);
@@ -169,7 +227,13 @@ void ProcessingRunner::check(const std::vector<model::ProcessingEvent>& events) 
                                         "will not find it");
             }
             try {
-                (void)command(task, event);
+                const TaskCommand planned = command(task, event);
+                if (planned.refusal && refused.insert(key).second) {
+                    diagnostics.error(task.where, *planned.refusal);
+                }
+                if (auto problem = argv_problem(planned.argv); problem && refused.insert(key).second) {
+                    diagnostics.error(task.where, *problem);
+                }
             } catch (const Error& e) {
                 if (!missing.insert(key).second) continue;
                 if (m_options.keep_going) {
@@ -196,6 +260,9 @@ void ProcessingRunner::run_task(const model::ProcessingTask& task,
         ++m_failed;  // check() warned that it is skipped
         return;
     }
+    if (command->refusal) {  // check() refused it before the render began
+        throw input_error(*command->refusal, task.where);
+    }
     if (!task.message.empty()) m_context.log.info(task.message);
     ProcessOptions options;
     options.argv = command->argv;
@@ -212,8 +279,10 @@ void ProcessingRunner::run_task(const model::ProcessingTask& task,
     options.timeout = m_options.timeout;
     options.cancel = m_context.cancel;
     options.stdout_mode = OutputMode::capture;
-    m_context.log.debug("Processing at " + event_name(event) + ": " +
-                        format_command_line(command->argv));
+    // Every command is shown as it starts (make's rule): what a simulation runs is never a
+    // surprise.
+    m_context.log.notice("Processing at " + event_name(event) + ": " +
+                         format_command_line(command->argv));
     const ProcessResult result = run_process(options);  // throws cancelled on an interrupt
     ++m_run;
     const std::string program = fs::path(task.program).filename().string();

@@ -198,4 +198,18 @@ void ImageOutputs::lock_folders() {
 
 std::vector<std::filesystem::path> ImageOutputs::planned() const { return m_order; }
 
+std::vector<std::pair<std::filesystem::path, std::string>> ImageOutputs::written() const {
+    std::vector<std::pair<std::filesystem::path, std::string>> files;
+    for (const std::filesystem::path& path : m_order) {
+        const std::string name = path.filename().string();
+        if (m_bins.count(path) > 0) {
+            files.emplace_back(path, "lidar file " + name);
+            continue;
+        }
+        files.emplace_back(path, "image " + name);
+        files.emplace_back(std::filesystem::path(path.string() + ".hdr"), "header of image " + name);
+    }
+    return files;
+}
+
 }  // namespace glint::sensor

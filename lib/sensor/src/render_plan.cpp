@@ -201,6 +201,32 @@ void plan_outputs(const RenderInputs& in, const Selected& selected,
     }
 }
 
+/// Refuses a run two of whose outputs are one file (a truth image named like the image's
+/// header, an image named like a data recorder's file, --log-info-filename naming an image):
+/// the second would overwrite the first. Throws glint::Error (input) naming both.
+void refuse_colliding_outputs(const Prepared& p, const RenderOptions& options) {
+    std::vector<std::pair<std::filesystem::path, std::string>> written = p.outputs.written();
+    for (const PlannedTelemetry& t : p.telemetry) {
+        written.emplace_back(t.csv, "data recorder file " + t.csv.filename().string());
+        written.emplace_back(t.jsonl, "data recorder file " + t.jsonl.filename().string());
+    }
+    if (!options.log_info_file.empty()) {
+        written.emplace_back(options.log_info_file, "the --log-info-filename file");
+    }
+    std::map<std::filesystem::path, const std::string*> seen;
+    for (const auto& [path, what] : written) {
+        std::error_code ec;
+        const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
+        const auto [it, inserted] =
+            seen.emplace((ec ? path : absolute).lexically_normal(), &what);
+        if (inserted) continue;
+        throw input_error("two outputs of this run are the same file, " + path.string() + ": " +
+                          *it->second + " and " + what +
+                          " (the second would overwrite the first); give them distinct "
+                          "<basename> or <extension> values, or a distinct output_prefix");
+    }
+}
+
 }  // namespace
 
 std::unique_ptr<Prepared> prepare(model::SimulationInputs loaded, const RenderOptions& options,
@@ -217,6 +243,7 @@ std::unique_ptr<Prepared> prepare(model::SimulationInputs loaded, const RenderOp
         report.files.push_back(t.csv);
         report.files.push_back(t.jsonl);
     }
+    refuse_colliding_outputs(*p, options);
     const RenderInputs& in = p->inputs;
     std::uint64_t triangles = 0;
     for (const model::Instance& instance : in.scene.instances) {

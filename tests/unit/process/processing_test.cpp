@@ -9,10 +9,10 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
-#include <memory>
 #include <sstream>
 
 #include "glint/core/error.h"
+#include "glint/test/captured_log.h"
 #include "glint/test/temp_dir.h"
 
 namespace glint::process {
@@ -21,23 +21,7 @@ namespace {
 namespace fs = std::filesystem;
 using model::ProcessingSchedule;
 
-/// A Log that keeps every line, with its level.
-struct Captured {
-    std::shared_ptr<std::vector<std::string>> lines = std::make_shared<std::vector<std::string>>();
-    Log log() const {
-        auto keep = lines;
-        return Log(
-            [keep](LogLevel level, const std::string& text) {
-                keep->push_back(std::string(log_level_name(level)) + ": " + text);
-            },
-            LogLevel::debug);
-    }
-    std::string text() const {
-        std::string all;
-        for (const std::string& line : *lines) all += line + "\n";
-        return all;
-    }
-};
+using Captured = test::CapturedLog;
 
 void write_script(const fs::path& path, const std::string& body) {
     fs::create_directories(path.parent_path());
@@ -128,6 +112,7 @@ TEST(Processing, CheckRefusesMissingProgramsAndEarlyRemovalAndWarnsOfIncompleteI
     write_script(dir / "path" / "record", "exit 0");
     ProcessingOptions options;
     options.path = (dir / "path").string();
+    options.allow_all = true;  // the test helper is not a default program
     Captured log;
     Context context;
     context.log = log.log();
@@ -175,6 +160,37 @@ TEST(Processing, CheckRefusesMissingProgramsAndEarlyRemovalAndWarnsOfIncompleteI
         << log2.text();
 }
 
+TEST(Processing, CheckRefusesArgumentsTheSystemCannotPass) {
+    test::TempDir dir;
+    write_script(dir / "path" / "record", "exit 0");
+    ProcessingOptions options;
+    options.path = (dir / "path").string();
+    options.allow_all = true;
+    Captured log;
+    Context context;
+    context.log = log.log();
+    ProcessingRunner runner(options, context);
+    const std::vector<model::ProcessingEvent> events{
+        event(ProcessingSchedule::collection_completed, dir / "out" / "frame.img", true,
+              {task("record", {"ok", std::string(200 * 1024, 'x')}, false, 20),
+               task("record", {std::string("cut\0here", 8)}, false, 21)})};
+    try {
+        runner.check(events);
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.message(), "nothing written: 2 errors in the inputs");
+    }
+    const std::string said = log.text();
+    EXPECT_NE(said.find("error: cam.platform:20: processing/task: argument 2 is 200 KiB; the "
+                        "system passes at most 128 KiB in one argument"),
+              std::string::npos)
+        << said;
+    EXPECT_NE(said.find("error: cam.platform:21: processing/task: argument 1 holds a NUL byte, "
+                        "which no program can be given"),
+              std::string::npos)
+        << said;
+}
+
 TEST(Processing, RunsInTheImagesFolderThenRemovesTheImage) {
     test::TempDir dir;
     write_script(dir / "path" / "record",
@@ -186,6 +202,7 @@ TEST(Processing, RunsInTheImagesFolderThenRemovesTheImage) {
     std::ofstream(out / "frame-t0000-c0001.img.hdr") << "ENVI";
     ProcessingOptions options;
     options.path = (dir / "path").string();
+    options.allow_all = true;
     Captured log;
     Context context;
     context.log = log.log();
@@ -203,6 +220,12 @@ TEST(Processing, RunsInTheImagesFolderThenRemovesTheImage) {
     EXPECT_EQ(runner.tasks_run(), 2u);
     const std::string said = log.text();
     EXPECT_NE(said.find("info: Recording\n"), std::string::npos) << said;
+    // Each command is shown as it starts, at the level shown without -v.
+    EXPECT_NE(said.find("notice: Processing at capture_completed of Cam -> Frame (task 1, capture "
+                        "1): " +
+                        (dir / "path" / "record").string() + " --in=frame-t0000-c0001.img -x\n"),
+              std::string::npos)
+        << said;
     EXPECT_NE(said.find("info: [record] said on stdout\n"), std::string::npos) << said;
     EXPECT_NE(said.find("info: [record] said on stderr\n"), std::string::npos) << said;
 }
@@ -215,6 +238,7 @@ TEST(Processing, AFailingTaskKeepsTheImage) {
     std::ofstream(out / "f.img") << "data";
     ProcessingOptions options;
     options.path = (dir / "path").string();
+    options.allow_all = true;
     options.keep_going = true;
     Captured log;
     Context context;

@@ -48,6 +48,9 @@ struct Options {
     /// The output file; "-" is `out`. Required for convert, parts and append (append: the
     /// existing `.jsim`, rewritten); dump_platform: empty also means `out`; check: unused.
     std::string output;
+    /// check: --allow-processing, as glint-render's: every processing program counts as
+    /// allowed. Otherwise a task glint-render would refuse is an error of the check.
+    bool allow_processing = false;
     /// How referenced paths are resolved ($VARIABLES from the environment by default).
     dirsig::ReadOptions read_options;
 };

@@ -95,6 +95,9 @@ public:
     const std::vector<std::filesystem::path>& published() const noexcept { return m_published; }
     /// Files planned, in planning order.
     std::vector<std::filesystem::path> planned() const;
+    /// Every file the planned outputs write, with what it is ("image X", "header of image X",
+    /// "lidar file X"), in planning order: an ENVI file writes its data and `<data>.hdr`.
+    std::vector<std::pair<std::filesystem::path, std::string>> written() const;
 
 private:
     struct File;
