@@ -186,7 +186,7 @@ int report_info(const InfoOptions& options, Context& ctx, std::ostream& out) {
         ctx.cancel.throw_if_cancelled();
         try {
             if (!is_stdio_name(file) && is_lidar_bin(file)) {
-                const io::BinFile bin = io::read_bin(file);
+                const BinSummary bin = summarize_bin(file, ctx.cancel);
                 if (options.format == ReportFormat::json) {
                     all.push_back(nlohmann::ordered_json::parse(format_bin_json(file, bin)));
                 } else {

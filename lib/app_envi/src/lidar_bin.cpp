@@ -30,7 +30,8 @@ double bin_start_s(const io::BinPulse& p, std::size_t i) {
     return p.gate_start_s + static_cast<double>(i) * (p.gate_stop_s - p.gate_start_s) / bins;
 }
 
-nlohmann::ordered_json pulse_json(const io::BinPulse& p) {
+nlohmann::ordered_json pulse_json(const BinSummary::Pulse& pulse) {
+    const io::BinPulse& p = pulse.header;
     nlohmann::ordered_json j;
     j["index"] = p.pulse_index;
     j["time_s"] = p.time_s;
@@ -48,18 +49,12 @@ nlohmann::ordered_json pulse_json(const io::BinPulse& p) {
     j["data_type"] = p.data_type;
     j["compression"] = p.compression;
     j["data_bytes"] = p.data_bytes;
-    double passive = 0.0;
-    double active = 0.0;
-    const std::size_t per_pixel = p.values_per_pixel();
-    for (std::size_t i = 0; i < p.data.size(); ++i) {
-        (i % per_pixel == 0 ? passive : active) += p.data[i];
-    }
-    j["total_passive_photons_per_s"] = passive;
-    j["total_active_photons"] = active;
+    j["total_passive_photons_per_s"] = pulse.passive_photons_per_s;
+    j["total_active_photons"] = pulse.active_photons;
     return j;
 }
 
-nlohmann::ordered_json bin_json(const fs::path& path, const io::BinFile& file) {
+nlohmann::ordered_json bin_json(const fs::path& path, const BinSummary& file) {
     const io::BinFileHeader& h = file.header;
     nlohmann::ordered_json j;
     j["file"] = path.string();
@@ -81,7 +76,7 @@ nlohmann::ordered_json bin_json(const fs::path& path, const io::BinFile& file) {
     j["distortion"] = {{"k1", h.k1}, {"k2", h.k2}};
     j["focal_plane_id"] = h.focal_plane_id;
     nlohmann::ordered_json tasks = nlohmann::ordered_json::array();
-    for (const io::BinTask& task : file.tasks) {
+    for (const BinSummary::Task& task : file.tasks) {
         const io::BinTaskHeader& t = task.header;
         nlohmann::ordered_json tj;
         tj["description"] = t.description;
@@ -95,7 +90,7 @@ nlohmann::ordered_json bin_json(const fs::path& path, const io::BinFile& file) {
         tj["laser_width_um"] = t.laser_width_um;
         tj["pulse_count"] = task.pulses.size();
         nlohmann::ordered_json pulses = nlohmann::ordered_json::array();
-        for (const io::BinPulse& p : task.pulses) pulses.push_back(pulse_json(p));
+        for (const BinSummary::Pulse& p : task.pulses) pulses.push_back(pulse_json(p));
         tj["pulses"] = std::move(pulses);
         tasks.push_back(std::move(tj));
     }
@@ -103,10 +98,25 @@ nlohmann::ordered_json bin_json(const fs::path& path, const io::BinFile& file) {
     return j;
 }
 
-/// The ENVI cube of one pulse.
-void write_pulse_cube(const fs::path& out, const fs::path& input, const io::BinFile& file,
+/// One line of a pulse's values (x_count pixels), refused beyond `max_memory_bytes`.
+std::vector<double> line_buffer(const io::BinFileHeader& h, const io::BinPulse& p,
+                                std::size_t max_memory_bytes) {
+    const std::uint64_t values = static_cast<std::uint64_t>(h.x_count) * p.values_per_pixel();
+    if (values * sizeof(double) > max_memory_bytes) {
+        throw usage_error("a line of BIN pulse " + std::to_string(p.pulse_index) + " (" +
+                          std::to_string(h.x_count) + " pixels of " +
+                          std::to_string(p.values_per_pixel()) + " values) needs " +
+                          format_byte_size(static_cast<double>(values * sizeof(double))) +
+                          ", more than --max-memory " +
+                          format_byte_size(static_cast<double>(max_memory_bytes)));
+    }
+    return std::vector<double>(static_cast<std::size_t>(values));
+}
+
+/// The ENVI cube of one pulse, its values read line by line.
+void write_pulse_cube(const fs::path& out, const fs::path& input, io::BinReader& reader,
                       std::size_t task, const io::BinPulse& p, const Context& ctx) {
-    const io::BinFileHeader& h = file.header;
+    const io::BinFileHeader& h = reader.header();
     io::EnviHeader header;
     header.description = "DIRSIG BIN pulse " + std::to_string(p.pulse_index) + " of task " +
                          std::to_string(task) + " of " + input.filename().string();
@@ -134,10 +144,12 @@ void write_pulse_cube(const fs::path& out, const fs::path& input, const io::BinF
     header.set_extra("glint bin pulse time", num(p.time_s));
     header.set_extra("glint bin gate", "{" + num(p.gate_start_s) + ", " + num(p.gate_stop_s) + "}");
     header.set_extra("glint bin samples per bin", std::to_string(p.samples_per_bin));
+    std::vector<double> line = line_buffer(h, p, ctx.max_memory_bytes);
     io::EnviWriter writer(out, header);
-    const std::size_t line_values = static_cast<std::size_t>(h.x_count) * header.bands;
     for (std::size_t y = 0; y < h.y_count; ++y) {
-        writer.write_line(std::span<const double>(p.data).subspan(y * line_values, line_values));
+        ctx.cancel.throw_if_cancelled();
+        reader.read_values(line);
+        writer.write_line(line);
     }
     writer.commit();
 }
@@ -147,9 +159,9 @@ constexpr double kHalfLightSpeedMPerS = 0.5 * kSpeedOfLightMPerS;
 
 /// The range image of one pulse: per pixel the range (m) and photons of its strongest time
 /// sample.
-void write_range_image(const fs::path& out, const fs::path& input, const io::BinFile& file,
+void write_range_image(const fs::path& out, const fs::path& input, io::BinReader& reader,
                        std::size_t task, const io::BinPulse& p, const Context& ctx) {
-    const io::BinFileHeader& h = file.header;
+    const io::BinFileHeader& h = reader.header();
     io::EnviHeader header;
     header.description = "range image of DIRSIG BIN pulse " + std::to_string(p.pulse_index) +
                          " of task " + std::to_string(task) + " of " + input.filename().string();
@@ -166,11 +178,14 @@ void write_range_image(const fs::path& out, const fs::path& input, const io::Bin
     const std::size_t values = p.values_per_pixel();
     const double sample_s =
         (p.gate_stop_s - p.gate_start_s) / (static_cast<double>(p.bin_count) * p.samples_per_bin);
+    std::vector<double> pulse_line = line_buffer(h, p, ctx.max_memory_bytes);
     io::EnviWriter writer(out, header);
     std::vector<double> line(static_cast<std::size_t>(h.x_count) * 2);
     for (std::size_t y = 0; y < h.y_count; ++y) {
+        ctx.cancel.throw_if_cancelled();
+        reader.read_values(pulse_line);
         for (std::size_t x = 0; x < h.x_count; ++x) {
-            const double* v = p.data.data() + (y * h.x_count + x) * values + 1;
+            const double* v = pulse_line.data() + x * values + 1;
             const double* peak = std::max_element(v, v + values - 1);
             const bool returned = values > 1 && *peak > 0.0;
             const double t = bin_start_s(p, static_cast<std::size_t>(peak - v)) + 0.5 * sample_s;
@@ -191,18 +206,51 @@ bool is_lidar_bin(const fs::path& path) {
     return in.read(magic, sizeof magic) && std::string(magic, sizeof magic) == "DIRSIGPROTO";
 }
 
-std::string format_bin_json(const fs::path& path, const io::BinFile& file) {
+std::uint64_t BinSummary::pulse_count() const {
+    std::uint64_t count = 0;
+    for (const Task& t : tasks) count += t.pulses.size();
+    return count;
+}
+
+BinSummary summarize_bin(const fs::path& path, const CancelToken& cancel) {
+    constexpr std::size_t kChunkValues = std::size_t{1} << 16;
+    io::BinReader reader(path);
+    BinSummary summary;
+    summary.header = reader.header();
+    std::vector<double> chunk;
+    while (std::optional<io::BinTaskHeader> task = reader.next_task()) {
+        summary.tasks.push_back({*task, {}});
+        while (std::optional<io::BinPulse> pulse = reader.next_pulse()) {
+            cancel.throw_if_cancelled();
+            BinSummary::Pulse totals{*pulse, 0.0, 0.0};
+            const std::uint64_t per_pixel = pulse->values_per_pixel();
+            std::uint64_t index = 0;  // of the next value within the pulse
+            while (reader.values_left() > 0) {
+                chunk.resize(static_cast<std::size_t>(
+                    std::min<std::uint64_t>(reader.values_left(), kChunkValues)));
+                reader.read_values(chunk);
+                for (const double v : chunk) {
+                    (index % per_pixel == 0 ? totals.passive_photons_per_s : totals.active_photons) += v;
+                    ++index;
+                }
+            }
+            summary.tasks.back().pulses.push_back(std::move(totals));
+        }
+    }
+    return summary;
+}
+
+std::string format_bin_json(const fs::path& path, const BinSummary& file) {
     return json_text(bin_json(path, file), 2);
 }
 
-std::string format_bin_text(const fs::path& path, const io::BinFile& file) {
+std::string format_bin_text(const fs::path& path, const BinSummary& file) {
     const io::BinFileHeader& h = file.header;
     std::ostringstream out;
-    std::size_t pulses = 0;
-    for (const io::BinTask& t : file.tasks) pulses += t.pulses.size();
     out << path.string() << ": DIRSIG BIN version " << int(h.version) << ", "
         << (h.little_endian ? "little" : "big") << " endian, " << h.x_count << " x " << h.y_count
-        << " pixels, " << file.tasks.size() << " task(s), " << pulses << " pulse(s)\n";
+        << " pixels, " << file.tasks.size() << " task(s), " << file.pulse_count()
+        << " pulse(s)\n";
     out << "  created: " << h.created << "; written by: " << h.dirsig_version << "\n";
     if (!h.description.empty()) out << "  description: " << h.description << "\n";
     out << "  scene origin: " << num(h.origin_latitude_deg) << " deg, "
@@ -218,13 +266,13 @@ std::string format_bin_text(const fs::path& path, const io::BinFile& file) {
             << file.tasks[t].pulses.size() << " at " << num(th.pulse_rate_hz) << " Hz, "
             << num(th.pulse_energy_j) << " J, " << num(th.pulse_duration_s) << " s; laser "
             << num(th.laser_center_um) << " um, width " << num(th.laser_width_um) << " um\n";
-        for (const io::BinPulse& p : file.tasks[t].pulses) {
-            const nlohmann::ordered_json j = pulse_json(p);
+        for (const BinSummary::Pulse& pulse : file.tasks[t].pulses) {
+            const io::BinPulse& p = pulse.header;
             out << "    pulse " << p.pulse_index << ": t = " << num(p.time_s) << " s, gate "
                 << num(p.gate_start_s) << " to " << num(p.gate_stop_s) << " s, " << p.bin_count
                 << " bins x " << p.samples_per_bin << " samples; active "
-                << num(j["total_active_photons"].get<double>()) << " photons, passive "
-                << num(j["total_passive_photons_per_s"].get<double>()) << " photons/s\n";
+                << num(pulse.active_photons) << " photons, passive "
+                << num(pulse.passive_photons_per_s) << " photons/s\n";
         }
     }
     return out.str();
@@ -239,29 +287,31 @@ std::vector<fs::path> convert_bin(const fs::path& input, const fs::path& output,
             "a BIN file converts to ENVI cubes (an output ending in .img, .dat, "
             ".bip, …): convert the cube to an image afterwards");
     }
-    const io::BinFile file = io::read_bin(input);
-    std::vector<std::pair<std::size_t, const io::BinPulse*>> all;
-    for (std::size_t t = 0; t < file.tasks.size(); ++t) {
-        for (const io::BinPulse& p : file.tasks[t].pulses) all.emplace_back(t, &p);
+    // The whole file is checked before anything is written.
+    const std::uint64_t count = summarize_bin(input, ctx.cancel).pulse_count();
+    if (pulse && *pulse >= count) {
+        throw usage_error("--pulse " + std::to_string(*pulse) + ": " + input.string() + " holds " +
+                          std::to_string(count) + " pulses (0-based)");
     }
+    io::BinReader reader(input);
     std::vector<fs::path> written;
-    if (pulse) {
-        if (*pulse >= all.size()) {
-            throw usage_error("--pulse " + std::to_string(*pulse) + ": " + input.string() +
-                              " holds " + std::to_string(all.size()) + " pulses (0-based)");
+    std::uint64_t i = 0;
+    for (std::size_t t = 0; std::optional<io::BinTaskHeader> task = reader.next_task(); ++t) {
+        while (std::optional<io::BinPulse> p = reader.next_pulse()) {
+            const std::uint64_t number = i++;
+            if (pulse && number != *pulse) continue;
+            ctx.cancel.throw_if_cancelled();
+            fs::path out = output;
+            if (!pulse) {
+                char suffix[32];
+                std::snprintf(suffix, sizeof suffix, "-p%04llu",
+                              static_cast<unsigned long long>(number));
+                out = output.parent_path() /
+                      (output.stem().string() + suffix + output.extension().string());
+            }
+            write(out, input, reader, t, *p, ctx);
+            written.push_back(out);
         }
-        write(output, input, file, all[*pulse].first, *all[*pulse].second, ctx);
-        written.push_back(output);
-        return written;
-    }
-    for (std::size_t i = 0; i < all.size(); ++i) {
-        char suffix[32];
-        std::snprintf(suffix, sizeof suffix, "-p%04zu", i);
-        fs::path out =
-            output.parent_path() / (output.stem().string() + suffix + output.extension().string());
-        ctx.cancel.throw_if_cancelled();
-        write(out, input, file, all[i].first, *all[i].second, ctx);
-        written.push_back(out);
     }
     return written;
 }

@@ -9,6 +9,7 @@
 #include <bit>
 #include <cstring>
 #include <fstream>
+#include <sstream>
 #include <iterator>
 #include <limits>
 
@@ -23,60 +24,11 @@ namespace fs = std::filesystem;
 
 constexpr char kMagic[] = "DIRSIGPROTO";  // 11 characters, no NUL in the file
 constexpr std::size_t kMagicSize = 11;
-/// The largest pulse data block read (values per pulse × 8 bytes): 4 GiB.
+/// The largest pulse read (values per pulse × 8 bytes): 4 GiB, four times a 256 × 256 receiver
+/// with 2,000 time samples. read_bin also holds at most this much of all pulses together.
 constexpr std::uint64_t kMaxPulseBytes = std::uint64_t{1} << 32;
-
-/// Reads values from the file's bytes in its byte order.
-class Cursor {
-public:
-    Cursor(const std::string& bytes, std::string name) : m_bytes(bytes), m_name(std::move(name)) {}
-
-    void set_little_endian(bool little) {
-        m_swap = little != (std::endian::native == std::endian::little);
-    }
-    std::size_t offset() const { return m_at; }
-    bool at_end() const { return m_at == m_bytes.size(); }
-
-    [[noreturn]] void fail(const std::string& what) const {
-        throw input_error(what + " (at byte " + std::to_string(m_at) + ")",
-                          ErrorContext{m_name, 0, {}});
-    }
-    const char* take(std::size_t n, const char* what) {
-        if (m_bytes.size() - m_at < n) fail("file ends inside the " + std::string(what));
-        const char* p = m_bytes.data() + m_at;
-        m_at += n;
-        return p;
-    }
-    template <class T>
-    T value(const char* what) {
-        T v;
-        std::memcpy(&v, take(sizeof(T), what), sizeof(T));
-        if (m_swap && sizeof(T) > 1) {
-            auto* b = reinterpret_cast<unsigned char*>(&v);
-            std::reverse(b, b + sizeof(T));
-        }
-        return v;
-    }
-    std::string text(std::size_t n, const char* what) {
-        const char* p = take(n, what);
-        std::string s(p, n);
-        s.resize(std::min(s.find('\0'), s.size()));
-        while (!s.empty() && s.back() == ' ') s.pop_back();
-        return s;
-    }
-    template <std::size_t N>
-    std::array<double, N> doubles(const char* what) {
-        std::array<double, N> a{};
-        for (double& v : a) v = value<double>(what);
-        return a;
-    }
-
-private:
-    const std::string& m_bytes;
-    std::string m_name;
-    std::size_t m_at = 0;
-    bool m_swap = false;
-};
+/// Compressed bytes read from the file at a time.
+constexpr std::size_t kReadChunkBytes = std::size_t{1} << 20;
 
 /// Appends values in little-endian order.
 class Out {
@@ -101,170 +53,365 @@ public:
     std::string bytes;
 };
 
-std::vector<double> inflate_doubles(const char* data, std::uint64_t size, std::uint64_t values,
-                                    std::uint8_t compression, bool swap, const Cursor& at) {
-    std::vector<double> out(values);
-    const std::uint64_t want = values * sizeof(double);
-    if (compression == 0) {
-        if (size != want)
-            at.fail("pulse data holds " + std::to_string(size) + " bytes, expected " +
-                    std::to_string(want));
-        std::memcpy(out.data(), data, want);
-    } else if (compression == 1) {
-        uLongf got = static_cast<uLongf>(want);
-        const int rc = ::uncompress(reinterpret_cast<Bytef*>(out.data()), &got,
-                                    reinterpret_cast<const Bytef*>(data), static_cast<uLong>(size));
-        if (rc != Z_OK || got != want) {
-            at.fail("pulse data does not inflate to " + std::to_string(want) + " bytes (zlib: " +
-                    (rc == Z_OK ? std::to_string(got) + " bytes" : std::string(zError(rc))) + ")");
-        }
-    } else {
-        at.fail("unknown pulse data compression " + std::to_string(compression) +
-                ", expected 0 (none) or 1 (zlib)");
+}  // namespace
+
+/// zlib's inflate over a pulse's data, fed from the file in pieces.
+struct BinReader::Inflater {
+    z_stream stream{};
+    bool open = false;
+    bool ended = false;  ///< the zlib stream reached its end
+    std::vector<unsigned char> input;
+
+    Inflater() : input(kReadChunkBytes) {}
+    ~Inflater() { close(); }
+    Inflater(const Inflater&) = delete;
+    Inflater& operator=(const Inflater&) = delete;
+    void reset() {
+        close();
+        stream = z_stream{};
+        if (::inflateInit(&stream) != Z_OK) throw runtime_error("zlib could not start inflating");
+        open = true;
+        ended = false;
     }
-    if (swap) {
+    void close() {
+        if (open) ::inflateEnd(&stream);
+        open = false;
+    }
+};
+
+BinReader::BinReader(const fs::path& path)
+    : m_name(path.string()), m_stream(std::make_unique<std::ifstream>()), m_in(*m_stream) {
+    require_regular_file(path, m_name, "BIN file");
+    static_cast<std::ifstream&>(m_in).open(path, std::ios::binary);
+    if (!m_in) throw io_error("cannot open the BIN file", m_name);
+    std::error_code ec;
+    m_size = fs::file_size(path, ec);
+    if (ec) throw io_error("cannot read the BIN file: " + ec.message(), m_name);
+    read_file_header();
+}
+
+BinReader::BinReader(std::string bytes, std::string name)
+    : m_name(std::move(name)),
+      m_stream(std::make_unique<std::istringstream>(std::move(bytes), std::ios::binary)),
+      m_in(*m_stream) {
+    m_in.seekg(0, std::ios::end);
+    m_size = static_cast<std::uint64_t>(m_in.tellg());
+    m_in.seekg(0);
+    read_file_header();
+}
+
+void BinReader::read_file_header() {
+    if (m_size < kMagicSize || take(kMagicSize, "magic") != std::string(kMagic, kMagicSize)) {
+        m_at = 0;
+        fail("not a DIRSIG BIN file (it does not start with DIRSIGPROTO)");
+    }
+    BinFileHeader& h = m_header;
+    h.version = value<std::uint8_t>("file header");
+    if (h.version > 2) {
+        fail("BIN format version " + std::to_string(h.version) + " is not read, expected 0, 1 or 2");
+    }
+    const std::uint8_t order = value<std::uint8_t>("file header");
+    if (order > 1) {
+        fail("byte order flag " + std::to_string(order) +
+             ", expected 1 (little endian) or 0 (big endian)");
+    }
+    h.little_endian = order == 1;
+    m_swap = h.little_endian != (std::endian::native == std::endian::little);
+    h.created = text(15, "file header");
+    h.dirsig_version = text(32, "file header");
+    h.description = text(256, "file header");
+    h.origin_latitude_deg = value<double>("file header");
+    h.origin_longitude_deg = value<double>("file header");
+    h.origin_height_m = value<double>("file header");
+    h.transmitter_mount = text(16, "file header");
+    h.receiver_mount = text(16, "file header");
+    h.x_count = value<std::uint32_t>("file header");
+    h.y_count = value<std::uint32_t>("file header");
+    h.x_pitch_m = value<double>("file header");
+    h.y_pitch_m = value<double>("file header");
+    if (h.version >= 1) {
+        h.x_offset_m = value<double>("file header");
+        h.y_offset_m = value<double>("file header");
+        h.k1 = value<double>("file header");
+        h.k2 = value<double>("file header");
+    }
+    h.task_count = value<std::uint32_t>("file header");
+    if (h.version >= 2) h.focal_plane_id = value<std::uint16_t>("file header");
+    m_tasks_left = h.task_count;
+}
+
+BinReader::~BinReader() = default;
+
+void BinReader::fail(const std::string& what) const {
+    throw input_error(what + " (at byte " + std::to_string(m_at) + ")",
+                      ErrorContext{m_name, 0, {}});
+}
+
+std::string BinReader::take(std::size_t n, const char* what) {
+    if (m_size - m_at < n) fail("file ends inside the " + std::string(what));
+    std::string bytes(n, '\0');
+    m_in.read(bytes.data(), static_cast<std::streamsize>(n));
+    if (!m_in) throw io_error("cannot read the BIN file", m_name);
+    m_at += n;
+    return bytes;
+}
+
+template <class T>
+T BinReader::value(const char* what) {
+    T v;
+    const std::string bytes = take(sizeof(T), what);
+    std::memcpy(&v, bytes.data(), sizeof(T));
+    if (m_swap && sizeof(T) > 1) {
+        auto* b = reinterpret_cast<unsigned char*>(&v);
+        std::reverse(b, b + sizeof(T));
+    }
+    return v;
+}
+
+std::string BinReader::text(std::size_t n, const char* what) {
+    std::string s = take(n, what);
+    s.resize(std::min(s.find('\0'), s.size()));
+    while (!s.empty() && s.back() == ' ') s.pop_back();
+    return s;
+}
+
+template <std::size_t N>
+std::array<double, N> BinReader::doubles(const char* what) {
+    std::array<double, N> a{};
+    for (double& v : a) v = value<double>(what);
+    return a;
+}
+
+void BinReader::skip_data() {
+    if (m_data_left > 0) {
+        m_in.seekg(static_cast<std::streamoff>(m_data_left), std::ios::cur);
+        if (!m_in) throw io_error("cannot read the BIN file", m_name);
+        m_at += m_data_left;
+    }
+    m_data_left = 0;
+    m_values_left = 0;
+    if (m_inflater) m_inflater->close();
+}
+
+std::optional<BinTaskHeader> BinReader::next_task() {
+    while (next_pulse()) {
+    }
+    if (m_tasks_left == 0) {
+        if (m_at != m_size) fail(std::to_string(m_size - m_at) + " bytes follow the last pulse");
+        return std::nullopt;
+    }
+    --m_tasks_left;
+    BinTaskHeader th;
+    th.description = text(64, "task header");
+    th.start = text(15, "task header");
+    th.stop = text(15, "task header");
+    th.focal_length_mm = value<double>("task header");
+    th.pulse_rate_hz = value<double>("task header");
+    th.pulse_duration_s = value<double>("task header");
+    th.pulse_energy_j = value<double>("task header");
+    th.laser_center_um = value<double>("task header");
+    th.laser_width_um = value<double>("task header");
+    th.pulse_count = value<std::uint32_t>("task header");
+    m_pulses_left = th.pulse_count;
+    return th;
+}
+
+std::optional<BinPulse> BinReader::next_pulse() {
+    skip_data();
+    if (m_pulses_left == 0) return std::nullopt;
+    --m_pulses_left;
+    BinPulse p;
+    const int v = m_header.version;
+    p.time_s = value<double>("pulse time");
+    p.gate_start_s = value<double>("pulse gate");
+    p.gate_stop_s = value<double>("pulse gate");
+    p.bin_count = value<std::uint32_t>("bin count");
+    p.samples_per_bin = v >= 1 ? value<std::uint32_t>("samples per bin") : 1;
+    p.platform_location = doubles<3>("platform location");
+    if (v < 2) p.angle_order = text(3, "angle order");
+    p.platform_rotation = doubles<3>("platform rotation");
+    // Versions 0 and 1 store a mount's pointing offset (3 × float64, then a 3-character angle
+    // order): kept as the translation of its affine.
+    const auto legacy_offset = [this](Affine16& affine, const char* what) {
+        const auto offset = doubles<3>(what);
+        affine[3] = offset[0];
+        affine[7] = offset[1];
+        affine[11] = offset[2];
+        (void)text(3, what);
+    };
+    if (v >= 2) {
+        p.transmitter_to_mount = doubles<16>("transmitter affine");
+    } else {
+        legacy_offset(p.transmitter_to_mount, "transmitter mount offset");
+    }
+    p.transmitter_mount_pointing = doubles<3>("transmitter pointing");
+    if (v >= 2) {
+        p.transmitter_mount_to_platform = doubles<16>("transmitter mount affine");
+        p.receiver_to_mount = doubles<16>("receiver affine");
+    } else {
+        legacy_offset(p.receiver_to_mount, "receiver mount offset");
+    }
+    p.receiver_mount_pointing = doubles<3>("receiver pointing");
+    if (v >= 2) p.receiver_mount_to_platform = doubles<16>("receiver mount affine");
+    p.data_type = value<std::int32_t>("pulse data type");
+    p.compression = value<std::uint8_t>("compression type");
+    if (v >= 2) {
+        p.pulse_index = value<std::uint32_t>("pulse index");
+    } else {
+        (void)value<std::uint8_t>("delta histogram flag");
+        p.pulse_index = m_pulse_number;
+    }
+    ++m_pulse_number;
+    p.data_bytes = value<std::uint64_t>("pulse data size");
+    if (v >= 2) {
+        p.transmit_mueller = doubles<16>("transmit Mueller matrix");
+        p.receive_mueller = doubles<16>("receive Mueller matrix");
+    }
+    if (p.data_type != 5) {
+        fail("pulse data type " + std::to_string(p.data_type) + " is not read, expected 5 (float64)");
+    }
+    if (p.samples_per_bin == 0) fail("samples per bin is 0");
+    if (p.compression > 1) {
+        fail("unknown pulse data compression " + std::to_string(p.compression) +
+             ", expected 0 (none) or 1 (zlib)");
+    }
+    // Overflow-checked: x · y · (1 + bins · samples) values of 8 bytes.
+    std::uint64_t per_pixel = 0;
+    std::uint64_t values = 0;
+    std::uint64_t bytes = 0;
+    if (__builtin_mul_overflow(std::uint64_t{p.bin_count}, std::uint64_t{p.samples_per_bin},
+                               &per_pixel) ||
+        __builtin_add_overflow(per_pixel, 1, &per_pixel) ||
+        __builtin_mul_overflow(std::uint64_t{m_header.x_count} * m_header.y_count, per_pixel,
+                               &values) ||
+        __builtin_mul_overflow(values, sizeof(double), &bytes) || bytes > kMaxPulseBytes) {
+        fail("a pulse of " + std::to_string(m_header.x_count) + " x " +
+             std::to_string(m_header.y_count) + " pixels of 1 + " + std::to_string(p.bin_count) +
+             " x " + std::to_string(p.samples_per_bin) +
+             " values is larger than glint reads (4 GiB)");
+    }
+    if (p.data_bytes > m_size - m_at) {
+        fail("pulse data of " + std::to_string(p.data_bytes) + " bytes runs past the end of the " +
+             "file (" + std::to_string(m_size - m_at) + " bytes left)");
+    }
+    if (p.compression == 0 && p.data_bytes != bytes) {
+        fail("pulse data holds " + std::to_string(p.data_bytes) + " bytes, expected " +
+             std::to_string(bytes));
+    }
+    m_compression = p.compression;
+    m_data_left = p.data_bytes;
+    m_values_left = values;
+    if (m_compression == 1) {
+        if (!m_inflater) m_inflater = std::make_unique<Inflater>();
+        m_inflater->reset();
+    }
+    return p;
+}
+
+void BinReader::refill() {
+    Inflater& z = *m_inflater;
+    if (z.stream.avail_in != 0 || m_data_left == 0) return;
+    const std::size_t n =
+        static_cast<std::size_t>(std::min<std::uint64_t>(m_data_left, z.input.size()));
+    m_in.read(reinterpret_cast<char*>(z.input.data()), static_cast<std::streamsize>(n));
+    if (!m_in) throw io_error("cannot read the BIN file", m_name);
+    m_at += n;
+    m_data_left -= n;
+    z.stream.next_in = z.input.data();
+    z.stream.avail_in = static_cast<uInt>(n);
+}
+
+void BinReader::inflate_into(unsigned char* bytes, std::size_t want) {
+    Inflater& z = *m_inflater;
+    std::size_t done = 0;
+    while (done < want) {
+        if (z.ended) fail("pulse data inflates to fewer bytes than its values need");
+        refill();
+        const std::size_t room = std::min<std::size_t>(want - done, std::size_t{1} << 30);
+        z.stream.next_out = bytes + done;
+        z.stream.avail_out = static_cast<uInt>(room);
+        const int rc = ::inflate(&z.stream, Z_NO_FLUSH);
+        done += room - z.stream.avail_out;
+        if (rc == Z_STREAM_END) {
+            z.ended = true;
+        } else if (rc == Z_BUF_ERROR && z.stream.avail_in == 0 && m_data_left == 0) {
+            fail("pulse data ends before it inflates to its values");
+        } else if (rc != Z_OK && rc != Z_BUF_ERROR) {
+            fail(std::string("pulse data does not inflate (zlib: ") +
+                 (z.stream.msg != nullptr ? z.stream.msg : zError(rc)) + ")");
+        }
+    }
+}
+
+void BinReader::finish_inflating() {
+    Inflater& z = *m_inflater;
+    while (!z.ended) {
+        refill();
+        unsigned char extra = 0;
+        z.stream.next_out = &extra;
+        z.stream.avail_out = 1;
+        const int rc = ::inflate(&z.stream, Z_NO_FLUSH);
+        if (z.stream.avail_out == 0) fail("pulse data inflates to more bytes than its values");
+        if (rc == Z_STREAM_END) {
+            z.ended = true;
+        } else if (rc == Z_BUF_ERROR && z.stream.avail_in == 0 && m_data_left == 0) {
+            fail("pulse data ends inside its zlib stream");
+        } else if (rc != Z_OK && rc != Z_BUF_ERROR) {
+            fail(std::string("pulse data does not inflate (zlib: ") +
+                 (z.stream.msg != nullptr ? z.stream.msg : zError(rc)) + ")");
+        }
+    }
+    if (z.stream.avail_in != 0 || m_data_left != 0) fail("pulse data holds bytes after its zlib stream");
+}
+
+void BinReader::read_values(std::span<double> out) {
+    if (out.size() > m_values_left) {
+        throw usage_error("BinReader: " + std::to_string(out.size()) + " values asked, " +
+                          std::to_string(m_values_left) + " left in the pulse");
+    }
+    if (out.empty()) return;  // (no memcpy from a null pointer for a pulse without values)
+    auto* bytes = reinterpret_cast<unsigned char*>(out.data());
+    const std::size_t want = out.size() * sizeof(double);
+    if (m_compression == 0) {
+        m_in.read(reinterpret_cast<char*>(bytes), static_cast<std::streamsize>(want));
+        if (!m_in) throw io_error("cannot read the BIN file", m_name);
+        m_at += want;
+        m_data_left -= want;
+    } else {
+        inflate_into(bytes, want);
+    }
+    m_values_left -= out.size();
+    if (m_swap) {
         for (double& v : out) {
             auto* b = reinterpret_cast<unsigned char*>(&v);
             std::reverse(b, b + sizeof(double));
         }
     }
-    return out;
+    // After the last value the zlib stream must end, with nothing after it.
+    if (m_values_left == 0 && m_compression == 1) finish_inflating();
 }
-
-/// A version 0/1 mount pointing offset (3 × float64, then a 3-character angle order): kept as
-/// the translation of `affine`.
-void read_legacy_offset(Cursor& c, Affine16& affine, const char* what) {
-    const auto offset = c.doubles<3>(what);
-    affine[3] = offset[0];
-    affine[7] = offset[1];
-    affine[11] = offset[2];
-    (void)c.text(3, what);
-}
-
-BinPulse read_pulse(Cursor& c, const BinFileHeader& h, bool swap) {
-    BinPulse p;
-    const int v = h.version;
-    p.time_s = c.value<double>("pulse time");
-    p.gate_start_s = c.value<double>("pulse gate");
-    p.gate_stop_s = c.value<double>("pulse gate");
-    p.bin_count = c.value<std::uint32_t>("bin count");
-    p.samples_per_bin = v >= 1 ? c.value<std::uint32_t>("samples per bin") : 1;
-    p.platform_location = c.doubles<3>("platform location");
-    if (v < 2) p.angle_order = c.text(3, "angle order");
-    p.platform_rotation = c.doubles<3>("platform rotation");
-    if (v >= 2) {
-        p.transmitter_to_mount = c.doubles<16>("transmitter affine");
-    } else {
-        read_legacy_offset(c, p.transmitter_to_mount, "transmitter mount offset");
-    }
-    p.transmitter_mount_pointing = c.doubles<3>("transmitter pointing");
-    if (v >= 2) {
-        p.transmitter_mount_to_platform = c.doubles<16>("transmitter mount affine");
-        p.receiver_to_mount = c.doubles<16>("receiver affine");
-    } else {
-        read_legacy_offset(c, p.receiver_to_mount, "receiver mount offset");
-    }
-    p.receiver_mount_pointing = c.doubles<3>("receiver pointing");
-    if (v >= 2) p.receiver_mount_to_platform = c.doubles<16>("receiver mount affine");
-    p.data_type = c.value<std::int32_t>("pulse data type");
-    p.compression = c.value<std::uint8_t>("compression type");
-    if (v >= 2) {
-        p.pulse_index = c.value<std::uint32_t>("pulse index");
-    } else {
-        (void)c.value<std::uint8_t>("delta histogram flag");
-    }
-    p.data_bytes = c.value<std::uint64_t>("pulse data size");
-    if (v >= 2) {
-        p.transmit_mueller = c.doubles<16>("transmit Mueller matrix");
-        p.receive_mueller = c.doubles<16>("receive Mueller matrix");
-    }
-    if (p.data_type != 5) {
-        c.fail("pulse data type " + std::to_string(p.data_type) +
-               " is not read, expected 5 (float64)");
-    }
-    if (p.samples_per_bin == 0) c.fail("samples per bin is 0");
-    const std::uint64_t values = static_cast<std::uint64_t>(h.x_count) * h.y_count *
-                                 (1 + static_cast<std::uint64_t>(p.bin_count) * p.samples_per_bin);
-    if (values * sizeof(double) > kMaxPulseBytes || p.data_bytes > kMaxPulseBytes) {
-        c.fail("a pulse of " + std::to_string(values) +
-               " values is larger than glint reads (4 GiB)");
-    }
-    const Cursor at = c;
-    const char* data = c.take(p.data_bytes, "pulse data");
-    p.data = inflate_doubles(data, p.data_bytes, values, p.compression, swap, at);
-    return p;
-}
-
-}  // namespace
 
 BinFile read_bin(const fs::path& path) {
-    require_regular_file(path, path.string(), "BIN file");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw io_error("cannot open the BIN file", path.string());
-    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in.bad()) throw io_error("cannot read the BIN file", path.string());
-    Cursor c(bytes, path.string());
-    if (bytes.size() < kMagicSize || bytes.compare(0, kMagicSize, kMagic) != 0) {
-        c.fail("not a DIRSIG BIN file (it does not start with DIRSIGPROTO)");
-    }
-    (void)c.take(kMagicSize, "magic");
+    BinReader reader(path);
     BinFile file;
-    BinFileHeader& h = file.header;
-    h.version = c.value<std::uint8_t>("file header");
-    if (h.version > 2)
-        c.fail("BIN format version " + std::to_string(h.version) +
-               " is not read, expected 0, 1 or 2");
-    const std::uint8_t order = c.value<std::uint8_t>("file header");
-    if (order > 1)
-        c.fail("byte order flag " + std::to_string(order) +
-               ", expected 1 (little endian) or 0 (big endian)");
-    h.little_endian = order == 1;
-    c.set_little_endian(h.little_endian);
-    const bool swap = h.little_endian != (std::endian::native == std::endian::little);
-    h.created = c.text(15, "file header");
-    h.dirsig_version = c.text(32, "file header");
-    h.description = c.text(256, "file header");
-    h.origin_latitude_deg = c.value<double>("file header");
-    h.origin_longitude_deg = c.value<double>("file header");
-    h.origin_height_m = c.value<double>("file header");
-    h.transmitter_mount = c.text(16, "file header");
-    h.receiver_mount = c.text(16, "file header");
-    h.x_count = c.value<std::uint32_t>("file header");
-    h.y_count = c.value<std::uint32_t>("file header");
-    h.x_pitch_m = c.value<double>("file header");
-    h.y_pitch_m = c.value<double>("file header");
-    if (h.version >= 1) {
-        h.x_offset_m = c.value<double>("file header");
-        h.y_offset_m = c.value<double>("file header");
-        h.k1 = c.value<double>("file header");
-        h.k2 = c.value<double>("file header");
-    }
-    h.task_count = c.value<std::uint32_t>("file header");
-    if (h.version >= 2) h.focal_plane_id = c.value<std::uint16_t>("file header");
-    std::uint32_t pulse_number = 0;
-    for (std::uint32_t t = 0; t < h.task_count; ++t) {
+    file.header = reader.header();
+    std::uint64_t held_bytes = 0;
+    while (std::optional<BinTaskHeader> task_header = reader.next_task()) {
         BinTask task;
-        BinTaskHeader& th = task.header;
-        th.description = c.text(64, "task header");
-        th.start = c.text(15, "task header");
-        th.stop = c.text(15, "task header");
-        th.focal_length_mm = c.value<double>("task header");
-        th.pulse_rate_hz = c.value<double>("task header");
-        th.pulse_duration_s = c.value<double>("task header");
-        th.pulse_energy_j = c.value<double>("task header");
-        th.laser_center_um = c.value<double>("task header");
-        th.laser_width_um = c.value<double>("task header");
-        th.pulse_count = c.value<std::uint32_t>("task header");
-        for (std::uint32_t p = 0; p < th.pulse_count; ++p) {
-            task.pulses.push_back(read_pulse(c, h, swap));
-            // Versions 0 and 1 store no pulse index: the pulses are numbered in file order.
-            if (h.version < 2) task.pulses.back().pulse_index = pulse_number;
-            ++pulse_number;
+        task.header = *task_header;
+        while (std::optional<BinPulse> pulse = reader.next_pulse()) {
+            const std::uint64_t values = reader.values_left();
+            held_bytes += values * sizeof(double);
+            if (held_bytes > kMaxPulseBytes) {
+                throw input_error("the pulses' values take more than 4 GiB: read it pulse by pulse",
+                                  ErrorContext{path.string(), 0, {}});
+            }
+            pulse->data.resize(static_cast<std::size_t>(values));
+            reader.read_values(pulse->data);
+            task.pulses.push_back(std::move(*pulse));
         }
         file.tasks.push_back(std::move(task));
     }
-    if (!c.at_end())
-        c.fail(std::to_string(bytes.size() - c.offset()) + " bytes follow the last pulse");
     return file;
 }
 

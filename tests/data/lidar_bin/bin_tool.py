@@ -6,6 +6,10 @@ docs/lidar-bin.md with the standard library only (struct, zlib), for glint's tes
   bin_tool.py write OUT.bin --version V --order little|big   writes the sample file below
   bin_tool.py read IN.bin                                     prints the file as JSON
   bin_tool.py check IN.bin                                    compares IN with the sample
+  bin_tool.py forge OUT.bin --x X --y Y --bins B --samples S [--claim N]
+      a hostile version-2 file of one pulse: X x Y pixels of 1 + B * S zero values, zlib
+      compressed a megabyte at a time (a zip bomb when they are many), its data size field
+      N when --claim is given (data claimed beyond the end of the file)
 
 The sample: 3 x 2 pixels, 2 tasks (2 pulses, then 1), 4 bins x 2 samples per bin (version 0:
 1 sample), values v = 1000 * pulse + 10 * pixel + value index (the passive rate first)."""
@@ -195,6 +199,47 @@ def check(path):
     return f
 
 
+def forge(path, x, y, bins, samples, claim=None):
+    out = bytearray(b"DIRSIGPROTO")
+    pack = lambda fmt, *v: out.extend(struct.pack("<" + fmt, *v))
+    pack("BB", 2, 1)
+    out.extend(b"\0" * (15 + 32 + 256))
+    pack("3d", 0.0, 0.0, 0.0)
+    out.extend(b"\0" * 32)
+    pack("2I", x, y)
+    pack("6d", 1e-5, 1e-5, 0.0, 0.0, 0.0, 0.0)
+    pack("I", 1)
+    pack("H", 0)
+    out.extend(b"\0" * (64 + 15 + 15))
+    pack("6d", 50.0, 1000.0, 5e-9, 1e-3, 1.064, 0.001)
+    pack("I", 1)
+    identity = [1.0 if i % 5 == 0 else 0.0 for i in range(16)]
+    pack("3d", 0.0, 6e-6, 7e-6)
+    pack("2I", bins, samples)
+    pack("6d", 0, 0, 0, 0, 0, 0)
+    pack("16d", *identity)
+    pack("3d", 0, 0, 0)
+    pack("16d", *identity)
+    pack("16d", *identity)
+    pack("3d", 0, 0, 0)
+    pack("16d", *identity)
+    pack("iBI", 5, 1, 0)
+    zeros = (x * y * (1 + bins * samples) * 8) if x * y * (1 + bins * samples) < 2 ** 31 else 0
+    z = zlib.compressobj(9)
+    data = bytearray()
+    chunk = bytes(1 << 20)
+    while zeros > 0:
+        n = min(zeros, len(chunk))
+        data.extend(z.compress(chunk[:n]))
+        zeros -= n
+    data.extend(z.flush())
+    pack("Q", len(data) if claim is None else claim)
+    pack("16d", *identity)
+    pack("16d", *identity)
+    out.extend(data)
+    open(path, "wb").write(bytes(out))
+
+
 if __name__ == "__main__":
     mode = sys.argv[1]
     if mode == "write":
@@ -206,6 +251,10 @@ if __name__ == "__main__":
             for p in task["pulses"]:
                 p["values"] = len(p["values"])
         print(json.dumps(f, indent=1))
+    elif mode == "forge":
+        args = dict(zip(sys.argv[3::2], sys.argv[4::2]))
+        forge(sys.argv[2], int(args["--x"]), int(args["--y"]), int(args["--bins"]),
+              int(args["--samples"]), int(args["--claim"]) if "--claim" in args else None)
     elif mode == "check":
         f = check(sys.argv[2])
         print("ok version %d %s" % (f["version"], f["order"]))

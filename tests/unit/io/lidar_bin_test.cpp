@@ -8,8 +8,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <optional>
+#include <vector>
 
 #include "glint/core/error.h"
 #include "glint/test/temp_dir.h"
@@ -141,9 +145,101 @@ TEST(LidarBin, NotABinFileAndACutFileAreInputErrorsAtTheByte) {
         FAIL() << "expected an error";
     } catch (const Error& e) {
         EXPECT_EQ(e.category(), ErrorCategory::input);
-        EXPECT_NE(e.message().find("file ends inside the pulse data (at byte "), std::string::npos)
+        // The pulse's data size is checked against what is left of the file before any of it is
+        // read (a header may claim any size).
+        EXPECT_NE(e.message().find(" bytes runs past the end of the file ("), std::string::npos)
             << e.message();
     }
+}
+
+/// Reads every value of a BIN file held in memory, in pieces of 7 values.
+std::size_t read_bin_values(std::string bytes) {
+    BinReader reader(std::move(bytes), "m.bin");
+    std::size_t count = 0;
+    std::vector<double> piece;
+    while (reader.next_task()) {
+        while (reader.next_pulse()) {
+            while (reader.values_left() > 0) {
+                piece.resize(std::min<std::size_t>(7, reader.values_left()));
+                reader.read_values(piece);
+                count += piece.size();
+            }
+        }
+    }
+    return count;
+}
+
+std::string file_bytes(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+TEST(BinReader, PiecesOfAnySizeGiveTheValuesReadBinGives) {
+    test::TempDir dir;
+    write_bin(dir / "a.bin", sample());
+    const BinFile whole = read_bin(dir / "a.bin");
+    for (const std::size_t piece : {std::size_t{1}, std::size_t{5}, std::size_t{1000}}) {
+        BinReader reader(file_bytes(dir / "a.bin"), "a.bin");
+        std::size_t task = 0;
+        while (reader.next_task()) {
+            std::size_t pulse = 0;
+            while (const std::optional<BinPulse> p = reader.next_pulse()) {
+                EXPECT_TRUE(p->data.empty());
+                std::vector<double> values;
+                std::vector<double> buffer;
+                while (reader.values_left() > 0) {
+                    buffer.resize(std::min<std::size_t>(piece, reader.values_left()));
+                    reader.read_values(buffer);
+                    values.insert(values.end(), buffer.begin(), buffer.end());
+                }
+                EXPECT_EQ(values, whole.tasks.at(task).pulses.at(pulse).data) << piece;
+                ++pulse;
+            }
+            ++task;
+        }
+        EXPECT_EQ(task, 1u);
+    }
+    // Pulses whose values are not read are skipped, unread.
+    BinReader skipping(file_bytes(dir / "a.bin"), "a.bin");
+    ASSERT_TRUE(skipping.next_task());
+    ASSERT_TRUE(skipping.next_pulse());
+    ASSERT_TRUE(skipping.next_pulse());
+    EXPECT_FALSE(skipping.next_pulse());
+    EXPECT_FALSE(skipping.next_task());
+}
+
+TEST(BinReader, APulseWithoutValuesIsRead) {
+    // 0 x 3 pixels: no values (a memcpy of nothing from nowhere was undefined behaviour).
+    BinFile f = sample();
+    f.header.x_count = 0;
+    for (BinPulse& p : f.tasks[0].pulses) p.data.clear();
+    test::TempDir dir;
+    write_bin(dir / "empty.bin", f);
+    const BinFile read = read_bin(dir / "empty.bin");
+    ASSERT_EQ(read.tasks.at(0).pulses.size(), 2u);
+    EXPECT_TRUE(read.tasks[0].pulses[0].data.empty());
+}
+
+TEST(BinReader, DataThatDoesNotInflateToItsValuesIsRefused) {
+    test::TempDir dir;
+    write_bin(dir / "a.bin", sample());
+    const std::string bytes = file_bytes(dir / "a.bin");
+    const auto message_of = [](std::string data) {
+        try {
+            (void)read_bin_values(std::move(data));
+        } catch (const Error& e) {
+            return e.message();
+        }
+        return std::string("(no error)");
+    };
+    // The first pulse's data: its size field lies 8 + 128 bytes before its data, whose zlib
+    // stream is what follows. Corrupt a byte in the middle of the stream.
+    std::string corrupt = bytes;
+    corrupt[corrupt.size() - 40] = static_cast<char>(corrupt[corrupt.size() - 40] ^ 0x5A);
+    EXPECT_NE(message_of(corrupt).find("pulse data"), std::string::npos) << message_of(corrupt);
+    // Bytes after the last pulse.
+    EXPECT_NE(message_of(bytes + "xyz").find("3 bytes follow the last pulse"), std::string::npos)
+        << message_of(bytes + "xyz");
 }
 
 }  // namespace

@@ -12,6 +12,10 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <istream>
+#include <memory>
+#include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -103,9 +107,75 @@ struct BinFile {
     std::vector<BinTask> tasks;
 };
 
-/// Reads a BIN file (versions 0–2, either byte order; zlib or uncompressed float64 data).
-/// Throws glint::Error (io) when it cannot be read, (input, naming the file and the byte
-/// offset) when it is not a BIN file or is truncated or inconsistent.
+/// Reads a BIN file as a stream: the file header at construction, then each task's header
+/// and each pulse's header in file order, and a pulse's data in pieces of the caller's size,
+/// inflated as they are read. Nothing but the current pulse's header and a 1 MiB window of
+/// its compressed data is held, so memory does not grow with the file, a pulse or what its
+/// data claims to inflate to (a zip bomb). Throws glint::Error (io) when the file cannot be
+/// read, (input, naming the file and the byte offset) when it is not a BIN file or is
+/// truncated or inconsistent: counts whose product overflows, a pulse whose data would lie
+/// beyond the end of the file, data that does not inflate to exactly its values.
+class BinReader {
+public:
+    /// Opens `path` (a regular file) and reads its file header.
+    explicit BinReader(const std::filesystem::path& path);
+    /// Reads the file `bytes` from memory, named `name` in messages (tests, fuzzing).
+    BinReader(std::string bytes, std::string name);
+    ~BinReader();
+    BinReader(const BinReader&) = delete;
+    BinReader& operator=(const BinReader&) = delete;
+
+    const BinFileHeader& header() const noexcept { return m_header; }
+
+    /// The next task's header (what is left of the current task is skipped), or nullopt
+    /// after the last one, when nothing may follow it in the file.
+    std::optional<BinTaskHeader> next_task();
+    /// The next pulse of the current task with its header and an empty `data` (what is left
+    /// of the current pulse's data is skipped, unread), or nullopt after the task's last.
+    /// Versions 0 and 1 number pulses in file order.
+    std::optional<BinPulse> next_pulse();
+    /// The values of the current pulse not read yet.
+    std::uint64_t values_left() const noexcept { return m_values_left; }
+    /// Fills `out` with the current pulse's next values (native byte order). Throws
+    /// glint::Error (usage) for more values than are left, (input) for data that does not
+    /// inflate to them; after the pulse's last value, also for data that holds more.
+    void read_values(std::span<double> out);
+
+private:
+    struct Inflater;
+    std::string m_name;  ///< the file, for messages
+    std::unique_ptr<std::istream> m_stream;
+    std::istream& m_in;
+    std::uint64_t m_size = 0;  ///< the file's bytes
+    std::uint64_t m_at = 0;    ///< where the next read starts
+    bool m_swap = false;
+    BinFileHeader m_header;
+    std::uint32_t m_tasks_left = 0;
+    std::uint32_t m_pulses_left = 0;
+    std::uint32_t m_pulse_number = 0;
+    std::uint8_t m_compression = 0;
+    std::uint64_t m_data_left = 0;    ///< compressed bytes of the current pulse not read
+    std::uint64_t m_values_left = 0;  ///< values of the current pulse not returned
+    std::unique_ptr<Inflater> m_inflater;
+
+    [[noreturn]] void fail(const std::string& what) const;
+    std::string take(std::size_t n, const char* what);
+    template <class T>
+    T value(const char* what);
+    std::string text(std::size_t n, const char* what);
+    template <std::size_t N>
+    std::array<double, N> doubles(const char* what);
+    void read_file_header();
+    void skip_data();
+    void refill();
+    void inflate_into(unsigned char* bytes, std::size_t count);
+    void finish_inflating();
+};
+
+/// Reads a whole BIN file (versions 0–2, either byte order; zlib or uncompressed float64
+/// data) through a BinReader, every pulse's values held: for small files (tests, tools).
+/// Throws what BinReader throws, and glint::Error (input) for a file whose values would take
+/// more than 4 GiB.
 BinFile read_bin(const std::filesystem::path& path);
 
 /// Writes `file` as a version-2, little-endian BIN file with zlib-compressed data, atomically
