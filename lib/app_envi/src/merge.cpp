@@ -40,6 +40,9 @@ constexpr const char* kCommandLineKey = "glint command line";
 
 /// The largest --expect file read (as glint-render's --schedule).
 constexpr std::size_t kMaxScheduleBytes = std::size_t{2} << 30;
+/// The most captures a whole file may have: what its merged header can list within the ENVI
+/// header limit, at 32 bytes a capture at the least (524,288).
+constexpr std::uint64_t kMaxWholeCaptures = io::kMaxEnviHeaderBytes / 32;
 /// Bytes copied at a time.
 constexpr std::size_t kCopyChunkBytes = std::size_t{16} << 20;
 
@@ -54,7 +57,10 @@ struct Piece {
     std::uint64_t first_line = 0;  ///< lines first_line … end_line − 1 of each capture
     std::uint64_t end_line = 0;
     std::uint64_t whole_lines = 0;              ///< lines per capture of the whole file
-    std::vector<std::uint64_t> whole_captures;  ///< the whole file's captures
+    /// The whole file's captures as index runs ("{0:4, 7}"), compared between parts and
+    /// expanded once per file (WholeFile::captures), never per part.
+    std::string whole_captures;
+    std::uint64_t whole_capture_count = 0;
 };
 
 /// One band of lines of one capture, from a piece.
@@ -70,6 +76,7 @@ struct WholeFile {
     fs::path relative;
     std::vector<Piece> pieces;
     io::EnviHeader header;                       ///< of the merged file
+    std::vector<std::uint64_t> captures;         ///< the whole file's captures, sorted
     std::vector<std::vector<Segment>> segments;  ///< per whole capture, in line order
 };
 
@@ -147,7 +154,8 @@ bool read_piece(Piece& piece, const fs::path& shown, Problems& problems) {
         piece.first_line = 0;
         piece.end_line = *lines;
         piece.whole_lines = *lines;
-        piece.whole_captures = piece.captures;
+        piece.whole_captures = io::format_index_runs(piece.captures);
+        piece.whole_capture_count = piece.captures.size();
         return true;
     }
     const std::vector<std::string> band = io::envi_list_items(rows.value_or(""));
@@ -162,8 +170,9 @@ bool read_piece(Piece& piece, const fs::path& shown, Problems& problems) {
         b = end.value_or(0);
     }
     const std::optional<std::uint64_t> l = whole_number(whole_lines);
-    const std::optional<std::vector<std::uint64_t>> w =
-        whole_captures ? io::parse_index_runs(*whole_captures) : std::nullopt;
+    // Counted, not expanded: "{0:4294967296}" is a few bytes of header.
+    const std::optional<std::uint64_t> w =
+        whole_captures ? io::count_index_runs(*whole_captures) : std::nullopt;
     if (!band_read || !l || !w || b <= a || b > *l || b - a != *lines) {
         problems.add(shown, std::string("its part keys (\"") + io::kPartRowsKey + "\", \"" +
                                 io::kPartLinesPerCaptureKey + "\", \"" + io::kPartCapturesKey +
@@ -174,7 +183,8 @@ bool read_piece(Piece& piece, const fs::path& shown, Problems& problems) {
     piece.first_line = a;
     piece.end_line = b;
     piece.whole_lines = *l;
-    piece.whole_captures = *w;
+    piece.whole_captures = *whole_captures;
+    piece.whole_capture_count = *w;
     return true;
 }
 
@@ -221,7 +231,7 @@ std::vector<fs::path> files_under(const fs::path& part) {
 /// "5 (t0c2)": a capture's global index and id.
 std::string capture_name(const WholeFile& file, std::size_t position) {
     const Segment& s = file.segments[position].front();
-    return std::to_string(s.piece->whole_captures[position]) + " (" + s.piece->ids[s.position] +
+    return std::to_string(file.captures[position]) + " (" + s.piece->ids[s.position] +
            ")";
 }
 
@@ -249,7 +259,20 @@ void resolve(WholeFile& file, const fs::path& shown, Problems& problems) {
         }
     }
     if (!consistent) return;
-    const std::vector<std::uint64_t>& whole = first.whole_captures;
+    // The merged header lists every capture (index, id, window, date-time: 32 bytes at the
+    // least), so a whole file of more captures than a header can hold is no glint-render
+    // file: its list is refused before it is expanded.
+    if (first.whole_capture_count > kMaxWholeCaptures) {
+        problems.add(shown, "its parts' \"" + std::string(io::kPartCapturesKey) + "\" lists " +
+                                std::to_string(first.whole_capture_count) +
+                                " captures, more than the header of a merged file can list (" +
+                                std::to_string(kMaxWholeCaptures) + "): not parts glint-render "
+                                "wrote");
+        return;
+    }
+    file.captures =
+        io::parse_index_runs(first.whole_captures).value_or(std::vector<std::uint64_t>{});
+    const std::vector<std::uint64_t>& whole = file.captures;
     const std::uint64_t lines = first.whole_lines;
     file.segments.assign(whole.size(), {});
     for (const Piece& piece : file.pieces) {

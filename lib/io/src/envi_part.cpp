@@ -3,6 +3,8 @@
 #include "glint/io/envi_part.h"
 
 #include <charconv>
+#include <cstdint>
+#include <utility>
 
 #include "glint/io/envi.h"
 
@@ -15,6 +17,26 @@ std::optional<std::uint64_t> parse_index(std::string_view text) {
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (ec != std::errc{} || end != text.data() + text.size()) return std::nullopt;
     return value;
+}
+
+/// The runs [a, b) of a brace list of indices and runs, each after the last; nullopt for
+/// anything else.
+std::optional<std::vector<std::pair<std::uint64_t, std::uint64_t>>> parse_runs(
+    std::string_view value) {
+    std::vector<std::pair<std::uint64_t, std::uint64_t>> runs;
+    for (const std::string& item : envi_list_items(value)) {
+        const std::size_t colon = item.find(':');
+        std::optional<std::uint64_t> a = parse_index(std::string_view(item).substr(0, colon));
+        std::optional<std::uint64_t> b =
+            colon == std::string::npos
+                ? (a && *a < UINT64_MAX ? std::optional(*a + 1) : std::nullopt)
+                : parse_index(std::string_view(item).substr(colon + 1));
+        if (!a || !b || *b <= *a || (!runs.empty() && *a < runs.back().second)) {
+            return std::nullopt;
+        }
+        runs.emplace_back(*a, *b);
+    }
+    return runs;
 }
 
 }  // namespace
@@ -33,18 +55,27 @@ std::string format_index_runs(const std::vector<std::uint64_t>& sorted) {
 }
 
 std::optional<std::vector<std::uint64_t>> parse_index_runs(std::string_view value) {
+    const auto runs = parse_runs(value);
+    const std::optional<std::uint64_t> count = count_index_runs(value);
+    // More than 2^32 indices is no glint file (and would be 32 GiB listed): count_index_runs
+    // says how many a list names without listing them.
+    if (!runs || !count || *count > (std::uint64_t{1} << 32)) return std::nullopt;
     std::vector<std::uint64_t> out;
-    for (const std::string& item : envi_list_items(value)) {
-        const std::size_t colon = item.find(':');
-        std::optional<std::uint64_t> a = parse_index(std::string_view(item).substr(0, colon));
-        std::optional<std::uint64_t> b =
-            colon == std::string::npos ? (a ? std::optional(*a + 1) : std::nullopt)
-                                       : parse_index(std::string_view(item).substr(colon + 1));
-        if (!a || !b || *b <= *a || (!out.empty() && *a <= out.back())) return std::nullopt;
-        if (*b - *a > (std::uint64_t{1} << 32)) return std::nullopt;  // not a glint file
-        for (std::uint64_t i = *a; i < *b; ++i) out.push_back(i);
+    out.reserve(static_cast<std::size_t>(*count));
+    for (const auto& [a, b] : *runs) {
+        for (std::uint64_t i = a; i < b; ++i) out.push_back(i);
     }
     return out;
+}
+
+std::optional<std::uint64_t> count_index_runs(std::string_view value) {
+    const auto runs = parse_runs(value);
+    if (!runs) return std::nullopt;
+    std::uint64_t count = 0;
+    for (const auto& [a, b] : *runs) {
+        if (__builtin_add_overflow(count, b - a, &count)) return std::nullopt;
+    }
+    return count;
 }
 
 }  // namespace glint::io

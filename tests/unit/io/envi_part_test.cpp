@@ -32,5 +32,16 @@ TEST(IndexRuns, RefusesJunkAndDisorder) {
     }
 }
 
+TEST(IndexRuns, CountsWithoutListing) {
+    EXPECT_EQ(count_index_runs("{0:4, 7, 9:11}"), 7u);
+    EXPECT_EQ(count_index_runs("{}"), 0u);
+    // A few bytes naming 2^32 and 2^64 - 1 indices: counted, never listed.
+    EXPECT_EQ(count_index_runs("{0:4294967296}"), 4294967296u);
+    EXPECT_EQ(count_index_runs("{0:18446744073709551615}"), 18446744073709551615u);
+    EXPECT_FALSE(parse_index_runs("{0:4294967297}"));
+    EXPECT_FALSE(count_index_runs("{0:18446744073709551615, 18446744073709551615:}"));
+    EXPECT_FALSE(count_index_runs("{5, 2}"));
+}
+
 }  // namespace
 }  // namespace glint::io

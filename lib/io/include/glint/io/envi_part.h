@@ -38,7 +38,10 @@ inline constexpr const char* kPartCapturesKey = "glint part of captures";
 /// as "N" ({0:4, 7, 9:11}).
 std::string format_index_runs(const std::vector<std::uint64_t>& sorted);
 /// The indices of a brace list format_index_runs writes, sorted; nullopt when it is not one
-/// (junk, a run B <= A, indices out of order or repeated).
+/// (junk, a run B <= A, indices out of order or repeated) or names more than 2^32 indices.
 std::optional<std::vector<std::uint64_t>> parse_index_runs(std::string_view value);
+/// How many indices the brace list `value` holds, without listing them (a few bytes can
+/// name 2^64 indices); nullopt when it is not a list parse_index_runs reads.
+std::optional<std::uint64_t> count_index_runs(std::string_view value);
 
 }  // namespace glint::io
