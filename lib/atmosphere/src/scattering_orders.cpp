@@ -21,6 +21,10 @@
 namespace glint::atmosphere {
 namespace {
 
+/// The most sublayers a problem is split into (the 0.02 default depth up to a total optical
+/// depth of 41).
+constexpr std::size_t kMaxSublayers = 2048;
+
 constexpr double kPi = std::numbers::pi;
 
 /// Σ_m terms[m] cos(mφ).
@@ -140,12 +144,24 @@ ScatteringSolution solve_scattering_orders(const ScatteringProblem& problem) {
     const int n = problem.streams;
     const std::size_t nd = static_cast<std::size_t>(2 * n);
     gauss_legendre_unit(n, s.m_mu, s.m_weight);
-    // Sublayers.
+    // Sublayers of at most max_sublayer_depth, and at most kMaxSublayers in all: a thicker
+    // atmosphere (fog, or an aerosol depth of 10^6 in a file) gets thicker sublayers, so its
+    // memory and time stay bounded; the light through it is nil anyway.
+    double total_depth = 0.0;
+    for (const ScatteringLayer& layer : problem.layers) total_depth += layer.optical_depth;
+    if (!std::isfinite(total_depth)) {
+        throw input_error("scattering problem: the layers' optical depths add up to infinity");
+    }
+    const double sublayer_depth =
+        std::max(problem.max_sublayer_depth, total_depth / static_cast<double>(kMaxSublayers));
     s.m_tau.push_back(0.0);
     s.m_level_boundary.push_back(0);
     for (std::size_t k = 0; k < problem.layers.size(); ++k) {
         const double depth = problem.layers[k].optical_depth;
-        const int parts = std::max(1, static_cast<int>(std::ceil(depth / problem.max_sublayer_depth)));
+        // At most kMaxSublayers + 1 per layer (rounding up), so the conversion is defined.
+        const int parts = std::max(1, static_cast<int>(std::min(
+                                          std::ceil(depth / sublayer_depth),
+                                          static_cast<double>(kMaxSublayers) + 1.0)));
         const double top = s.m_tau.back();
         for (int p = 1; p <= parts; ++p) {
             s.m_tau.push_back(top + depth * p / parts);
@@ -203,8 +219,12 @@ ScatteringSolution solve_scattering_orders(const ScatteringProblem& problem) {
                     const double t = s.m_tau[q];
                     const double d = s.m_tau[q + 1] - t;
                     const double e = std::exp(-d / mu);
-                    const double integral =
-                        std::exp(-t / mu0) * e * (d / mu) * exprel(d * (1.0 / mu - 1.0 / mu0));
+                    // e^{−d/μ} exprel(y), y = d(1/μ − 1/μ₀); in a sublayer so thick that the
+                    // product is 0 × ∞, its equal e^{−d/μ₀} exprel(−y), whose factors are finite.
+                    const double y = d * (1.0 / mu - 1.0 / mu0);
+                    double through = e * exprel(y);
+                    if (!std::isfinite(through)) through = std::exp(-d / mu0) * exprel(-y);
+                    const double integral = std::exp(-t / mu0) * (d / mu) * through;
                     at(order, q + 1, down) =
                         at(order, q, down) * e + beam[s.m_layer_of[q]][down] * integral;
                 }

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdio>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -73,6 +74,11 @@ const Bounds kPositive{0.0, std::nullopt, true, false, "a number > 0"};
 const Bounds kAny{std::nullopt, std::nullopt, false, false, "a number"};
 const Bounds kFraction{0.0, 1.0, false, false, "a number in [0, 1]"};
 const Bounds kAsymmetry{-1.0, 1.0, true, true, "a number in (-1, 1)"};
+/// The thickest aerosol a parametric atmosphere takes: an optical depth of 100 at 550 nm
+/// lets e^-100 of the sun through (the densest smoke and dust measured reach about 7; a fog
+/// of 100 m visibility about 47). Beyond it a value is a typo, not an atmosphere.
+constexpr double kMaxAerosolDepth550 = 100.0;
+const Bounds kAerosolDepth{0.0, kMaxAerosolDepth550, false, false, "a number in [0, 100]"};
 
 /// aerosol_model: the type's Ångström exponent, single-scatter albedo and asymmetry (keys
 /// given explicitly are read after, and win).
@@ -120,7 +126,16 @@ void read_visibility(const YAML::Node& root, const std::string& file,
                                      " km)");
         return;
     }
-    p.aerosol_optical_depth_550 = extinction_per_km * p.aerosol_scale_height_m / 1000.0;
+    const double depth = extinction_per_km * p.aerosol_scale_height_m / 1000.0;
+    if (depth > kMaxAerosolDepth550) {
+        char shown[32];
+        std::snprintf(shown, sizeof shown, "%.4g", depth);
+        diagnostics.error(where, "visibility " + num(visibility_km) +
+                                     " km gives an aerosol optical depth of " + shown +
+                                     " at 550 nm, beyond the 100 glint takes");
+        return;
+    }
+    p.aerosol_optical_depth_550 = depth;
 }
 
 /// Keys whose value the settings given with them leave without effect: one warning each at
@@ -148,8 +163,8 @@ void warn_unused(const YAML::Node& root, const std::string& file,
 void read_parametric(const YAML::Node& root, const std::string& file,
                      model::ParametricAtmosphere& p, Diagnostics& diagnostics) {
     read_aerosol_model(root, file, p, diagnostics);
-    read_number(root, "aerosol_optical_depth_550", file, kNonNegative, p.aerosol_optical_depth_550,
-                diagnostics);
+    read_number(root, "aerosol_optical_depth_550", file, kAerosolDepth,
+                p.aerosol_optical_depth_550, diagnostics);
     read_number(root, "angstrom_exponent", file, kAny, p.angstrom_exponent, diagnostics);
     read_number(root, "aerosol_scale_height_m", file, kPositive, p.aerosol_scale_height_m,
                 diagnostics);

@@ -74,6 +74,25 @@ TEST(ScatteringOrders, RayleighThickAtmosphereMatchesSweigart) {
     expect_flux(c.diffuse_up_flux(0), 6.24730e-2, "up, omega 0.5");
 }
 
+TEST(ScatteringOrders, AnOpaqueAtmosphereStaysBoundedAndDark) {
+    // τ = 10^6 and 3·10^9 (beyond INT_MAX sublayers of 0.01: the count is bounded before it
+    // becomes an int). At most 2,048 sublayers: it solves in a moment and lets nothing
+    // through; the reflected light is what a semi-infinite conservative-ish layer reflects.
+    for (const double tau : {1e6, 3e9}) {
+        ScatteringProblem p = one_layer(tau, 0.9, kRayleigh, 0.5);
+        p.streams = 4;
+        const auto s = solve_scattering_orders(p);
+        EXPECT_EQ(s.direct_flux(1), 0.0) << tau;
+        EXPECT_LT(s.diffuse_down_flux(1), 1e-12) << tau;
+        EXPECT_GT(s.diffuse_up_flux(0), 0.0) << tau;
+        EXPECT_LT(s.diffuse_up_flux(0), 0.5) << tau;
+        EXPECT_DOUBLE_EQ(s.optical_depth(1), tau);
+    }
+    ScatteringProblem infinite = one_layer(1e308, 0.9, kRayleigh, 0.5);
+    infinite.layers.push_back(infinite.layers.front());
+    EXPECT_THROW((void)solve_scattering_orders(infinite), Error);
+}
+
 TEST(ScatteringOrders, HenyeyGreensteinMatchesVanDeHulst) {
     // g = 0.75, τ = 1, overhead sun (van de Hulst Table 37; DISORT test 3a), 32 moments.
     const auto s = solve_scattering_orders(one_layer(1.0, 1.0, henyey_greenstein(0.75, 32), 1.0));

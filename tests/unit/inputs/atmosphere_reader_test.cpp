@@ -135,7 +135,7 @@ TEST(AtmosphereReader, NegativeOpticalDepthIsAnError) {
     (void)read_atmosphere(path, {}, diagnostics, "bad.yaml");
     EXPECT_EQ(first_error(diagnostics),
               "bad.yaml:3: aerosol_optical_depth_550: value -0.1 out of range, expected a "
-              "number >= 0");
+              "number in [0, 100]");
 }
 
 /// Every diagnostic of reading `text` as e.yaml in `dir`, as "file:line: key: message" texts.
@@ -227,6 +227,13 @@ TEST(AtmosphereReader, AerosolModelAndVisibility) {
                 "(337 km)"});
     EXPECT_EQ(messages_of(dir, "model: parametric\nvisibility_km: 0\n"),
               V{"e.yaml:2: visibility_km: value 0 out of range, expected a number > 0"});
+    // An optical depth of 10^6 would be 7 GB of scattering sublayers: refused at the reader.
+    EXPECT_EQ(messages_of(dir, "model: parametric\naerosol_optical_depth_550: 1e6\n"),
+              V{"e.yaml:2: aerosol_optical_depth_550: value 1e+06 out of range, expected a "
+                "number in [0, 100]"});
+    EXPECT_EQ(messages_of(dir, "model: parametric\nvisibility_km: 0.01\n"),
+              V{"e.yaml:2: visibility_km: visibility 0.01 km gives an aerosol optical depth of "
+                "469.4 at 550 nm, beyond the 100 glint takes"});
 }
 
 TEST(AtmosphereReader, NonNumberAndUnknownKey) {
