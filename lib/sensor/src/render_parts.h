@@ -191,6 +191,7 @@ struct PlannedTelemetry {
     const model::Instrument* recorder = nullptr;
     std::filesystem::path csv;
     std::filesystem::path jsonl;
+    std::uint64_t samples = 0;  ///< counted when planned (the clock checked then)
 };
 
 /// The data recorders the run writes: none in a --schedule run (one warning each). Throws

@@ -1,17 +1,40 @@
 // SPDX-License-Identifier: Apache-2.0
 // The data recorders of a render (render_parts.h): planned with the images (their files
-// BASENAME.csv and BASENAME.jsonl in their platform's output folder, with its prefix) and
-// written before the first capture. A --schedule run (a selection or a shard) writes none, with
+// BASENAME.csv and BASENAME.jsonl in their platform's output folder, with its prefix; their
+// clocks checked and their samples counted, so a bad clock fails before anything is written)
+// and written before the first capture, sample by sample, each file published whole. A --schedule run (a selection or a shard) writes none, with
 // one warning per recorder: every shard would write the same files.
 #include <set>
 
 #include "glint/core/atomic_file.h"
 #include "glint/core/error.h"
 #include "glint/core/text.h"
+#include "glint/schedule/clock_ticks.h"
 #include "glint/sensor/telemetry.h"
 #include "render_parts.h"
 
 namespace glint::sensor::detail {
+namespace {
+
+/// The most samples one data recorder writes in a run: a 1 kHz INS for 2.8 hours (about
+/// 3.5 GB of CSV and as much JSON). More is a clock rate or task window typed wrong.
+constexpr std::uint64_t kMaxRecorderSamples = 10'000'000;
+
+/// Calls `sample(task, time_s)` at every tick of the recorder's clock in every task window.
+template <class Sample>
+void for_each_tick(const model::Instrument& recorder, const schedule::PluginSchedule& plugin,
+                   Sample&& sample) {
+    const model::Clock* clock = recorder_clock(recorder);
+    if (clock == nullptr) return;
+    for (std::size_t t = 0; t < plugin.tasks.tasks.size(); ++t) {
+        const schedule::ClockTicks ticks(*clock, plugin.platform->clock_table,
+                                         clock->trigger_times_s, plugin.tasks.tasks[t].start_s,
+                                         plugin.tasks.tasks[t].stop_s);
+        if (!sample(t, ticks)) return;
+    }
+}
+
+}  // namespace
 
 std::vector<PlannedTelemetry> plan_telemetry(const RenderInputs& inputs,
                                              const RenderOptions& options, const Context& context) {
@@ -49,6 +72,21 @@ std::vector<PlannedTelemetry> plan_telemetry(const RenderInputs& inputs,
                                       instrument.recorder.where);
                 }
             }
+            // The ticks are counted, not listed: a clock of 10^9 Hz is refused here, before any
+            // file of the run is written.
+            for_each_tick(instrument, plugin, [&](std::size_t, const schedule::ClockTicks& ticks) {
+                t.samples += ticks.size();
+                return t.samples <= kMaxRecorderSamples;
+            });
+            if (t.samples > kMaxRecorderSamples) {
+                throw input_error("data recorder " + quote(instrument.name) +
+                                      " would record more than " +
+                                      std::to_string(kMaxRecorderSamples) +
+                                      " samples (its clock's ticks in the task windows); glint "
+                                      "writes at most that many per recorder (a 1 kHz INS for "
+                                      "2.8 hours): check the clock's <rate> and the tasks",
+                                  instrument.recorder.where);
+            }
             planned.push_back(std::move(t));
         }
     }
@@ -60,10 +98,6 @@ void write_telemetry(const Prepared& prepared, const RenderOptions& options,
     const RenderInputs& in = prepared.inputs;
     for (const PlannedTelemetry& t : prepared.telemetry) {
         const schedule::PluginSchedule& plugin = in.schedule->plugins()[t.plugin];
-        const auto times = recorder_times_s(*t.recorder, *plugin.platform, plugin.tasks);
-        const std::vector<TelemetryRecord> records = record_telemetry(
-            *plugin.poses, t.instrument, times, in.frame, t.recorder->recorder.noise,
-            options.schedule.seed, plugin.plugin_index);
         TelemetryHeader header;
         header.instrument = t.recorder->name;
         header.platform_file = plugin.platform->file;
@@ -79,11 +113,28 @@ void write_telemetry(const Prepared& prepared, const RenderOptions& options,
         for (const auto& file : {t.csv, t.jsonl}) {
             if (file.has_parent_path()) std::filesystem::create_directories(file.parent_path());
         }
-        write_file_atomically(t.csv, telemetry_csv(header, records));
-        write_file_atomically(t.jsonl, telemetry_jsonl(header, records));
-        context.log.info("Data recorder " + t.recorder->name + ": " +
-                         std::to_string(records.size()) + " samples in " + t.csv.string() +
-                         " and " + t.jsonl.string());
+        // Written as the samples are made (memory does not grow with them), each file
+        // published whole when its last sample is in.
+        AtomicFile csv(t.csv);
+        AtomicFile jsonl(t.jsonl);
+        csv.write(telemetry_csv_head(header));
+        jsonl.write(telemetry_jsonl_head(header));
+        std::uint64_t index = 0;
+        for_each_tick(*t.recorder, plugin, [&](std::size_t task, const schedule::ClockTicks& ticks) {
+            for (std::uint64_t i = 0; i < ticks.size(); ++i, ++index) {
+                if (index % 4096 == 0) context.cancel.throw_if_cancelled();
+                const TelemetryRecord r = record_sample(
+                    *plugin.poses, t.instrument, task, ticks.time_s(i), index, in.frame,
+                    t.recorder->recorder.noise, options.schedule.seed, plugin.plugin_index);
+                csv.write(telemetry_csv_row(header, r));
+                jsonl.write(telemetry_jsonl_row(header, r));
+            }
+            return true;
+        });
+        csv.commit();
+        jsonl.commit();
+        context.log.info("Data recorder " + t.recorder->name + ": " + std::to_string(index) +
+                         " samples in " + t.csv.string() + " and " + t.jsonl.string());
     }
 }
 

@@ -65,18 +65,18 @@ std::string order_text(motion::EulerOrder order) { return std::string(motion::to
 
 }  // namespace
 
+const model::Clock* recorder_clock(const model::Instrument& recorder) {
+    if (recorder.recorder.clock) return &*recorder.recorder.clock;
+    for (const model::FocalPlane& plane : recorder.focal_planes) {
+        if (plane.enabled) return &plane.detector_array.clock;
+    }
+    return nullptr;
+}
+
 std::vector<std::pair<std::uint64_t, double>> recorder_times_s(const model::Instrument& recorder,
                                                                 const model::Platform& platform,
                                                                 const model::TaskList& tasks) {
-    const model::Clock* clock = recorder.recorder.clock ? &*recorder.recorder.clock : nullptr;
-    if (clock == nullptr) {
-        for (const model::FocalPlane& plane : recorder.focal_planes) {
-            if (plane.enabled) {
-                clock = &plane.detector_array.clock;
-                break;
-            }
-        }
-    }
+    const model::Clock* clock = recorder_clock(recorder);
     std::vector<std::pair<std::uint64_t, double>> times;
     if (clock == nullptr) return times;
     for (std::size_t t = 0; t < tasks.tasks.size(); ++t) {
@@ -87,50 +87,56 @@ std::vector<std::pair<std::uint64_t, double>> recorder_times_s(const model::Inst
     return times;
 }
 
+TelemetryRecord record_sample(const motion::PoseService& poses, std::size_t instrument,
+                              std::uint64_t task, double t, std::uint64_t index,
+                              const motion::SceneFrame& frame, const model::TelemetryNoise& noise,
+                              std::uint64_t seed, std::uint64_t plugin_index) {
+    const motion::EulerOrder order = poses.platform_rotation_order();
+    const motion::Rigid pose = poses.instrument_to_scene(instrument, t);
+    const motion::Rigid before = poses.instrument_to_scene(instrument, t - kDifferenceStep_s);
+    const motion::Rigid after = poses.instrument_to_scene(instrument, t + kDifferenceStep_s);
+    TelemetryRecord r;
+    r.task = task;
+    r.time_s = t;
+    r.position_enu_m = pose.translation_m;
+    r.velocity_enu_m_s = (after.translation_m - before.translation_m) * (0.5 / kDifferenceStep_s);
+    r.orientation = canonical(motion::normalized(pose.rotation));
+    Vec3 euler_rad = motion::quaternion_to_euler(r.orientation, order);
+    Vec3 rate_rad_s = body_rate_rad_s(before.rotation, after.rotation, 2 * kDifferenceStep_s);
+    // Noise: one stream per sample, components drawn in a fixed order.
+    RandomStream rng(seed, {kTelemetryStream, plugin_index, instrument, index});
+    auto jitter = [&](Vec3& v, const std::optional<double>& sigma, double scale) {
+        const Vec3 n{rng.normal(), rng.normal(), rng.normal()};
+        if (sigma && *sigma > 0.0) v = v + n * (*sigma * scale);
+    };
+    jitter(r.position_enu_m, noise.position_m, 1.0);
+    jitter(r.velocity_enu_m_s, noise.velocity_m_s, 1.0);
+    jitter(euler_rad, noise.orientation_deg, 1.0 / kDegPerRad);
+    jitter(rate_rad_s, noise.angular_rate_deg_s, 1.0 / kDegPerRad);
+    if (noise.orientation_deg && *noise.orientation_deg > 0.0) {
+        r.orientation = canonical(motion::euler_to_quaternion(euler_rad, order));
+    }
+    r.euler_deg = euler_rad * kDegPerRad;
+    r.angular_rate_deg_s = rate_rad_s * kDegPerRad;
+    r.position_ecef_m = frame.enu_to_ecef(r.position_enu_m);
+    r.geodetic = frame.enu_to_geodetic(r.position_enu_m);
+    return r;
+}
+
 std::vector<TelemetryRecord> record_telemetry(
     const motion::PoseService& poses, std::size_t instrument,
     const std::vector<std::pair<std::uint64_t, double>>& times, const motion::SceneFrame& frame,
     const model::TelemetryNoise& noise, std::uint64_t seed, std::uint64_t plugin_index) {
-    const motion::EulerOrder order = poses.platform_rotation_order();
     std::vector<TelemetryRecord> records;
     records.reserve(times.size());
     for (std::size_t i = 0; i < times.size(); ++i) {
-        const auto [task, t] = times[i];
-        const motion::Rigid pose = poses.instrument_to_scene(instrument, t);
-        const motion::Rigid before = poses.instrument_to_scene(instrument, t - kDifferenceStep_s);
-        const motion::Rigid after = poses.instrument_to_scene(instrument, t + kDifferenceStep_s);
-        TelemetryRecord r;
-        r.task = task;
-        r.time_s = t;
-        r.position_enu_m = pose.translation_m;
-        r.velocity_enu_m_s =
-            (after.translation_m - before.translation_m) * (0.5 / kDifferenceStep_s);
-        r.orientation = canonical(motion::normalized(pose.rotation));
-        Vec3 euler_rad = motion::quaternion_to_euler(r.orientation, order);
-        Vec3 rate_rad_s = body_rate_rad_s(before.rotation, after.rotation, 2 * kDifferenceStep_s);
-        // Noise: one stream per sample, components drawn in a fixed order.
-        RandomStream rng(seed, {kTelemetryStream, plugin_index, instrument, i});
-        auto jitter = [&](Vec3& v, const std::optional<double>& sigma, double scale) {
-            const Vec3 n{rng.normal(), rng.normal(), rng.normal()};
-            if (sigma && *sigma > 0.0) v = v + n * (*sigma * scale);
-        };
-        jitter(r.position_enu_m, noise.position_m, 1.0);
-        jitter(r.velocity_enu_m_s, noise.velocity_m_s, 1.0);
-        jitter(euler_rad, noise.orientation_deg, 1.0 / kDegPerRad);
-        jitter(rate_rad_s, noise.angular_rate_deg_s, 1.0 / kDegPerRad);
-        if (noise.orientation_deg && *noise.orientation_deg > 0.0) {
-            r.orientation = canonical(motion::euler_to_quaternion(euler_rad, order));
-        }
-        r.euler_deg = euler_rad * kDegPerRad;
-        r.angular_rate_deg_s = rate_rad_s * kDegPerRad;
-        r.position_ecef_m = frame.enu_to_ecef(r.position_enu_m);
-        r.geodetic = frame.enu_to_geodetic(r.position_enu_m);
-        records.push_back(r);
+        records.push_back(record_sample(poses, instrument, times[i].first, times[i].second, i,
+                                        frame, noise, seed, plugin_index));
     }
     return records;
 }
 
-std::string telemetry_csv(const TelemetryHeader& h, const std::vector<TelemetryRecord>& records) {
+std::string telemetry_csv_head(const TelemetryHeader& h) {
     const std::string order = order_text(h.order);
     std::ostringstream out;
     out << "# glint data recorder telemetry, format glint-telemetry version 1\n"
@@ -151,24 +157,33 @@ std::string telemetry_csv(const TelemetryHeader& h, const std::vector<TelemetryR
            "latitude_deg,longitude_deg,altitude_m,velocity_east_m_s,velocity_north_m_s,"
            "velocity_up_m_s,q_w,q_x,q_y,q_z,euler_x_deg,euler_y_deg,euler_z_deg,rate_x_deg_s,"
            "rate_y_deg_s,rate_z_deg_s\n";
-    for (const TelemetryRecord& r : records) {
-        out << r.task << "," << number(r.time_s) << ","
-            << format_iso8601_utc(add_seconds(h.reference, r.time_s), 9);
-        for (const double v :
-             {r.position_enu_m.x, r.position_enu_m.y, r.position_enu_m.z, r.position_ecef_m.x,
-              r.position_ecef_m.y, r.position_ecef_m.z, r.geodetic.latitude_deg,
-              r.geodetic.longitude_deg, r.geodetic.altitude_m, r.velocity_enu_m_s.x,
-              r.velocity_enu_m_s.y, r.velocity_enu_m_s.z, r.orientation.w, r.orientation.x,
-              r.orientation.y, r.orientation.z, r.euler_deg.x, r.euler_deg.y, r.euler_deg.z,
-              r.angular_rate_deg_s.x, r.angular_rate_deg_s.y, r.angular_rate_deg_s.z}) {
-            out << "," << number(v);
-        }
-        out << "\n";
-    }
     return out.str();
 }
 
-std::string telemetry_jsonl(const TelemetryHeader& h, const std::vector<TelemetryRecord>& records) {
+std::string telemetry_csv_row(const TelemetryHeader& h, const TelemetryRecord& r) {
+    std::ostringstream out;
+    out << r.task << "," << number(r.time_s) << ","
+        << format_iso8601_utc(add_seconds(h.reference, r.time_s), 9);
+    for (const double v :
+         {r.position_enu_m.x, r.position_enu_m.y, r.position_enu_m.z, r.position_ecef_m.x,
+          r.position_ecef_m.y, r.position_ecef_m.z, r.geodetic.latitude_deg,
+          r.geodetic.longitude_deg, r.geodetic.altitude_m, r.velocity_enu_m_s.x,
+          r.velocity_enu_m_s.y, r.velocity_enu_m_s.z, r.orientation.w, r.orientation.x,
+          r.orientation.y, r.orientation.z, r.euler_deg.x, r.euler_deg.y, r.euler_deg.z,
+          r.angular_rate_deg_s.x, r.angular_rate_deg_s.y, r.angular_rate_deg_s.z}) {
+        out << "," << number(v);
+    }
+    out << "\n";
+    return out.str();
+}
+
+std::string telemetry_csv(const TelemetryHeader& h, const std::vector<TelemetryRecord>& records) {
+    std::string out = telemetry_csv_head(h);
+    for (const TelemetryRecord& r : records) out += telemetry_csv_row(h, r);
+    return out;
+}
+
+std::string telemetry_jsonl_head(const TelemetryHeader& h) {
     using nlohmann::json;
     auto noise = [](const std::optional<double>& v) { return v ? json(*v) : json(nullptr); };
     json header = {
@@ -208,24 +223,31 @@ std::string telemetry_jsonl(const TelemetryHeader& h, const std::vector<Telemetr
         {"provenance",
          {{"tool", h.tool}, {"version", h.version}, {"command_line", h.command_line},
           {"seed", h.seed}}}};
-    std::string out = header.dump() + "\n";
-    for (const TelemetryRecord& r : records) {
-        auto v3 = [](const Vec3& v) { return json::array({v.x, v.y, v.z}); };
-        const json row = {
-            {"task", r.task},
-            {"time_s", r.time_s},
-            {"datetime_utc", format_iso8601_utc(add_seconds(h.reference, r.time_s), 9)},
-            {"position_enu_m", v3(r.position_enu_m)},
-            {"position_ecef_m", v3(r.position_ecef_m)},
-            {"geodetic", json::array({r.geodetic.latitude_deg, r.geodetic.longitude_deg,
-                                      r.geodetic.altitude_m})},
-            {"velocity_enu_m_s", v3(r.velocity_enu_m_s)},
-            {"orientation_wxyz",
-             json::array({r.orientation.w, r.orientation.x, r.orientation.y, r.orientation.z})},
-            {"euler_deg", v3(r.euler_deg)},
-            {"angular_rate_deg_s", v3(r.angular_rate_deg_s)}};
-        out += row.dump() + "\n";
-    }
+    return header.dump() + "\n";
+}
+
+std::string telemetry_jsonl_row(const TelemetryHeader& h, const TelemetryRecord& r) {
+    using nlohmann::json;
+    auto v3 = [](const Vec3& v) { return json::array({v.x, v.y, v.z}); };
+    const json row = {
+        {"task", r.task},
+        {"time_s", r.time_s},
+        {"datetime_utc", format_iso8601_utc(add_seconds(h.reference, r.time_s), 9)},
+        {"position_enu_m", v3(r.position_enu_m)},
+        {"position_ecef_m", v3(r.position_ecef_m)},
+        {"geodetic", json::array({r.geodetic.latitude_deg, r.geodetic.longitude_deg,
+                                  r.geodetic.altitude_m})},
+        {"velocity_enu_m_s", v3(r.velocity_enu_m_s)},
+        {"orientation_wxyz",
+         json::array({r.orientation.w, r.orientation.x, r.orientation.y, r.orientation.z})},
+        {"euler_deg", v3(r.euler_deg)},
+        {"angular_rate_deg_s", v3(r.angular_rate_deg_s)}};
+    return row.dump() + "\n";
+}
+
+std::string telemetry_jsonl(const TelemetryHeader& h, const std::vector<TelemetryRecord>& records) {
+    std::string out = telemetry_jsonl_head(h);
+    for (const TelemetryRecord& r : records) out += telemetry_jsonl_row(h, r);
     return out;
 }
 

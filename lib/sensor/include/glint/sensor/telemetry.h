@@ -34,6 +34,19 @@ struct TelemetryRecord {
     motion::Vec3 angular_rate_deg_s;  ///< in the instrument frame
 };
 
+/// The clock a data recorder samples at: its `<clock>`, else its first enabled focal plane's
+/// clock; nullptr when it has neither.
+const model::Clock* recorder_clock(const model::Instrument& recorder);
+
+/// One sample of instrument `instrument` of `poses` at `time_s` in task `task`: the pose from
+/// the pose service, the velocity and body rates by central differences over ±1 ms, and the
+/// recorder's noise from the stream keyed by (seed, plugin_index, instrument, `index`), the
+/// sample's index among all the recorder's samples.
+TelemetryRecord record_sample(const motion::PoseService& poses, std::size_t instrument,
+                              std::uint64_t task, double time_s, std::uint64_t index,
+                              const motion::SceneFrame& frame, const model::TelemetryNoise& noise,
+                              std::uint64_t seed, std::uint64_t plugin_index);
+
 /// The times a data recorder samples: the ticks of its `<clock>` (else of its first enabled
 /// focal plane's clock) in each task window, with the task's index; empty when it has no
 /// clock. Throws glint::Error (input, at the clock) as schedule::ClockTicks does.
@@ -41,9 +54,8 @@ std::vector<std::pair<std::uint64_t, double>> recorder_times_s(
     const model::Instrument& recorder, const model::Platform& platform,
     const model::TaskList& tasks);
 
-/// Samples instrument `instrument` of `poses` at `times` (recorder_times_s): the pose from
-/// the pose service, the velocity and body rates by central differences over ±1 ms, and the
-/// recorder's noise from streams keyed by (seed, plugin_index, instrument, sample index).
+/// Samples instrument `instrument` of `poses` at `times` (recorder_times_s), each as
+/// record_sample does with its index in `times`.
 std::vector<TelemetryRecord> record_telemetry(
     const motion::PoseService& poses, std::size_t instrument,
     const std::vector<std::pair<std::uint64_t, double>>& times, const motion::SceneFrame& frame,
@@ -72,5 +84,13 @@ std::string telemetry_csv(const TelemetryHeader& header, const std::vector<Telem
 /// frames, noise, provenance), then one object per record.
 std::string telemetry_jsonl(const TelemetryHeader& header,
                             const std::vector<TelemetryRecord>& records);
+
+/// The same files a piece at a time, for writing them as the samples are made: the CSV's
+/// comment lines and header row, one CSV row, the JSON lines' header object, one record's
+/// object (each ending in a newline).
+std::string telemetry_csv_head(const TelemetryHeader& header);
+std::string telemetry_csv_row(const TelemetryHeader& header, const TelemetryRecord& record);
+std::string telemetry_jsonl_head(const TelemetryHeader& header);
+std::string telemetry_jsonl_row(const TelemetryHeader& header, const TelemetryRecord& record);
 
 }  // namespace glint::sensor
