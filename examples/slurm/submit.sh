@@ -22,7 +22,7 @@ set -euo pipefail
 
 usage="usage: submit.sh SIM N [OUT]"
 if [ $# -lt 2 ] || [ $# -gt 3 ]; then echo "$usage" >&2; exit 2; fi
-here=$(cd "$(dirname "$0")" && pwd)
+here=$(cd -P -- "$(dirname -- "$0")" > /dev/null && pwd -P)
 sim=$1
 count=$2
 out=${3:-glint-slurm}
@@ -34,11 +34,11 @@ fi
 command -v sbatch > /dev/null || { echo "submit.sh: sbatch not found (is Slurm installed here?)" >&2; exit 1; }
 
 # Absolute paths: the jobs may start in another folder, on another machine.
-sim="$(cd "$(dirname "$sim")" && pwd)/$(basename "$sim")"
+sim="$(cd -P -- "$(dirname -- "$sim")" > /dev/null && pwd -P)/$(basename "$sim")"
 mkdir -p "$out"
-out=$(cd "$out" && pwd)
+out=$(cd -P -- "$out" > /dev/null && pwd -P)
 if [ -n "${GLINT_BIN:-}" ]; then
-    GLINT_BIN=$(cd "$GLINT_BIN" && pwd)
+    GLINT_BIN=$(cd -P -- "$GLINT_BIN" > /dev/null && pwd -P)
     export GLINT_BIN
 fi
 # Parts of an earlier run would be merged with this one's: start from an empty OUT/parts.
@@ -55,7 +55,7 @@ schedule=glint-schedule
 schedule_args=()
 read -r -a schedule_args <<< "${GLINT_SCHEDULE_ARGS:-}"
 if command -v "$schedule" > /dev/null; then
-    "$schedule" "$sim" "${schedule_args[@]}" --summary > "$out/summary.txt"
+    "$schedule" "$sim" ${schedule_args[@]+"${schedule_args[@]}"} --summary > "$out/summary.txt"
 else
     echo "submit.sh: warning: $schedule not found here; the simulation is not checked before submitting" >&2
 fi
@@ -65,7 +65,7 @@ render_opts=(--parsable --export=ALL --array="0-$((count - 1))"
 if [ -n "${GLINT_CPUS_PER_TASK:-}" ]; then
     render_opts+=(--cpus-per-task="$GLINT_CPUS_PER_TASK")
 fi
-render_job=$(sbatch "${render_opts[@]}" "$here/render.sbatch" "$sim" "$count" "$out")
+render_job=$(sbatch ${render_opts[@]+"${render_opts[@]}"} "$here/render.sbatch" "$sim" "$count" "$out")
 render_job=${render_job%%;*}  # --parsable prints ID or ID;CLUSTER
 
 if ! merge_job=$(sbatch --parsable --export=ALL --dependency="afterok:$render_job" \

@@ -350,8 +350,10 @@ failed_step="the demo's .jsim"
 
 failed_step="submit.sh"
 say "examples/slurm/submit.sh $work/demo.jsim $shards $work/slurm (convergence $convergence)"
-GLINT_BIN="$bin" GLINT_CONVERGENCE="$convergence" \
-    "$repo/examples/slurm/submit.sh" "$work/demo.jsim" "$shards" "$work/slurm" > "$work/submit.out"
+# Started by a relative path with CDPATH set, as a user's shell may have it: a cd that
+# finds its folder through CDPATH prints it, which must not end up in the paths.
+(cd "$repo" && CDPATH=. GLINT_BIN="$bin" GLINT_CONVERGENCE="$convergence" \
+    examples/slurm/submit.sh "$work/demo.jsim" "$shards" "$work/slurm") > "$work/submit.out"
 render_job=$(sed -n 's/^render_job=//p' "$work/submit.out")
 merge_job=$(sed -n 's/^merge_job=//p' "$work/submit.out")
 if [ -z "$render_job" ] || [ -z "$merge_job" ]; then

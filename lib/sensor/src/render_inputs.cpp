@@ -1,11 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
 // The render's inputs: the loaded simulation (scene, atmosphere, platforms) taken over, the
 // atmosphere model, the solar spectrum, the schedule and the scene instances' trajectories.
+#include <set>
 #include <string>
 #include <utility>
 
+#include "glint/atmosphere/atmosphere.h"
+#include "glint/atmosphere/gas_absorption.h"
 #include "glint/core/diagnostics.h"
 #include "glint/core/error.h"
+#include "glint/core/text.h"
 #include "glint/motion/scene_instances.h"
 #include "glint/scene/geometry_scene.h"
 #include "render_parts.h"
@@ -13,6 +17,37 @@
 namespace glint::sensor::detail {
 
 namespace {
+
+/// One warning per focal plane whose bandpass reaches beyond the gas absorption table: its
+/// bands there take the nearest row's transmittance.
+void warn_beyond_gas_table(const RenderInputs& in, const RenderOptions& options,
+                           Diagnostics& diagnostics) {
+    const auto* parametric =
+        dynamic_cast<const glint::atmosphere::ParametricAtmosphereModel*>(in.atmosphere_model.get());
+    const glint::atmosphere::GasBandModel* table =
+        parametric != nullptr ? parametric->gas_table() : nullptr;
+    if (table == nullptr || table->wavelengths_um().empty()) return;
+    const double first_um = table->wavelengths_um().front();
+    const double last_um = table->wavelengths_um().back();
+    std::set<const model::FocalPlane*> said;
+    for (const schedule::ClockedFocalPlane& source : in.schedule->sources()) {
+        const model::FocalPlane& fp = *source.focal_plane;
+        const model::Bandpass& band = fp.capture_method.spectral_response.bandpass;
+        if (!(band.min_um < first_um || band.max_um > last_um) || !said.insert(&fp).second) {
+            continue;
+        }
+        diagnostics.warning(band.where,
+                            "focal plane " + quote(fp.name) + "'s bandpass " +
+                                format_shortest(band.min_um) + "-" + format_shortest(band.max_um) +
+                                " um reaches beyond the gas absorption table (" +
+                                format_shortest(first_um) + "-" + format_shortest(last_um) +
+                                " um, " +
+                                (options.data_dir / glint::atmosphere::GasBandModel::kRelativePath)
+                                    .string() +
+                                "): its bands there take the transmittance of the table's "
+                                "nearest wavelength");
+    }
+}
 
 void build_all(RenderInputs& in, model::SimulationInputs loaded, const RenderOptions& options,
                const Context& context, Diagnostics& diagnostics) {
@@ -42,6 +77,7 @@ void build_all(RenderInputs& in, model::SimulationInputs loaded, const RenderOpt
     for (const model::Instance& instance : in.scene.instances) {
         in.dynamic_scene = in.dynamic_scene || instance.dynamic();
     }
+    warn_beyond_gas_table(in, options, diagnostics);
     // A BasicPlatform entry's split_channels takes precedence over the option (as the DIRSIG5
     // BasicPlatform manual says): the option overruled by an entry's false is said once.
     if (options.split_channels) {

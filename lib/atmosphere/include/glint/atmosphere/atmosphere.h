@@ -184,6 +184,9 @@ public:
     static constexpr double kScatteringZenithStepDeg = 0.05;
     static constexpr double kScatteringAltitudeStepM = 1.0;
 
+    /// The gas band-model table in use; nullptr without gas absorption.
+    const GasBandModel* gas_table() const noexcept { return m_gases.get(); }
+
 private:
     struct Scattering;
 
