@@ -72,6 +72,35 @@ def stop_with(args, sig):
     print("ok: %s: exit %d after %.2f s, nothing left" % (sig.name, process.returncode, stopped))
 
 
+def second_signal(args):
+    """A second SIGINT ends glint-render at once — and first removes the temporary file of
+    the image it was writing, which the unwinding of the first would have removed."""
+    work = os.path.join(args.work, "second")
+    out = os.path.join(work, "out")
+    os.makedirs(work)
+    command = [os.path.join(args.bin, "glint-render"), os.path.join(args.data, "render", "one.jsim"),
+               "--output-folder", out, "--convergence", "60000,60000,0", "--threads", "2"]
+    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    wait_for_handler(process, signal.SIGINT)
+    deadline = time.monotonic() + 60
+    while not any(".tmp-" in f for f in files_under(work)):
+        assert process.poll() is None, "glint-render ended before writing its image"
+        assert time.monotonic() < deadline, "no temporary image file appeared"
+        time.sleep(0.02)
+    process.send_signal(signal.SIGINT)
+    process.send_signal(signal.SIGINT)
+    try:
+        process.communicate(timeout=30)
+    except subprocess.TimeoutExpired:
+        process.kill()
+        raise AssertionError("glint-render did not stop within 30 s of two SIGINTs")
+    # Killed by the second (-2), or, had the first finished unwinding before it came, 130.
+    assert process.returncode in (-signal.SIGINT, 130), process.returncode
+    left = [f for f in files_under(work) if ".tmp-" in f]
+    assert left == [], "temporary files left behind after two SIGINTs: %s" % left
+    print("ok: two SIGINTs: exit %d, no temporary file left" % process.returncode)
+
+
 def file_size_limit(args):
     work = os.path.join(args.work, "fsize")
     out = os.path.join(work, "out")
@@ -142,6 +171,7 @@ def main():
     os.makedirs(args.work)
     for sig in (signal.SIGINT, signal.SIGHUP, signal.SIGTERM):
         stop_with(args, sig)
+    second_signal(args)
     file_size_limit(args)
     interrupt_processing_task(args)
 

@@ -11,6 +11,7 @@
 #include <system_error>
 
 #include "glint/core/error.h"
+#include "glint/core/temporary_files.h"
 
 namespace glint {
 namespace {
@@ -76,6 +77,7 @@ AtomicFile::AtomicFile(std::filesystem::path target) : m_target(std::move(target
         throw io_error("cannot create output: " + errno_text(code), m_target.string());
     }
     m_temp = std::filesystem::path(name.data());
+    m_slot = temporary_files::add(m_temp);
     // mkstemp creates 0600; outputs get the usual 0666 & ~umask.
     const mode_t mask = ::umask(0);
     ::umask(mask);
@@ -91,8 +93,10 @@ AtomicFile::AtomicFile(AtomicFile&& other) noexcept
       m_bytes_written(other.m_bytes_written),
       m_committed(other.m_committed),
       m_direct(other.m_direct),
-      m_publish(std::move(other.m_publish)) {
+      m_publish(std::move(other.m_publish)),
+      m_slot(other.m_slot) {
     other.m_fd = -1;
+    other.m_slot = -1;
     other.m_temp.clear();  // the moved-from object owns nothing to remove
 }
 
@@ -188,6 +192,8 @@ void AtomicFile::commit() {
                        m_target.string());
     }
     m_committed = true;
+    temporary_files::remove(m_slot);
+    m_slot = -1;
     fsync_folder(folder_of(m_publish));
 }
 
@@ -199,6 +205,8 @@ void AtomicFile::abandon() noexcept {
     if (!m_temp.empty() && !m_direct) {
         ::unlink(m_temp.c_str());
     }
+    temporary_files::remove(m_slot);
+    m_slot = -1;
     m_temp.clear();
 }
 

@@ -6,6 +6,7 @@
 #if defined(__linux__)
 #include <sched.h>
 #endif
+#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
@@ -21,6 +22,7 @@
 
 #include "glint/core/error.h"
 #include "glint/core/progress.h"
+#include "glint/core/temporary_files.h"
 #include "glint/core/text.h"
 
 #ifndef GLINT_VERSION_STRING
@@ -34,6 +36,10 @@ namespace {
 // tool's cancel flag, for the duration of run_tool only, and the signal that raised it.
 std::atomic<bool>* g_interrupt_flag = nullptr;
 volatile std::sig_atomic_t g_interrupt_signal = 0;
+/// Signal numbers are below this on Linux (_NSIG is 65).
+constexpr int kMaxSignal = 65;
+/// Which stop signals arrived once already (the next of the same kind ends the process).
+volatile std::sig_atomic_t g_signal_seen[kMaxSignal] = {};
 
 /// Signals whose default action ends the process and that a tool turns into a clean stop:
 /// the cancel flag is raised, the work stops at its next check, temporary files are removed
@@ -47,13 +53,20 @@ constexpr std::size_t kStopSignalCount = std::size(kStopSignals);
 extern "C" void on_interrupt(int signal_number) {
     if (g_interrupt_flag != nullptr) g_interrupt_flag->store(true);
     if (g_interrupt_signal == 0) g_interrupt_signal = signal_number;
-    // A second interrupt ends the process at once — except SIGPIPE, which every further
-    // write to the closed pipe raises again.
-    if (signal_number == SIGPIPE) return;
+    // A second interrupt of the same kind ends the process at once — except SIGPIPE, which
+    // every further write to the closed pipe raises again — after removing the temporary
+    // files the unwinding would have removed (async-signal-safe: unlink only).
+    if (signal_number == SIGPIPE || signal_number <= 0 || signal_number >= kMaxSignal) return;
+    if (g_signal_seen[signal_number] == 0) {
+        g_signal_seen[signal_number] = 1;
+        return;
+    }
+    temporary_files::unlink_all();
     struct sigaction action {};
     action.sa_handler = SIG_DFL;
     sigemptyset(&action.sa_mask);
     sigaction(signal_number, &action, nullptr);
+    ::raise(signal_number);  // delivered when the handler returns: the default action
 }
 
 /// Routes the stop signals to a cancel flag and ignores SIGXFSZ while alive.
@@ -62,6 +75,7 @@ public:
     explicit InterruptGuard(std::atomic<bool>* flag) {
         g_interrupt_flag = flag;
         g_interrupt_signal = 0;
+        for (volatile std::sig_atomic_t& seen : g_signal_seen) seen = 0;
         struct sigaction action {};
         action.sa_handler = on_interrupt;
         sigemptyset(&action.sa_mask);

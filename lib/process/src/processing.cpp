@@ -283,7 +283,14 @@ void ProcessingRunner::run_task(const model::ProcessingTask& task,
     // surprise.
     m_context.log.notice("Processing at " + event_name(event) + ": " +
                          format_command_line(command->argv));
-    const ProcessResult result = run_process(options);  // throws cancelled on an interrupt
+    ProcessResult result;
+    try {
+        result = run_process(options);  // throws cancelled on an interrupt
+    } catch (const Error& e) {
+        if (e.category() == ErrorCategory::cancelled) throw;
+        // A program that cannot be started (E2BIG, ENOEXEC, ...) is named with its task.
+        throw Error(e.category(), task_name(task) + " at " + event_name(event) + ": " + e.what());
+    }
     ++m_run;
     const std::string program = fs::path(task.program).filename().string();
     log_lines(m_context.log, program, result.stdout_text);

@@ -7,12 +7,17 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-
 #include <csignal>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
 #include <fstream>
 #include <sstream>
 
+#include "glint/core/atomic_file.h"
 #include "glint/core/error.h"
+#include "glint/core/temporary_files.h"
 #include "glint/test/temp_dir.h"
 
 namespace glint {
@@ -204,6 +209,56 @@ TEST(Runner, VerbosityAndQuietSetTheLogThreshold) {
     EXPECT_THAT(o.err, HasSubstr("glint-demo: debug: a debug line"));
     o = run({"-q"}, chatty);
     EXPECT_EQ(o.err, "");
+}
+
+/// The names of the temporary files (".NAME.tmp-...") in `folder`.
+std::vector<std::string> temporary_files_in(const std::filesystem::path& folder) {
+    std::vector<std::string> names;
+    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+        const std::string name = entry.path().filename().string();
+        if (name.find(".tmp-") != std::string::npos) names.push_back(name);
+    }
+    return names;
+}
+
+TEST(Runner, ASecondSignalEndsTheProcessAfterRemovingItsTemporaryFiles) {
+    test::TempDir dir;
+    // In a child: an output half written, then SIGINT twice. The first only raises the cancel
+    // flag; the second, of the same kind, kills the process — after unlinking the file the
+    // unwinding would have removed.
+    EXPECT_EXIT(
+        {
+            run({}, [&](Context&) {
+                AtomicFile file(dir / "image.img");
+                file.write("half");
+                ::raise(SIGINT);
+                ::raise(SIGINT);
+                return kExitSuccess;  // not reached
+            });
+            std::_Exit(3);
+        },
+        ::testing::KilledBySignal(SIGINT), "");
+    EXPECT_EQ(temporary_files_in(dir.path()), std::vector<std::string>{});
+    EXPECT_FALSE(std::filesystem::exists(dir / "image.img"));
+}
+
+TEST(TemporaryFiles, UnlinkAllRemovesWhatIsRegisteredAndNothingElse) {
+    test::TempDir dir;
+    std::ofstream(dir / "kept.txt") << "x";
+    std::ofstream(dir / ".a.tmp-1") << "x";
+    std::ofstream(dir / ".b.tmp-2") << "x";
+    const int a = temporary_files::add(dir / ".a.tmp-1");
+    const int b = temporary_files::add(dir / ".b.tmp-2");
+    ASSERT_GE(a, 0);
+    ASSERT_GE(b, 0);
+    temporary_files::remove(b);  // published: no longer the table's
+    temporary_files::unlink_all();
+    EXPECT_FALSE(std::filesystem::exists(dir / ".a.tmp-1"));
+    EXPECT_TRUE(std::filesystem::exists(dir / ".b.tmp-2"));
+    EXPECT_TRUE(std::filesystem::exists(dir / "kept.txt"));
+    temporary_files::remove(a);
+    // A path longer than the system's limit is not taken (its owner removes it).
+    EXPECT_EQ(temporary_files::add(std::filesystem::path(std::string(5000, 'x'))), -1);
 }
 
 TEST(Runner, ProgressFileGetsKeyValueLines) {

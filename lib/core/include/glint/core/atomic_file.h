@@ -64,6 +64,7 @@ private:
     bool m_committed = false;
     bool m_direct = false;
     std::filesystem::path m_publish;  ///< where commit() renames to (links followed)
+    int m_slot = -1;  ///< in glint::temporary_files, removed at a second stop signal
 };
 
 /// Writes `content` to `target` atomically.
