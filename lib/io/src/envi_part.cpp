@@ -39,6 +39,16 @@ std::optional<std::vector<std::pair<std::uint64_t, std::uint64_t>>> parse_runs(
     return runs;
 }
 
+/// How many indices `runs` hold; nullopt when the count overflows.
+std::optional<std::uint64_t> count_of(
+    const std::vector<std::pair<std::uint64_t, std::uint64_t>>& runs) {
+    std::uint64_t count = 0;
+    for (const auto& [a, b] : runs) {
+        if (__builtin_add_overflow(count, b - a, &count)) return std::nullopt;
+    }
+    return count;
+}
+
 }  // namespace
 
 std::string format_index_runs(const std::vector<std::uint64_t>& sorted) {
@@ -56,10 +66,10 @@ std::string format_index_runs(const std::vector<std::uint64_t>& sorted) {
 
 std::optional<std::vector<std::uint64_t>> parse_index_runs(std::string_view value) {
     const auto runs = parse_runs(value);
-    const std::optional<std::uint64_t> count = count_index_runs(value);
+    const std::optional<std::uint64_t> count = runs ? count_of(*runs) : std::nullopt;
     // More than 2^32 indices is no glint file (and would be 32 GiB listed): count_index_runs
     // says how many a list names without listing them.
-    if (!runs || !count || *count > (std::uint64_t{1} << 32)) return std::nullopt;
+    if (!count || *count > (std::uint64_t{1} << 32)) return std::nullopt;
     std::vector<std::uint64_t> out;
     out.reserve(static_cast<std::size_t>(*count));
     for (const auto& [a, b] : *runs) {
@@ -70,12 +80,7 @@ std::optional<std::vector<std::uint64_t>> parse_index_runs(std::string_view valu
 
 std::optional<std::uint64_t> count_index_runs(std::string_view value) {
     const auto runs = parse_runs(value);
-    if (!runs) return std::nullopt;
-    std::uint64_t count = 0;
-    for (const auto& [a, b] : *runs) {
-        if (__builtin_add_overflow(count, b - a, &count)) return std::nullopt;
-    }
-    return count;
+    return runs ? count_of(*runs) : std::nullopt;
 }
 
 }  // namespace glint::io

@@ -159,8 +159,10 @@ std::string BinReader::take(std::size_t n, const char* what) {
 template <class T>
 T BinReader::value(const char* what) {
     T v;
-    const std::string bytes = take(sizeof(T), what);
-    std::memcpy(&v, bytes.data(), sizeof(T));
+    if (m_size - m_at < sizeof(T)) fail("file ends inside the " + std::string(what));
+    m_in.read(reinterpret_cast<char*>(&v), sizeof(T));
+    if (!m_in) throw io_error("cannot read the BIN file", m_name);
+    m_at += sizeof(T);
     if (m_swap && sizeof(T) > 1) {
         auto* b = reinterpret_cast<unsigned char*>(&v);
         std::reverse(b, b + sizeof(T));
@@ -321,47 +323,44 @@ void BinReader::refill() {
     z.stream.avail_in = static_cast<uInt>(n);
 }
 
-void BinReader::inflate_into(unsigned char* bytes, std::size_t want) {
+std::size_t BinReader::inflate_step(unsigned char* out, std::size_t room,
+                                    const char* ends_early) {
     Inflater& z = *m_inflater;
+    refill();
+    z.stream.next_out = out;
+    z.stream.avail_out = static_cast<uInt>(room);
+    const int rc = ::inflate(&z.stream, Z_NO_FLUSH);
+    if (rc == Z_STREAM_END) {
+        z.ended = true;
+    } else if (rc == Z_BUF_ERROR && z.stream.avail_in == 0 && m_data_left == 0) {
+        fail(ends_early);
+    } else if (rc != Z_OK && rc != Z_BUF_ERROR) {
+        fail(std::string("pulse data does not inflate (zlib: ") +
+             (z.stream.msg != nullptr ? z.stream.msg : zError(rc)) + ")");
+    }
+    return room - z.stream.avail_out;
+}
+
+void BinReader::inflate_into(unsigned char* bytes, std::size_t want) {
     std::size_t done = 0;
     while (done < want) {
-        if (z.ended) fail("pulse data inflates to fewer bytes than its values need");
-        refill();
+        if (m_inflater->ended) fail("pulse data inflates to fewer bytes than its values need");
         const std::size_t room = std::min<std::size_t>(want - done, std::size_t{1} << 30);
-        z.stream.next_out = bytes + done;
-        z.stream.avail_out = static_cast<uInt>(room);
-        const int rc = ::inflate(&z.stream, Z_NO_FLUSH);
-        done += room - z.stream.avail_out;
-        if (rc == Z_STREAM_END) {
-            z.ended = true;
-        } else if (rc == Z_BUF_ERROR && z.stream.avail_in == 0 && m_data_left == 0) {
-            fail("pulse data ends before it inflates to its values");
-        } else if (rc != Z_OK && rc != Z_BUF_ERROR) {
-            fail(std::string("pulse data does not inflate (zlib: ") +
-                 (z.stream.msg != nullptr ? z.stream.msg : zError(rc)) + ")");
-        }
+        done += inflate_step(bytes + done, room, "pulse data ends before it inflates to its values");
     }
 }
 
 void BinReader::finish_inflating() {
     Inflater& z = *m_inflater;
     while (!z.ended) {
-        refill();
         unsigned char extra = 0;
-        z.stream.next_out = &extra;
-        z.stream.avail_out = 1;
-        const int rc = ::inflate(&z.stream, Z_NO_FLUSH);
-        if (z.stream.avail_out == 0) fail("pulse data inflates to more bytes than its values");
-        if (rc == Z_STREAM_END) {
-            z.ended = true;
-        } else if (rc == Z_BUF_ERROR && z.stream.avail_in == 0 && m_data_left == 0) {
-            fail("pulse data ends inside its zlib stream");
-        } else if (rc != Z_OK && rc != Z_BUF_ERROR) {
-            fail(std::string("pulse data does not inflate (zlib: ") +
-                 (z.stream.msg != nullptr ? z.stream.msg : zError(rc)) + ")");
+        if (inflate_step(&extra, 1, "pulse data ends inside its zlib stream") != 0) {
+            fail("pulse data inflates to more bytes than its values");
         }
     }
-    if (z.stream.avail_in != 0 || m_data_left != 0) fail("pulse data holds bytes after its zlib stream");
+    if (z.stream.avail_in != 0 || m_data_left != 0) {
+        fail("pulse data holds bytes after its zlib stream");
+    }
 }
 
 void BinReader::read_values(std::span<double> out) {

@@ -168,6 +168,9 @@ private:
     void read_file_header();
     void skip_data();
     void refill();
+    /// One inflate() into `room` bytes at `out` (input refilled first); returns the bytes
+    /// made. Fails with `ends_early` when the data ends inside the zlib stream.
+    std::size_t inflate_step(unsigned char* out, std::size_t room, const char* ends_early);
     void inflate_into(unsigned char* bytes, std::size_t count);
     void finish_inflating();
 };
