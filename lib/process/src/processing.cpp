@@ -151,6 +151,9 @@ const ProcessingTrust& ProcessingRunner::trust() {
             m_trust->allow_all = true;
         } else {
             m_trust = read_allow_list(m_options.allow_list);
+            for (const auto& [where, message] : m_trust->warnings) {
+                m_context.log.warning(format_located(where, message));
+            }
         }
     }
     return *m_trust;

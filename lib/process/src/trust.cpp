@@ -195,7 +195,12 @@ ProcessingTrust read_allow_list(const fs::path& file) {
             }
             std::error_code ec;
             allowed.canonical = fs::canonical(allowed.entry, ec);
-            if (ec) continue;  // names nothing on this machine: allows nothing
+            if (ec) {
+                trust.warnings.emplace_back(
+                    allowed.where, "allow-list entry " + quote(allowed.entry) +
+                                       " names no file here: it allows nothing");
+                continue;
+            }
         }
         trust.allowed.push_back(std::move(allowed));
     }

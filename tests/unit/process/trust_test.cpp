@@ -114,7 +114,11 @@ TEST(ProcessingTrust, TheAllowListAllowsByNameOrByPath) {
                          "\n/no/such/program\nffmpeg\n");
     const ProcessingTrust trust = read_allow_list(list);
     EXPECT_EQ(trust.allow_list, list);
-    ASSERT_EQ(trust.allowed.size(), 3u);  // a path naming nothing allows nothing
+    ASSERT_EQ(trust.allowed.size(), 3u);  // a path naming nothing allows nothing, and says so
+    ASSERT_EQ(trust.warnings.size(), 1u);
+    EXPECT_EQ(trust.warnings[0].first.line, 5);
+    EXPECT_EQ(trust.warnings[0].second,
+              "allow-list entry \"/no/such/program\" names no file here: it allows nothing");
     EXPECT_EQ(trust.allowed[0].entry, "convert");
     EXPECT_EQ(trust.allowed[0].where.line, 3);
     EXPECT_EQ(trust.allowed[1].canonical, fs::canonical(dir / "bin" / "record"));

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "glint/core/error.h"
@@ -37,6 +38,9 @@ struct ProcessingTrust {
     std::filesystem::path allow_list;
     /// Its entries: each program runs with any arguments.
     std::vector<AllowedProgram> allowed;
+    /// What the file holds that allows nothing (a path naming no file here), each with its
+    /// file:line, for the caller to log as warnings.
+    std::vector<std::pair<ErrorContext, std::string>> warnings;
 };
 
 /// True for the program names that run without the user's permission: image_tool,
@@ -64,7 +68,8 @@ std::filesystem::path allow_list_path(const char* glint_allowed_programs,
 std::filesystem::path allow_list_from_environment();
 
 /// Reads the allow-list `file`: one program per line, a bare name or an absolute path; blank
-/// lines and text after '#' ignored. No file there is an empty list. Throws glint::Error
+/// lines and text after '#' ignored. No file there is an empty list. A path that names no
+/// file here allows nothing and is a warning (ProcessingTrust::warnings). Throws glint::Error
 /// (input) at file:line for a relative path entry, and for a file others could have written
 /// (not a regular file; owned by another user than the one running glint or root; writable
 /// by its group or by anyone), as ssh refuses such a configuration.
