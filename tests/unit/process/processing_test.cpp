@@ -230,6 +230,36 @@ TEST(Processing, RunsInTheImagesFolderThenRemovesTheImage) {
     EXPECT_NE(said.find("info: [record] said on stderr\n"), std::string::npos) << said;
 }
 
+TEST(Processing, AProgramThatCannotStartIsNamedWithItsTask) {
+    // Executable, but neither a binary nor a script (no #!): the exec fails.
+    test::TempDir dir;
+    fs::create_directories(dir / "path");
+    std::ofstream(dir / "path" / "garbage") << "not a program\n\x7f" "ELFxx";
+    fs::permissions(dir / "path" / "garbage", fs::perms::owner_all);
+    const fs::path out = dir / "out";
+    fs::create_directories(out);
+    ProcessingOptions options;
+    options.path = (dir / "path").string();
+    options.allow_all = true;
+    Captured log;
+    Context context;
+    context.log = log.log();
+    ProcessingRunner runner(options, context);
+    try {
+        runner.run(event(ProcessingSchedule::collection_completed, out / "f.img", true,
+                         {task("garbage", {})}));
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        EXPECT_NE(e.message().find("processing task \"garbage\" (cam.platform:7) at "
+                                   "collection_completed of Cam -> Frame (task 1, capture 1): "),
+                  std::string::npos)
+            << e.message();
+        EXPECT_NE(e.message().find("garbage: cannot run program: Exec format error"),
+                  std::string::npos)
+            << e.message();
+    }
+}
+
 TEST(Processing, AFailingTaskKeepsTheImage) {
     test::TempDir dir;
     write_script(dir / "path" / "fail", "echo broken >&2; exit 2");
