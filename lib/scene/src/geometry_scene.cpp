@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // GeometryScene::build: checks the options and the scene, builds one Embree scene per
-// instanced object, then the top-level scene of instances — static ones with their fixed
-// transform, dynamic ones with quaternion-decomposed transforms at the time steps
-// instance_motion.cpp chooses — and the scene bounds (every step pose, padded for what
-// interpolation between steps may add). Also the small accessors.
+// instanced object, finds the scene bounds (every step pose, padded for what interpolation
+// between steps may add) and the anchor of Embree's frame (their centre), then the top-level
+// scene of instances — static ones with their fixed transform, dynamic ones with
+// quaternion-decomposed transforms at the time steps instance_motion.cpp chooses — all
+// relative to the anchor. Also the small accessors.
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -55,34 +56,32 @@ void check_options(const BuildOptions& options) {
     }
 }
 
-/// Places a static (or instantaneous) instance: fixed transform, normal matrix, bounds.
-void place_fixed(RTCGeometry geometry, const Affine& affine, const Bounds& object_box,
-                 detail::InstanceData& data, Bounds& bounds) {
-    const std::array<float, 12> xfm = detail::to_float3x4(affine);
-    rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm.data());
-    data.normal_matrix = detail::inverse_transpose(affine.linear);
-    data.bounds = detail::transformed(object_box, affine);
-    detail::expand(bounds, data.bounds);
+/// The map a static (or instantaneous) instance gives Embree: from the object's vertex
+/// buffer (relative to its centre) to Embree's frame (scene ENU less the anchor).
+Affine frame_affine(const Affine& affine, const detail::ObjectData& object, const Vec3& anchor_m) {
+    return {affine.linear, affine.apply(object.center_m) - anchor_m};
 }
 
-/// Places a moving instance: one quaternion decomposition per step.
-void place_moving(RTCGeometry geometry, const detail::MotionSamples& samples,
-                  const Bounds& object_box, const detail::ObjectExtent& extent,
-                  const MotionSampling& sampling, detail::InstanceData& data, Bounds& bounds) {
-    rtcSetGeometryTimeStepCount(geometry, static_cast<unsigned>(samples.poses.size()));
+/// Places a static (or instantaneous) instance in Embree's frame; keeps the map Embree holds
+/// (its float matrix) and the normal matrix for the hits.
+void place_fixed(RTCGeometry geometry, const Affine& affine, const detail::ObjectData& object,
+                 const Vec3& anchor_m, detail::InstanceData& data) {
+    const std::array<float, 12> xfm = detail::to_float3x4(frame_affine(affine, object, anchor_m));
+    rtcSetGeometryTransform(geometry, 0, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm.data());
+    float held[12];
+    std::copy(xfm.begin(), xfm.end(), held);
+    data.to_frame = detail::from_float3x4(held);
+    // Of the float map too: the plane a hit is rebuilt on is then Embree's to double rounding
+    // (the double map's normal would tilt it by ~1e-7, 5 mm across a 50 km triangle).
+    data.normal_matrix = detail::inverse_transpose(data.to_frame.linear);
+}
+
+/// The bounds a moving instance sweeps over the window, padded for what interpolation
+/// between steps may add.
+Bounds swept_bounds(const detail::MotionSamples& samples, const Bounds& object_box,
+                    const detail::ObjectExtent& extent, const MotionSampling& sampling) {
     Bounds swept = detail::empty_bounds();
-    for (std::size_t k = 0; k < samples.poses.size(); ++k) {
-        const motion::Pose& pose = samples.poses[k];
-        RTCQuaternionDecomposition qd;
-        rtcInitQuaternionDecomposition(&qd);
-        const motion::Quaternion& q = pose.orientation;
-        rtcQuaternionDecompositionSetQuaternion(&qd, static_cast<float>(q.w),
-                                                static_cast<float>(q.x), static_cast<float>(q.y),
-                                                static_cast<float>(q.z));
-        rtcQuaternionDecompositionSetTranslation(&qd, static_cast<float>(pose.position_m.x),
-                                                 static_cast<float>(pose.position_m.y),
-                                                 static_cast<float>(pose.position_m.z));
-        rtcSetGeometryTransformQuaternion(geometry, static_cast<unsigned>(k), &qd);
+    for (const motion::Pose& pose : samples.poses) {
         detail::expand(swept, detail::transformed(object_box, detail::pose_affine(pose)));
     }
     // Between steps a point turns on an arc that leaves the chord by at most
@@ -91,10 +90,42 @@ void place_moving(RTCGeometry geometry, const detail::MotionSamples& samples,
     const double arc_m = extent.radius_m * (1.0 - std::cos(0.5 * samples.max_step_rotation_rad));
     const double pad_m =
         arc_m + std::max(samples.max_error_m, sampling.max_step_fraction * extent.diagonal_m);
-    data.bounds = detail::padded(swept, pad_m);
-    detail::expand(bounds, data.bounds);
+    return detail::padded(swept, pad_m);
+}
+
+/// Places a moving instance: one quaternion decomposition per step, its object's centre as
+/// the shift (applied before the rotation) and the anchor taken off the translation.
+void place_moving(RTCGeometry geometry, const detail::MotionSamples& samples,
+                  const detail::ObjectData& object, const Vec3& anchor_m,
+                  detail::InstanceData& data) {
+    rtcSetGeometryTimeStepCount(geometry, static_cast<unsigned>(samples.poses.size()));
+    for (std::size_t k = 0; k < samples.poses.size(); ++k) {
+        const motion::Pose& pose = samples.poses[k];
+        RTCQuaternionDecomposition qd;
+        rtcInitQuaternionDecomposition(&qd);
+        const motion::Quaternion& q = pose.orientation;
+        rtcQuaternionDecompositionSetQuaternion(&qd, static_cast<float>(q.w),
+                                                static_cast<float>(q.x), static_cast<float>(q.y),
+                                                static_cast<float>(q.z));
+        rtcQuaternionDecompositionSetShift(&qd, static_cast<float>(object.center_m.x),
+                                           static_cast<float>(object.center_m.y),
+                                           static_cast<float>(object.center_m.z));
+        const Vec3 t = pose.position_m - anchor_m;
+        rtcQuaternionDecompositionSetTranslation(&qd, static_cast<float>(t.x),
+                                                 static_cast<float>(t.y),
+                                                 static_cast<float>(t.z));
+        rtcSetGeometryTransformQuaternion(geometry, static_cast<unsigned>(k), &qd);
+    }
     data.moving = true;
     data.geometry = geometry;
+}
+
+/// Embree's frame origin for scene bounds `bounds`: their centre, to whole metres (0 for an
+/// empty scene).
+Vec3 frame_anchor(const Bounds& bounds) {
+    if (bounds.empty()) return {};
+    const Vec3 center = (bounds.lower + bounds.upper) * 0.5;
+    return {std::round(center.x), std::round(center.y), std::round(center.z)};
 }
 
 Bounds clip_box(const Bounds& bounds) {
@@ -168,31 +199,46 @@ GeometryScene GeometryScene::build(
     }
 
     impl->any_moving = any_moving;
+    // First where every instance is (its map, or its swept box), so the anchor of Embree's
+    // frame is known before any float matrix is made.
+    std::vector<detail::Affine> fixed(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const model::Instance& instance = scene.instances[i];
+        const model::Mesh& mesh = scene.objects[instance.object_index].mesh;
+        detail::InstanceData& data = impl->instances[i];
+        data.object = instance.object_index;
+        const Bounds object_box = detail::mesh_bounds(mesh);
+        if (!instance.dynamic()) {
+            fixed[i] = detail::static_affine(instance.transform, instance.where);
+            data.bounds = detail::transformed(object_box, fixed[i]);
+        } else if (samples[i].poses.size() == 1) {
+            fixed[i] = detail::pose_affine(samples[i].poses.front());
+            data.bounds = detail::transformed(object_box, fixed[i]);
+        } else {
+            data.bounds = swept_bounds(samples[i], object_box, detail::mesh_extent(mesh),
+                                       options.motion);
+            impl->time_steps[i] = static_cast<unsigned>(samples[i].poses.size());
+        }
+        detail::expand(impl->bounds, data.bounds);
+    }
+    impl->anchor_m = frame_anchor(impl->bounds);
+
     impl->top = device.new_scene(RTC_SCENE_FLAG_ROBUST,
                                  any_moving ? RTC_BUILD_QUALITY_MEDIUM : RTC_BUILD_QUALITY_HIGH,
                                  "building the top-level scene");
     for (std::size_t i = 0; i < n; ++i) {
         const model::Instance& instance = scene.instances[i];
-        const model::Mesh& mesh = scene.objects[instance.object_index].mesh;
         const std::string what = "placing instance \"" + instance.name + "\"";
         detail::InstanceData& data = impl->instances[i];
-        data.object = instance.object_index;
         const detail::ObjectData& object = impl->objects[data.object];
         impl->instanced_triangles += object.triangle_count;
 
         detail::GeometryPtr geometry = device.new_geometry(RTC_GEOMETRY_TYPE_INSTANCE, what);
         rtcSetGeometryInstancedScene(geometry.get(), object.scene.get());
-        const Bounds object_box = detail::mesh_bounds(mesh);
-        if (!instance.dynamic()) {
-            place_fixed(geometry.get(), detail::static_affine(instance.transform, instance.where),
-                        object_box, data, impl->bounds);
-        } else if (samples[i].poses.size() == 1) {
-            place_fixed(geometry.get(), detail::pose_affine(samples[i].poses.front()), object_box,
-                        data, impl->bounds);
+        if (impl->time_steps[i] > 1) {
+            place_moving(geometry.get(), samples[i], object, impl->anchor_m, data);
         } else {
-            place_moving(geometry.get(), samples[i], object_box, detail::mesh_extent(mesh),
-                         options.motion, data, impl->bounds);
-            impl->time_steps[i] = static_cast<unsigned>(samples[i].poses.size());
+            place_fixed(geometry.get(), fixed[i], object, impl->anchor_m, data);
         }
         rtcCommitGeometry(geometry.get());
         device.check(what);

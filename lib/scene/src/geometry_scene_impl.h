@@ -4,6 +4,7 @@
 // order: the top-level scene first, then the object scenes, then the device.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -14,9 +15,29 @@
 namespace glint::scene {
 namespace detail {
 
+/// A triangle's plane in its object's buffer coordinates (vertices less the object's centre):
+/// normal · p = offset. One aligned 32-byte record per triangle, so a hit rebuilds its point
+/// from one cache line instead of an index and three vertex loads.
+struct alignas(32) TrianglePlane {
+    double offset_m = 0.0;                 ///< normal · v0, in double from the float vertices
+    std::array<float, 3> normal{};         ///< unit (v1 − v0) × (v2 − v0); 0 when degenerate
+    float diameter_m = 0.0f;               ///< the largest |vi − vj|∞, rounded up
+};
+static_assert(sizeof(TrianglePlane) == 32, "one plane per half cache line");
+
 /// One object's Embree scene and what a hit on it needs.
 struct ObjectData {
     ScenePtr scene;                        ///< null for an object no instance uses
+    /// Per triangle, its plane: a hit's position and normal.
+    std::vector<TrianglePlane> planes;
+    /// The vertex buffer Embree traces: the mesh's vertices minus `center_m`, in float
+    /// (3 per vertex, owned by the geometry the scene holds); read only for a ray lying in a
+    /// triangle's plane.
+    const float* vertices = nullptr;
+    const std::uint32_t* triangles = nullptr;  ///< 3 per triangle, owned like `vertices`
+    /// The centre of the mesh's bounds, object coordinates: the buffer holds vertices relative
+    /// to it, so Embree's object-space numbers are the object's size, not its position.
+    Vec3 center_m;
     std::vector<std::uint32_t> materials;  ///< per triangle; empty when all are single_material
     std::uint32_t single_material = 0;     ///< every triangle's, when `materials` is empty
     std::uint64_t triangle_count = 0;
@@ -28,8 +49,11 @@ struct InstanceData {
     /// True when Embree interpolates the transform over time steps (≥ 2).
     bool moving = false;
     /// Static instances (and instants): the normal matrix (inverse transpose of the linear
-    /// part of the object → scene map).
+    /// part of `to_frame`).
     Mat3 normal_matrix = Mat3::identity();
+    /// Static instances (and instants): the map from the object's vertex buffer to Embree's
+    /// frame exactly as Embree holds it (its float 3×4 matrix, read back in double).
+    Affine to_frame;
     /// Moving instances: the geometry, to ask Embree for its transform at a ray's time.
     RTCGeometry geometry = nullptr;
     /// Where the instance is over the window (moving ones: swept and padded).
@@ -45,6 +69,11 @@ struct GeometryScene::Impl {
     detail::ScenePtr top;
     std::vector<detail::InstanceData> instances;
 
+    /// Where Embree's frame has its origin, scene ENU: the centre of the scene's bounds. Rays
+    /// and instance translations are shifted by it in double before they become float, so
+    /// Embree's numbers are the scene's size, not its distance from the scene origin (a scene
+    /// in UTM coordinates keeps millimetres).
+    Vec3 anchor_m;
     Bounds bounds;       ///< tight (reported)
     Bounds clip_bounds;  ///< enlarged, for clipping rays in double precision
     TimeWindow window;

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // Object scenes: the mesh checks, the Embree triangle geometry (vertex and index buffers
 // allocated by Embree, so they are padded as its SSE loads need and counted by the memory
-// monitor), the robust high-quality BVH, and the object's bounds and extent.
+// monitor; vertices relative to the mesh's centre), the robust high-quality BVH, and the
+// object's bounds and extent.
 #include "object_scene.h"
 
 #include <algorithm>
@@ -14,7 +15,6 @@
 
 namespace glint::scene::detail {
 
-static_assert(sizeof(std::array<float, 3>) == 3 * sizeof(float), "vertices are copied as a block");
 static_assert(sizeof(std::array<std::uint32_t, 3>) == 3 * sizeof(std::uint32_t),
               "triangles are copied as a block");
 
@@ -51,6 +51,36 @@ void check_mesh(const model::GeometryObject& object, std::size_t material_count)
     }
 }
 
+namespace {
+
+Vec3 buffer_vertex(const float* vertices, std::uint32_t index) {
+    const float* v = vertices + 3 * static_cast<std::size_t>(index);
+    return {v[0], v[1], v[2]};
+}
+
+/// The plane of the triangle `corners` of the (relative, float) vertex buffer.
+TrianglePlane triangle_plane(const float* vertices, const std::array<std::uint32_t, 3>& corners) {
+    const Vec3 v0 = buffer_vertex(vertices, corners[0]);
+    const Vec3 v1 = buffer_vertex(vertices, corners[1]);
+    const Vec3 v2 = buffer_vertex(vertices, corners[2]);
+    TrianglePlane plane;
+    const Vec3 n = cross(v1 - v0, v2 - v0);
+    const double length = norm(n);
+    if (length > 0.0 && std::isfinite(length)) {
+        for (std::size_t k = 0; k < 3; ++k) plane.normal[k] = static_cast<float>(n[k] / length);
+    }
+    // Through v0 with the normal as stored (float), so the plane is exactly the one a hit uses.
+    plane.offset_m = plane.normal[0] * v0.x + plane.normal[1] * v0.y + plane.normal[2] * v0.z;
+    double diameter = 0.0;
+    for (const Vec3& e : {v1 - v0, v2 - v0, v2 - v1}) {
+        diameter = std::max({diameter, std::abs(e.x), std::abs(e.y), std::abs(e.z)});
+    }
+    plane.diameter_m = std::nextafter(static_cast<float>(diameter), INFINITY);
+    return plane;
+}
+
+}  // namespace
+
 ObjectData build_object_scene(EmbreeDevice& device, const model::GeometryObject& object) {
     const model::Mesh& mesh = object.mesh;
     const std::string what = "building object \"" + object.name + "\"";
@@ -62,7 +92,18 @@ ObjectData build_object_scene(EmbreeDevice& device, const model::GeometryObject&
                                 3 * sizeof(float), mesh.vertices_m.size()));
     device.check(what);
     if (!vertices) throw runtime_error("Embree failed while " + what + ": no vertex buffer");
-    std::memcpy(vertices, mesh.vertices_m.data(), mesh.vertices_m.size() * 3 * sizeof(float));
+    const Bounds box = mesh_bounds(mesh);
+    // A float centre: a moving instance hands it to Embree as its decomposition's shift.
+    const Vec3 center = (box.lower + box.upper) * 0.5;
+    data.center_m = {static_cast<float>(center.x), static_cast<float>(center.y),
+                     static_cast<float>(center.z)};
+    for (std::size_t i = 0; i < mesh.vertices_m.size(); ++i) {
+        const auto& v = mesh.vertices_m[i];
+        for (std::size_t k = 0; k < 3; ++k) {
+            vertices[3 * i + k] = static_cast<float>(static_cast<double>(v[k]) - data.center_m[k]);
+        }
+    }
+    data.vertices = vertices;
 
     auto* triangles = static_cast<std::uint32_t*>(
         rtcSetNewGeometryBuffer(geometry.get(), RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
@@ -71,6 +112,11 @@ ObjectData build_object_scene(EmbreeDevice& device, const model::GeometryObject&
     if (!triangles) throw runtime_error("Embree failed while " + what + ": no index buffer");
     std::memcpy(triangles, mesh.triangles.data(),
                 mesh.triangles.size() * 3 * sizeof(std::uint32_t));
+    data.triangles = triangles;
+    data.planes.resize(mesh.triangles.size());
+    for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+        data.planes[t] = triangle_plane(vertices, mesh.triangles[t]);
+    }
 
     rtcCommitGeometry(geometry.get());
     device.check(what);
@@ -81,8 +127,7 @@ ObjectData build_object_scene(EmbreeDevice& device, const model::GeometryObject&
     rtcCommitScene(data.scene.get());
     device.check(what);
 
-    // The scene holds a reference to the geometry, which owns the buffers; a hit reads
-    // neither (its normal is Embree's).
+    // The scene holds a reference to the geometry, which owns the buffers.
     // An object of one material (a terrain, most OBJ parts) keeps no per-triangle list: a hit
     // then needs no lookup (a cache miss on a large mesh).
     const auto& m = mesh.triangle_materials;

@@ -2,11 +2,12 @@
 // Ray queries on a built GeometryScene. A double-precision ray is first clipped to the
 // enlarged scene box (slab test in double); a ray that misses the box never reaches Embree.
 // Otherwise its origin moves to where the wanted interval starts inside the box (the box
-// entry, or tmin when that is later), which keeps the single-precision trace short and its
-// coordinates at the scene's own magnitude; distances are then reported from the caller's
-// origin, corrected for the rounding of the moved origin to float. The hit normal is
-// Embree's geometric normal (counter-clockwise front face), taken to scene ENU by the
-// instance's normal matrix (at the ray's time for moving instances) and normalized in double.
+// entry, or tmin when that is later) and into Embree's frame (less the scene's anchor), which
+// keeps the single-precision trace short and its coordinates at the scene's own size. A hit
+// is then rebuilt in double from Embree's triangle and barycentrics, not from its float
+// distance: the position lies on the triangle whatever the distance the ray ran, the normal
+// is the triangle's, and the spawn offset is a bound on the float error a ray leaving it
+// meets (docs/scene.md, "Hit points and the spawn offset").
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -22,18 +23,17 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 /// A caller's ray as Embree traces it.
 struct ClippedRay {
-    double shift_m = 0.0;  ///< distance along the ray from the caller's origin to `origin`
     float origin[3] = {0.0f, 0.0f, 0.0f};
     float direction[3] = {0.0f, 0.0f, 0.0f};
     float tnear = 0.0f;
     float tfar = 0.0f;
 };
 
-/// The ray origin + s · direction, s in [from, to], as Embree traces it: from `from` on.
+/// The ray origin + s · direction, s in [from, to], as Embree traces it: from `from` on, in
+/// Embree's frame (scene ENU less `anchor_m`).
 void set_clipped(const Vec3& origin, const Vec3& direction, double from, double to,
-                 ClippedRay& ray) noexcept {
-    ray.shift_m = from;
-    const Vec3 start = origin + direction * from;
+                 const Vec3& anchor_m, ClippedRay& ray) noexcept {
+    const Vec3 start = (origin - anchor_m) + direction * from;
     for (std::size_t i = 0; i < 3; ++i) {
         ray.origin[i] = static_cast<float>(start[i]);
         ray.direction[i] = static_cast<float>(direction[i]);
@@ -45,8 +45,8 @@ void set_clipped(const Vec3& origin, const Vec3& direction, double from, double 
 /// The part of origin + s · direction, s in (tmin, tmax), inside `box`, into `out`; false
 /// (and `out` unspecified) when empty. Written in place: returning the 40-byte ray by value
 /// cost a block copy per ray.
-bool clip(const Bounds& box, const Vec3& origin, const Vec3& direction, double tmin_m,
-          double tmax_m, ClippedRay& out) noexcept {
+bool clip(const Bounds& box, const Vec3& anchor_m, const Vec3& origin, const Vec3& direction,
+          double tmin_m, double tmax_m, ClippedRay& out) noexcept {
     if (box.empty() || !(tmin_m < tmax_m)) return false;
     // A ray Embree could not trace sensibly (NaN, infinite or zero) hits nothing.
     const double span = dot(direction, direction);
@@ -59,7 +59,7 @@ bool clip(const Bounds& box, const Vec3& origin, const Vec3& direction, double t
     if (tmin_m >= 0.0 && std::isfinite(tmin_m) && origin.x >= box.lower.x &&
         origin.x <= box.upper.x && origin.y >= box.lower.y && origin.y <= box.upper.y &&
         origin.z >= box.lower.z && origin.z <= box.upper.z) {
-        set_clipped(origin, direction, tmin_m, tmax_m, out);
+        set_clipped(origin, direction, tmin_m, tmax_m, anchor_m, out);
         return true;
     }
     double enter = -kInfinity;
@@ -79,7 +79,7 @@ bool clip(const Bounds& box, const Vec3& origin, const Vec3& direction, double t
     const double from = std::max(tmin_m, enter);
     const double to = std::min(tmax_m, leave);
     if (!(from <= to) || !std::isfinite(from)) return false;
-    set_clipped(origin, direction, from, to, out);
+    set_clipped(origin, direction, from, to, anchor_m, out);
     return true;
 }
 
@@ -106,50 +106,97 @@ float ray_time(const TimeWindow& window, double time_s) noexcept {
     return static_cast<float>((time_s - window.begin_s) / length_s);
 }
 
-/// The hit Embree reported for `clipped` (the caller's ray origin_m + s · direction): distance
-/// from the caller's origin, position, material and the unit normal in scene ENU.
-/// `object_normal` is Embree's geometric normal (unnormalised, in the object's frame: the
-/// cross product (v1 − v0) × (v2 − v0) of the triangle's float vertices, computed in float),
-/// so a hit reads none of the triangle's indices or vertices — on a large mesh those loads
-/// miss the cache.
+/// The spawn offset per unit of the magnitudes Embree's numbers carry near a hit: 4 float
+/// ulps (2⁻²²), 8 times the smallest factor with which the scene's precision tests pass
+/// (docs/scene.md, "Spawn offset").
+constexpr double kSpawnRelative = 0x1p-22;
+/// A floor for a hit whose magnitudes are all near zero, m.
+constexpr double kSpawnFloor_m = 1e-9;
+
+Vec3 vertex(const float* vertices, std::uint32_t index) noexcept {
+    const float* v = vertices + 3 * static_cast<std::size_t>(index);
+    return {v[0], v[1], v[2]};
+}
+
+double largest_abs(const Vec3& v) noexcept {
+    return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+}
+
+/// The largest absolute row sum of `m` (its ∞-norm: how much it can stretch a vector's
+/// largest coordinate).
+double row_norm(const detail::Mat3& m) noexcept {
+    double out = 0.0;
+    for (std::size_t i = 0; i < 3; ++i) {
+        out = std::max(out, std::abs(m(i, 0)) + std::abs(m(i, 1)) + std::abs(m(i, 2)));
+    }
+    return out;
+}
+
+/// The hit Embree reported on the caller's ray origin_m + s · direction: Embree's instance,
+/// triangle and barycentrics (u, v). The triangle's plane (computed in double from its float
+/// vertices at build) is taken to Embree's frame through the instance's map as Embree holds
+/// it; the position is where the caller's double ray crosses that plane, so it lies on
+/// Embree's surface to double rounding whatever the distance the float ray ran. The normal is
+/// the plane's, in scene ENU. The spawn offset bounds the float error of a ray leaving the hit
+/// (docs/scene.md, "Hit points").
 void make_hit(const std::vector<detail::InstanceData>& instances,
-              const std::vector<detail::ObjectData>& objects, const Vec3& origin_m,
-              const Vec3& direction, const ClippedRay& clipped, float time01, float tfar,
-              std::uint32_t instance_id, std::uint32_t triangle, const Vec3& object_normal,
-              RayHit& hit) {
-    // The float origin and direction as Embree used them, measured along the caller's ray.
-    const Vec3 float_origin{clipped.origin[0], clipped.origin[1], clipped.origin[2]};
-    const Vec3 float_direction{clipped.direction[0], clipped.direction[1], clipped.direction[2]};
-    hit.distance_m = dot(float_origin - origin_m, direction) +
-                     static_cast<double>(tfar) * dot(float_direction, direction);
-    hit.position_m = origin_m + direction * hit.distance_m;
+              const std::vector<detail::ObjectData>& objects, const Vec3& anchor_m,
+              const Vec3& origin_m, const Vec3& direction, float time01,
+              std::uint32_t instance_id, std::uint32_t triangle, float u, float v, RayHit& hit) {
     hit.instance = instance_id;
     hit.triangle = triangle;
-
     const detail::InstanceData& instance = instances[hit.instance];
     const detail::ObjectData& object = objects[instance.object];
     hit.material =
         object.materials.empty() ? object.single_material : object.materials[hit.triangle];
+
+    detail::Affine to_frame = instance.to_frame;
     detail::Mat3 normal_matrix = instance.normal_matrix;
     if (instance.moving) {
         float xfm[12];
         rtcGetGeometryTransform(instance.geometry, time01, RTC_FORMAT_FLOAT3X4_COLUMN_MAJOR, xfm);
-        normal_matrix = detail::inverse_transpose(detail::from_float3x4(xfm).linear);
+        to_frame = detail::from_float3x4(xfm);
+        normal_matrix = detail::inverse_transpose(to_frame.linear);
     }
-    hit.normal = normalized(normal_matrix * object_normal);
+    const detail::TrianglePlane& plane = object.planes[triangle];
+    // p = A q + T with normal · q = offset: (A⁻ᵀ normal) · (p − T) = offset.
+    const Vec3 normal =
+        normal_matrix * Vec3{plane.normal[0], plane.normal[1], plane.normal[2]};
+    hit.normal = normalized(normal);
+    const Vec3 start = origin_m - anchor_m;
+    const double along = dot(normal, direction);
+    const double t =
+        (plane.offset_m + dot(normal, to_frame.translation_m - start)) / along;
+    Vec3 in_frame;
+    if (along != 0.0 && std::isfinite(t)) {
+        in_frame = start + direction * t;
+    } else {
+        // A ray in the plane: the barycentric point, in the plane too (as good in it as
+        // Embree's float u, v).
+        const std::uint32_t* corners = object.triangles + 3 * static_cast<std::size_t>(triangle);
+        const Vec3 v0 = vertex(object.vertices, corners[0]);
+        const Vec3 e1 = vertex(object.vertices, corners[1]) - v0;
+        const Vec3 e2 = vertex(object.vertices, corners[2]) - v0;
+        in_frame = to_frame.apply(v0 + e1 * static_cast<double>(u) + e2 * static_cast<double>(v));
+    }
+    hit.position_m = in_frame + anchor_m;
+    hit.distance_m = dot(hit.position_m - origin_m, direction);
+
+    const double frame_size = largest_abs(in_frame) + largest_abs(to_frame.translation_m);
+    const double triangle_size = plane.diameter_m * row_norm(to_frame.linear);
+    hit.spawn_offset_m = kSpawnFloor_m + kSpawnRelative * (frame_size + 2.0 * triangle_size);
 }
 
 /// Embree's packet of kPacketSize rays, 64-byte aligned as rtcIntersect16 requires, with
-/// each lane's clipped ray and time.
+/// each lane's time.
 struct alignas(64) Packet {
     alignas(64) int valid[kPacketSize];
     RTCRayHit16 rayhit;
-    ClippedRay clipped[kPacketSize];  ///< lane k's, where valid[k]
     float time01[kPacketSize] = {};
 
     /// Loads `rays`, each clipped to `box` (a ray that misses it leaves its lane inactive);
     /// returns whether any lane is active.
-    bool load(const Bounds& box, const TimeWindow& window,
+    bool load(const Bounds& box, const Vec3& anchor_m, const TimeWindow& window,
               std::span<const PacketRay> rays) noexcept;
 };
 static_assert(kPacketSize == 16, "the packet queries use Embree's 16-wide calls");
@@ -178,7 +225,7 @@ void fill_inactive_lane(RTCRay16& out, std::size_t k) noexcept {
     fill_lane(out, k, idle, 0.0f);
 }
 
-bool Packet::load(const Bounds& box, const TimeWindow& window,
+bool Packet::load(const Bounds& box, const Vec3& anchor_m, const TimeWindow& window,
                   std::span<const PacketRay> rays) noexcept {
     bool any = false;
     for (std::size_t k = 0; k < kPacketSize; ++k) {
@@ -189,9 +236,12 @@ bool Packet::load(const Bounds& box, const TimeWindow& window,
         fill_inactive_lane(rayhit.ray, k);
         if (k >= rays.size()) continue;
         const PacketRay& ray = rays[k];
-        if (!clip(box, ray.origin_m, ray.direction, ray.tmin_m, ray.tmax_m, clipped[k])) continue;
+        ClippedRay clipped;
+        if (!clip(box, anchor_m, ray.origin_m, ray.direction, ray.tmin_m, ray.tmax_m, clipped)) {
+            continue;
+        }
         time01[k] = ray_time(window, ray.time_s);
-        fill_lane(rayhit.ray, k, clipped[k], time01[k]);
+        fill_lane(rayhit.ray, k, clipped, time01[k]);
         valid[k] = -1;
         any = true;
     }
@@ -227,7 +277,9 @@ bool GeometryScene::intersect_into(const Vec3& origin_m, const Vec3& direction, 
                                    RayHit& hit, double tmin_m, double tmax_m) const {
     const Impl& impl = *m_impl;
     ClippedRay clipped;
-    if (!clip(impl.clip_bounds, origin_m, direction, tmin_m, tmax_m, clipped)) return false;
+    if (!clip(impl.clip_bounds, impl.anchor_m, origin_m, direction, tmin_m, tmax_m, clipped)) {
+        return false;
+    }
     const float time01 = ray_time(impl.window, time_s);
 
     RTCIntersectContext context;
@@ -239,9 +291,8 @@ bool GeometryScene::intersect_into(const Vec3& origin_m, const Vec3& direction, 
     rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(impl.top.get(), &context, &rayhit);
     if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
-    make_hit(impl.instances, impl.objects, origin_m, direction, clipped, time01, rayhit.ray.tfar,
-             rayhit.hit.instID[0], rayhit.hit.primID,
-             Vec3{rayhit.hit.Ng_x, rayhit.hit.Ng_y, rayhit.hit.Ng_z}, hit);
+    make_hit(impl.instances, impl.objects, impl.anchor_m, origin_m, direction, time01,
+             rayhit.hit.instID[0], rayhit.hit.primID, rayhit.hit.u, rayhit.hit.v, hit);
     return true;
 }
 
@@ -256,7 +307,7 @@ void GeometryScene::intersect_packet(std::span<const PacketRay> rays,
         return;
     }
     Packet packet;
-    const bool any = packet.load(impl.clip_bounds, impl.window, rays);
+    const bool any = packet.load(impl.clip_bounds, impl.anchor_m, impl.window, rays);
     if (any) {
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
@@ -270,9 +321,9 @@ void GeometryScene::intersect_packet(std::span<const PacketRay> rays,
             hits[k].reset();
             continue;
         }
-        make_hit(impl.instances, impl.objects, rays[k].origin_m, rays[k].direction,
-                 packet.clipped[k], packet.time01[k], packet.rayhit.ray.tfar[k], hit.instID[0][k],
-                 hit.primID[k], Vec3{hit.Ng_x[k], hit.Ng_y[k], hit.Ng_z[k]}, hits[k].emplace());
+        make_hit(impl.instances, impl.objects, impl.anchor_m, rays[k].origin_m, rays[k].direction,
+                 packet.time01[k], hit.instID[0][k], hit.primID[k], hit.u[k], hit.v[k],
+                 hits[k].emplace());
     }
 }
 
@@ -287,7 +338,7 @@ void GeometryScene::occluded_packet(std::span<const PacketRay> rays,
         return;
     }
     Packet packet;
-    const bool any = packet.load(impl.clip_bounds, impl.window, rays);
+    const bool any = packet.load(impl.clip_bounds, impl.anchor_m, impl.window, rays);
     if (any) {
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
@@ -302,7 +353,9 @@ bool GeometryScene::occluded(const Vec3& origin_m, const Vec3& direction, double
                              double tmin_m, double tmax_m) const {
     const Impl& impl = *m_impl;
     ClippedRay clipped;
-    if (!clip(impl.clip_bounds, origin_m, direction, tmin_m, tmax_m, clipped)) return false;
+    if (!clip(impl.clip_bounds, impl.anchor_m, origin_m, direction, tmin_m, tmax_m, clipped)) {
+        return false;
+    }
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRay ray;
@@ -313,13 +366,7 @@ bool GeometryScene::occluded(const Vec3& origin_m, const Vec3& direction, double
 
 Vec3 GeometryScene::spawn_origin(const RayHit& hit, const Vec3& direction) const noexcept {
     const double side = dot(direction, hit.normal) >= 0.0 ? 1.0 : -1.0;
-    return hit.position_m + hit.normal * (side * spawn_offset_m(hit.position_m));
-}
-
-double GeometryScene::spawn_offset_m(const Vec3& position_m) noexcept {
-    const double largest =
-        std::max({std::abs(position_m.x), std::abs(position_m.y), std::abs(position_m.z)});
-    return 1e-4 + std::ldexp(largest, -16);
+    return hit.position_m + hit.normal * (side * hit.spawn_offset_m);
 }
 
 }  // namespace glint::scene

@@ -9,9 +9,14 @@
 //
 // Precision: Embree works in single precision. intersect() and occluded() take double-
 // precision rays and first clip them to the scene's bounding box (slightly enlarged) in
-// double precision, so a sensor 700 km up does not lose the ground to float rounding; the
-// distances they report are from the caller's origin. spawn_origin() offsets a secondary
-// ray's origin off the surface by a distance that grows with the coordinates' magnitude.
+// double precision, so a sensor 36,000 km up does not lose the ground to float rounding.
+// Embree's frame has its origin at the centre of the scene's bounds and each object's
+// vertices are stored relative to the object's centre, so Embree's numbers are as large as
+// the scene and the objects, not as their distance from the scene origin (UTM coordinates
+// work). A hit's position is rebuilt in double from its triangle, so it lies on the surface
+// however far the ray ran; the distances reported are from the caller's origin.
+// spawn_origin() moves a secondary ray's origin off the surface by a bound on the float
+// error of Embree's numbers near the hit, so no surface is hit again by a ray leaving it.
 //
 // Errors: Embree device errors (out of memory, invalid arguments, unsupported CPU) are
 // collected by the device's error callback and rethrown as glint::Error (runtime) after the
@@ -93,10 +98,15 @@ struct RayHit {
     double distance_m = 0.0;  ///< along the (unit) direction, from the caller's origin
     Vec3 position_m;          ///< origin + distance · direction, scene ENU
     /// Unit geometric normal in scene ENU at the ray's time, on the side of the triangle's
-    /// front face (counter-clockwise vertices); not flipped towards the ray. It is Embree's
-    /// (the edges' cross product in single precision, relative error ~1e-7), normalized in
-    /// double after the instance's normal matrix.
+    /// front face (counter-clockwise vertices); not flipped towards the ray: the triangle's
+    /// plane normal (the edges' cross product of its float vertices, normalized in double,
+    /// stored as float), taken through the instance's normal matrix and normalized.
     Vec3 normal;
+    /// How far spawn_origin() moves a ray leaving this hit off the surface, m: a bound on the
+    /// single-precision error of Embree's numbers near the hit (4 float ulps of the hit's
+    /// coordinates in Embree's frame, its instance's translation and its triangle's size;
+    /// docs/scene.md).
+    double spawn_offset_m = 0.0;
     std::uint32_t material = 0;  ///< index into model::Scene::materials
     std::uint32_t instance = 0;  ///< index into model::Scene::instances
     std::uint32_t triangle = 0;  ///< index into the object's mesh triangles
@@ -173,11 +183,8 @@ public:
                   double tmax_m = std::numeric_limits<double>::infinity()) const;
 
     /// An origin for a ray leaving `hit` towards `direction`: the hit position moved off the
-    /// surface along the normal (to the side `direction` points to) by spawn_offset_m().
+    /// surface along the normal (to the side `direction` points to) by hit.spawn_offset_m.
     Vec3 spawn_origin(const RayHit& hit, const Vec3& direction) const noexcept;
-    /// The offset spawn_origin uses at `position_m`: 1e-4 m + 2⁻¹⁶ × the largest absolute
-    /// coordinate (128–256 float ulps), enough to clear Embree's single-precision hit.
-    static double spawn_offset_m(const Vec3& position_m) noexcept;
 
     /// Bounds of the whole scene over the window (empty for an empty scene).
     const Bounds& bounds() const noexcept;
