@@ -313,7 +313,10 @@ struct ParametricAtmosphereModel::Scattering {
 
 std::shared_ptr<const ParametricAtmosphereModel::Scattering> ParametricAtmosphereModel::scattering(
     const SpectralGrid& grid, const AtmosphereGeometry& geometry) const {
-    if (!m_parameters.multiple_scattering || !sun_up(geometry)) return nullptr;
+    if (!m_parameters.multiple_scattering || !sun_up(geometry) ||
+        geometry.surface_altitude_m >= kTopOfAtmosphereM) {
+        return nullptr;
+    }
     // The solutions are computed for the geometry rounded (sun zenith to
     // kScatteringZenithStepDeg, altitudes to kScatteringAltitudeStepM), always, so that the
     // captures of a sequence share them and what a cached entry holds never depends on which
@@ -416,7 +419,9 @@ std::shared_ptr<const ParametricAtmosphereModel::Scattering> ParametricAtmospher
         }
         out->solutions.push_back(solve_scattering_orders(problem));
     }
-    constexpr std::size_t kKept = 4;
+    // Enough for every level of a scene's environment (sky and sensor path of each), so a
+    // sequence of captures at one sun geometry solves each level once.
+    constexpr std::size_t kKept = 64;
     if (m_scattering.size() >= kKept) m_scattering.erase(m_scattering.begin());
     m_scattering.push_back(out);
     return out;
@@ -434,19 +439,23 @@ double ParametricAtmosphereModel::aerosol_optical_depth(double wavelength_um,
            std::exp(-altitude_m / m_parameters.aerosol_scale_height_m);
 }
 
-double ParametricAtmosphereModel::sky_emissivity() const noexcept {
+double ParametricAtmosphereModel::sky_emissivity(double altitude_m) const noexcept {
     const double t = m_parameters.air_temperature_k;
-    if (t <= 0.0) return 0.0;
-    return std::clamp(1.24 * std::pow(m_parameters.water_vapor_pressure_hpa / t, 1.0 / 7.0), 0.0,
-                      1.0);
+    if (t <= 0.0 || altitude_m >= kTopOfAtmosphereM) return 0.0;
+    // The vapour pressure falls with the water column above: e · e^(−z/H_w) (sea level 0).
+    const double vapour_hpa =
+        m_parameters.water_vapor_pressure_hpa * std::exp(-std::max(altitude_m, 0.0) /
+                                                         kWaterScaleHeightM);
+    return std::clamp(1.24 * std::pow(vapour_hpa / t, 1.0 / 7.0), 0.0, 1.0);
 }
 
 std::vector<double> ParametricAtmosphereModel::sun_transmittance(
     const SpectralGrid& grid, const AtmosphereGeometry& geometry) const {
     check_geometry(geometry);
     if (!sun_up(geometry)) return filled(grid, 0.0);
-    const double m = relative_air_mass(geometry.sun_zenith_deg);
     const double z = geometry.surface_altitude_m;
+    if (z >= kTopOfAtmosphereM) return filled(grid, 1.0);  // exo-atmospheric
+    const double m = relative_air_mass(geometry.sun_zenith_deg);
     std::vector<double> out = gas_transmittance(grid, slant(gas_amounts_above(z), {}, m));
     for (std::size_t i = 0; i < grid.size(); ++i) {
         const double wl = grid.wavelength_um(i);
@@ -461,6 +470,7 @@ std::vector<double> ParametricAtmosphereModel::sensor_transmittance(
     const double m = relative_air_mass(geometry.view_zenith_deg);
     const double z0 = geometry.surface_altitude_m;
     const double z1 = std::max(z0, geometry.sensor_altitude_m);
+    if (z0 >= kTopOfAtmosphereM) return filled(grid, 1.0);  // the path lies above the model
     std::vector<double> out =
         gas_transmittance(grid, slant(gas_amounts_above(z0), gas_amounts_above(z1), m));
     for (std::size_t i = 0; i < grid.size(); ++i) {
@@ -647,10 +657,10 @@ std::vector<double> ParametricAtmosphereModel::diffuse_sky_irradiance_w_per_cm2_
     check_geometry(geometry);
     check_size(grid, toa);
     std::vector<double> out(grid.size(), 0.0);
-    if (!sun_up(geometry)) return out;
+    const double z = geometry.surface_altitude_m;
+    if (!sun_up(geometry) || z >= kTopOfAtmosphereM) return out;
     const double m = relative_air_mass(geometry.sun_zenith_deg);
     const double mu = std::cos(geometry.sun_zenith_deg * kDegToRad);
-    const double z = geometry.surface_altitude_m;
     const double omega = m_parameters.aerosol_single_scatter_albedo;
     const double forward = hg_forward_fraction(m_parameters.aerosol_asymmetry);
     // Gas absorption of the diffuse light: the direct beam's, at the sun's air mass (the
@@ -679,7 +689,7 @@ std::vector<double> ParametricAtmosphereModel::diffuse_sky_irradiance_w_per_cm2_
 std::vector<double> ParametricAtmosphereModel::thermal_sky_radiance_w_per_cm2_sr_um(
     const SpectralGrid& grid, const AtmosphereGeometry& geometry) const {
     check_geometry(geometry);
-    const double emissivity = sky_emissivity();
+    const double emissivity = sky_emissivity(geometry.surface_altitude_m);
     std::vector<double> out;
     out.reserve(grid.size());
     for (double wl : grid.wavelengths_um()) {

@@ -149,7 +149,20 @@ Environment Environment::make(const SpectralGrid& grid,
     if (!std::isfinite(in.surface_altitude_m) || !std::isfinite(in.sensor_altitude_m)) {
         throw input_error("the surface and sensor altitudes must be finite");
     }
+    if (in.levels_z_m.size() > kMaxLevels) {
+        throw input_error("the environment takes at most " + std::to_string(kMaxLevels) +
+                          " levels (" + std::to_string(in.levels_z_m.size()) + " given)");
+    }
     Environment env(grid);
+    if (!in.levels_z_m.empty()) {
+        env.m_levels_z = in.levels_z_m;
+        for (const double z : env.m_levels_z) {
+            if (!std::isfinite(z)) throw input_error("the environment's levels must be finite");
+        }
+        std::sort(env.m_levels_z.begin(), env.m_levels_z.end());
+        env.m_levels_z.erase(std::unique(env.m_levels_z.begin(), env.m_levels_z.end()),
+                             env.m_levels_z.end());
+    }
     env.m_sun_begin = checked_unit(in.sun_direction_begin, "the sun direction at the window begin");
     env.m_sun_end = checked_unit(in.sun_direction_end, "the sun direction at the window end");
     env.m_window_begin_s = in.window_begin_s;
@@ -159,8 +172,6 @@ Environment Environment::make(const SpectralGrid& grid,
     glint::atmosphere::AtmosphereGeometry geometry;
     geometry.sun_zenith_deg = zenith_deg(sun_mid);
     geometry.sun_azimuth_deg = azimuth_deg(sun_mid);
-    geometry.surface_altitude_m = in.surface_altitude_m;
-    geometry.sensor_altitude_m = std::max(in.sensor_altitude_m, in.surface_altitude_m);
 
     if (!(in.source_irradiance_scale > 0.0) || !std::isfinite(in.source_irradiance_scale) ||
         !(in.source_half_angle_rad > 0.0) || !(in.source_half_angle_rad < 0.1)) {
@@ -176,35 +187,86 @@ Environment Environment::make(const SpectralGrid& grid,
     const double scale = std::exp(static_cast<double>(scale_key) * SensorPathCache::kSourceScaleStep);
     std::vector<double> toa = sun.resample(grid, in.sun_distance_au);
     for (double& v : toa) v *= scale;
-    const std::vector<double> t_sun = atmosphere.sun_transmittance(grid, geometry);
-    for (std::size_t b = 0; b < env.m_bands; ++b) env.m_sun[b] = toa[b] * t_sun[b];
-    env.m_sky = atmosphere.sky_radiance_w_per_cm2_sr_um(grid, geometry, toa);
+
+    const std::size_t levels = env.m_levels_z.size();
+    env.m_sun.assign(levels * env.m_bands, 0.0);
+    env.m_sky.assign(levels * env.m_bands, 0.0);
+    env.m_paths.assign(levels, nullptr);
+    env.m_upward.assign(levels, false);
+    for (std::size_t level = 0; level < levels; ++level) {
+        const double altitude_m = in.surface_altitude_m + env.m_levels_z[level];
+        // A level above the sensor: the path between them is the reversed one, the sensor
+        // as its lower end (transmittance is reciprocal; see docs/scene.md).
+        const bool upward = altitude_m > in.sensor_altitude_m;
+        env.m_upward[level] = upward;
+        geometry.surface_altitude_m = altitude_m;
+        geometry.sensor_altitude_m = std::max(in.sensor_altitude_m, altitude_m);
+        const std::vector<double> t_sun = atmosphere.sun_transmittance(grid, geometry);
+        const std::vector<double> sky = atmosphere.sky_radiance_w_per_cm2_sr_um(grid, geometry, toa);
+        for (std::size_t b = 0; b < env.m_bands; ++b) {
+            env.m_sun[level * env.m_bands + b] = toa[b] * t_sun[b];
+            env.m_sky[level * env.m_bands + b] = sky[b];
+        }
+
+        // The sensor path at the rounded geometry (see SensorPathCache).
+        glint::atmosphere::AtmosphereGeometry path = geometry;
+        if (upward) {
+            path.surface_altitude_m = in.sensor_altitude_m;
+            path.sensor_altitude_m = altitude_m;
+        }
+        const SensorPathCache::Key key{
+            std::llround(path.sun_zenith_deg / SensorPathCache::kAngleStepDeg),
+            std::llround(path.sun_azimuth_deg / SensorPathCache::kAngleStepDeg),
+            std::llround(path.surface_altitude_m / SensorPathCache::kAltitudeStepM),
+            std::llround(path.sensor_altitude_m / SensorPathCache::kAltitudeStepM),
+            std::llround(in.sun_distance_au / SensorPathCache::kSunDistanceStepAu), scale_key};
+        std::shared_ptr<const SensorPathTables> tables =
+            cache != nullptr ? cache->find(key) : nullptr;
+        if (!tables) {
+            glint::atmosphere::AtmosphereGeometry rounded = path;
+            rounded.sun_zenith_deg = static_cast<double>(key[0]) * SensorPathCache::kAngleStepDeg;
+            rounded.sun_azimuth_deg = static_cast<double>(key[1]) * SensorPathCache::kAngleStepDeg;
+            rounded.surface_altitude_m =
+                static_cast<double>(key[2]) * SensorPathCache::kAltitudeStepM;
+            rounded.sensor_altitude_m =
+                static_cast<double>(key[3]) * SensorPathCache::kAltitudeStepM;
+            // The exo-atmospheric sun at the rounded distance too: the tables are a function
+            // of the key alone (a shard renders the bytes of the whole run).
+            std::vector<double> rounded_toa = sun.resample(
+                grid, static_cast<double>(key[4]) * SensorPathCache::kSunDistanceStepAu);
+            for (double& v : rounded_toa) v *= scale;
+            tables = sensor_path_tables(grid, atmosphere, rounded, rounded_toa, in.threads);
+            if (cache != nullptr) cache->insert(key, tables);
+        }
+        if (upward && any_positive(tables->path_radiance)) {
+            // The model's path radiance is what the upper end sees looking down: not this
+            // path's. It is left out (docs/scene.md).
+            auto transmittance_only = std::make_shared<SensorPathTables>(*tables);
+            std::fill(transmittance_only->path_radiance.begin(),
+                      transmittance_only->path_radiance.end(), 0.0);
+            transmittance_only->effects =
+                std::any_of(transmittance_only->transmittance.begin(),
+                            transmittance_only->transmittance.end(),
+                            [](double v) { return v != 1.0; });
+            tables = std::move(transmittance_only);
+        }
+        env.m_sensor_path = env.m_sensor_path || tables->effects;
+        env.m_paths[level] = std::move(tables);
+    }
     env.m_sun_visible = any_positive(env.m_sun);
     env.m_sky_black = !any_positive(env.m_sky);
-
-    // The sensor path at the rounded geometry (see SensorPathCache).
-    const SensorPathCache::Key key{
-        std::llround(geometry.sun_zenith_deg / SensorPathCache::kAngleStepDeg),
-        std::llround(geometry.sun_azimuth_deg / SensorPathCache::kAngleStepDeg),
-        std::llround(geometry.surface_altitude_m / SensorPathCache::kAltitudeStepM),
-        std::llround(geometry.sensor_altitude_m / SensorPathCache::kAltitudeStepM),
-        std::llround(in.sun_distance_au / SensorPathCache::kSunDistanceStepAu), scale_key};
-    if (cache != nullptr) env.m_paths = cache->find(key);
-    if (!env.m_paths) {
-        glint::atmosphere::AtmosphereGeometry rounded = geometry;
-        rounded.sun_zenith_deg = static_cast<double>(key[0]) * SensorPathCache::kAngleStepDeg;
-        rounded.sun_azimuth_deg = static_cast<double>(key[1]) * SensorPathCache::kAngleStepDeg;
-        rounded.surface_altitude_m = static_cast<double>(key[2]) * SensorPathCache::kAltitudeStepM;
-        rounded.sensor_altitude_m = static_cast<double>(key[3]) * SensorPathCache::kAltitudeStepM;
-        // The exo-atmospheric sun at the rounded distance too: the tables are a function of
-        // the key alone (a shard renders the bytes of the whole run).
-        std::vector<double> rounded_toa =
-            sun.resample(grid, static_cast<double>(key[4]) * SensorPathCache::kSunDistanceStepAu);
-        for (double& v : rounded_toa) v *= scale;
-        env.m_paths = sensor_path_tables(grid, atmosphere, rounded, rounded_toa, in.threads);
-        if (cache != nullptr) cache->insert(key, env.m_paths);
-    }
     return env;
+}
+
+AltitudeLevel Environment::level_at(double z_m) const noexcept {
+    const std::size_t n = m_levels_z.size();
+    if (n == 1 || !(z_m > m_levels_z.front())) return {0, 0.0};
+    if (!(z_m < m_levels_z.back())) return {n - 1, 0.0};
+    const auto above = std::upper_bound(m_levels_z.begin(), m_levels_z.end(), z_m);
+    const auto index = static_cast<std::size_t>(above - m_levels_z.begin()) - 1;
+    const double lo = m_levels_z[index];
+    const double fraction = (z_m - lo) / (m_levels_z[index + 1] - lo);
+    return {index, fraction};
 }
 
 Vec3 Environment::sun_direction(double time_s) const noexcept {
@@ -214,10 +276,12 @@ Vec3 Environment::sun_direction(double time_s) const noexcept {
     return normalized(m_sun_begin * (1.0 - f) + m_sun_end * f);
 }
 
-Environment::PathLookup Environment::path_lookup(const Vec3& to_sensor,
+Environment::PathLookup Environment::path_lookup(std::size_t level, const Vec3& to_sensor,
                                                  double time_s) const noexcept {
-    const SensorPathTables& tables = *m_paths;
-    const auto [z0, fz] = locate(zenith_deg(to_sensor), kViewZenithStepDeg, tables.zenith_nodes);
+    const SensorPathTables& tables = *m_paths[level];
+    // Above the sensor the tables are of the reversed path (sensor → surface, upwards).
+    const double zenith = m_upward[level] ? 180.0 - zenith_deg(to_sensor) : zenith_deg(to_sensor);
+    const auto [z0, fz] = locate(zenith, kViewZenithStepDeg, tables.zenith_nodes);
     double relative = std::fabs(azimuth_deg(to_sensor) - azimuth_deg(sun_direction(time_s)));
     if (relative > 180.0) relative = 360.0 - relative;
     const auto [a0, fa] = locate(relative, kAzimuthStepDeg, tables.azimuth_nodes);
@@ -236,33 +300,91 @@ Environment::PathLookup Environment::path_lookup(const Vec3& to_sensor,
     return l;
 }
 
-void Environment::sensor_path(const Vec3& to_sensor, double time_s, std::span<double> transmittance,
+void Environment::sensor_path(const Vec3& to_sensor, double time_s, double z_m,
+                              std::span<double> transmittance,
                               std::span<double> path_radiance) const noexcept {
     if (!has_sensor_path()) {
         std::fill(transmittance.begin(), transmittance.end(), 1.0);
         std::fill(path_radiance.begin(), path_radiance.end(), 0.0);
         return;
     }
-    const PathLookup l = path_lookup(to_sensor, time_s);
+    const AltitudeLevel at = level_at(z_m);
+    const PathLookup l = path_lookup(at.index, to_sensor, time_s);
     for (std::size_t b = 0; b < m_bands; ++b) {
         transmittance[b] = l.transmittance(b);
         path_radiance[b] = l.path_radiance(b);
     }
+    if (at.fraction == 0.0) return;
+    const PathLookup h = path_lookup(at.index + 1, to_sensor, time_s);
+    const double f = at.fraction;
+    for (std::size_t b = 0; b < m_bands; ++b) {
+        transmittance[b] = (1.0 - f) * transmittance[b] + f * h.transmittance(b);
+        path_radiance[b] = (1.0 - f) * path_radiance[b] + f * h.path_radiance(b);
+    }
 }
 
-void Environment::sensor_path_at(const Vec3& to_sensor, double time_s,
+void Environment::sensor_path_at(const Vec3& to_sensor, double time_s, double z_m,
                                  std::span<const std::uint32_t> bands,
                                  std::span<double> transmittance,
                                  std::span<double> path_radiance) const noexcept {
     if (!has_sensor_path()) {
-        sensor_path(to_sensor, time_s, transmittance, path_radiance);  // 1 and 0
+        std::fill(transmittance.begin(), transmittance.end(), 1.0);
+        std::fill(path_radiance.begin(), path_radiance.end(), 0.0);
         return;
     }
-    const PathLookup l = path_lookup(to_sensor, time_s);
+    const AltitudeLevel at = level_at(z_m);
+    const PathLookup l = path_lookup(at.index, to_sensor, time_s);
     for (std::size_t j = 0; j < bands.size(); ++j) {
         transmittance[j] = l.transmittance(bands[j]);
         path_radiance[j] = l.path_radiance(bands[j]);
     }
+    if (at.fraction == 0.0) return;
+    const PathLookup h = path_lookup(at.index + 1, to_sensor, time_s);
+    const double f = at.fraction;
+    for (std::size_t j = 0; j < bands.size(); ++j) {
+        transmittance[j] = (1.0 - f) * transmittance[j] + f * h.transmittance(bands[j]);
+        path_radiance[j] = (1.0 - f) * path_radiance[j] + f * h.path_radiance(bands[j]);
+    }
+}
+
+std::vector<double> altitude_levels(const scene::GeometryScene& geometry) {
+    std::vector<std::pair<double, double>> ranges;
+    for (std::size_t i = 0; i < geometry.time_steps().size(); ++i) {
+        const scene::Bounds b = geometry.instance_bounds(i);
+        if (!b.empty()) ranges.emplace_back(b.lower.z, b.upper.z);
+    }
+    if (ranges.empty()) return {0.0};
+    std::sort(ranges.begin(), ranges.end());
+    // Ranges closer than a step are one.
+    std::vector<std::pair<double, double>> joined{ranges.front()};
+    for (std::size_t i = 1; i < ranges.size(); ++i) {
+        if (ranges[i].first <= joined.back().second + Environment::kLevelStep_m) {
+            joined.back().second = std::max(joined.back().second, ranges[i].second);
+        } else {
+            joined.push_back(ranges[i]);
+        }
+    }
+    std::vector<double> levels;
+    for (const auto& [lo, hi] : joined) {
+        if (hi - lo < Environment::kLevelStep_m) {
+            levels.push_back(std::round(0.5 * (lo + hi)));
+            continue;
+        }
+        const double steps = std::ceil((hi - lo) / Environment::kLevelStep_m);
+        for (double k = 0.0; k <= steps; k += 1.0) {
+            levels.push_back(std::round(lo + (hi - lo) * k / steps));
+        }
+    }
+    std::sort(levels.begin(), levels.end());
+    levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
+    if (levels.size() > Environment::kMaxLevels) {
+        throw input_error("the scene's surfaces span " +
+                          std::to_string(static_cast<long long>(levels.back() - levels.front())) +
+                          " m of height: more than the " +
+                          std::to_string(Environment::kMaxLevels) +
+                          " atmosphere levels glint computes");
+    }
+    return levels;
 }
 
 }  // namespace glint::radiometry

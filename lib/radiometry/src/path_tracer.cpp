@@ -103,10 +103,29 @@ double scale_throughput(const Bands& bands, std::span<double> throughput, const 
     return largest;
 }
 
-/// L ← T_v ⊙ L + L_p for the primary ray's direction.
+/// A per-level spectrum of the environment (E_sun or L_sky) at `at`: level at.index's row, or
+/// the blend of it and the next, written into `scratch` at the bands followed (indexed by grid
+/// band, as the rows are).
+template <typename Bands>
+const double* at_height(const Bands& bands, const AltitudeLevel& at,
+                        std::span<const double> (Environment::*row)(std::size_t) const noexcept,
+                        const Environment& env, std::vector<double>& scratch) {
+    const double* lo = (env.*row)(at.index).data();
+    if (at.fraction == 0.0) return lo;
+    const double* hi = (env.*row)(at.index + 1).data();
+    const double f = at.fraction;
+    for (std::size_t j = 0; j < bands.size(); ++j) {
+        const std::size_t b = bands[j];
+        scratch[b] = (1.0 - f) * lo[b] + f * hi[b];
+    }
+    return scratch.data();
+}
+
+/// L ← T_v ⊙ L + L_p for the primary ray's direction, from the primary hit's height z_m.
 void apply_sensor_path(const Environment& env, const RangeBands& bands, const Vec3& to_sensor,
-                       double time_s, PathScratch& scratch, std::span<double> radiance) {
-    env.sensor_path(to_sensor, time_s, scratch.sensor_transmittance, scratch.path_radiance);
+                       double time_s, double z_m, PathScratch& scratch,
+                       std::span<double> radiance) {
+    env.sensor_path(to_sensor, time_s, z_m, scratch.sensor_transmittance, scratch.path_radiance);
     const double* transmittance = scratch.sensor_transmittance.data() + bands.first;
     const double* path = scratch.path_radiance.data() + bands.first;
     for (std::size_t b = 0; b < radiance.size(); ++b) {
@@ -115,11 +134,12 @@ void apply_sensor_path(const Environment& env, const RangeBands& bands, const Ve
 }
 
 void apply_sensor_path(const Environment& env, const ListBands& bands, const Vec3& to_sensor,
-                       double time_s, PathScratch& scratch, std::span<double> radiance) {
+                       double time_s, double z_m, PathScratch& scratch,
+                       std::span<double> radiance) {
     const std::span<double> transmittance =
         std::span<double>(scratch.sensor_transmittance).first(bands.size());
     const std::span<double> path = std::span<double>(scratch.path_radiance).first(bands.size());
-    env.sensor_path_at(to_sensor, time_s, bands.list, transmittance, path);
+    env.sensor_path_at(to_sensor, time_s, z_m, bands.list, transmittance, path);
     for (std::size_t j = 0; j < radiance.size(); ++j) {
         radiance[j] = transmittance[j] * radiance[j] + path[j];
     }
@@ -237,7 +257,6 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
     // point light needs it first.
     std::span<double> beta = std::span<double>(scratch.throughput).first(count);
     bool beta_is_one = true;
-    const double* sky = env.sky_radiance_w_per_cm2_sr_um().data();
     const double time = ray.time_s;
 
     // The current vertex: the given primary hit, or the one traced into `traced` (pointers,
@@ -253,6 +272,8 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
     if (first_hit != nullptr) first_hit->hit = hit != nullptr;
     if (hit == nullptr) {
         if (ray.direction.z > 0.0 && !env.sky_black()) {
+            // The sky of the lowest level: a camera ray that meets nothing.
+            const double* sky = env.sky_radiance_w_per_cm2_sr_um(0).data();
             for (std::size_t j = 0; j < count; ++j) radiance[j] = sky[bands[j]];
         } else {
             std::fill(radiance.begin(), radiance.end(), 0.0);
@@ -261,8 +282,11 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
     }
 
     Vec3 direction = ray.direction;
+    const double first_z_m = hit->position_m.z;  // the sensor path starts here
     for (unsigned bounce = 0;; ++bounce) {
         const std::size_t m = hit->material;
+        // The sun and sky at this vertex's height (docs/scene.md).
+        const AltitudeLevel level = env.level_at(hit->position_m.z);
         const Vec3 wo = -direction;
         const Vec3 normal = dot(hit->normal, wo) < 0.0 ? -hit->normal : hit->normal;
         const bool reflects = m_materials.reflects(m);
@@ -309,7 +333,9 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
             record->sun_blocked = sun_blocked;
         }
         const double* sun_irradiance =
-            sun_factor > 0.0 ? env.sun_irradiance_w_per_cm2_um().data() : nullptr;
+            sun_factor > 0.0 ? at_height(bands, level, &Environment::sun_irradiance_w_per_cm2_um,
+                                         env, scratch.sun_at_height)
+                             : nullptr;
         if (bounce == 0) {
             first_vertex_light(bands, radiance, emission, rho, sun_irradiance, sun_factor);
         } else {
@@ -348,6 +374,8 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
         ++scratch.rays;
         if (hit == nullptr) {
             if (wi.z > 0.0 && !env.sky_black()) {
+                const double* sky = at_height(bands, level, &Environment::sky_radiance_w_per_cm2_sr_um,
+                                              env, scratch.sky_at_height);
                 for (std::size_t j = 0; j < count; ++j) radiance[j] += beta[j] * sky[bands[j]];
             }
             break;
@@ -356,7 +384,7 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
     }
 
     if (env.has_sensor_path()) {
-        apply_sensor_path(env, bands, -ray.direction, time, scratch, radiance);
+        apply_sensor_path(env, bands, -ray.direction, time, first_z_m, scratch, radiance);
     }
 }
 

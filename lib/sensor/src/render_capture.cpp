@@ -92,6 +92,7 @@ void store_channels(const FocalPlaneState& state, const SpectralState& spectral,
 radiometry::Environment capture_environment(const RenderInputs& in, const SpectralGrid& grid,
                                             const schedule::Capture& capture,
                                             const schedule::ClockedFocalPlane& source,
+                                            const scene::GeometryScene& geometry,
                                             radiometry::SensorPathCache& cache, unsigned threads) {
     const schedule::PluginSchedule& plugin = in.schedule->plugins()[source.plugin];
     const DateTime& reference = plugin.tasks.reference;
@@ -121,6 +122,7 @@ radiometry::Environment capture_environment(const RenderInputs& in, const Spectr
     }
     env.surface_altitude_m = in.frame.origin().altitude_m;
     env.sensor_altitude_m = in.frame.origin().altitude_m + pose.translation_m.z;
+    env.levels_z_m = radiometry::altitude_levels(geometry);
     env.threads = threads;
     return radiometry::Environment::make(grid, *in.atmosphere_model, *in.sun, env, &cache);
 }
@@ -140,7 +142,8 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
     log_capture_start(p, source, state, plugin.tasks.reference, in.frame, context);
 
     const radiometry::Environment environment =
-        capture_environment(in, state.grid, capture, source, path_cache, context.threads);
+        capture_environment(in, state.grid, capture, source, geometry, path_cache,
+                            context.threads);
     CaptureTiming timing{capture.t0_s, capture.t1_s, source.rolling_line_time_s().value_or(0.0),
                          source.tdi_stages};
     const PixelRaySource rays(state.camera, *plugin.poses, source.instrument_index, timing,

@@ -211,7 +211,8 @@ CaptureReport render_pulse(Prepared& prepared, const PlannedCapture& p,
     // The passive term: photons/s per pixel in the receiver's band.
     {
         const radiometry::Environment environment =
-            capture_environment(in, state.grid, capture, source, path_cache, context.threads);
+            capture_environment(in, state.grid, capture, source, geometry, path_cache,
+                                context.threads);
         const radiometry::PointLights lights = point_lights_at(in, state.grid, capture.t0_s);
         const radiometry::PathTracer tracer(geometry, state.materials, environment, options.tracer,
                                             lights.empty() ? nullptr : &lights);
@@ -240,7 +241,8 @@ CaptureReport render_pulse(Prepared& prepared, const PlannedCapture& p,
     laser.energy_j = lidar.transmitter->pulse_energy_j;
     // The atmosphere both ways at the laser line, along the boresight.
     const radiometry::Environment laser_environment =
-        capture_environment(in, lidar.laser_grid, capture, source, laser_cache, context.threads);
+        capture_environment(in, lidar.laser_grid, capture, source, geometry, laser_cache,
+                            context.threads);
     double two_way = 1.0;
     if (laser_environment.has_sensor_path()) {
         std::vector<double> transmittance(1);

@@ -293,11 +293,13 @@ inline std::uint64_t band_bytes(const schedule::ClockedFocalPlane& source,
 }
 
 /// The environment of a capture on `grid` (the sun at both ends of its window seen from the
-/// scene origin, the sensor altitude from the instrument's position at mid-window); its
-/// sensor-path tables, when not in `cache`, are computed on `threads` threads (0: all).
+/// scene origin, the sensor altitude from the instrument's position at mid-window, the levels
+/// of `geometry`'s surfaces); its sensor-path tables, when not in `cache`, are computed on
+/// `threads` threads (0: all).
 radiometry::Environment capture_environment(const RenderInputs& in, const SpectralGrid& grid,
                                             const schedule::Capture& capture,
                                             const schedule::ClockedFocalPlane& source,
+                                            const scene::GeometryScene& geometry,
                                             radiometry::SensorPathCache& cache, unsigned threads);
 
 /// The Embree build options of a window.

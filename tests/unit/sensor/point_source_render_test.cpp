@@ -214,8 +214,10 @@ TEST(Moonlight, TheMoonLightsTheNightScene) {
     const std::optional<schedule::Capture> first = in.schedule->captures().next();
     ASSERT_TRUE(first.has_value());
     const schedule::Capture& capture = *first;
+    // No surfaces: the environment's one level is the origin's (no atmosphere here anyway).
+    const scene::GeometryScene empty = scene::GeometryScene::build(model::Scene{}, {}, {});
     const radiometry::Environment env = detail::capture_environment(
-        in, state.grid, capture, in.schedule->sources()[capture.source], cache, 1);
+        in, state.grid, capture, in.schedule->sources()[capture.source], empty, cache, 1);
     const double ratio = glint::atmosphere::lunar_irradiance_ratio(moon.phase_angle_deg,
                                                                    moon.distance_km);
     EXPECT_GT(ratio, 2e-6);

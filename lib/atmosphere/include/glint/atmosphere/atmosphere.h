@@ -149,8 +149,10 @@ public:
     double rayleigh_optical_depth(double wavelength_um, double altitude_m) const noexcept;
     /// Vertical aerosol optical depth above `altitude_m` at `wavelength_um`.
     double aerosol_optical_depth(double wavelength_um, double altitude_m) const noexcept;
-    /// Effective clear-sky emissivity (Brutsaert 1975), grey.
-    double sky_emissivity() const noexcept;
+    /// Effective clear-sky emissivity (Brutsaert 1975), grey, seen from `altitude_m` (above
+    /// sea level): the vapour pressure scaled by the water column above, e · e^(−z/H_w);
+    /// 0 above the model's top (100 km).
+    double sky_emissivity(double altitude_m = 0.0) const noexcept;
 
     std::vector<double> sun_transmittance(const SpectralGrid& grid,
                                           const AtmosphereGeometry& geometry) const override;

@@ -10,8 +10,12 @@
 //     direction surface → sensor, tabulated over view zenith (0–88° every 4°) and azimuth
 //     relative to the sun (0–180° every 15°; the single-scatter terms are symmetric about
 //     the sun's vertical plane) and bilinearly interpolated.
-// The surface altitude of every query is the scene origin's; paths between surfaces inside
-// the scene have no atmospheric effects. docs/physics.md ("Path tracer") gives the formulas.
+// All of it is computed at each of a few surface levels (heights above the scene origin where
+// the scene has surfaces, altitude_levels()), and a vertex reads it at its own height,
+// linearly between the two levels around it: a vehicle 50 km up is lit by the sun and sky of
+// 50 km and seen through the air above 50 km. Paths between surfaces inside the scene have no
+// atmospheric effects. docs/physics.md ("Path tracer") gives the formulas, docs/scene.md
+// ("At which altitude each light path sees the atmosphere") the levels.
 #pragma once
 
 #include <array>
@@ -27,6 +31,7 @@
 #include "glint/core/spectral.h"
 #include "glint/motion/geometry.h"
 #include "glint/radiometry/sampling.h"
+#include "glint/scene/geometry_scene.h"
 
 namespace glint::radiometry {
 
@@ -79,15 +84,40 @@ struct EnvironmentInputs {
     double source_irradiance_scale = 1.0;
     double source_half_angle_rad = kSunAngularRadiusRad;
     double surface_altitude_m = 0.0;  ///< the scene origin's altitude
-    double sensor_altitude_m = 0.0;   ///< the sensor's altitude (≥ surface; clamped to it)
+    double sensor_altitude_m = 0.0;   ///< the sensor's altitude
+    /// Heights above the scene origin (scene z, m) at which the environment is computed
+    /// (altitude_levels()); finite, at most kMaxLevels. Empty: the origin's height, 0, alone.
+    std::vector<double> levels_z_m;
     /// Threads that compute the sensor-path tables, one view zenith each (0: all cores); the
     /// tables are the same numbers whatever the count.
     unsigned threads = 0;
 };
 
+/// The levels, heights above the scene origin (scene z, m), at which a capture's environment
+/// is computed for `geometry`: the union of its instances' height ranges (swept, for moving
+/// ones), ranges closer than kLevelStep_m joined; a range less than kLevelStep_m tall is one
+/// level at its middle, a taller one has levels at both ends and between, at most
+/// kLevelStep_m apart. Rounded to 1 m (the sensor-path cache's step), ascending, distinct;
+/// {0} for an empty scene.
+std::vector<double> altitude_levels(const scene::GeometryScene& geometry);
+
+/// Where a height falls among an environment's levels: between level `index` and the next,
+/// at `fraction` of the way (0 at or below the lowest level, and at or above the highest).
+struct AltitudeLevel {
+    std::size_t index = 0;
+    double fraction = 0.0;
+};
+
 /// The precomputed illumination of one capture.
 class Environment {
 public:
+    /// Largest spacing of the levels altitude_levels() places through a tall range, m: linear
+    /// interpolation between levels this far apart moves the sun's transmittance by < 0.1 %
+    /// (docs/scene.md).
+    static constexpr double kLevelStep_m = 250.0;
+    /// Most levels one environment takes.
+    static constexpr std::size_t kMaxLevels = 512;
+
     /// View-zenith nodes of the sensor-path tables, degrees.
     static constexpr double kViewZenithStepDeg = 4.0;
     static constexpr double kViewZenithMaxDeg = 88.0;
@@ -122,27 +152,44 @@ public:
     double sun_half_angle_rad() const noexcept { return m_sun_half_angle_rad; }
     /// 1 − cos of sun_half_angle_rad() (cone_one_minus_cos), for sample_uniform_cone_1mc.
     double sun_cone_one_minus_cos() const noexcept { return m_sun_cone_one_minus_cos; }
-    /// E_sun(λ) at the surface, normal to the beam, W/(cm² µm) (0 with the sun below the
+    /// The levels, heights above the scene origin (m), ascending (at least one).
+    std::span<const double> levels_z_m() const noexcept { return m_levels_z; }
+    /// Where height `z_m` (scene z) falls among the levels.
+    AltitudeLevel level_at(double z_m) const noexcept;
+    /// E_sun(λ) at level `level`, normal to the beam, W/(cm² µm) (0 with the sun below the
     /// horizon).
-    std::span<const double> sun_irradiance_w_per_cm2_um() const noexcept { return m_sun; }
-    /// Whether the sun contributes at all (any band > 0).
+    std::span<const double> sun_irradiance_w_per_cm2_um(std::size_t level = 0) const noexcept {
+        return std::span<const double>(m_sun).subspan(level * m_bands, m_bands);
+    }
+    /// Whether the sun contributes at all (any band > 0 at any level).
     bool sun_visible() const noexcept { return m_sun_visible; }
-    /// L_sky(λ), W/(cm² sr µm), seen by rays that leave the scene upwards.
-    std::span<const double> sky_radiance_w_per_cm2_sr_um() const noexcept { return m_sky; }
-    /// Whether the sky is black on the whole grid.
+    /// L_sky(λ) at level `level`, W/(cm² sr µm), seen by rays that leave the scene upwards
+    /// from there.
+    std::span<const double> sky_radiance_w_per_cm2_sr_um(std::size_t level = 0) const noexcept {
+        return std::span<const double>(m_sky).subspan(level * m_bands, m_bands);
+    }
+    /// Whether the sky is black on the whole grid at every level.
     bool sky_black() const noexcept { return m_sky_black; }
     /// Whether the sensor path changes anything (T_v ≠ 1 or L_p ≠ 0 somewhere).
-    bool has_sensor_path() const noexcept { return m_paths && m_paths->effects; }
+    bool has_sensor_path() const noexcept { return m_sensor_path; }
     /// Writes T_v(λ) and L_p(λ) for the unit direction `to_sensor` (surface → sensor, scene
-    /// ENU) at `time_s` (the sun's azimuth at that time sets the relative azimuth). A
-    /// direction below the horizon uses the 88° node.
-    void sensor_path(const Vec3& to_sensor, double time_s, std::span<double> transmittance,
+    /// ENU) from height `z_m` (scene z) at `time_s` (the sun's azimuth at that time sets the
+    /// relative azimuth). A direction below the horizon uses the 88° node (one above it,
+    /// from a level above the sensor, the 88° node of the reversed path).
+    void sensor_path(const Vec3& to_sensor, double time_s, double z_m,
+                     std::span<double> transmittance,
                      std::span<double> path_radiance_w_per_cm2_sr_um) const noexcept;
+    /// sensor_path() from the lowest level.
+    void sensor_path(const Vec3& to_sensor, double time_s, std::span<double> transmittance,
+                     std::span<double> path_radiance_w_per_cm2_sr_um) const noexcept {
+        sensor_path(to_sensor, time_s, m_levels_z.front(), transmittance,
+                    path_radiance_w_per_cm2_sr_um);
+    }
 
     /// sensor_path() at the bands `bands` only (indices into the grid): transmittance[j] and
     /// path_radiance[j] are T_v and L_p at bands[j], the same numbers sensor_path() gives there.
-    void sensor_path_at(const Vec3& to_sensor, double time_s, std::span<const std::uint32_t> bands,
-                        std::span<double> transmittance,
+    void sensor_path_at(const Vec3& to_sensor, double time_s, double z_m,
+                        std::span<const std::uint32_t> bands, std::span<double> transmittance,
                         std::span<double> path_radiance_w_per_cm2_sr_um) const noexcept;
 
 private:
@@ -163,7 +210,9 @@ private:
             return w00 * p00[b] + w01 * p01[b] + w10 * p10[b] + w11 * p11[b];
         }
     };
-    PathLookup path_lookup(const Vec3& to_sensor, double time_s) const noexcept;
+    /// The lookup in the tables of level `level`.
+    PathLookup path_lookup(std::size_t level, const Vec3& to_sensor,
+                           double time_s) const noexcept;
 
     Environment(const SpectralGrid& grid);
 
@@ -175,11 +224,17 @@ private:
     double m_window_end_s = 0.0;
     double m_sun_half_angle_rad = 0.0;
     double m_sun_cone_one_minus_cos = 0.0;
-    std::vector<double> m_sun;
-    std::vector<double> m_sky;
+    std::vector<double> m_levels_z{0.0};
+    std::vector<double> m_sun;  ///< [level][band]
+    std::vector<double> m_sky;  ///< [level][band]
     bool m_sun_visible = false;
     bool m_sky_black = true;
-    std::shared_ptr<const SensorPathTables> m_paths;  ///< null: no sensor path
+    bool m_sensor_path = false;
+    /// Per level; null for none (Environment::uniform).
+    std::vector<std::shared_ptr<const SensorPathTables>> m_paths;
+    /// Per level: whether it lies above the sensor (its tables are of the reversed path,
+    /// sensor → level, and hold no path radiance).
+    std::vector<bool> m_upward;
 };
 
 }  // namespace glint::radiometry
