@@ -181,6 +181,11 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
     // Point sources sit where they are at mid-window (docs/physics.md, "Point sources").
     const radiometry::PointLights lights =
         point_lights_at(in, state.grid, 0.5 * (capture.t0_s + capture.t1_s));
+    // What the pixels see of the sources themselves (a source is a point: no ray hits it).
+    const SeenPointSources seen = seen_point_sources(
+        state.camera, *plugin.poses, source.instrument_index, timing,
+        state.psf ? &*state.psf : nullptr, state.mask ? &*state.mask : nullptr, lights, geometry,
+        environment);
     std::vector<radiometry::PathTracer> tracers;
     tracers.reserve(state.spectral_states.size());
     for (const SpectralState& spectral : state.spectral_states) {
@@ -262,6 +267,10 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
                 tracers[k], batch, quiet,
                 [&](std::uint64_t i, std::span<double> radiance,
                     std::span<const std::uint32_t> nonzero, std::uint64_t n, double) {
+                    // A seen source reaches every band: the pixel is then integrated whole.
+                    if (seen.add_to(batch.first_problem + i, spectral.bands.first, radiance)) {
+                        nonzero = {};
+                    }
                     store_channels(state, spectral, radiance, nonzero,
                                    std::span<double>(image).subspan(i * channels, channels));
                     samples[i] += n;

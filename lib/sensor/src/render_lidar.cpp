@@ -223,9 +223,17 @@ CaptureReport render_pulse(Prepared& prepared, const PlannedCapture& p,
         batch.reference_band = state.reference_band;
         batch.count = pixels;
         const radiometry::Solutions solutions = radiometry::solve(tracer, batch, quiet);
+        const SeenPointSources seen = seen_point_sources(
+            state.camera, poses, source.instrument_index, timing,
+            state.psf ? &*state.psf : nullptr, state.mask ? &*state.mask : nullptr, lights,
+            geometry, environment);
         std::vector<double> rate(state.units.channels());
+        std::vector<double> radiance(state.grid.size());
         for (std::size_t i = 0; i < pixels; ++i) {
-            state.units.apply(solutions.radiance(i), rate);
+            const std::span<const double> solved = solutions.radiance(i);
+            radiance.assign(solved.begin(), solved.end());
+            seen.add_to(i, 0, radiance);  // the sources the pixel sees, as in an image
+            state.units.apply(radiance, rate);
             pulse.data[i * values] = rate.front() * share * lidar.passive_per_focal_plane_rate;
         }
         stats.rays += solutions.rays;

@@ -10,12 +10,14 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "../../../lib/sensor/src/render_parts.h"
+#include "glint/atmosphere/atmosphere.h"
 #include "glint/atmosphere/lunar.h"
 #include "glint/core/error.h"
 #include "glint/io/envi.h"
@@ -85,9 +87,10 @@ TEST(PointSources, StreetSourcesArePlacedAtTheCaptureTimeWithTheirMaterialsInten
 
 /// A DIRSIG scene folder in `dir`: a grey ground plane ρ = `rho` and one lamp of constant
 /// intensity `intensity` at `lamp_m`, rendered by the render fixture's camera 1000 m up at
-/// night (the sun well below the horizon) with no atmosphere.
+/// night (the sun well below the horizon) with no atmosphere (or `atmosphere`).
 void write_lamp_scene(const fs::path& dir, double rho, double intensity, motion::Vec3 lamp_m,
-                      const std::string& when = "2020-06-21T00:00:00.0000-04:00") {
+                      const std::string& when = "2020-06-21T00:00:00.0000-04:00",
+                      const fs::path& atmosphere = kRenderData / "none.atm.yaml") {
     write_text(dir / "plate.scene",
                "<classicscene>\n"
                "  <sceneorigin><location frame=\"geodetic\"><latitude>43.0</latitude>"
@@ -119,12 +122,33 @@ void write_lamp_scene(const fs::path& dir, double rho, double intensity, motion:
     write_text(dir / "plate.jsim",
                "[{\"scene_list\": [{\"inputs\": \"plate.scene\"}], \"plugin_list\": [\n"
                " {\"name\": \"BasicAtmosphere\", \"inputs\": {\"atmosphere_filename\": \"" +
-                   (kRenderData / "none.atm.yaml").string() +
+                   atmosphere.string() +
                    "\"}},\n"
                    " {\"name\": \"BasicPlatform\", \"inputs\": {\"platform_filename\": \"" +
                    (kRenderData / "cam.platform").string() + "\", \"motion_filename\": \"" +
                    (kRenderData / "static.ppd").string() +
                    "\", \"tasks_filename\": \"night.tasks\"}}]}]\n");
+}
+
+/// The solid angle of pixel (column, row)'s element, from the pinhole camera's geometry alone:
+/// s_x s_y cos³θ / f², θ the angle of its centre from the boresight (the element is 2e-4 rad
+/// wide: the formula's error is of that order squared).
+double pixel_solid_angle_sr(const CameraModel& camera, std::size_t column, std::size_t row) {
+    const motion::Vec3 d =
+        motion::normalized(camera.direction(camera.focal_plane_point(column, row, 0.5, 0.5)));
+    const double cos_theta = -d.z;
+    const double f = camera.focal_length_m();
+    return camera.element_size_m()[0] * camera.element_size_m()[1] * cos_theta * cos_theta *
+           cos_theta / (f * f);
+}
+
+/// The pixel (column, row) whose footprint holds `point_m` for the camera at `pose`.
+std::array<std::size_t, 2> pixel_of(const CameraModel& camera, const motion::Rigid& pose,
+                                    const motion::Vec3& point_m) {
+    const auto at = camera.project(
+        motion::apply_direction(motion::inverse(pose), point_m - pose.translation_m));
+    EXPECT_TRUE(at.has_value());
+    return {static_cast<std::size_t>((*at)[0]), static_cast<std::size_t>((*at)[1])};
 }
 
 TEST(PointSources, PlateUnderALampFollowsIntensityCosineOverDistanceSquared) {
@@ -173,21 +197,102 @@ TEST(PointSources, PlateUnderALampFollowsIntensityCosineOverDistanceSquared) {
         }
     }
 
+    // The camera also sees the lamp itself, in the pixel whose footprint holds it: its
+    // irradiance at the aperture I / r² over the pixel's solid angle.
+    const auto [lamp_column, lamp_row] = pixel_of(state.camera, pose, lamp_m);
+    const std::size_t lamp_pixel = lamp_row * columns + lamp_column;
+    const double plate_at_lamp = expected[lamp_pixel];
+    const motion::Vec3 to_lamp = lamp_m - pose.translation_m;
+    const double range2_m2 = motion::dot(to_lamp, to_lamp);
+    const double omega_sr = pixel_solid_angle_sr(state.camera, lamp_column, lamp_row);
+    expected[lamp_pixel] += kIntensity / (range2_m2 * 1e4) / omega_sr;
+
     const RenderReport report = render(load(dir / "plate.jsim"), options, Context{});
     ASSERT_EQ(report.files, std::vector<fs::path>{out / "frame.img"});
     io::EnviHeader header;
     const std::vector<double> image = io::read_envi_bip(out / "frame.img", &header);
     ASSERT_EQ(image.size(), expected.size());
-    double lowest = expected[0];
-    double highest = expected[0];
+    // The lamp's pixel: recorded radiance × solid angle × range² = I within 1 % (the plate's
+    // share of that pixel, 3e-5 of it, taken off first).
+    EXPECT_NEAR((image[lamp_pixel] - plate_at_lamp) * omega_sr * range2_m2 * 1e4, kIntensity,
+                0.01 * kIntensity);
+    double lowest = plate_at_lamp;
+    double highest = plate_at_lamp;
     for (std::size_t i = 0; i < image.size(); ++i) {
-        lowest = std::min(lowest, expected[i]);
-        highest = std::max(highest, expected[i]);
+        if (i != lamp_pixel) {
+            lowest = std::min(lowest, expected[i]);
+            highest = std::max(highest, expected[i]);
+        }
         // 1 %: the footprint of a pixel (0.2 m at 3 m from the lamp) spans a few per cent of
         // cos θ / r², and 64 samples leave a standard error of about 0.3 % of it.
         EXPECT_NEAR(image[i], expected[i], 0.01 * expected[i]) << "pixel " << i;
     }
     EXPECT_LT(lowest, 0.85 * highest) << "the image spans a range of cos θ / r² worth testing";
+}
+
+TEST(PointSources, TheCameraSeesALampThroughTheAtmosphere) {
+    // The lamp 3 m over the ground under the parametric atmosphere, the camera 1000 m up: its
+    // pixel records I T / (r² Ω), T the model's transmittance from the lamp's altitude to the
+    // camera's (the sun is down: no path radiance at 0.5–0.6 µm). A lamp hidden by a roof
+    // between it and the camera records nothing.
+    constexpr double kIntensity = 40.0;
+    const motion::Vec3 lamp_m{0.3, -0.2, 3.0};
+    test::TempDir dir;
+    write_lamp_scene(dir.path(), 0.0, kIntensity, lamp_m, "2020-06-21T00:00:00.0000-04:00",
+                     fs::path(GLINT_TEST_DATA_DIR) / "atmosphere" / "parametric.yaml");
+    RenderOptions options = options_into(dir / "out");
+    options.convergence = radiometry::Convergence{4, 4, 0.0};
+    const auto prepared = detail::prepare(load(dir / "plate.jsim"), options, {});
+    const detail::RenderInputs& in = prepared->inputs;
+    const detail::FocalPlaneState& state = prepared->states.at(0);
+    const motion::Rigid pose = in.schedule->plugins()[0].poses->instrument_to_scene(0, 0.0);
+    const auto [column, row] = pixel_of(state.camera, pose, lamp_m);
+    const motion::Vec3 to_camera = pose.translation_m - lamp_m;
+    const double range2_m2 = motion::dot(to_camera, to_camera);
+    const double omega_sr = pixel_solid_angle_sr(state.camera, column, row);
+
+    glint::atmosphere::AtmosphereGeometry g;
+    g.sun_zenith_deg = motion::sun_position(in.schedule->plugins()[0].tasks.reference, in.frame)
+                           .zenith_deg;
+    g.surface_altitude_m = 150.0 + lamp_m.z;
+    g.sensor_altitude_m = 150.0 + pose.translation_m.z;
+    g.view_zenith_deg = 0.0;  // 0.02° off the vertical: within 1e-7 of it in transmittance
+    const std::vector<double> t = in.atmosphere_model->sensor_transmittance(state.grid, g);
+    double mean_t = 0.0;
+    for (const double v : t) mean_t += v / static_cast<double>(t.size());
+    ASSERT_LT(mean_t, 0.95);
+
+    render(load(dir / "plate.jsim"), options, Context{});
+    const std::vector<double> image = io::read_envi_bip(dir / "out" / "frame.img", nullptr);
+    const std::size_t pixel = row * state.camera.columns() + column;
+    // The channel is a normalized tophat over a flat intensity: the band-mean transmittance.
+    EXPECT_NEAR(image[pixel] * omega_sr * range2_m2 * 1e4, kIntensity * mean_t,
+                0.01 * kIntensity * mean_t);
+    // Every other pixel: a black plate and the night air's own glow (300 K at 0.55 µm:
+    // 3e-31 W/(cm² sr µm)).
+    for (std::size_t i = 0; i < image.size(); ++i) {
+        if (i != pixel) EXPECT_LT(image[i], 1e-20) << i;
+    }
+
+    // A roof 10 m up over the lamp hides it.
+    test::TempDir roofed;
+    write_lamp_scene(roofed.path(), 0.0, kIntensity, lamp_m, "2020-06-21T00:00:00.0000-04:00",
+                     fs::path(GLINT_TEST_DATA_DIR) / "atmosphere" / "parametric.yaml");
+    {
+        std::ifstream in_glist(roofed / "plate.glist");
+        std::string text((std::istreambuf_iterator<char>(in_glist)), {});
+        text.replace(text.rfind("</geometrylist>"), std::string("</geometrylist>").size(),
+                     " <object name=\"Roof\"><basegeometry><box><matid>grey</matid>"
+                     "<lowerextent><point><x>-1</x><y>-1</y><z>10</z></point></lowerextent>"
+                     "<upperextent><point><x>1</x><y>1</y><z>10.1</z></point></upperextent>"
+                     "</box></basegeometry><staticinstance/></object>\n</geometrylist>\n");
+        write_text(roofed / "plate.glist", text);
+    }
+    RenderOptions roof_options = options_into(roofed / "out");
+    roof_options.convergence = radiometry::Convergence{4, 4, 0.0};
+    render(load(roofed / "plate.jsim"), roof_options, Context{});
+    const std::vector<double> hidden = io::read_envi_bip(roofed / "out" / "frame.img", nullptr);
+    EXPECT_LT(hidden[pixel], 1e-20);
 }
 
 TEST(Moonlight, TheMoonLightsTheNightScene) {

@@ -4,7 +4,8 @@
 // tracer lights every surface vertex by next-event estimation towards each of them: one
 // shadow ray per source, irradiance E(λ) = I(λ) cos θ / r² on the surface (θ from its
 // normal, r the distance; no atmosphere between surfaces, as for every path inside the
-// scene). A source is a point: a camera ray never hits it.
+// scene). A source is a point: no ray hits it (the camera sees it through the sensor
+// library's seen_point_sources, docs/physics.md "Point sources seen by the camera").
 #pragma once
 
 #include <cstddef>

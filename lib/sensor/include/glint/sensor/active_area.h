@@ -10,6 +10,7 @@
 
 #include <array>
 #include <string>
+#include <vector>
 
 #include "glint/model/common.h"
 #include "glint/sensor/pixel_table.h"
@@ -30,11 +31,14 @@ public:
     std::array<double, 2> point(double r1, double r2) const noexcept;
     /// The mask's mean over the element, in (0, 1]: the factor on the pixel's response.
     double mean_sensitivity() const noexcept { return m_mean; }
+    /// The mask's value at the element point (u, v) ∈ [0, 1)² (the mask pixel holding it).
+    double sensitivity(double u, double v) const noexcept;
     /// "mask.png 32 x 32, mean sensitivity 0.5", for headers and logs.
     const std::string& description() const noexcept { return m_description; }
 
 private:
     PixelTable m_table;
+    std::vector<double> m_values;  ///< the mask, row-major, line 0 at v = 0
     double m_mean = 1.0;
     std::string m_description;
 };
