@@ -36,12 +36,20 @@ std::optional<std::size_t> baked_object(std::size_t index, const Matrix4& m,
         return std::nullopt;
     }
     model::GeometryObject copy = scene.objects[index];
+    // Each vertex placed in double (from the mesh's origin), then stored relative to the
+    // placed mesh's own origin (model::mesh_origin_for its first vertex).
+    const std::array<double, 3> from = copy.mesh.origin_m;
+    bool first = true;
     for (std::array<float, 3>& v : copy.mesh.vertices_m) {
+        std::array<double, 3> q{};
+        for (int i = 0; i < 3; ++i) q[i] = from[i] + v[i];
         std::array<double, 3> p{};
         for (int i = 0; i < 3; ++i) {
-            p[i] = m[i * 4] * v[0] + m[i * 4 + 1] * v[1] + m[i * 4 + 2] * v[2] + m[i * 4 + 3];
+            p[i] = m[i * 4] * q[0] + m[i * 4 + 1] * q[1] + m[i * 4 + 2] * q[2] + m[i * 4 + 3];
         }
-        for (int i = 0; i < 3; ++i) v[i] = static_cast<float>(p[i]);
+        if (first) copy.mesh.origin_m = model::mesh_origin_for(p);
+        first = false;
+        for (int i = 0; i < 3; ++i) v[i] = static_cast<float>(p[i] - copy.mesh.origin_m[i]);
     }
     if (det < 0.0) {  // a mirroring placement: keep the front faces counter-clockwise
         for (auto& t : copy.mesh.triangles) std::swap(t[1], t[2]);

@@ -166,8 +166,13 @@ void ObjReader::vertex(std::string_view rest, int line) {
     }
     // Three plain decimals are three fields however white space splits them, and valid.
     if (!plain) check_vertex(rest, {m_file, line, "v"}, m_diagnostics);
-    m_mesh.vertices_m.push_back(
-        {static_cast<float>(xyz[0]), static_cast<float>(xyz[1]), static_cast<float>(xyz[2])});
+    // Far from the file's origin (UTM coordinates), vertices are kept relative to the
+    // first one's whole metres (model::Mesh::origin_m), so floats keep their millimetres.
+    if (m_mesh.vertices_m.empty()) m_mesh.origin_m = model::mesh_origin_for(xyz);
+    const std::array<double, 3>& o = m_mesh.origin_m;
+    m_mesh.vertices_m.push_back({static_cast<float>(xyz[0] - o[0]),
+                                 static_cast<float>(xyz[1] - o[1]),
+                                 static_cast<float>(xyz[2] - o[2])});
 }
 
 bool ObjReader::index_ok(std::string_view text, long long count, const char* what,

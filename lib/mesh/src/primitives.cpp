@@ -52,9 +52,12 @@ public:
     explicit MeshBuilder(std::uint32_t material) : m_material(material) {}
 
     std::uint32_t vertex(const Vec3& p) {
+        if (m_points.empty()) m_mesh.origin_m = model::mesh_origin_for(p);
         m_points.push_back(p);
-        m_mesh.vertices_m.push_back(
-            {static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2])});
+        const Vec3& o = m_mesh.origin_m;
+        m_mesh.vertices_m.push_back({static_cast<float>(p[0] - o[0]),
+                                     static_cast<float>(p[1] - o[1]),
+                                     static_cast<float>(p[2] - o[2])});
         return static_cast<std::uint32_t>(m_points.size() - 1);
     }
     /// Adds triangle (a, b, c), flipped if needed so that its normal points away from

@@ -97,10 +97,11 @@ ObjectData build_object_scene(EmbreeDevice& device, const model::GeometryObject&
     const Vec3 center = (box.lower + box.upper) * 0.5;
     data.center_m = {static_cast<float>(center.x), static_cast<float>(center.y),
                      static_cast<float>(center.z)};
+    const Vec3 shift = motion::to_vec3(mesh.origin_m) - data.center_m;
     for (std::size_t i = 0; i < mesh.vertices_m.size(); ++i) {
         const auto& v = mesh.vertices_m[i];
         for (std::size_t k = 0; k < 3; ++k) {
-            vertices[3 * i + k] = static_cast<float>(static_cast<double>(v[k]) - data.center_m[k]);
+            vertices[3 * i + k] = static_cast<float>(static_cast<double>(v[k]) + shift[k]);
         }
     }
     data.vertices = vertices;
@@ -142,8 +143,9 @@ ObjectData build_object_scene(EmbreeDevice& device, const model::GeometryObject&
 
 Bounds mesh_bounds(const model::Mesh& mesh) noexcept {
     Bounds box = empty_bounds();
+    const Vec3 origin = motion::to_vec3(mesh.origin_m);
     for (const auto& v : mesh.vertices_m) {
-        const Vec3 p{v[0], v[1], v[2]};
+        const Vec3 p = origin + Vec3{v[0], v[1], v[2]};
         expand(box, {p, p});
     }
     return box;
@@ -153,8 +155,9 @@ ObjectExtent mesh_extent(const model::Mesh& mesh) noexcept {
     ObjectExtent extent;
     const Bounds box = mesh_bounds(mesh);
     if (!box.empty()) extent.diagonal_m = norm(box.upper - box.lower);
+    const Vec3 origin = motion::to_vec3(mesh.origin_m);
     for (const auto& v : mesh.vertices_m) {
-        extent.radius_m = std::max(extent.radius_m, norm(Vec3{v[0], v[1], v[2]}));
+        extent.radius_m = std::max(extent.radius_m, norm(origin + Vec3{v[0], v[1], v[2]}));
     }
     return extent;
 }

@@ -58,6 +58,27 @@ TEST(ObjReading, NumbersAtTheEndOfTheTextWithoutNewline) {
     EXPECT_EQ(c.triangles[0], (std::array<std::uint32_t, 3>{0, 1, 2}));
 }
 
+TEST(ObjReading, UtmCoordinatesKeepTheirMillimetres) {
+    // A terrain in easting/northing: floats alone would step by 0.25 m at 4,000,000 m. The
+    // mesh keeps the first vertex's whole metres as its origin and the rest in float.
+    const model::Mesh mesh = parse_good(
+        "v 500000.123 4000000.456 12.789\nv 500010.001 4000000.002 13.5\n"
+        "v 500000.999 4000009.876 11.25\nf 1 2 3\n");
+    EXPECT_EQ(mesh.origin_m, (std::array<double, 3>{500000.0, 4000000.0, 13.0}));
+    const std::array<std::array<double, 3>, 3> written = {{{500000.123, 4000000.456, 12.789},
+                                                           {500010.001, 4000000.002, 13.5},
+                                                           {500000.999, 4000009.876, 11.25}}};
+    for (std::size_t i = 0; i < 3; ++i) {
+        for (std::size_t k = 0; k < 3; ++k) {
+            // Floats of at most 10 m: 1e-6 m.
+            EXPECT_NEAR(mesh.origin_m[k] + mesh.vertices_m[i][k], written[i][k], 1e-6)
+                << i << ", " << k;
+        }
+    }
+    // Near the origin nothing changes: the coordinates are the floats written.
+    EXPECT_EQ(parse_good(kTriangle).origin_m, (std::array<double, 3>{0.0, 0.0, 0.0}));
+}
+
 TEST(ObjReading, Exponents) {
     const model::Mesh mesh = parse_good(kTriangle + "v 1e2 -2.5E-1 +3e+0\nv 1.5e-3 .5 -.25\n");
     ASSERT_EQ(mesh.vertices_m.size(), 5u);

@@ -208,6 +208,29 @@ TEST(GeometryScenePrecision, UtmSizedCoordinatesWorkAsAtTheOrigin) {
     EXPECT_NEAR(largest_offset_m[2], largest_offset_m[0], 0.01 * largest_offset_m[0]);
 }
 
+TEST(GeometryScenePrecision, AMeshInUtmCoordinatesKeepsItsEdgesToTheMillimetre) {
+    // A 2 km plate whose corners are written at (500,000.3 ± 1000, 4,000,000.7 ± 1000): as
+    // plain floats they would move by up to 0.125 m (the float step there is 0.25 m); kept
+    // from a mesh origin (model::mesh_origin_for) they stay. Rays 2 mm inside its edges hit,
+    // 2 mm outside miss.
+    const Vec3 center{500'000.3, 4'000'000.7, 0.0};
+    model::Scene scene = scene_with_materials(1);
+    add_static(scene, add_object(scene, plate_at(center, 2000.0), "plate"));
+    ASSERT_NE(scene.objects[0].mesh.origin_m[0], 0.0);
+    const GeometryScene geometry = build(scene);
+    for (const double inset_m : {0.002, -0.002}) {
+        for (const Vec3& edge : {Vec3{1000.0 - inset_m, 3.0, 0.0}, Vec3{-1000.0 + inset_m, 3.0, 0.0},
+                                 Vec3{3.0, 1000.0 - inset_m, 0.0}, Vec3{3.0, -1000.0 + inset_m, 0.0}}) {
+            const Vec3 target = center + edge;
+            const auto hit = geometry.intersect(target + Vec3{0.0, 0.0, 500.0}, {0.0, 0.0, -1.0}, 0.0);
+            EXPECT_EQ(hit.has_value(), inset_m > 0.0) << edge.x << ", " << edge.y;
+            if (hit) {
+                EXPECT_LT(norm(hit->position_m - target), kPosition_m);
+            }
+        }
+    }
+}
+
 /// Directions leaving a surface of unit normal `n` at elevations from `min_deg` to 89°,
 /// azimuths all round (elevation measured from the surface).
 std::vector<Vec3> leaving_directions(const Vec3& n, double min_deg, int count) {

@@ -47,6 +47,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -126,12 +127,34 @@ struct Material {
 /// A triangle mesh in object coordinates, validated: finite vertices, indices in range, no
 /// degenerate triangles, at least one triangle, every triangle with a material.
 struct Mesh {
+    /// Vertex positions, object coordinates, relative to `origin_m` (single precision).
     std::vector<std::array<float, 3>> vertices_m;
+    /// What the vertices are measured from (object coordinates, m): vertex i lies at
+    /// origin_m + vertices_m[i]. 0 unless the mesh lies far from its object's origin
+    /// (mesh_origin_for), where float coordinates would lose millimetres: at 4,000,000 m a
+    /// float steps by 0.25 m.
+    std::array<double, 3> origin_m{};
     /// Vertex indices, counter-clockwise seen from the front (outside) of the surface.
     std::vector<std::array<std::uint32_t, 3>> triangles;
     /// Per triangle: index into Scene::materials.
     std::vector<std::uint32_t> triangle_materials;
 };
+
+/// Beyond this distance from the object's origin (any coordinate, m) a mesh's vertices are
+/// stored relative to an origin of their own: a float there steps by 8 mm or more.
+inline constexpr double kMeshOriginBeyond_m = 65536.0;
+
+/// The origin a mesh whose first vertex is `first_m` stores its vertices from: that vertex
+/// rounded to whole metres when it lies beyond kMeshOriginBeyond_m, else 0 (small meshes keep
+/// their coordinates as written).
+inline std::array<double, 3> mesh_origin_for(const std::array<double, 3>& first_m) noexcept {
+    for (const double c : first_m) {
+        if (c > kMeshOriginBeyond_m || c < -kMeshOriginBeyond_m) {
+            return {std::round(first_m[0]), std::round(first_m[1]), std::round(first_m[2])};
+        }
+    }
+    return {};
+}
 
 enum class PrimitiveKind { ground_plane, box, sphere, disk, cylinder };
 
