@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Molecular absorption as band transmittances: a band model fitted to LOWTRAN 7
-// (data/atmosphere/gas_band_model.csv, made by scripts/gas_tables/make_gas_tables.py), three
+// (data/atmosphere/gas_band_model.csv; how it was fitted: docs/physics.md), three
 // absorber groups each with T(u) = exp(−τ₁ u^a) at every 5 cm⁻¹ (20 cm⁻¹ resolution) from
 // 0.28 to 14.3 µm:
 //   water  u = precipitable water along the path, cm
