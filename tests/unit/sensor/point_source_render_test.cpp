@@ -271,7 +271,9 @@ TEST(PointSources, TheCameraSeesALampThroughTheAtmosphere) {
     // Every other pixel: a black plate and the night air's own glow (300 K at 0.55 µm:
     // 3e-31 W/(cm² sr µm)).
     for (std::size_t i = 0; i < image.size(); ++i) {
-        if (i != pixel) EXPECT_LT(image[i], 1e-20) << i;
+        if (i != pixel) {
+            EXPECT_LT(image[i], 1e-20) << i;
+        }
     }
 
     // A roof 10 m up over the lamp hides it.

@@ -2,8 +2,10 @@
 // Atmosphere models: per-wavelength-grid queries of the direct sun transmittance, the
 // surface-to-sensor transmittance and path radiance, the diffuse sky irradiance and the
 // isotropic sky radiance (scattered + thermal emission). Implementations: none (exo-atmospheric
-// sun, black sky, no path effects), parametric (Rayleigh + aerosol, single scattering),
-// tabulated (a user table for one geometry) and simple (DIRSIG .atm: sky at a temperature).
+// sun, black sky, no path effects; plain_atmospheres.cpp), parametric (Rayleigh + aerosol + gas
+// bands, single- or multiple-scattering path radiance and sky; parametric_atmosphere.cpp,
+// parametric_scattering.cpp), tabulated (a user table for one geometry;
+// tabulated_atmosphere.cpp) and simple (DIRSIG .atm: sky at a temperature).
 // Formulas, parameters and limits: docs/physics.md ("Atmosphere and sun"). Units: radiance W/(cm²
 // sr µm), irradiance W/(cm² µm), altitudes m, angles degrees.
 #pragma once

@@ -1,0 +1,371 @@
+// SPDX-License-Identifier: Apache-2.0
+// The parametric atmosphere of glint/atmosphere/atmosphere.h: Rayleigh + aerosol with
+// exponential scale heights, Beer–Lambert paths with the Kasten–Young air mass, the single-
+// scatter path radiance integrated over altitude layers, the Bird–Hulstrom or multiply
+// scattered sky (parametric_scattering.cpp), the Brutsaert thermal sky and the gas band
+// model on every path. Formulas: docs/physics.md ("Parametric model").
+#include "glint/atmosphere/atmosphere.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <numbers>
+#include <string>
+#include <utility>
+
+#include "atmosphere_detail.h"
+#include "glint/core/error.h"
+#include "parametric_scattering.h"
+
+namespace glint::atmosphere {
+
+using namespace detail;
+
+namespace {
+
+/// Altitude layers of the single-scatter integration (spacing ∝ k², finer near the ground).
+constexpr int kPathLayers = 256;
+
+/// Standard sea-level pressure, hPa (the Hansen–Travis Rayleigh depth is for it).
+constexpr double kStandardPressureHpa = 1013.25;
+
+/// The Rayleigh optical depth of the whole atmosphere above sea level at λ (the Hansen–Travis
+/// fit scaled by the surface pressure); at altitude z it is this × e^(−z/H_R).
+double rayleigh_sea_level(const model::ParametricAtmosphere& p, double wavelength_um) {
+    const double l2 = 1.0 / (wavelength_um * wavelength_um);
+    const double l4 = l2 * l2;
+    const double sea_level = 0.008569 * l4 * (1.0 + 0.0113 * l2 + 0.00013 * l4);
+    return sea_level * (p.sea_level_pressure_hpa / kStandardPressureHpa);
+}
+
+/// The aerosol optical depth above sea level at λ (Ångström's law from τ(550 nm)); at
+/// altitude z it is this × e^(−z/H_A).
+double aerosol_sea_level(const model::ParametricAtmosphere& p, double wavelength_um) {
+    return p.aerosol_optical_depth_550 * std::pow(wavelength_um / 0.55, -p.angstrom_exponent);
+}
+
+/// Unit vector in ENU for (zenith, azimuth clockwise from north), degrees.
+std::array<double, 3> direction(double zenith_deg, double azimuth_deg) {
+    const double t = zenith_deg * kDegToRad;
+    const double p = azimuth_deg * kDegToRad;
+    return {std::sin(t) * std::sin(p), std::sin(t) * std::cos(p), std::cos(t)};
+}
+
+double rayleigh_phase(double cos_theta) { return 0.75 * (1.0 + cos_theta * cos_theta); }
+
+double henyey_greenstein(double g, double cos_theta) {
+    const double denom = 1.0 + g * g - 2.0 * g * cos_theta;
+    return (1.0 - g * g) / (denom * std::sqrt(denom));
+}
+
+/// Fraction of Henyey–Greenstein scattering into the forward hemisphere.
+double hg_forward_fraction(double g) {
+    if (std::abs(g) < 1e-6) return 0.5;
+    return (1.0 + g) / (2.0 * g) - (1.0 - g * g) / (2.0 * g * std::sqrt(1.0 + g * g));
+}
+
+}  // namespace
+
+// ---- parametric ----
+
+ParametricAtmosphereModel::ParametricAtmosphereModel(model::ParametricAtmosphere parameters,
+                                                     std::shared_ptr<const GasBandModel> gases)
+    : m_parameters(parameters), m_gases(std::move(gases)) {
+    const auto& p = m_parameters;
+    const auto bad = [](double v) { return !std::isfinite(v); };
+    if (bad(p.aerosol_optical_depth_550) || p.aerosol_optical_depth_550 < 0.0) {
+        throw input_error("aerosol_optical_depth_550 must be >= 0");
+    }
+    if (bad(p.angstrom_exponent)) throw input_error("angstrom_exponent must be finite");
+    if (bad(p.aerosol_scale_height_m) || p.aerosol_scale_height_m <= 0.0 ||
+        bad(p.rayleigh_scale_height_m) || p.rayleigh_scale_height_m <= 0.0) {
+        throw input_error("scale heights must be > 0 m");
+    }
+    if (bad(p.aerosol_asymmetry) || std::abs(p.aerosol_asymmetry) >= 1.0) {
+        throw input_error("aerosol_asymmetry must lie in (-1, 1)");
+    }
+    if (bad(p.aerosol_single_scatter_albedo) || p.aerosol_single_scatter_albedo < 0.0 ||
+        p.aerosol_single_scatter_albedo > 1.0) {
+        throw input_error("aerosol_single_scatter_albedo must lie in [0, 1]");
+    }
+    if (bad(p.sea_level_pressure_hpa) || p.sea_level_pressure_hpa < 0.0 ||
+        bad(p.air_temperature_k) || p.air_temperature_k < 0.0 || bad(p.water_vapor_pressure_hpa) ||
+        p.water_vapor_pressure_hpa < 0.0) {
+        throw input_error("pressures and temperatures must be >= 0");
+    }
+    if (bad(p.water_vapor_cm) || p.water_vapor_cm < 0.0 || bad(p.ozone_atm_cm) ||
+        p.ozone_atm_cm < 0.0) {
+        throw input_error("water_vapor_cm and ozone_atm_cm must be >= 0");
+    }
+    if (p.gas_absorption && !m_gases) {
+        throw input_error(std::string("gas absorption needs the band-model table (") +
+                          GasBandModel::kRelativePath + " in glint's data folder)");
+    }
+}
+
+GasAmounts ParametricAtmosphereModel::gas_amounts_above(double altitude_m) const noexcept {
+    if (!m_parameters.gas_absorption) return {};
+    const double z = std::max(altitude_m, 0.0);
+    const double ozone_share =
+        std::clamp((kOzoneTopM - z) / (kOzoneTopM - kOzoneBottomM), 0.0, 1.0);
+    return GasAmounts{
+        m_parameters.water_vapor_cm * std::exp(-z / kWaterScaleHeightM),
+        m_parameters.ozone_atm_cm * ozone_share,
+        m_parameters.sea_level_pressure_hpa / kStandardPressureHpa *
+            std::exp(-z / m_parameters.rayleigh_scale_height_m)};
+}
+
+std::shared_ptr<const GasTransmittance> ParametricAtmosphereModel::gases_on(
+    const SpectralGrid& grid) const {
+    if (!m_parameters.gas_absorption) return nullptr;
+    const std::vector<double> key(grid.wavelengths_um().begin(), grid.wavelengths_um().end());
+    const std::lock_guard<std::mutex> lock(m_grids_mutex);
+    auto& slot = m_grids[key];
+    if (!slot) slot = std::make_shared<const GasTransmittance>(*m_gases, grid);
+    return slot;
+}
+
+std::vector<double> ParametricAtmosphereModel::gas_transmittance(
+    const SpectralGrid& grid, const GasAmounts& amounts) const {
+    const auto gases = gases_on(grid);
+    if (!gases) return filled(grid, 1.0);
+    return gases->transmittance(amounts);
+}
+
+double ParametricAtmosphereModel::rayleigh_optical_depth(double wavelength_um,
+                                                         double altitude_m) const noexcept {
+    return rayleigh_sea_level(m_parameters, wavelength_um) *
+           std::exp(-altitude_m / m_parameters.rayleigh_scale_height_m);
+}
+
+double ParametricAtmosphereModel::aerosol_optical_depth(double wavelength_um,
+                                                        double altitude_m) const noexcept {
+    return aerosol_sea_level(m_parameters, wavelength_um) *
+           std::exp(-altitude_m / m_parameters.aerosol_scale_height_m);
+}
+
+double ParametricAtmosphereModel::sky_emissivity(double altitude_m) const noexcept {
+    const double t = m_parameters.air_temperature_k;
+    if (t <= 0.0 || altitude_m >= kTopOfAtmosphereM) return 0.0;
+    // The vapour pressure falls with the water column above: e · e^(−z/H_w) (sea level 0).
+    const double vapour_hpa =
+        m_parameters.water_vapor_pressure_hpa * std::exp(-std::max(altitude_m, 0.0) /
+                                                         kWaterScaleHeightM);
+    return std::clamp(1.24 * std::pow(vapour_hpa / t, 1.0 / 7.0), 0.0, 1.0);
+}
+
+std::vector<double> ParametricAtmosphereModel::sun_transmittance(
+    const SpectralGrid& grid, const AtmosphereGeometry& geometry) const {
+    check_geometry(geometry);
+    if (!sun_up(geometry)) return filled(grid, 0.0);
+    const double z = geometry.surface_altitude_m;
+    if (z >= kTopOfAtmosphereM) return filled(grid, 1.0);  // exo-atmospheric
+    const double m = relative_air_mass(geometry.sun_zenith_deg);
+    std::vector<double> out = gas_transmittance(grid, slant(gas_amounts_above(z), {}, m));
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+        const double wl = grid.wavelength_um(i);
+        out[i] *= std::exp(-(rayleigh_optical_depth(wl, z) + aerosol_optical_depth(wl, z)) * m);
+    }
+    return out;
+}
+
+std::vector<double> ParametricAtmosphereModel::sensor_transmittance(
+    const SpectralGrid& grid, const AtmosphereGeometry& geometry) const {
+    check_geometry(geometry);
+    const double m = relative_air_mass(geometry.view_zenith_deg);
+    const double z0 = geometry.surface_altitude_m;
+    const double z1 = std::max(z0, geometry.sensor_altitude_m);
+    if (z0 >= kTopOfAtmosphereM) return filled(grid, 1.0);  // the path lies above the model
+    std::vector<double> out =
+        gas_transmittance(grid, slant(gas_amounts_above(z0), gas_amounts_above(z1), m));
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+        const double wl = grid.wavelength_um(i);
+        const double tau = rayleigh_optical_depth(wl, z0) - rayleigh_optical_depth(wl, z1) +
+                           aerosol_optical_depth(wl, z0) - aerosol_optical_depth(wl, z1);
+        out[i] *= std::exp(-tau * m);
+    }
+    return out;
+}
+
+std::vector<double> ParametricAtmosphereModel::path_radiance_w_per_cm2_sr_um(
+    const SpectralGrid& grid, const AtmosphereGeometry& geometry,
+    std::span<const double> toa) const {
+    const double azimuth[] = {geometry.view_azimuth_deg};
+    return std::move(path_radiance_at_azimuths(grid, geometry, toa, azimuth).front());
+}
+
+std::vector<std::vector<double>> ParametricAtmosphereModel::path_radiance_at_azimuths(
+    const SpectralGrid& grid, const AtmosphereGeometry& geometry, std::span<const double> toa,
+    std::span<const double> view_azimuths_deg) const {
+    check_geometry(geometry);
+    check_size(grid, toa);
+    for (double a : view_azimuths_deg) {
+        if (!std::isfinite(a)) throw input_error("atmosphere query with a non-finite geometry");
+    }
+    const double z0 = geometry.surface_altitude_m;
+    const double z1 =
+        std::min(std::max(z0, geometry.sensor_altitude_m), std::max(z0, kTopOfAtmosphereM));
+    std::vector<std::vector<double>> out(view_azimuths_deg.size(),
+                                         std::vector<double>(grid.size(), 0.0));
+    if (z1 <= z0) return out;
+    const bool sunlit = sun_up(geometry);
+    const double m_sun = relative_air_mass(geometry.sun_zenith_deg);
+    const double m_view = relative_air_mass(geometry.view_zenith_deg);
+    const auto s = direction(geometry.sun_zenith_deg, geometry.sun_azimuth_deg);
+    const double g = m_parameters.aerosol_asymmetry;
+    // The phase functions at each azimuth: light travels along −s from the sun and leaves
+    // along v towards the sensor.
+    std::vector<double> p_rayleigh;
+    std::vector<double> p_aerosol;
+    for (double azimuth : view_azimuths_deg) {
+        const auto v = direction(std::clamp(geometry.view_zenith_deg, 0.0, 90.0), azimuth);
+        const double cos_scatter = -(s[0] * v[0] + s[1] * v[1] + s[2] * v[2]);
+        p_rayleigh.push_back(rayleigh_phase(cos_scatter));
+        p_aerosol.push_back(henyey_greenstein(g, cos_scatter));
+    }
+    const double omega = m_parameters.aerosol_single_scatter_albedo;
+    const double temperature_k = m_parameters.air_temperature_k;
+    // τ(λ, z) = τ_R(λ)·e^(−z/H_R) + τ_A(λ)·e^(−z/H_A): the altitude factors of every layer
+    // boundary and midpoint are computed once, the spectral ones once per band, and each
+    // optical depth is their product, computed exactly as rayleigh_optical_depth and
+    // aerosol_optical_depth compute it.
+    struct Level {
+        double rayleigh = 0.0;  ///< e^(−z/H_R)
+        double aerosol = 0.0;   ///< e^(−z/H_A)
+    };
+    const auto level = [&](double z) {
+        return Level{std::exp(-z / m_parameters.rayleigh_scale_height_m),
+                     std::exp(-z / m_parameters.aerosol_scale_height_m)};
+    };
+    const std::size_t layers = static_cast<std::size_t>(kPathLayers);
+    std::vector<Level> bounds(layers + 1);  // z_0 = z0 … z_K = z1
+    std::vector<Level> middles(layers);
+    {
+        double za = z0;
+        bounds[0] = level(za);
+        for (int k = 1; k <= kPathLayers; ++k) {
+            const double f = static_cast<double>(k) / kPathLayers;
+            const double zb = z0 + (z1 - z0) * f * f;
+            bounds[static_cast<std::size_t>(k)] = level(zb);
+            middles[static_cast<std::size_t>(k - 1)] = level(0.5 * (za + zb));
+            za = zb;
+        }
+    }
+    const Level top = level(z1);
+    // ln of the gas transmittances of each layer's midpoint from the sun and to the sensor,
+    // per band ([layer][band]); none without gas absorption.
+    const std::shared_ptr<const GasTransmittance> gases = gases_on(grid);
+    std::vector<double> gas_sun;
+    std::vector<double> gas_view;
+    if (gases) {
+        const std::size_t n = grid.size();
+        gas_sun.assign(layers * n, 0.0);
+        gas_view.assign(layers * n, 0.0);
+        const GasAmounts at_sensor = gas_amounts_above(z1);
+        double za = z0;
+        for (std::size_t k = 0; k < layers; ++k) {
+            const double f = static_cast<double>(k + 1) / kPathLayers;
+            const double zb = z0 + (z1 - z0) * f * f;
+            const GasAmounts at_layer = gas_amounts_above(0.5 * (za + zb));
+            za = zb;
+            const std::span<double> view(&gas_view[k * n], n);
+            gases->log_transmittance(slant(at_layer, at_sensor, m_view), view);
+            if (sunlit) {
+                gases->log_transmittance(slant(at_layer, {}, m_sun),
+                                         std::span<double>(&gas_sun[k * n], n));
+            }
+        }
+    }
+    // Per layer of one band: its Rayleigh and aerosol optical depths and its transmittances
+    // from the sun and to the sensor, the same at every azimuth.
+    std::vector<double> d_r(layers), d_a(layers), sun(layers), to_sensor(layers);
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+        const double wl = grid.wavelength_um(i);
+        const double rayleigh = rayleigh_sea_level(m_parameters, wl);
+        const double aerosol = aerosol_sea_level(m_parameters, wl);
+        const auto tau_r = [&](const Level& at) { return rayleigh * at.rayleigh; };
+        const auto tau_a = [&](const Level& at) { return aerosol * at.aerosol; };
+        const double tau_sensor = tau_r(top) + tau_a(top);
+        const double emission = planck_radiance_w_per_cm2_sr_um(wl, temperature_k);
+        double tau_r_a = tau_r(bounds[0]);
+        double tau_a_a = tau_a(bounds[0]);
+        for (std::size_t k = 0; k < layers; ++k) {
+            const double tau_r_b = tau_r(bounds[k + 1]);
+            const double tau_a_b = tau_a(bounds[k + 1]);
+            d_r[k] = tau_r_a - tau_r_b;
+            d_a[k] = tau_a_a - tau_a_b;
+            const double tau_m = tau_r(middles[k]) + tau_a(middles[k]);
+            const double log_gas_view = gases ? gas_view[k * grid.size() + i] : 0.0;
+            const double log_gas_sun = gases ? gas_sun[k * grid.size() + i] : 0.0;
+            to_sensor[k] = std::exp(-(tau_m - tau_sensor) * m_view + log_gas_view);
+            if (sunlit) sun[k] = std::exp(-tau_m * m_sun + log_gas_sun);
+            tau_r_a = tau_r_b;
+            tau_a_a = tau_a_b;
+        }
+        for (std::size_t a = 0; a < view_azimuths_deg.size(); ++a) {
+            double sum = 0.0;
+            for (std::size_t k = 0; k < layers; ++k) {
+                double source = (1.0 - omega) * d_a[k] * emission;
+                if (sunlit) {
+                    source += toa[i] / (4.0 * kPi) * sun[k] *
+                              (d_r[k] * p_rayleigh[a] + omega * d_a[k] * p_aerosol[a]);
+                }
+                sum += source * m_view * to_sensor[k];
+            }
+            out[a][i] = sum;
+        }
+    }
+    add_multiple_scattering(grid, geometry, toa, view_azimuths_deg, out);
+    return out;
+}
+
+std::vector<double> ParametricAtmosphereModel::diffuse_sky_irradiance_w_per_cm2_um(
+    const SpectralGrid& grid, const AtmosphereGeometry& geometry,
+    std::span<const double> toa) const {
+    check_geometry(geometry);
+    check_size(grid, toa);
+    std::vector<double> out(grid.size(), 0.0);
+    const double z = geometry.surface_altitude_m;
+    if (!sun_up(geometry) || z >= kTopOfAtmosphereM) return out;
+    const double m = relative_air_mass(geometry.sun_zenith_deg);
+    const double mu = std::cos(geometry.sun_zenith_deg * kDegToRad);
+    const double omega = m_parameters.aerosol_single_scatter_albedo;
+    const double forward = hg_forward_fraction(m_parameters.aerosol_asymmetry);
+    // Gas absorption of the diffuse light: the direct beam's, at the sun's air mass (the
+    // Bird–Riordan approximation).
+    const std::vector<double> gas = gas_transmittance(grid, slant(gas_amounts_above(z), {}, m));
+    if (const std::shared_ptr<const Scattering> ms = scattering(grid, geometry)) {
+        // Multiple scattering: the diffuse flux reaching the ground per unit beam irradiance.
+        const std::size_t ground = ms->solutions.front().levels() - 1;
+        const std::vector<double> diffuse = ms->per_band(
+            [&](std::size_t k) { return ms->solutions[k].diffuse_down_flux(ground); });
+        for (std::size_t i = 0; i < grid.size(); ++i) out[i] = toa[i] * diffuse[i] * gas[i];
+        return out;
+    }
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+        const double wl = grid.wavelength_um(i);
+        const double tau_r = rayleigh_optical_depth(wl, z);
+        const double tau_a = aerosol_optical_depth(wl, z);
+        const double t_r = std::exp(-tau_r * m);
+        const double t_as = std::exp(-omega * tau_a * m);
+        const double t_aa = std::exp(-(1.0 - omega) * tau_a * m);
+        out[i] = toa[i] * mu * gas[i] * t_aa * (0.5 * (1.0 - t_r) + forward * (1.0 - t_as));
+    }
+    return out;
+}
+
+std::vector<double> ParametricAtmosphereModel::thermal_sky_radiance_w_per_cm2_sr_um(
+    const SpectralGrid& grid, const AtmosphereGeometry& geometry) const {
+    check_geometry(geometry);
+    const double emissivity = sky_emissivity(geometry.surface_altitude_m);
+    std::vector<double> out;
+    out.reserve(grid.size());
+    for (double wl : grid.wavelengths_um()) {
+        out.push_back(emissivity *
+                      planck_radiance_w_per_cm2_sr_um(wl, m_parameters.air_temperature_k));
+    }
+    return out;
+}
+
+}  // namespace glint::atmosphere

@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: Apache-2.0
+// The parametric model's multiple-scattering solutions of one geometry (private to
+// lib/atmosphere: parametric_scattering.cpp makes them, parametric_atmosphere.cpp reads the
+// diffuse sky from them).
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "glint/atmosphere/atmosphere.h"
+#include "glint/atmosphere/scattering_orders.h"
+
+namespace glint::atmosphere {
+
+/// Multiple-scattering solutions of one geometry at wavelength nodes, and how each band of
+/// the grid interpolates between them.
+struct ParametricAtmosphereModel::Scattering {
+    std::vector<double> grid;  ///< the grid's wavelengths (part of the key)
+    double sun_zenith_deg = 0.0;
+    double surface_altitude_m = 0.0;
+    double sensor_altitude_m = 0.0;
+    std::vector<ScatteringSolution> solutions;  ///< one per node
+    std::size_t sensor_level = 0;               ///< level of the sensor altitude
+    std::vector<std::size_t> lower;             ///< per band: the node below
+    std::vector<double> fraction;               ///< per band: weight of the node above
+
+    /// Per band, the value of `at_node` interpolated in ln λ.
+    template <typename PerNode>
+    std::vector<double> per_band(PerNode&& at_node) const {
+        std::vector<double> nodes(solutions.size());
+        for (std::size_t k = 0; k < solutions.size(); ++k) nodes[k] = at_node(k);
+        std::vector<double> out(lower.size());
+        for (std::size_t i = 0; i < lower.size(); ++i) {
+            const std::size_t k = lower[i];
+            const double f = fraction[i];
+            out[i] = f == 0.0 ? nodes[k] : (1.0 - f) * nodes[k] + f * nodes[k + 1];
+        }
+        return out;
+    }
+};
+
+}  // namespace glint::atmosphere
