@@ -24,7 +24,6 @@ Json paths_json(const std::vector<std::filesystem::path>& paths) {
 }
 
 Json focal_plane_json(const schedule::ClockedFocalPlane& source) {
-    if (source.focal_plane == nullptr) return nullptr;
     const model::FocalPlane& fp = *source.focal_plane;
     const model::Bandpass& band = fp.capture_method.spectral_response.bandpass;
     Json j;

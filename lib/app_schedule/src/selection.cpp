@@ -87,7 +87,7 @@ ShardSpec parse_shard(std::string_view text) {
 }
 
 std::uint64_t problems_per_capture(const schedule::ClockedFocalPlane& source) {
-    return source.focal_plane == nullptr ? 0 : source.problems_per_capture;
+    return source.problems_per_capture;
 }
 
 std::optional<std::pair<std::uint64_t, std::uint64_t>> shard_rows(

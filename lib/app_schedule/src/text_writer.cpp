@@ -39,12 +39,6 @@ struct SourceColumns {
 SourceColumns columns_of(const schedule::ClockedFocalPlane& source) {
     SourceColumns c;
     const std::string instrument = source.instrument ? source.instrument->name : "";
-    if (source.focal_plane == nullptr) {
-        c.name = instrument + " -> (data recorder)";
-        c.bandpass = "-";
-        c.array = "-";
-        return c;
-    }
     const model::Bandpass& band = source.focal_plane->capture_method.spectral_response.bandpass;
     c.name = instrument + " -> " + source.focal_plane->name;
     c.bandpass = fixed6(band.min_um) + " - " + fixed6(band.max_um) + " @ " + fixed6(band.delta_um) +

@@ -384,8 +384,7 @@ TEST(Schedule, SynchronousAndTriggeredClocks) {
 TEST(Schedule, RollingLineTimeIsNoneForGlobalShuttersAndTdi) {
     model::FocalPlane plane;
     ClockedFocalPlane source;
-    EXPECT_EQ(source.rolling_line_time_s(), std::nullopt);  // no focal plane
-    source.focal_plane = &plane;
+    source.focal_plane = &plane;  // never null in a loaded schedule
     EXPECT_EQ(source.rolling_line_time_s(), std::nullopt);  // global shutter
     plane.detector_array.rolling_line_time_s = 2e-5;
     EXPECT_EQ(source.rolling_line_time_s(), 2e-5);

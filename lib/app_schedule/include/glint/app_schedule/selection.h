@@ -53,7 +53,7 @@ ShardSpec parse_shard(std::string_view text);
 
 /// Problems (pixel problems handed to the radiometry) of one capture of `source`
 /// (ClockedFocalPlane::problems_per_capture: x × y elements after scale_resolution, x for a TDI
-/// focal plane); 0 for a source without a focal plane.
+/// focal plane).
 std::uint64_t problems_per_capture(const schedule::ClockedFocalPlane& source);
 
 /// The lines [a, b) of a capture of `source` that a --by rows shard holds; nullopt without

@@ -59,7 +59,9 @@ struct ClockedFocalPlane {
     std::size_t instrument_index = 0;   ///< list_instruments order within the platform
     std::size_t focal_plane_index = 0;  ///< index within the instrument
     const model::Instrument* instrument = nullptr;
-    const model::FocalPlane* focal_plane = nullptr;  ///< never null in this version
+    /// Never null once loaded: every source is an enabled focal plane (a data recorder's
+    /// own clock makes no source; docs/data-recorder.md).
+    const model::FocalPlane* focal_plane = nullptr;
     std::size_t x_count = 0;                         ///< pixel counts after scale_resolution
     std::size_t y_count = 0;                         ///< rows; for TDI the stages (never scaled)
     /// Problems (pixels rendered) per capture: x_count · y_count, or x_count for TDI (the
@@ -76,7 +78,7 @@ struct ClockedFocalPlane {
     /// The rolling readout's line time (row j starts j × it after the tick); nullopt for a
     /// global shutter and for TDI arrays, whose stages are read once per capture.
     std::optional<double> rolling_line_time_s() const {
-        if (tdi_stages > 1 || focal_plane == nullptr) return std::nullopt;
+        if (tdi_stages > 1) return std::nullopt;
         return focal_plane->detector_array.rolling_line_time_s;
     }
     /// Trigger times (s after the reference) of an external clock, one period of them.

@@ -112,11 +112,6 @@ RenderReport render(model::SimulationInputs inputs, const RenderOptions& options
 RenderReport plan(model::SimulationInputs inputs, const RenderOptions& options,
                   const Context& context);
 
-/// Loads everything like render() and returns the captures, pixel counts, output files and
-/// memory estimate without tracing a ray (--dry-run).
-RenderReport plan(const std::filesystem::path& simulation_file, const RenderOptions& options,
-                  const Context& context);
-
 /// What a glint-schedule JSON file selects: its `captures[].index`, and the row band of a
 /// `--by rows` shard (its `selection.shard` with `"by": "rows"`).
 struct ScheduleSelection {
