@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Internal pieces of the capture loop (glint/sensor/render.h): the loaded inputs and the
-// per-focal-plane state built at a focal plane's first capture.
+// per-focal-plane state, built while the outputs are planned (plan_outputs, before any
+// capture: one state per focal plane that writes a file).
 #pragma once
 
 #include <cstdint>

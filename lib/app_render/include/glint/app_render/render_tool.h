@@ -22,7 +22,7 @@ struct Options {
     std::filesystem::path input;     ///< the .jsim or .sim
     std::filesystem::path schedule;  ///< --schedule FILE (empty: the whole schedule)
     bool dry_run = false;            ///< print the plan, trace nothing
-    bool radiance_only = false;      ///< stop at radiance (the detector stage is [G]'s)
+    bool radiance_only = false;      ///< --radiance-only: write radiance, no detector stage
     sensor::RenderOptions render;    ///< everything else
     dirsig::ReadOptions read;        ///< how the input files are resolved
     /// --atmosphere none|parametric|FILE: replaces the simulation's atmosphere (whose file is
