@@ -12,6 +12,7 @@
 
 #include "glint/core/error.h"
 #include "glint/sensor/camera.h"
+#include "glint/sensor/pixel_ray_source.h"
 
 namespace glint::sensor {
 

@@ -31,6 +31,7 @@
 #include "glint/sensor/camera.h"
 #include "glint/sensor/image_outputs.h"
 #include "glint/sensor/output_units.h"
+#include "glint/sensor/pixel_ray_source.h"
 #include "glint/sensor/render.h"
 #include "glint/sensor/truth.h"
 

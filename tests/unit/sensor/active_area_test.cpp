@@ -18,6 +18,7 @@
 #include "glint/motion/rigid.h"
 #include "glint/sensor/active_area.h"
 #include "glint/sensor/camera.h"
+#include "glint/sensor/pixel_ray_source.h"
 #include "glint/test/platforms.h"
 #include "glint/test/temp_dir.h"
 

@@ -25,6 +25,7 @@
 #include "glint/motion/euler.h"
 #include "glint/motion/rigid.h"
 #include "glint/sensor/camera.h"
+#include "glint/sensor/pixel_ray_source.h"
 #include "glint/sensor/psf.h"
 #include "glint/test/platforms.h"
 #include "glint/test/temp_dir.h"

@@ -16,6 +16,7 @@
 #include "glint/motion/euler.h"
 #include "glint/motion/rigid.h"
 #include "glint/sensor/camera.h"
+#include "glint/sensor/pixel_ray_source.h"
 #include "glint/test/platforms.h"
 
 namespace glint::sensor {
