@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "glint/atmosphere/atmosphere.h"
+#include "glint/core/error.h"
 #include "glint/core/spectral.h"
 #include "glint/radiometry/environment.h"
 #include "tracer_fixture.h"
@@ -93,6 +94,26 @@ TEST(AltitudeLevels, FollowTheSurfacesOfTheScene) {
     // A 1 km hill: levels 250 m apart or closer from its foot to its top.
     test::add_primitive(scene, test::box({-500, -500, 0}, {-400, -400, 1000}), 0);
     EXPECT_EQ(levels_of(scene), (std::vector<double>{0.0, 250.0, 500.0, 750.0, 1000.0, 50001.0}));
+}
+
+TEST(AltitudeLevels, AScenePastTheLevelLimitIsRefused) {
+    // One joined range 200 km tall would need 801 levels 250 m apart (at most 512).
+    model::Scene scene;
+    scene.materials.push_back(flat_material("grey", 0.3, 300.0));
+    test::add_primitive(scene, test::box({0, 0, 0}, {1, 1, 200'000}), 0);
+    try {
+        levels_of(scene);
+        ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.category(), ErrorCategory::input);
+        EXPECT_NE(std::string(e.what()).find("the scene's surfaces span 200000 m of height: more "
+                                             "than the 512 atmosphere levels glint computes"),
+                  std::string::npos)
+            << e.what();
+    }
+    // The environment refuses more levels than that too.
+    const auto model = parametric();
+    EXPECT_THROW(environment_for(model, std::vector<double>(513, 0.0), kSensorHeight_m), Error);
 }
 
 TEST(AltitudeLevels, EachPlateIsLitAndSeenThroughTheAtmosphereAtItsAltitude) {
