@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// glint-render's options (docs/tools/glint-render.md).
+// glint-render's options (docs/tools/glint-settings.md).
 #include "cli.h"
 
 #include <algorithm>
@@ -114,14 +114,14 @@ void RenderCli::configure(CLI::App& app) {
 
 int RenderCli::execute(Context& ctx, std::ostream& out) {
     const CLI::App& app = *m_app;
-    sensor::RenderOptions& render = m_options.render;
-    if (app.count("--output-folder") > 0) render.schedule.output_folder = m_output_folder;
-    if (app.count("--output-prefix") > 0) render.schedule.output_prefix = m_output_prefix;
+    glint::render::RenderOptions& settings = m_options.render;
+    if (app.count("--output-folder") > 0) settings.schedule.output_folder = m_output_folder;
+    if (app.count("--output-prefix") > 0) settings.schedule.output_prefix = m_output_prefix;
     if (app.count("--convergence") > 0) {
-        render.convergence = app_render::parse_convergence(m_convergence);
+        settings.convergence = app_render::parse_convergence(m_convergence);
     }
     if (app.count("--max-memory") > 0) {
-        render.device.max_memory_bytes = *parse_byte_size(m_max_memory);  // checked by byte_size()
+        settings.device.max_memory_bytes = *parse_byte_size(m_max_memory);  // checked by byte_size()
     }
     if (m_processing_timeout_s > 0.0) {
         m_options.processing.timeout = std::chrono::milliseconds(
@@ -129,9 +129,9 @@ int RenderCli::execute(Context& ctx, std::ostream& out) {
     } else {
         m_options.processing.timeout.reset();
     }
-    if (app.count("--rows") > 0) render.rows = schedule::parse_row_band(m_rows);
-    render.device.isa = m_isa;
-    render.device.threads = ctx.threads;
+    if (app.count("--rows") > 0) settings.rows = schedule::parse_row_band(m_rows);
+    settings.device.isa = m_isa;
+    settings.device.threads = ctx.threads;
     return app_render::run(m_options, ctx, out);
 }
 

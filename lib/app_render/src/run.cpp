@@ -31,7 +31,7 @@ std::string mebibytes(std::uint64_t bytes) {
 }
 
 /// Runs the processing tasks at the render's events.
-class ProcessingObserver final : public sensor::RenderObserver {
+class ProcessingObserver final : public render::RenderObserver {
 public:
     explicit ProcessingObserver(process::ProcessingRunner& runner) : m_runner(runner) {}
     void on_plan(const std::vector<model::ProcessingEvent>& events) override {
@@ -46,14 +46,14 @@ private:
 /// The folders the run writes into, each once, in plugin order; a warning for each the
 /// simulation chose outside both its own folder and the working folder.
 std::vector<std::filesystem::path> output_folders(const model::SimulationInputs& loaded,
-                                                  const sensor::RenderOptions& render,
+                                                  const render::RenderOptions& settings,
                                                   const Context& ctx) {
     std::error_code ec;
     const std::filesystem::path working = std::filesystem::current_path(ec);
     std::vector<std::filesystem::path> folders;
     if (ec) return folders;
     for (const model::OutputFolder& output :
-         model::output_folders(loaded.simulation, render.schedule.output_folder, working)) {
+         model::output_folders(loaded.simulation, settings.schedule.output_folder, working)) {
         if (std::find(folders.begin(), folders.end(), output.folder) != folders.end()) continue;
         folders.push_back(output.folder);
         if (auto why = model::unexpected_output_folder(output, loaded.simulation, working)) {
@@ -130,21 +130,21 @@ std::filesystem::path default_data_dir() {
 int run(const Options& options, Context& ctx, std::ostream& out) {
     refuse_stdio_name(options.input, StdioRole::input, "the simulation of glint-render",
                       kSimulationNeedsFile);
-    sensor::RenderOptions render = options.render;
-    render.schedule.seed = ctx.seed;
-    render.version = version();
-    render.radiance_only = options.radiance_only;
-    if (render.data_dir.empty()) render.data_dir = default_data_dir();
-    ctx.log.info("Data folder: " + render.data_dir.string());
+    render::RenderOptions settings = options.render;
+    settings.schedule.seed = ctx.seed;
+    settings.version = version();
+    settings.radiance_only = options.radiance_only;
+    if (settings.data_dir.empty()) settings.data_dir = default_data_dir();
+    ctx.log.info("Data folder: " + settings.data_dir.string());
     if (!options.schedule.empty()) {
-        sensor::ScheduleSelection selection = sensor::read_schedule_selection(options.schedule);
-        render.only_captures = std::move(selection.captures);
+        render::ScheduleSelection selection = render::read_schedule_selection(options.schedule);
+        settings.only_captures = std::move(selection.captures);
         if (selection.rows) {
-            if (render.rows) {
+            if (settings.rows) {
                 throw usage_error("--rows and a --by rows shard in --schedule " +
                                   options.schedule.string() + ": give one band of lines");
             }
-            render.rows = selection.rows;
+            settings.rows = selection.rows;
         }
     }
     inputs::LoadOptions load_options;
@@ -159,9 +159,9 @@ int run(const Options& options, Context& ctx, std::ostream& out) {
         processing.allow_list = process::allow_list_from_environment();
     }
     process::ProcessingRunner runner(processing, ctx);
-    const std::vector<std::filesystem::path> folders = output_folders(loaded, render, ctx);
+    const std::vector<std::filesystem::path> folders = output_folders(loaded, settings, ctx);
     if (options.dry_run) {
-        const sensor::RenderReport plan = sensor::plan(std::move(loaded), render, ctx);
+        const render::RenderReport plan = render::dry_run(std::move(loaded), settings, ctx);
         out << "captures: " << plan.captures.size() << "\n";
         out << "pixels: " << plan.pixels << "\n";
         out << "memory estimate: " << mebibytes(plan.memory_estimate_bytes) << "\n";
@@ -181,15 +181,15 @@ int run(const Options& options, Context& ctx, std::ostream& out) {
     }
     // A band of lines is part of its images: processing tasks would see parts, so they run on
     // the merged files instead (docs/scale.md).
-    const bool run_tasks = !options.no_processing && !render.rows;
+    const bool run_tasks = !options.no_processing && !settings.rows;
     ProcessingObserver observer(runner);
-    const sensor::RenderReport report =
-        sensor::render(std::move(loaded), render, ctx, run_tasks ? &observer : nullptr);
+    const render::RenderReport report =
+        render::render(std::move(loaded), settings, ctx, run_tasks ? &observer : nullptr);
     if (!run_tasks && !report.events.empty()) {
         const std::string why =
             options.no_processing
                 ? std::string("--no-processing")
-                : "--rows " + render.rows->describe() +
+                : "--rows " + settings.rows->describe() +
                       " (a band of lines; run them on the files glint-envi merge joins)";
         ctx.log.warning(why + ": " + std::to_string(task_count(report.events)) +
                         " processing task runs at " + std::to_string(report.events.size()) +

@@ -6,9 +6,9 @@
 #include <array>
 #include <cmath>
 
-#include "render_parts.h"
+#include "glint/sensor/hypersampling.h"
 
-namespace glint::sensor::detail {
+namespace glint::sensor {
 namespace {
 
 /// Marks the pixels the box `b` may cover, seen from `pose`; false when part of the box is
@@ -85,4 +85,4 @@ std::vector<std::uint8_t> hypersampled_pixels(const model::Scene& scene,
     return mask;
 }
 
-}  // namespace glint::sensor::detail
+}  // namespace glint::sensor

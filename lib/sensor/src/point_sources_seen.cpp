@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Point sources seen by the camera (render_parts.h, seen_point_sources): a source is a point,
+// Point sources seen by the camera (glint/sensor/point_sources_seen.h): a source is a point,
 // so no sample ray ever hits it; the pixel whose footprint holds it records its irradiance at
 // the aperture over the footprint's solid angle, E/Ω. This is the Monte-Carlo pixel's
 // expectation for a delta source: a pixel's sample directions have density 1/Ω over its
@@ -14,9 +14,9 @@
 #include <utility>
 
 #include "glint/motion/rigid.h"
-#include "render_parts.h"
+#include "glint/sensor/point_sources_seen.h"
 
-namespace glint::sensor::detail {
+namespace glint::sensor {
 namespace {
 
 /// Times over a window, draws over the PSF and blur, and the clearance before a source.
@@ -200,4 +200,4 @@ SeenPointSources seen_point_sources(const CameraModel& camera, const motion::Pos
     return out;
 }
 
-}  // namespace glint::sensor::detail
+}  // namespace glint::sensor

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// glint-render's entry point: renders a .jsim or .sim (glint/sensor/render.h) or, with
+// glint-render's entry point: renders a .jsim or .sim (glint/render/render.h) or, with
 // --dry-run, prints the plan; on stdout it lists the files written (one path per line) or
 // the plan. docs/tools/glint-render.md documents every option.
 #pragma once
@@ -14,7 +14,7 @@
 #include "glint/core/context.h"
 #include "glint/dirsig/read_options.h"
 #include "glint/process/processing.h"
-#include "glint/sensor/render.h"
+#include "glint/render/render.h"
 
 namespace glint::app_render {
 
@@ -23,7 +23,7 @@ struct Options {
     std::filesystem::path schedule;  ///< --schedule FILE (empty: the whole schedule)
     bool dry_run = false;            ///< print the plan, trace nothing
     bool radiance_only = false;      ///< --radiance-only: write radiance, no detector stage
-    sensor::RenderOptions render;    ///< everything else
+    render::RenderOptions render;    ///< everything else
     dirsig::ReadOptions read;        ///< how the input files are resolved
     /// --atmosphere none|parametric|FILE: replaces the simulation's atmosphere (whose file is
     /// then not read); empty: the simulation's

@@ -2,7 +2,7 @@
 // One firing of a focal plane's processing tasks (the DIRSIG5 BasicPlatform manual's "Inline
 // Processing"): which event of the capture schedule it is, the tasks that run at it, and the
 // radiometric image file its $$IMG_BASENAME$$ names. The renderer plans and fires these
-// (glint/sensor/render.h); lib/process runs the tasks (glint/process/processing.h).
+// (glint/render/render.h); lib/process runs the tasks (glint/process/processing.h).
 #pragma once
 
 #include <cstdint>

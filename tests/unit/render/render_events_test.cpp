@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The processing events glint-render fires (lib/sensor/src/render_events.cpp): the manual's
+// The processing events glint-render fires (lib/render/src/render_events.cpp): the manual's
 // two focal planes capturing together (tests/data/processing/manual.jsim) interleave their
 // capture_completed events in schedule order and the collection completes after the last
 // capture; a camera writing one file per task (events.jsim) fires every kind, its image
@@ -11,12 +11,12 @@
 #include <string>
 #include <vector>
 
-#include "../../../lib/sensor/src/render_parts.h"
+#include "../../../lib/render/src/render_parts.h"
 #include "glint/model/names.h"
 #include "glint/test/temp_dir.h"
 #include "render_fixture.h"
 
-namespace glint::sensor {
+namespace glint::render {
 namespace {
 
 namespace fs = std::filesystem;
@@ -94,4 +94,4 @@ TEST(RenderEvents, EveryKindWithTheImageCompleteWhenPublished) {
 }
 
 }  // namespace
-}  // namespace glint::sensor
+}  // namespace glint::render

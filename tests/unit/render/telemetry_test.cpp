@@ -14,13 +14,13 @@
 #include <fstream>
 #include <numbers>
 
-#include "../../../lib/sensor/src/render_parts.h"
+#include "../../../lib/render/src/render_parts.h"
 #include "glint/core/error.h"
 #include "glint/motion/euler.h"
 #include "glint/test/temp_dir.h"
 #include "render_fixture.h"
 
-namespace glint::sensor {
+namespace glint::render {
 namespace {
 
 namespace fs = std::filesystem;
@@ -39,7 +39,7 @@ TEST(Telemetry, RecordsThePoseServicesInstrumentPoseAtTheClockTicks) {
     EXPECT_EQ(gps.recorder->name, "GPS");
     EXPECT_EQ(gps.csv, dir / "out" / "gps.csv");
     const schedule::PluginSchedule& plugin = prepared->inputs.schedule->plugins()[gps.plugin];
-    const auto times = recorder_times_s(*gps.recorder, *plugin.platform, plugin.tasks);
+    const auto times = sensor::recorder_times_s(*gps.recorder, *plugin.platform, plugin.tasks);
     // 10 Hz in [0, 0.25] and [1, 1.15].
     ASSERT_EQ(times.size(), 5u);
     EXPECT_EQ(times[2], (std::pair<std::uint64_t, double>{0, 0.2}));
@@ -47,10 +47,10 @@ TEST(Telemetry, RecordsThePoseServicesInstrumentPoseAtTheClockTicks) {
 
     const motion::PoseService& poses = *plugin.poses;
     EXPECT_EQ(poses.platform_rotation_order(), motion::EulerOrder::zyx);
-    const auto records = record_telemetry(poses, gps.instrument, times, prepared->inputs.frame,
+    const auto records = sensor::record_telemetry(poses, gps.instrument, times, prepared->inputs.frame,
                                           gps.recorder->recorder.noise, 1, plugin.plugin_index);
     ASSERT_EQ(records.size(), 5u);
-    for (const TelemetryRecord& r : records) {
+    for (const sensor::TelemetryRecord& r : records) {
         const motion::Rigid pose = poses.instrument_to_scene(gps.instrument, r.time_s);
         EXPECT_EQ(r.position_enu_m, pose.translation_m);  // no noise configured
         EXPECT_NEAR(std::abs(motion::dot(r.orientation, pose.rotation)), 1.0, 1e-15);
@@ -129,4 +129,4 @@ TEST(Telemetry, ExternalTriggerClockOfTheRecorderItselfIsRefused) {
 }
 
 }  // namespace
-}  // namespace glint::sensor
+}  // namespace glint::render

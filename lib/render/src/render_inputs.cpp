@@ -14,7 +14,7 @@
 #include "glint/scene/geometry_scene.h"
 #include "render_parts.h"
 
-namespace glint::sensor::detail {
+namespace glint::render::detail {
 
 namespace {
 
@@ -106,4 +106,4 @@ RenderInputs make_render_inputs(model::SimulationInputs loaded, const RenderOpti
     return in;
 }
 
-}  // namespace glint::sensor::detail
+}  // namespace glint::render::detail

@@ -28,7 +28,7 @@
 #include "glint/schedule/row_band.h"
 #include "glint/schedule/schedule.h"
 
-namespace glint::sensor {
+namespace glint::render {
 
 /// Convergence used when neither --convergence nor the focal plane gives one.
 inline constexpr radiometry::Convergence kDefaultConvergence{10, 100, 1e-6};
@@ -56,7 +56,7 @@ struct RenderOptions {
     /// Provenance written into every header (with the Context's command line).
     std::string version;
     /// DIRSIG's --log_info_filename: the capture list (captures, time windows, files) of the
-    /// run, written atomically when the run ends (also for plan()); empty: none.
+    /// run, written atomically when the run ends (also for dry_run()); empty: none.
     std::filesystem::path log_info_file;
 };
 
@@ -71,7 +71,7 @@ struct CaptureReport {
     double seconds = 0.0;
 };
 
-/// What a render did (or, for plan(), would do).
+/// What a render did (or, for dry_run(), would do).
 struct RenderReport {
     std::vector<CaptureReport> captures;
     std::vector<std::filesystem::path> files;  ///< published (render) or planned (plan)
@@ -83,7 +83,7 @@ struct RenderReport {
     std::uint64_t memory_estimate_bytes = 0;
     scene::DeviceInfo device;
     /// The processing events of the focal planes with `<processing>` tasks, in firing order
-    /// (docs/processing.md): fired by render(), listed by plan().
+    /// (docs/processing.md): fired by render(), listed by dry_run().
     std::vector<model::ProcessingEvent> events;
 };
 
@@ -109,7 +109,7 @@ RenderReport render(model::SimulationInputs inputs, const RenderOptions& options
 
 /// Prepares everything like render() and returns the captures, pixel counts, output files and
 /// memory estimate without tracing a ray (--dry-run).
-RenderReport plan(model::SimulationInputs inputs, const RenderOptions& options,
+RenderReport dry_run(model::SimulationInputs inputs, const RenderOptions& options,
                   const Context& context);
 
 /// What a glint-schedule JSON file selects: its `captures[].index`, and the row band of a
@@ -123,4 +123,4 @@ struct ScheduleSelection {
 /// (input, with the file) when it is not a glint-schedule file or its row shard is invalid.
 ScheduleSelection read_schedule_selection(const std::filesystem::path& file);
 
-}  // namespace glint::sensor
+}  // namespace glint::render

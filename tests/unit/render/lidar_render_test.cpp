@@ -19,11 +19,11 @@
 #include "glint/core/error.h"
 #include "glint/io/envi.h"
 #include "glint/io/lidar_bin.h"
-#include "glint/sensor/render.h"
+#include "glint/render/render.h"
 #include "glint/test/temp_dir.h"
 #include "render_fixture.h"
 
-namespace glint::sensor {
+namespace glint::render {
 namespace {
 
 namespace fs = std::filesystem;
@@ -234,4 +234,4 @@ TEST(LidarRender, ATabulatedPulseShapeIsUsedAsWritten) {
 }
 
 }  // namespace
-}  // namespace glint::sensor
+}  // namespace glint::render

@@ -17,7 +17,7 @@
 #include "glint/motion/euler.h"
 #include "render_parts.h"
 
-namespace glint::sensor::detail {
+namespace glint::render::detail {
 namespace {
 
 /// The stream id of the returns' samples (the spectral-state slot of the key; the passive
@@ -68,7 +68,7 @@ double pulse_rate_hz(const model::Transmitter& t, const schedule::ClockedFocalPl
 }  // namespace
 
 LidarState make_lidar_state(const schedule::ClockedFocalPlane& source, const model::Scene& scene,
-                            const CameraModel& camera, const radiometry::Convergence& convergence,
+                            const sensor::CameraModel& camera, const radiometry::Convergence& convergence,
                             const Context& context) {
     const model::Instrument& instrument = *source.instrument;
     const model::FocalPlane& fp = *source.focal_plane;
@@ -200,8 +200,8 @@ CaptureReport render_pulse(Prepared& prepared, const PlannedCapture& p,
     pulse.data.assign(pixels * values, 0.0);
     CaptureReport stats;
 
-    const CaptureTiming timing{capture.t0_s, capture.t0_s, 0.0, 1};
-    const PixelRaySource rays(state.camera, poses, source.instrument_index, timing,
+    const sensor::CaptureTiming timing{capture.t0_s, capture.t0_s, 0.0, 1};
+    const sensor::PixelRaySource rays(state.camera, poses, source.instrument_index, timing,
                               state.psf ? &*state.psf : nullptr,
                               state.mask ? &*state.mask : nullptr);
     const double share = state.mask ? state.mask->mean_sensitivity() : 1.0;
@@ -223,7 +223,7 @@ CaptureReport render_pulse(Prepared& prepared, const PlannedCapture& p,
         batch.reference_band = state.reference_band;
         batch.count = pixels;
         const radiometry::Solutions solutions = radiometry::solve(tracer, batch, quiet);
-        const SeenPointSources seen = seen_point_sources(
+        const sensor::SeenPointSources seen = sensor::seen_point_sources(
             state.camera, poses, source.instrument_index, timing,
             state.psf ? &*state.psf : nullptr, state.mask ? &*state.mask : nullptr, lights,
             geometry, environment);
@@ -303,4 +303,4 @@ CaptureReport render_pulse(Prepared& prepared, const PlannedCapture& p,
     return stats;
 }
 
-}  // namespace glint::sensor::detail
+}  // namespace glint::render::detail

@@ -21,17 +21,17 @@
 #include <string>
 #include <vector>
 
-#include "../../../lib/sensor/src/render_parts.h"
+#include "../../../lib/render/src/render_parts.h"
 #include "glint/core/datetime.h"
 #include "glint/core/text.h"
 #include "glint/io/envi.h"
 #include "glint/motion/frames.h"
 #include "glint/motion/sun.h"
-#include "glint/sensor/render.h"
+#include "glint/render/render.h"
 #include "glint/test/temp_dir.h"
 #include "render_fixture.h"
 
-namespace glint::sensor::test_truth {
+namespace glint::render::test_truth {
 
 namespace fs = std::filesystem;
 using test_render::kRenderData;
@@ -154,4 +154,4 @@ inline double covered(std::size_t column, std::size_t row, double x0, double x1,
     return std::fabs(f - std::round(f)) < 1e-9 ? std::round(f) : f;
 }
 
-}  // namespace glint::sensor::test_truth
+}  // namespace glint::render::test_truth

@@ -12,7 +12,7 @@
 #include "glint/schedule/capture_list.h"
 #include "render_parts.h"
 
-namespace glint::sensor::detail {
+namespace glint::render::detail {
 namespace {
 
 /// The selected captures in schedule order, skipping (with one info line each) the sources
@@ -195,7 +195,7 @@ void plan_outputs(const RenderInputs& in, const Selected& selected,
             throw internal_error("truth file " + path.string() + " has no collection");
         }
         outputs.plan(path,
-                     truth_header(state.header, *s.focal_plane, state.truth,
+                     sensor::truth_header(state.header, *s.focal_plane, state.truth,
                                   state.truth.files[*entry.truth], in.scene),
                      lines, entry.captures, std::move(part));
     }
@@ -289,4 +289,4 @@ scene::BuildOptions build_options(const RenderOptions& options, double t0_s, dou
     return b;
 }
 
-}  // namespace glint::sensor::detail
+}  // namespace glint::render::detail

@@ -10,7 +10,7 @@
 #include "glint/motion/scene_instances.h"
 #include "render_parts.h"
 
-namespace glint::sensor::detail {
+namespace glint::render::detail {
 
 radiometry::PointLights point_lights_at(const RenderInputs& inputs, const SpectralGrid& grid,
                                         double t_s) {
@@ -42,4 +42,4 @@ radiometry::PointLights point_lights_at(const RenderInputs& inputs, const Spectr
     return lights;
 }
 
-}  // namespace glint::sensor::detail
+}  // namespace glint::render::detail

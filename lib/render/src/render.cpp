@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// The capture loop (glint/sensor/render.h): plan() stops after planning; render() builds the
+// The capture loop (glint/render/render.h): dry_run() stops after planning; render() builds the
 // Embree scene (once, or per capture when something moves) and renders the captures in
 // schedule order (render_capture.cpp).
-#include "glint/sensor/render.h"
+#include "glint/render/render.h"
 
 #include <cmath>
 #include <map>
@@ -15,9 +15,9 @@
 #include "glint/core/error.h"
 #include "render_parts.h"
 
-namespace glint::sensor {
+namespace glint::render {
 
-RenderReport plan(model::SimulationInputs inputs, const RenderOptions& options,
+RenderReport dry_run(model::SimulationInputs inputs, const RenderOptions& options,
                   const Context& context) {
     const std::unique_ptr<detail::Prepared> prepared =
         detail::prepare(std::move(inputs), options, context);
@@ -151,4 +151,4 @@ RenderReport render(model::SimulationInputs inputs, const RenderOptions& options
     return report;
 }
 
-}  // namespace glint::sensor
+}  // namespace glint::render

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// ImageOutputs: planned ENVI files filled capture by capture (glint/sensor/image_outputs.h).
-#include "glint/sensor/image_outputs.h"
+// ImageOutputs: planned ENVI files filled capture by capture (glint/render/image_outputs.h).
+#include "glint/render/image_outputs.h"
 
 #include <optional>
 #include <string>
@@ -10,7 +10,7 @@
 #include "glint/core/text.h"
 #include "glint/io/envi_part.h"
 
-namespace glint::sensor {
+namespace glint::render {
 
 struct ImageOutputs::File {
     io::EnviHeader header;
@@ -212,4 +212,4 @@ std::vector<std::pair<std::filesystem::path, std::string>> ImageOutputs::written
     return files;
 }
 
-}  // namespace glint::sensor
+}  // namespace glint::render

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Internal pieces of the capture loop (glint/sensor/render.h): the loaded inputs and the
+// Internal pieces of the capture loop (glint/render/render.h): the loaded inputs and the
 // per-focal-plane state, built while the outputs are planned (plan_outputs, before any
 // capture: one state per focal plane that writes a file).
 #pragma once
@@ -29,13 +29,16 @@
 #include "glint/radiometry/point_lights.h"
 #include "glint/scene/geometry_scene.h"
 #include "glint/sensor/camera.h"
-#include "glint/sensor/image_outputs.h"
+#include "glint/sensor/hypersampling.h"
+#include "glint/render/image_outputs.h"
 #include "glint/sensor/output_units.h"
+#include "glint/sensor/point_sources_seen.h"
 #include "glint/sensor/pixel_ray_source.h"
-#include "glint/sensor/render.h"
+#include "glint/render/image_outputs.h"
+#include "glint/render/render.h"
 #include "glint/sensor/truth.h"
 
-namespace glint::sensor::detail {
+namespace glint::render::detail {
 
 /// Everything read before the first capture.
 struct RenderInputs {
@@ -95,7 +98,7 @@ struct LidarState {
 /// cannot render: a receiver without an aperture (focal length and aperture diameter), truth
 /// collections on it, a bad pulse shape table.
 LidarState make_lidar_state(const schedule::ClockedFocalPlane& source, const model::Scene& scene,
-                            const CameraModel& camera, const radiometry::Convergence& convergence,
+                            const sensor::CameraModel& camera, const radiometry::Convergence& convergence,
                             const Context& context);
 
 /// What one focal plane needs for every capture.
@@ -103,20 +106,20 @@ struct FocalPlaneState {
     SpectralGrid grid;
     std::vector<SpectralState> spectral_states;  ///< one, or one per channel when split
     radiometry::MaterialTable materials;
-    CameraModel camera;
-    OutputUnits units;
+    sensor::CameraModel camera;
+    sensor::OutputUnits units;
     radiometry::Convergence convergence;
     io::EnviHeader header;  ///< header template (lines set when planned)
     /// In-render detection (detector model or colour filter array, unless --radiance-only):
     /// the chain glint-detect applies, fed with the capture's photon product line by line.
     std::optional<detect::DetectionChain> detection;
     /// The focal plane's <psf>, when it has one.
-    std::optional<PsfSampler> psf;
+    std::optional<sensor::PsfSampler> psf;
     /// The focal plane's <activearea> mask, when it has one (each pixel's values are
     /// multiplied by its mean sensitivity).
-    std::optional<ActiveArea> mask;
+    std::optional<sensor::ActiveArea> mask;
     /// Its truth collections that write a file (empty: none).
-    TruthLayout truth;
+    sensor::TruthLayout truth;
     /// The band of `grid` nearest its centre: the reference wavelength of the convergence of
     /// an unsplit focal plane and of the Reflectance truth.
     std::size_t reference_band = 0;
@@ -141,57 +144,11 @@ bool splits_channels(const RenderInputs& inputs, std::size_t plugin_index,
 /// enabled focal plane with an image file); `why` gets the reason when not.
 bool renders(const schedule::ClockedFocalPlane& source, std::string& why);
 
-/// Hypersampling: one entry per pixel (problem), 1 where the capture's field of view may
-/// contain an instance marked ::IMPORTANT:: (its bounds over the window projected from the
-/// instrument's poses at the window's start and end, one pixel of margin; every pixel when
-/// the box reaches behind the camera); empty when no instance is important. For TDI
-/// (timing.tdi_stages > 1) one entry per column: 1 when any stage of it is marked.
-std::vector<std::uint8_t> hypersampled_pixels(const model::Scene& scene,
-                                              const scene::GeometryScene& geometry,
-                                              const CameraModel& camera,
-                                              const motion::PoseService& poses,
-                                              std::size_t instrument, const CaptureTiming& timing,
-                                              double psf_reach_px = 0.0);
-
 /// The scene's point sources on `grid` at `t_s` (a capture's mid-window time): each one's
 /// material intensity resampled on the grid, its position at that time. Throws
 /// glint::Error (input, at the source) for a non-finite position.
 radiometry::PointLights point_lights_at(const RenderInputs& inputs, const SpectralGrid& grid,
                                         double t_s);
-
-/// What the pixels of one capture record straight from the point sources in their view
-/// (docs/physics.md, "Point sources seen by the camera"): a delta source's irradiance at the
-/// aperture spread over the solid angle of the element that sees it.
-struct SeenPointSources {
-    /// Per source: the irradiance it puts on the aperture, I(λ) T_v(λ) / r², W/(cm² µm), per
-    /// band of the grid.
-    std::vector<std::vector<double>> irradiance;
-    /// One pixel seeing one source: its radiance gains per_sr × irradiance[source].
-    struct Entry {
-        std::uint64_t problem = 0;
-        std::uint32_t source = 0;
-        double per_sr = 0.0;  ///< the share of the source's draws it holds / its solid angle
-    };
-    std::vector<Entry> entries;  ///< by problem, then source
-    /// Adds to `radiance` (bands first_band … of the grid) what problem `problem` records;
-    /// returns whether it records anything.
-    bool add_to(std::uint64_t problem, std::size_t first_band, std::span<double> radiance) const;
-};
-
-/// The point sources `lights` (at their mid-window positions) as the pixels of a capture see
-/// them: for each of 16 times spread over the window (a rolling row's own times; for TDI,
-/// the stage a time falls in), a source not hidden from the instrument's origin (by a
-/// surface more than 1 mm before it) projects to a point of the focal plane; the PSF's and a
-/// thin lens's blur spread it over 1,024 fixed draws, and each draw that lands in a pixel's
-/// active element (weighted by the active-area mask) gives that pixel its share over the
-/// element's solid angle. The atmosphere between is the sensor path's transmittance from the
-/// source's height.
-SeenPointSources seen_point_sources(const CameraModel& camera, const motion::PoseService& poses,
-                                    std::size_t instrument, const CaptureTiming& timing,
-                                    const PsfSampler* psf, const ActiveArea* mask,
-                                    const radiometry::PointLights& lights,
-                                    const scene::GeometryScene& geometry,
-                                    const radiometry::Environment& environment);
 
 /// A capture of the selection with what the loop needs about it.
 /// The most captures one glint-render run plans (the plan keeps each, ~200 bytes); more is
@@ -341,4 +298,4 @@ radiometry::Environment capture_environment(const RenderInputs& in, const Spectr
 /// The Embree build options of a window.
 scene::BuildOptions build_options(const RenderOptions& options, double t0_s, double t1_s);
 
-}  // namespace glint::sensor::detail
+}  // namespace glint::render::detail

@@ -9,7 +9,7 @@
 
 #include "render_parts.h"
 
-namespace glint::sensor::detail {
+namespace glint::render::detail {
 namespace {
 
 using model::ProcessingSchedule;
@@ -102,4 +102,4 @@ std::vector<model::ProcessingEvent> EventPlan::in_order() const {
     return out;
 }
 
-}  // namespace glint::sensor::detail
+}  // namespace glint::render::detail

@@ -11,9 +11,9 @@
 #include "glint/core/stdio_name.h"
 #include "glint/core/text.h"
 #include "glint/io/input_files.h"
-#include "glint/sensor/render.h"
+#include "glint/render/render.h"
 
-namespace glint::sensor {
+namespace glint::render {
 
 namespace {
 
@@ -181,4 +181,4 @@ ScheduleSelection read_schedule_selection(const std::filesystem::path& file) {
     return selection;
 }
 
-}  // namespace glint::sensor
+}  // namespace glint::render

@@ -14,7 +14,7 @@
 #include "glint/motion/sun.h"
 #include "render_parts.h"
 
-namespace glint::sensor::detail {
+namespace glint::render::detail {
 namespace {
 
 std::string bandpass_line(const SpectralGrid& grid) {
@@ -144,9 +144,9 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
     const radiometry::Environment environment =
         capture_environment(in, state.grid, capture, source, geometry, path_cache,
                             context.threads);
-    CaptureTiming timing{capture.t0_s, capture.t1_s, source.rolling_line_time_s().value_or(0.0),
+    sensor::CaptureTiming timing{capture.t0_s, capture.t1_s, source.rolling_line_time_s().value_or(0.0),
                          source.tdi_stages};
-    const PixelRaySource rays(state.camera, *plugin.poses, source.instrument_index, timing,
+    const sensor::PixelRaySource rays(state.camera, *plugin.poses, source.instrument_index, timing,
                               state.psf ? &*state.psf : nullptr,
                               state.mask ? &*state.mask : nullptr);
     radiometry::ProblemBatch batch;
@@ -164,7 +164,7 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
         source.focal_plane->capture_method.sample_strategy.hypersampling_multiplier;
     std::vector<std::uint8_t> important;
     if (multiplier > 1.0) {
-        important = hypersampled_pixels(in.scene, geometry, state.camera, *plugin.poses,
+        important = sensor::hypersampled_pixels(in.scene, geometry, state.camera, *plugin.poses,
                                         source.instrument_index, timing,
                                         state.psf ? state.psf->reach_px() : 0.0);
         if (!important.empty()) {  // empty: nothing important in view
@@ -175,14 +175,14 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
         batch.hypersampling_multiplier = multiplier;
     }
     const std::size_t channels = state.units.channels();
-    const TruthContext truth_context{
+    const sensor::TruthContext truth_context{
         &in.scene,    &state.materials,     &in.frame,
         &state.units, state.reference_band, state.mask ? state.mask->mean_sensitivity() : 1.0};
     // Point sources sit where they are at mid-window (docs/physics.md, "Point sources").
     const radiometry::PointLights lights =
         point_lights_at(in, state.grid, 0.5 * (capture.t0_s + capture.t1_s));
     // What the pixels see of the sources themselves (a source is a point: no ray hits it).
-    const SeenPointSources seen = seen_point_sources(
+    const sensor::SeenPointSources seen = sensor::seen_point_sources(
         state.camera, *plugin.poses, source.instrument_index, timing,
         state.psf ? &*state.psf : nullptr, state.mask ? &*state.mask : nullptr, lights, geometry,
         environment);
@@ -236,7 +236,7 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
         prepared.outputs.write_lines(p.file, state.detection ? detected : out_image);
         for (std::size_t t = 0; t < p.truth_files.size(); ++t) {
             prepared.outputs.write_lines(
-                p.truth_files[t], truth_file_values(state.truth, state.truth.files[t], out_truth));
+                p.truth_files[t], sensor::truth_file_values(state.truth, state.truth.files[t], out_truth));
         }
     };
     for (std::uint64_t first = p.first_line; first < p.end_line; first += band_lines) {
@@ -256,7 +256,7 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
             const SpectralState& spectral = state.spectral_states[k];
             batch.key.spectral_state = spectral.channel;
             batch.reference_band = spectral.reference_band - spectral.bands.first;
-            std::optional<TruthObserver> observer;
+            std::optional<sensor::TruthObserver> observer;
             if (!state.truth.empty()) {
                 observer.emplace(state.truth, truth_context, spectral.bands, spectral.channel,
                                  k == 0, batch.first_problem, truth);
@@ -314,4 +314,4 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
     return stats;
 }
 
-}  // namespace glint::sensor::detail
+}  // namespace glint::render::detail

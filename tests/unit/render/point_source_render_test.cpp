@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "../../../lib/sensor/src/render_parts.h"
+#include "../../../lib/render/src/render_parts.h"
 #include "glint/atmosphere/atmosphere.h"
 #include "glint/atmosphere/lunar.h"
 #include "glint/core/error.h"
@@ -24,11 +24,11 @@
 #include "glint/motion/moon.h"
 #include "glint/motion/rigid.h"
 #include "glint/motion/sun.h"
-#include "glint/sensor/render.h"
+#include "glint/render/render.h"
 #include "glint/test/temp_dir.h"
 #include "render_fixture.h"
 
-namespace glint::sensor {
+namespace glint::render {
 namespace {
 
 namespace fs = std::filesystem;
@@ -133,7 +133,7 @@ void write_lamp_scene(const fs::path& dir, double rho, double intensity, motion:
 /// The solid angle of pixel (column, row)'s element, from the pinhole camera's geometry alone:
 /// s_x s_y cos³θ / f², θ the angle of its centre from the boresight (the element is 2e-4 rad
 /// wide: the formula's error is of that order squared).
-double pixel_solid_angle_sr(const CameraModel& camera, std::size_t column, std::size_t row) {
+double pixel_solid_angle_sr(const sensor::CameraModel& camera, std::size_t column, std::size_t row) {
     const motion::Vec3 d =
         motion::normalized(camera.direction(camera.focal_plane_point(column, row, 0.5, 0.5)));
     const double cos_theta = -d.z;
@@ -143,7 +143,7 @@ double pixel_solid_angle_sr(const CameraModel& camera, std::size_t column, std::
 }
 
 /// The pixel (column, row) whose footprint holds `point_m` for the camera at `pose`.
-std::array<std::size_t, 2> pixel_of(const CameraModel& camera, const motion::Rigid& pose,
+std::array<std::size_t, 2> pixel_of(const sensor::CameraModel& camera, const motion::Rigid& pose,
                                     const motion::Vec3& point_m) {
     const auto at = camera.project(
         motion::apply_direction(motion::inverse(pose), point_m - pose.translation_m));
@@ -370,4 +370,4 @@ TEST(PointSources, ANonFinitePositionIsAnInputErrorAtTheSource) {
 }
 
 }  // namespace
-}  // namespace glint::sensor
+}  // namespace glint::render

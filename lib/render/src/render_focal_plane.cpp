@@ -11,7 +11,7 @@
 #include "glint/model/names.h"
 #include "render_parts.h"
 
-namespace glint::sensor::detail {
+namespace glint::render::detail {
 
 bool renders(const schedule::ClockedFocalPlane& source, std::string& why) {
     const model::Instrument& instrument = *source.instrument;
@@ -65,7 +65,7 @@ radiometry::Convergence convergence_of(const model::FocalPlane& fp, const Render
     return options.convergence.value_or(kDefaultConvergence);
 }
 
-io::EnviHeader header_of(const schedule::ClockedFocalPlane& source, const OutputUnits& units,
+io::EnviHeader header_of(const schedule::ClockedFocalPlane& source, const sensor::OutputUnits& units,
                          const radiometry::Convergence& convergence, const RenderOptions& options,
                          const RenderInputs& inputs, const Context& context) {
     const model::FocalPlane& fp = *source.focal_plane;
@@ -170,7 +170,7 @@ model::CaptureMethod lidar_units_method(const schedule::ClockedFocalPlane& sourc
 
 /// The focal plane's spectral states: one over the whole grid, or, split, one per channel
 /// over the bands its response covers, each converging at the band nearest its centre.
-std::vector<SpectralState> spectral_states(const SpectralGrid& grid, const OutputUnits& units,
+std::vector<SpectralState> spectral_states(const SpectralGrid& grid, const sensor::OutputUnits& units,
                                            bool split) {
     const auto centre_band = [&](BandRange r) {
         const double lo = grid.wavelength_um(r.first);
@@ -219,9 +219,9 @@ FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t s
     const model::CaptureMethod method = lidar ? lidar_units_method(source) : units_method(source);
     SpectralGrid grid = model::bandpass_grid(method.spectral_response.bandpass);
     radiometry::MaterialTable materials(inputs.scene.materials, grid, context.log);
-    CameraModel camera(source.instrument->properties, fp.detector_array, source.x_count,
+    sensor::CameraModel camera(source.instrument->properties, fp.detector_array, source.x_count,
                        source.y_count);
-    OutputUnits units(method, source.instrument->properties, grid);
+    sensor::OutputUnits units(method, source.instrument->properties, grid);
     std::vector<SpectralState> states = spectral_states(
         grid, units,
         splits_channels(inputs, inputs.schedule->plugins()[source.plugin].plugin_index, options));
@@ -231,7 +231,7 @@ FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t s
     FocalPlaneState state{std::move(grid),   std::move(states), std::move(materials),
                           std::move(camera), std::move(units),  convergence,
                           std::move(header), std::nullopt,      std::nullopt,
-                          std::nullopt,      TruthLayout{},     0,
+                          std::nullopt,      sensor::TruthLayout{},     0,
                           std::nullopt};
     state.reference_band =
         radiometry::nearest_band(state.grid, 0.5 * (state.grid.min_um() + state.grid.max_um()));
@@ -239,19 +239,19 @@ FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t s
         state.lidar.emplace(
             make_lidar_state(source, inputs.scene, state.camera, convergence, context));
     } else {
-        state.truth = make_truth_layout(fp, inputs.scene, state.units, context.log);
+        state.truth = sensor::make_truth_layout(fp, inputs.scene, state.units, context.log);
     }
     if (const std::optional<model::Psf>& psf = fp.capture_method.psf) {
-        state.psf = PsfSampler::from_model(*psf);
+        state.psf = sensor::PsfSampler::from_model(*psf);
         state.header.set_extra("glint psf", state.psf->description());
     }
-    if (const std::optional<ThinLens>& lens = state.camera.thin_lens()) {
+    if (const std::optional<sensor::ThinLens>& lens = state.camera.thin_lens()) {
         state.header.set_extra(
             "glint focus", "distance " + format_shortest(lens->focus_distance_m) + " m, aperture " +
                                format_shortest(lens->aperture_diameter_m) + " m");
     }
     if (!fp.capture_method.active_area_image.empty()) {
-        state.mask = ActiveArea::from_model(fp.capture_method.active_area_image);
+        state.mask = sensor::ActiveArea::from_model(fp.capture_method.active_area_image);
         state.header.set_extra("glint active area", state.mask->description());
     }
     if (lidar) return state;  // its detector model gives the QE alone (make_lidar_state)
@@ -269,4 +269,4 @@ FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t s
     return state;
 }
 
-}  // namespace glint::sensor::detail
+}  // namespace glint::render::detail

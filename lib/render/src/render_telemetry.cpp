@@ -13,7 +13,7 @@
 #include "glint/sensor/telemetry.h"
 #include "render_parts.h"
 
-namespace glint::sensor::detail {
+namespace glint::render::detail {
 namespace {
 
 /// The most samples one data recorder writes in a run: a 1 kHz INS for 2.8 hours (about
@@ -24,7 +24,7 @@ constexpr std::uint64_t kMaxRecorderSamples = 10'000'000;
 template <class Sample>
 void for_each_tick(const model::Instrument& recorder, const schedule::PluginSchedule& plugin,
                    Sample&& sample) {
-    const model::Clock* clock = recorder_clock(recorder);
+    const model::Clock* clock = sensor::recorder_clock(recorder);
     if (clock == nullptr) return;
     for (std::size_t t = 0; t < plugin.tasks.tasks.size(); ++t) {
         const schedule::ClockTicks ticks(*clock, plugin.platform->clock_table,
@@ -98,7 +98,7 @@ void write_telemetry(const Prepared& prepared, const RenderOptions& options,
     const RenderInputs& in = prepared.inputs;
     for (const PlannedTelemetry& t : prepared.telemetry) {
         const schedule::PluginSchedule& plugin = in.schedule->plugins()[t.plugin];
-        TelemetryHeader header;
+        sensor::TelemetryHeader header;
         header.instrument = t.recorder->name;
         header.platform_file = plugin.platform->file;
         header.plugin_index = plugin.plugin_index;
@@ -117,17 +117,17 @@ void write_telemetry(const Prepared& prepared, const RenderOptions& options,
         // published whole when its last sample is in.
         AtomicFile csv(t.csv);
         AtomicFile jsonl(t.jsonl);
-        csv.write(telemetry_csv_head(header));
-        jsonl.write(telemetry_jsonl_head(header));
+        csv.write(sensor::telemetry_csv_head(header));
+        jsonl.write(sensor::telemetry_jsonl_head(header));
         std::uint64_t index = 0;
         for_each_tick(*t.recorder, plugin, [&](std::size_t task, const schedule::ClockTicks& ticks) {
             for (std::uint64_t i = 0; i < ticks.size(); ++i, ++index) {
                 if (index % 4096 == 0) context.cancel.throw_if_cancelled();
-                const TelemetryRecord r = record_sample(
+                const sensor::TelemetryRecord r = sensor::record_sample(
                     *plugin.poses, t.instrument, task, ticks.time_s(i), index, in.frame,
                     t.recorder->recorder.noise, options.schedule.seed, plugin.plugin_index);
-                csv.write(telemetry_csv_row(header, r));
-                jsonl.write(telemetry_jsonl_row(header, r));
+                csv.write(sensor::telemetry_csv_row(header, r));
+                jsonl.write(sensor::telemetry_jsonl_row(header, r));
             }
             return true;
         });
@@ -138,4 +138,4 @@ void write_telemetry(const Prepared& prepared, const RenderOptions& options,
     }
 }
 
-}  // namespace glint::sensor::detail
+}  // namespace glint::render::detail

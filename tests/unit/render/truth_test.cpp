@@ -14,7 +14,7 @@
 
 #include "truth_fixture.h"
 
-namespace glint::sensor {
+namespace glint::render {
 namespace {
 
 using namespace test_truth;
@@ -131,7 +131,7 @@ objects:
     PlateRender plate;
     const auto prepared =
         detail::prepare(load(dir / "one.jsim"), options_into(dir / "prep"), Context{});
-    const CameraModel& camera = prepared->states.at(0).camera;
+    const sensor::CameraModel& camera = prepared->states.at(0).camera;
     const schedule::PluginSchedule& plugin = prepared->inputs.schedule->plugins().at(0);
     const std::size_t instrument = prepared->inputs.schedule->sources().at(0).instrument_index;
     const motion::Rigid pose = plugin.poses->instrument_to_scene(instrument, 0.0);
@@ -303,4 +303,4 @@ objects:
     EXPECT_NEAR(row_sum / kSide, 0.5, 4.0 * 0.5 / std::sqrt(kSide * kSamples));
 }
 }  // namespace
-}  // namespace glint::sensor
+}  // namespace glint::render

@@ -14,14 +14,14 @@
 #include <string>
 #include <vector>
 
-#include "../../../lib/sensor/src/render_parts.h"
+#include "../../../lib/render/src/render_parts.h"
 #include "glint/inputs/load.h"
 #include "glint/io/envi.h"
-#include "glint/sensor/render.h"
+#include "glint/render/render.h"
 #include "glint/test/temp_dir.h"
 #include "render_fixture.h"
 
-namespace glint::sensor {
+namespace glint::render {
 namespace {
 
 namespace fs = std::filesystem;
@@ -176,4 +176,4 @@ TEST(SplitChannels, ASplitRenderIsTheSameForAnyThreadCount) {
 }
 
 }  // namespace
-}  // namespace glint::sensor
+}  // namespace glint::render

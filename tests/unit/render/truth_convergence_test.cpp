@@ -13,7 +13,7 @@
 
 #include "truth_fixture.h"
 
-namespace glint::sensor {
+namespace glint::render {
 namespace {
 
 using namespace test_truth;
@@ -286,4 +286,4 @@ TEST(Truth, CollectingTruthChangesNoRadianceAndIsTheSameForAnyThreadCount) {
 }
 
 }  // namespace
-}  // namespace glint::sensor
+}  // namespace glint::render

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
-// ImageOutputs (glint/sensor/image_outputs.h), the ENVI files of a render: a planned file is
+// ImageOutputs (glint/render/image_outputs.h), the ENVI files of a render: a planned file is
 // created at its first capture, receives each capture's lines in order, and is published —
 // under its final name, with `lines` = captures × lines per capture and the `glint capture`
 // keys — only when its last capture is in; a file still incomplete when the object goes
 // away leaves nothing; planning a path twice adds captures (same shape) or is a usage error
 // (another shape); writes to an unplanned path or of the wrong size are internal errors.
-#include "glint/sensor/image_outputs.h"
+#include "glint/render/image_outputs.h"
 
 #include <gtest/gtest.h>
 
@@ -17,7 +17,7 @@
 #include "glint/io/envi.h"
 #include "glint/test/temp_dir.h"
 
-namespace glint::sensor {
+namespace glint::render {
 namespace {
 
 namespace fs = std::filesystem;
@@ -152,4 +152,4 @@ TEST(ImageOutputs, WrongWritesAreInternalErrors) {
 }
 
 }  // namespace
-}  // namespace glint::sensor
+}  // namespace glint::render

@@ -1,14 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
-// In-process tests of glint-render's capture loop (glint/sensor/render.h and its internals in
-// lib/sensor/src/render_parts.h) on the tiny simulations of tests/data/render (an 8 × 6
-// camera 1000 m above a plate, exo-atmospheric sun, 10 Hz): plan() of a frame camera under
+// In-process tests of glint-render's capture loop (glint/render/render.h and its internals in
+// lib/render/src/render_parts.h) on the tiny simulations of tests/data/render (an 8 × 6
+// camera 1000 m above a plate, exo-atmospheric sun, 10 Hz): dry_run() of a frame camera under
 // the three <imagefile> schedules and of a pushbroom (captures, pixels, planned file names,
 // memory estimate; nothing written); render() of a Lambertian plate giving the analytic
 // radiance ρ E cos θs / π in the focal plane's output units, read back from the ENVI file;
 // the per-focal-plane state (spectral grid, reference band, units, convergence from
 // <convergence> or the options, detection only with a detector model unless radiance-only);
 // and the hypersampling mask of a capture seeing an ::IMPORTANT:: instance.
-#include "glint/sensor/render.h"
+#include "glint/render/render.h"
 
 #include <gtest/gtest.h>
 
@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "../../../lib/sensor/src/render_parts.h"
+#include "../../../lib/render/src/render_parts.h"
 #include "glint/core/datetime.h"
 #include "glint/core/error.h"
 #include "glint/inputs/load.h"
@@ -31,7 +31,7 @@
 #include "glint/test/temp_dir.h"
 #include "render_fixture.h"
 
-namespace glint::sensor {
+namespace glint::render {
 namespace {
 
 namespace fs = std::filesystem;
@@ -90,7 +90,7 @@ std::vector<std::string> names_of(const std::vector<fs::path>& files, const fs::
     return names;
 }
 
-// ---- plan() ----------------------------------------------------------------------------------
+// ---- dry_run() ----------------------------------------------------------------------------------
 
 struct ScheduleCase {
     const char* schedule;
@@ -109,19 +109,19 @@ TEST_P(PlanSchedules, FrameCameraCapturesPixelsFilesAndMemory) {
     model::SimulationInputs inputs = load(dir / "two_tasks.jsim");
     const std::uint64_t triangles = triangles_of(inputs);
     const fs::path out = dir / "out";
-    const RenderReport report = plan(std::move(inputs), options_into(out), Context{});
+    const RenderReport report = dry_run(std::move(inputs), options_into(out), Context{});
 
     ASSERT_EQ(report.captures.size(), 5u);
     for (std::size_t i = 0; i < report.captures.size(); ++i) {
         EXPECT_EQ(report.captures[i].index, i);
         EXPECT_EQ(report.captures[i].pixels, 48u);
-        EXPECT_EQ(report.captures[i].rays, 0u) << "plan() traces nothing";
+        EXPECT_EQ(report.captures[i].rays, 0u) << "dry_run() traces nothing";
     }
     EXPECT_EQ(report.pixels, 5u * 48u);
     EXPECT_EQ(names_of(report.files, out), c.files);
     EXPECT_EQ(report.memory_estimate_bytes,
               triangles * kBytesPerTriangle + 48 * kBandsPerPixel * 8);
-    EXPECT_FALSE(fs::exists(out)) << "plan() writes nothing";
+    EXPECT_FALSE(fs::exists(out)) << "dry_run() writes nothing";
 }
 
 INSTANTIATE_TEST_SUITE_P(
@@ -141,7 +141,7 @@ TEST(Render, PlanTwoPlatformsPrefixesTheirFiles) {
     // case's 6 captures and 288 pixels).
     const test::TempDir dir;
     const fs::path out = dir / "out";
-    const RenderReport report = plan(load(kRenderData / "two.jsim"), options_into(out), Context{});
+    const RenderReport report = dry_run(load(kRenderData / "two.jsim"), options_into(out), Context{});
     EXPECT_EQ(report.captures.size(), 6u);
     EXPECT_EQ(report.pixels, 288u);
     EXPECT_EQ(names_of(report.files, out),
@@ -161,7 +161,7 @@ TEST(Render, PlanPushbroomOneLinePerCapture) {
     model::SimulationInputs inputs = load(dir / "one.jsim");
     const std::uint64_t triangles = triangles_of(inputs);
     const fs::path out = dir / "out";
-    const RenderReport report = plan(std::move(inputs), options_into(out), Context{});
+    const RenderReport report = dry_run(std::move(inputs), options_into(out), Context{});
     ASSERT_EQ(report.captures.size(), 3u);  // 0, 0.1, 0.2 s of 0–0.25 s
     for (const CaptureReport& c : report.captures) EXPECT_EQ(c.pixels, 8u);
     EXPECT_EQ(report.pixels, 24u);
@@ -205,7 +205,7 @@ TEST(Render, ScheduleSelectionOutsideTheRenderedCapturesIsAnInputError) {
     RenderOptions options = options_into(dir / "out");
     options.only_captures = {1, 7};  // one.jsim has captures 0, 1, 2
     try {
-        plan(load(kRenderData / "one.jsim"), options, Context{});
+        dry_run(load(kRenderData / "one.jsim"), options, Context{});
         FAIL() << "expected an input error";
     } catch (const Error& e) {
         EXPECT_EQ(e.category(), ErrorCategory::input);
@@ -433,8 +433,8 @@ std::vector<std::uint8_t> mask_of(const fs::path& simulation) {
     const schedule::ClockedFocalPlane& source = in.schedule->sources()[0];
     const scene::GeometryScene geometry = scene::GeometryScene::build(
         in.scene, in.trajectories, detail::build_options(options, 0.0, source.window_s()));
-    const CaptureTiming timing{0.0, source.window_s(), 0.0, source.tdi_stages};
-    return detail::hypersampled_pixels(in.scene, geometry, prepared->states.at(0).camera,
+    const sensor::CaptureTiming timing{0.0, source.window_s(), 0.0, source.tdi_stages};
+    return sensor::hypersampled_pixels(in.scene, geometry, prepared->states.at(0).camera,
                                        *in.schedule->plugins()[source.plugin].poses,
                                        source.instrument_index, timing);
 }
@@ -481,4 +481,4 @@ TEST(Render, HypersampledPixelsTakeTheMultipliedSampleCount) {
 }
 
 }  // namespace
-}  // namespace glint::sensor
+}  // namespace glint::render

@@ -9,9 +9,9 @@
 #include <string>
 
 #include "glint/inputs/load.h"
-#include "glint/sensor/render.h"
+#include "glint/render/render.h"
 
-namespace glint::sensor::test_render {
+namespace glint::render::test_render {
 
 inline const std::filesystem::path kRenderData =
     std::filesystem::path(GLINT_TEST_DATA_DIR) / "render";
@@ -35,4 +35,4 @@ inline RenderOptions options_into(const std::filesystem::path& out) {
     return options;
 }
 
-}  // namespace glint::sensor::test_render
+}  // namespace glint::render::test_render

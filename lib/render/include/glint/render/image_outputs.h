@@ -25,7 +25,7 @@
 #include "glint/io/envi.h"
 #include "glint/io/lidar_bin.h"
 
-namespace glint::sensor {
+namespace glint::render {
 
 /// One capture as a file records it.
 struct CaptureStamp {
@@ -111,4 +111,4 @@ private:
     std::map<std::filesystem::path, FolderLock> m_locks;  ///< by folder, held to the end
 };
 
-}  // namespace glint::sensor
+}  // namespace glint::render
