@@ -33,6 +33,8 @@ struct ImageOutputs::BinFile {
 
 ImageOutputs::ImageOutputs() = default;
 ImageOutputs::~ImageOutputs() = default;
+ImageOutputs::ImageOutputs(ImageOutputs&&) noexcept = default;
+ImageOutputs& ImageOutputs::operator=(ImageOutputs&&) noexcept = default;
 
 void ImageOutputs::plan(const std::filesystem::path& path, io::EnviHeader header,
                         std::uint64_t lines_per_capture, std::uint64_t captures,
@@ -207,7 +209,8 @@ std::vector<std::pair<std::filesystem::path, std::string>> ImageOutputs::written
             continue;
         }
         files.emplace_back(path, "image " + name);
-        files.emplace_back(std::filesystem::path(path.string() + ".hdr"), "header of image " + name);
+        files.emplace_back(std::filesystem::path(path.string() + ".hdr"),
+                           "header of image " + name);
     }
     return files;
 }

@@ -18,19 +18,19 @@
 namespace glint::render {
 
 RenderReport dry_run(model::SimulationInputs inputs, const RenderOptions& options,
-                  const Context& context) {
-    const std::unique_ptr<detail::Prepared> prepared =
-        detail::prepare(std::move(inputs), options, context);
-    RenderReport report = prepared->report;
-    prepared->outputs.lock_folders();  // a second run into these folders fails here
-    for (const detail::PlannedCapture& p : prepared->captures) {
+                     const Context& context) {
+    detail::PlannedRender planned = detail::plan_render(std::move(inputs), options, context);
+    const detail::RenderPlan& plan = *planned.plan;
+    RenderReport report = plan.report;
+    planned.outputs.lock_folders();  // a second run into these folders fails here
+    for (const detail::PlannedCapture& p : plan.captures) {
         CaptureReport c;
         c.index = p.capture.index;
-        c.pixels = p.problems(prepared->inputs.schedule->sources()[p.capture.source]);
+        c.pixels = p.problems(plan.inputs.schedule->sources()[p.capture.source]);
         report.captures.push_back(c);
     }
-    report.events = detail::plan_events(*prepared).in_order();
-    detail::write_log_info(*prepared, options, context);
+    report.events = detail::plan_events(plan).in_order();
+    detail::write_log_info(plan, options, context);
     return report;
 }
 
@@ -42,10 +42,9 @@ std::string mebibytes(double bytes) {
 
 /// The message for a capture whose buffers could not be allocated: what it holds, what the
 /// whole render needs, and what to do about it.
-std::string out_of_memory(const detail::Prepared& prepared, const detail::PlannedCapture& p) {
-    const schedule::ClockedFocalPlane& source =
-        prepared.inputs.schedule->sources()[p.capture.source];
-    const detail::FocalPlaneState& state = prepared.states.at(p.capture.source);
+std::string out_of_memory(const detail::RenderPlan& plan, const detail::PlannedCapture& p) {
+    const schedule::ClockedFocalPlane& source = plan.inputs.schedule->sources()[p.capture.source];
+    const detail::FocalPlaneState& state = plan.states.at(p.capture.source);
     const std::uint64_t lines =
         std::min<std::uint64_t>(detail::block_lines(source), source.lines_per_capture());
     const std::uint64_t values = detail::band_values(state);
@@ -58,7 +57,7 @@ std::string out_of_memory(const detail::Prepared& prepared, const detail::Planne
            " pixels x " + std::to_string(values) + " values x 8 bytes " + (two ? "need" : "needs") +
            " about " + mebibytes(static_cast<double>(detail::band_bytes(source, state))) +
            ", and the render as planned about " +
-           mebibytes(static_cast<double>(prepared.report.memory_estimate_bytes)) +
+           mebibytes(static_cast<double>(plan.report.memory_estimate_bytes)) +
            " (glint-render --dry-run shows the plan; --scale_resolution lowers the pixel counts)";
 }
 
@@ -83,11 +82,11 @@ void warn_one_geometry(const model::Atmosphere& atmosphere, const scene::Geometr
 
 RenderReport render(model::SimulationInputs inputs, const RenderOptions& options,
                     const Context& context, RenderObserver* observer) {
-    const std::unique_ptr<detail::Prepared> prepared =
-        detail::prepare(std::move(inputs), options, context);
-    const detail::RenderInputs& in = prepared->inputs;
-    RenderReport report = prepared->report;
-    const detail::EventPlan events = detail::plan_events(*prepared);
+    detail::PlannedRender planned = detail::plan_render(std::move(inputs), options, context);
+    const detail::RenderPlan& plan = *planned.plan;
+    const detail::RenderInputs& in = plan.inputs;
+    RenderReport report = plan.report;
+    const detail::EventPlan events = detail::plan_events(plan);
     report.events = events.in_order();
     if (observer != nullptr) observer->on_plan(report.events);
     auto fire = [&](const std::vector<model::ProcessingEvent>& list) {
@@ -104,13 +103,13 @@ RenderReport render(model::SimulationInputs inputs, const RenderOptions& options
         report.device = static_scene->device();
         warn_one_geometry(in.atmosphere, *static_scene, context.log);
     }
-    detail::write_telemetry(*prepared, options, context);             // complete before any capture
+    detail::write_telemetry(plan, options, context);                  // complete before any capture
     std::map<std::size_t, radiometry::SensorPathCache> path_caches;   // per focal plane
     std::map<std::size_t, radiometry::SensorPathCache> laser_caches;  // per lidar receiver
     std::vector<double> image;
     std::uint64_t pixels_done = 0;
-    for (std::size_t i = 0; i < prepared->captures.size(); ++i) {
-        const detail::PlannedCapture& p = prepared->captures[i];
+    for (std::size_t i = 0; i < plan.captures.size(); ++i) {
+        const detail::PlannedCapture& p = plan.captures[i];
         context.cancel.throw_if_cancelled();
         fire(events.before[i]);
         std::optional<scene::GeometryScene> moving;
@@ -124,15 +123,17 @@ RenderReport render(model::SimulationInputs inputs, const RenderOptions& options
         CaptureReport stats;
         const scene::GeometryScene& geometry = moving ? *moving : *static_scene;
         try {
-            if (prepared->states.at(p.capture.source).lidar) {
-                stats = detail::render_pulse(*prepared, p, geometry, path_caches[p.capture.source],
+            if (plan.states.at(p.capture.source).lidar) {
+                stats = detail::render_pulse(plan, planned.outputs, p, geometry,
+                                             path_caches[p.capture.source],
                                              laser_caches[p.capture.source], options, context);
             } else {
-                stats = detail::render_capture(
-                    *prepared, p, geometry, path_caches[p.capture.source], options, context, image);
+                stats =
+                    detail::render_capture(plan, planned.outputs, p, geometry,
+                                           path_caches[p.capture.source], options, context, image);
             }
         } catch (const std::bad_alloc&) {
-            throw runtime_error(out_of_memory(*prepared, p));
+            throw runtime_error(out_of_memory(plan, p));
         }
         report.captures.push_back(stats);
         pixels_done += stats.pixels;
@@ -140,10 +141,10 @@ RenderReport render(model::SimulationInputs inputs, const RenderOptions& options
         fire(events.after[i]);
     }
     context.progress.finish("pixels", report.pixels);
-    detail::write_log_info(*prepared, options, context);
-    report.files = prepared->outputs.published();
+    detail::write_log_info(plan, options, context);
+    report.files = planned.outputs.published();
     std::vector<std::filesystem::path> telemetry;  // written first
-    for (const detail::PlannedTelemetry& t : prepared->telemetry) {
+    for (const detail::PlannedTelemetry& t : plan.telemetry) {
         telemetry.push_back(t.csv);
         telemetry.push_back(t.jsonl);
     }

@@ -7,9 +7,9 @@
 #include <future>
 #include <string>
 
+#include "glint/atmosphere/lunar.h"
 #include "glint/core/datetime.h"
 #include "glint/core/text.h"
-#include "glint/atmosphere/lunar.h"
 #include "glint/motion/moon.h"
 #include "glint/motion/sun.h"
 #include "render_parts.h"
@@ -33,12 +33,14 @@ void log_ephemeris(const DateTime& when, const motion::SceneFrame& frame, const 
     const motion::MoonPosition moon = motion::moon_position(when, frame);
     char line[128];
     context.log.info("Solar state update notification from 'glint ephemeris (NREL SPA)'");
-    std::snprintf(line, sizeof line, "    %.3f [degrees, declination], %.3f [degrees, East of North]",
-                  sun.zenith_deg, sun.azimuth_deg);
+    std::snprintf(line, sizeof line,
+                  "    %.3f [degrees, declination], %.3f [degrees, East of North]", sun.zenith_deg,
+                  sun.azimuth_deg);
     context.log.info(line);
     context.log.info("Lunar state update notification from 'glint ephemeris (Meeus)'");
-    std::snprintf(line, sizeof line, "    %.3f [degrees, declination], %.3f [degrees, East of North]",
-                  moon.zenith_deg, moon.azimuth_deg);
+    std::snprintf(line, sizeof line,
+                  "    %.3f [degrees, declination], %.3f [degrees, East of North]", moon.zenith_deg,
+                  moon.azimuth_deg);
     context.log.info(line);
     std::snprintf(line, sizeof line, "    %.3f [phase fraction]", moon.phase_fraction);
     context.log.info(line);
@@ -127,28 +129,27 @@ radiometry::Environment capture_environment(const RenderInputs& in, const Spectr
     return radiometry::Environment::make(grid, *in.atmosphere_model, *in.sun, env, &cache);
 }
 
-CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
+CaptureReport render_capture(const RenderPlan& plan, ImageOutputs& outputs, const PlannedCapture& p,
                              const scene::GeometryScene& geometry,
                              radiometry::SensorPathCache& path_cache, const RenderOptions& options,
                              const Context& context, std::vector<double>& image) {
-    const RenderInputs& in = prepared.inputs;
+    const RenderInputs& in = plan.inputs;
     Context quiet = context;  // solve() reports nothing: progress is per pixel over captures
     quiet.progress = Progress{};
     const auto started = std::chrono::steady_clock::now();
     const schedule::Capture& capture = p.capture;
     const schedule::ClockedFocalPlane& source = in.schedule->sources()[capture.source];
     const schedule::PluginSchedule& plugin = in.schedule->plugins()[source.plugin];
-    const FocalPlaneState& state = prepared.states.at(capture.source);
+    const FocalPlaneState& state = plan.states.at(capture.source);
     log_capture_start(p, source, state, plugin.tasks.reference, in.frame, context);
 
     const radiometry::Environment environment =
-        capture_environment(in, state.grid, capture, source, geometry, path_cache,
-                            context.threads);
-    sensor::CaptureTiming timing{capture.t0_s, capture.t1_s, source.rolling_line_time_s().value_or(0.0),
-                         source.tdi_stages};
+        capture_environment(in, state.grid, capture, source, geometry, path_cache, context.threads);
+    sensor::CaptureTiming timing{capture.t0_s, capture.t1_s,
+                                 source.rolling_line_time_s().value_or(0.0), source.tdi_stages};
     const sensor::PixelRaySource rays(state.camera, *plugin.poses, source.instrument_index, timing,
-                              state.psf ? &*state.psf : nullptr,
-                              state.mask ? &*state.mask : nullptr);
+                                      state.psf ? &*state.psf : nullptr,
+                                      state.mask ? &*state.mask : nullptr);
     radiometry::ProblemBatch batch;
     // The capture's global schedule index: unique per focal plane and capture, so focal
     // planes imaging at the same moment draw independent numbers.
@@ -165,8 +166,8 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
     std::vector<std::uint8_t> important;
     if (multiplier > 1.0) {
         important = sensor::hypersampled_pixels(in.scene, geometry, state.camera, *plugin.poses,
-                                        source.instrument_index, timing,
-                                        state.psf ? state.psf->reach_px() : 0.0);
+                                                source.instrument_index, timing,
+                                                state.psf ? state.psf->reach_px() : 0.0);
         if (!important.empty()) {  // empty: nothing important in view
             batch.hypersampled = std::span<const std::uint8_t>(important).subspan(
                 static_cast<std::size_t>(batch.first_problem),
@@ -233,10 +234,11 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
                                                         chain.output_values_per_line()));
             }
         }
-        prepared.outputs.write_lines(p.file, state.detection ? detected : out_image);
+        outputs.write_lines(p.file, state.detection ? detected : out_image);
         for (std::size_t t = 0; t < p.truth_files.size(); ++t) {
-            prepared.outputs.write_lines(
-                p.truth_files[t], sensor::truth_file_values(state.truth, state.truth.files[t], out_truth));
+            outputs.write_lines(
+                p.truth_files[t],
+                sensor::truth_file_values(state.truth, state.truth.files[t], out_truth));
         }
     };
     for (std::uint64_t first = p.first_line; first < p.end_line; first += band_lines) {
@@ -293,8 +295,8 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& p,
         }
     }
     if (writing.valid()) writing.get();
-    prepared.outputs.end_capture(p.file, stamp);
-    for (const auto& file : p.truth_files) prepared.outputs.end_capture(file, stamp);
+    outputs.end_capture(p.file, stamp);
+    for (const auto& file : p.truth_files) outputs.end_capture(file, stamp);
     stats.index = capture.index;
     stats.pixels = p.problems(source);
     if (stats.pixels > 0) {

@@ -26,9 +26,9 @@ std::vector<model::ProcessingTask> tasks_at(const std::vector<model::ProcessingT
 
 }  // namespace
 
-EventPlan plan_events(const Prepared& prepared) {
-    const RenderInputs& in = prepared.inputs;
-    const std::vector<PlannedCapture>& captures = prepared.captures;
+EventPlan plan_events(const RenderPlan& render_plan) {
+    const RenderInputs& in = render_plan.inputs;
+    const std::vector<PlannedCapture>& captures = render_plan.captures;
     EventPlan plan;
     plan.before.resize(captures.size());
     plan.after.resize(captures.size());

@@ -68,8 +68,8 @@ double pulse_rate_hz(const model::Transmitter& t, const schedule::ClockedFocalPl
 }  // namespace
 
 LidarState make_lidar_state(const schedule::ClockedFocalPlane& source, const model::Scene& scene,
-                            const sensor::CameraModel& camera, const radiometry::Convergence& convergence,
-                            const Context& context) {
+                            const sensor::CameraModel& camera,
+                            const radiometry::Convergence& convergence, const Context& context) {
     const model::Instrument& instrument = *source.instrument;
     const model::FocalPlane& fp = *source.focal_plane;
     if (!instrument.transmitter) {
@@ -171,12 +171,12 @@ void plan_bin_file(const RenderInputs& inputs, const FocalPlaneState& state,
     outputs.plan_bin(path, h, std::move(tasks));
 }
 
-CaptureReport render_pulse(Prepared& prepared, const PlannedCapture& p,
+CaptureReport render_pulse(const RenderPlan& plan, ImageOutputs& outputs, const PlannedCapture& p,
                            const scene::GeometryScene& geometry,
                            radiometry::SensorPathCache& path_cache,
                            radiometry::SensorPathCache& laser_cache, const RenderOptions& options,
                            const Context& context) {
-    const RenderInputs& in = prepared.inputs;
+    const RenderInputs& in = plan.inputs;
     Context quiet = context;
     quiet.progress = Progress{};
     const auto started = std::chrono::steady_clock::now();
@@ -184,7 +184,7 @@ CaptureReport render_pulse(Prepared& prepared, const PlannedCapture& p,
     capture.t1_s = capture.t0_s;  // a pulse is an instant; the passive term a rate at it
     const schedule::ClockedFocalPlane& source = in.schedule->sources()[capture.source];
     const schedule::PluginSchedule& plugin = in.schedule->plugins()[source.plugin];
-    const FocalPlaneState& state = prepared.states.at(capture.source);
+    const FocalPlaneState& state = plan.states.at(capture.source);
     const LidarState& lidar = *state.lidar;
     const motion::PoseService& poses = *plugin.poses;
     if (context.log.enabled(LogLevel::info)) {
@@ -202,17 +202,16 @@ CaptureReport render_pulse(Prepared& prepared, const PlannedCapture& p,
 
     const sensor::CaptureTiming timing{capture.t0_s, capture.t0_s, 0.0, 1};
     const sensor::PixelRaySource rays(state.camera, poses, source.instrument_index, timing,
-                              state.psf ? &*state.psf : nullptr,
-                              state.mask ? &*state.mask : nullptr);
+                                      state.psf ? &*state.psf : nullptr,
+                                      state.mask ? &*state.mask : nullptr);
     const double share = state.mask ? state.mask->mean_sensitivity() : 1.0;
     const radiometry::StreamKey key{options.schedule.seed, plugin.plugin_index, capture.task_index,
                                     capture.index, std::nullopt};
 
     // The passive term: photons/s per pixel in the receiver's band.
     {
-        const radiometry::Environment environment =
-            capture_environment(in, state.grid, capture, source, geometry, path_cache,
-                                context.threads);
+        const radiometry::Environment environment = capture_environment(
+            in, state.grid, capture, source, geometry, path_cache, context.threads);
         const radiometry::PointLights lights = point_lights_at(in, state.grid, capture.t0_s);
         const radiometry::PathTracer tracer(geometry, state.materials, environment, options.tracer,
                                             lights.empty() ? nullptr : &lights);
@@ -224,9 +223,8 @@ CaptureReport render_pulse(Prepared& prepared, const PlannedCapture& p,
         batch.count = pixels;
         const radiometry::Solutions solutions = radiometry::solve(tracer, batch, quiet);
         const sensor::SeenPointSources seen = sensor::seen_point_sources(
-            state.camera, poses, source.instrument_index, timing,
-            state.psf ? &*state.psf : nullptr, state.mask ? &*state.mask : nullptr, lights,
-            geometry, environment);
+            state.camera, poses, source.instrument_index, timing, state.psf ? &*state.psf : nullptr,
+            state.mask ? &*state.mask : nullptr, lights, geometry, environment);
         std::vector<double> rate(state.units.channels());
         std::vector<double> radiance(state.grid.size());
         for (std::size_t i = 0; i < pixels; ++i) {
@@ -248,9 +246,8 @@ CaptureReport render_pulse(Prepared& prepared, const PlannedCapture& p,
     laser.divergence_rad = lidar.transmitter->beam_divergence_rad;
     laser.energy_j = lidar.transmitter->pulse_energy_j;
     // The atmosphere both ways at the laser line, along the boresight.
-    const radiometry::Environment laser_environment =
-        capture_environment(in, lidar.laser_grid, capture, source, geometry, laser_cache,
-                            context.threads);
+    const radiometry::Environment laser_environment = capture_environment(
+        in, lidar.laser_grid, capture, source, geometry, laser_cache, context.threads);
     double two_way = 1.0;
     if (laser_environment.has_sensor_path()) {
         std::vector<double> transmittance(1);
@@ -291,7 +288,7 @@ CaptureReport render_pulse(Prepared& prepared, const PlannedCapture& p,
     pulse.transmitter_mount_to_platform = to_platform;
     pulse.receiver_mount_to_platform = to_platform;
     pulse.pulse_index = static_cast<std::uint32_t>(capture.capture_index);
-    prepared.outputs.write_pulse(p.file, pulse);
+    outputs.write_pulse(p.file, pulse);
 
     stats.index = capture.index;
     stats.pixels = pixels;

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// Internal pieces of the capture loop (glint/render/render.h): the loaded inputs and the
-// per-focal-plane state, built while the outputs are planned (plan_outputs, before any
-// capture: one state per focal plane that writes a file).
+// Internal pieces of the capture loop (glint/render/render.h): the render plan (plan_render:
+// the loaded inputs, the selected captures, one state per focal plane that writes a file,
+// then the output files), read-only while the captures are solved, reduced, detected and
+// written.
 #pragma once
 
 #include <cstdint>
@@ -27,15 +28,14 @@
 #include "glint/radiometry/lidar.h"
 #include "glint/radiometry/materials.h"
 #include "glint/radiometry/point_lights.h"
+#include "glint/render/image_outputs.h"
+#include "glint/render/render.h"
 #include "glint/scene/geometry_scene.h"
 #include "glint/sensor/camera.h"
 #include "glint/sensor/hypersampling.h"
-#include "glint/render/image_outputs.h"
 #include "glint/sensor/output_units.h"
-#include "glint/sensor/point_sources_seen.h"
 #include "glint/sensor/pixel_ray_source.h"
-#include "glint/render/image_outputs.h"
-#include "glint/render/render.h"
+#include "glint/sensor/point_sources_seen.h"
 #include "glint/sensor/truth.h"
 
 namespace glint::render::detail {
@@ -98,8 +98,8 @@ struct LidarState {
 /// cannot render: a receiver without an aperture (focal length and aperture diameter), truth
 /// collections on it, a bad pulse shape table.
 LidarState make_lidar_state(const schedule::ClockedFocalPlane& source, const model::Scene& scene,
-                            const sensor::CameraModel& camera, const radiometry::Convergence& convergence,
-                            const Context& context);
+                            const sensor::CameraModel& camera,
+                            const radiometry::Convergence& convergence, const Context& context);
 
 /// What one focal plane needs for every capture.
 struct FocalPlaneState {
@@ -192,21 +192,28 @@ struct PlannedTelemetry {
 std::vector<PlannedTelemetry> plan_telemetry(const RenderInputs& inputs,
                                              const RenderOptions& options, const Context& context);
 
-/// Everything loaded and planned before the first capture (shared by render and plan).
-struct Prepared {
+/// Everything loaded and planned before the first capture (shared by render and dry_run),
+/// read-only while the captures are rendered.
+struct RenderPlan {
     RenderInputs inputs;
     std::vector<PlannedTelemetry> telemetry;
     std::vector<PlannedCapture> captures;
     std::map<std::size_t, FocalPlaneState> states;  ///< by schedule source
-    ImageOutputs outputs;
-    RenderReport report;  ///< files planned, pixels, memory estimate
+    RenderReport report;                            ///< files planned, pixels, memory estimate
 };
 
-/// Takes over the loaded inputs, selects the captures (--schedule), builds every focal plane's
-/// state and plans every output file. Throws what make_render_inputs and
-/// make_focal_plane_state throw.
-std::unique_ptr<Prepared> prepare(model::SimulationInputs loaded, const RenderOptions& options,
-                                  const Context& context);
+/// A planned render: the plan, and the output files it planned — the one thing the captures
+/// change as they are written.
+struct PlannedRender {
+    std::unique_ptr<const RenderPlan> plan;
+    ImageOutputs outputs;
+};
+
+/// Takes over the loaded inputs, selects the captures (--schedule), builds the state of every
+/// focal plane that writes a file, then plans every output file. Throws what
+/// make_render_inputs and make_focal_plane_state throw.
+PlannedRender plan_render(model::SimulationInputs loaded, const RenderOptions& options,
+                          const Context& context);
 
 /// The processing events of a run, by planned capture: those fired before it (collection,
 /// task and capture started) and after it has been written (capture, task and collection
@@ -219,21 +226,20 @@ struct EventPlan {
     std::vector<model::ProcessingEvent> in_order() const;
 };
 
-/// The processing events of `prepared`'s planned captures (docs/processing.md, "Events").
-EventPlan plan_events(const Prepared& prepared);
+/// The processing events of `render_plan`'s captures (docs/processing.md, "Events").
+EventPlan plan_events(const RenderPlan& render_plan);
 
 /// Samples every planned data recorder and writes its files atomically.
-void write_telemetry(const Prepared& prepared, const RenderOptions& options,
-                     const Context& context);
+void write_telemetry(const RenderPlan& plan, const RenderOptions& options, const Context& context);
 
 /// Writes the capture list of the run (--log_info_filename), atomically; nothing when the
 /// option is empty.
-void write_log_info(const Prepared& prepared, const RenderOptions& options, const Context& context);
+void write_log_info(const RenderPlan& plan, const RenderOptions& options, const Context& context);
 
-/// Renders one capture into its file; `geometry` is built for its window, `path_cache` is its
-/// focal plane's. Returns its statistics.
-CaptureReport render_capture(Prepared& prepared, const PlannedCapture& planned,
-                             const scene::GeometryScene& geometry,
+/// Renders one capture of `plan` into its file in `outputs`; `geometry` is built for its
+/// window, `path_cache` is its focal plane's. Returns its statistics.
+CaptureReport render_capture(const RenderPlan& plan, ImageOutputs& outputs,
+                             const PlannedCapture& planned, const scene::GeometryScene& geometry,
                              radiometry::SensorPathCache& path_cache, const RenderOptions& options,
                              const Context& context, std::vector<double>& image);
 
@@ -241,8 +247,8 @@ CaptureReport render_capture(Prepared& prepared, const PlannedCapture& planned,
 /// pulse time) and writes it to its BIN file: the passive photon rate by the path tracer on
 /// the receiver's band, the returns by the lidar tracer. `path_cache` is the receiver's,
 /// `laser_cache` its laser line's.
-CaptureReport render_pulse(Prepared& prepared, const PlannedCapture& planned,
-                           const scene::GeometryScene& geometry,
+CaptureReport render_pulse(const RenderPlan& plan, ImageOutputs& outputs,
+                           const PlannedCapture& planned, const scene::GeometryScene& geometry,
                            radiometry::SensorPathCache& path_cache,
                            radiometry::SensorPathCache& laser_cache, const RenderOptions& options,
                            const Context& context);

@@ -124,37 +124,54 @@ Selected select_captures(const RenderInputs& in, const RenderOptions& options,
     return selected_captures;
 }
 
-/// Plans every output file with its header and capture count.
-void plan_outputs(const RenderInputs& in, const Selected& selected,
-                  std::map<std::size_t, FocalPlaneState>& states, const RenderOptions& options,
-                  const Context& context, ImageOutputs& outputs) {
-    const std::vector<PlannedCapture>& captures = selected.captures;
-    // (source, truth file index or none for the radiometric image) → captures
-    struct Entry {
-        std::size_t source = 0;
-        std::optional<std::size_t> truth;
-        std::uint64_t captures = 0;
-        std::uint64_t first_line = 0;  ///< the lines of each capture it holds
-        std::uint64_t end_line = 0;
-    };
-    std::map<std::filesystem::path, Entry> files;
+/// A file the selected captures write: its focal plane, which of its truth files it is (none:
+/// the radiometric image), how many captures it holds and which of their lines.
+struct PlannedFile {
+    std::size_t source = 0;
+    std::optional<std::size_t> truth;
+    std::uint64_t captures = 0;
+    std::uint64_t first_line = 0;  ///< the lines of each capture it holds
+    std::uint64_t end_line = 0;
+};
+
+/// The files `captures` write, by path.
+std::map<std::filesystem::path, PlannedFile> files_of(const std::vector<PlannedCapture>& captures) {
+    std::map<std::filesystem::path, PlannedFile> files;
     for (const PlannedCapture& p : captures) {
-        Entry& entry = files[p.file];
+        PlannedFile& entry = files[p.file];
         entry.source = p.capture.source;
         ++entry.captures;
         entry.first_line = p.first_line;
         entry.end_line = p.end_line;
         for (std::size_t t = 0; t < p.truth_files.size(); ++t) {
-            Entry& truth = files[p.truth_files[t]];
+            PlannedFile& truth = files[p.truth_files[t]];
             truth = {p.capture.source, t, truth.captures + 1, p.first_line, p.end_line};
         }
     }
+    return files;
+}
+
+/// The state of every focal plane that writes one of `files`, built in the files' order.
+std::map<std::size_t, FocalPlaneState> plan_focal_planes(
+    const RenderInputs& in, const std::map<std::filesystem::path, PlannedFile>& files,
+    const RenderOptions& options, const Context& context) {
+    std::map<std::size_t, FocalPlaneState> states;
     for (const auto& [path, entry] : files) {
         if (!states.contains(entry.source)) {
             states.emplace(entry.source,
-                           detail::make_focal_plane_state(in, entry.source, options, context));
+                           make_focal_plane_state(in, entry.source, options, context));
         }
     }
+    return states;
+}
+
+/// Plans every output file with its header and capture count.
+ImageOutputs plan_outputs(const RenderInputs& in, const Selected& selected,
+                          const std::map<std::filesystem::path, PlannedFile>& files,
+                          const std::map<std::size_t, FocalPlaneState>& states,
+                          const RenderOptions& options) {
+    const std::vector<PlannedCapture>& captures = selected.captures;
+    ImageOutputs outputs;
     // A lidar receiver's BIN files, each with its pulses in schedule order.
     std::map<std::filesystem::path, std::vector<const PlannedCapture*>> pulses;
     for (const PlannedCapture& p : captures) {
@@ -196,17 +213,20 @@ void plan_outputs(const RenderInputs& in, const Selected& selected,
         }
         outputs.plan(path,
                      sensor::truth_header(state.header, *s.focal_plane, state.truth,
-                                  state.truth.files[*entry.truth], in.scene),
+                                          state.truth.files[*entry.truth], in.scene),
                      lines, entry.captures, std::move(part));
     }
+    return outputs;
 }
 
 /// Refuses a run two of whose outputs are one file (a truth image named like the image's
 /// header, an image named like a data recorder's file, --log-info-filename naming an image):
 /// the second would overwrite the first. Throws glint::Error (input) naming both.
-void refuse_colliding_outputs(const Prepared& p, const RenderOptions& options) {
-    std::vector<std::pair<std::filesystem::path, std::string>> written = p.outputs.written();
-    for (const PlannedTelemetry& t : p.telemetry) {
+void refuse_colliding_outputs(const ImageOutputs& outputs,
+                              const std::vector<PlannedTelemetry>& telemetry,
+                              const RenderOptions& options) {
+    std::vector<std::pair<std::filesystem::path, std::string>> written = outputs.written();
+    for (const PlannedTelemetry& t : telemetry) {
         written.emplace_back(t.csv, "data recorder file " + t.csv.filename().string());
         written.emplace_back(t.jsonl, "data recorder file " + t.jsonl.filename().string());
     }
@@ -217,8 +237,7 @@ void refuse_colliding_outputs(const Prepared& p, const RenderOptions& options) {
     for (const auto& [path, what] : written) {
         std::error_code ec;
         const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
-        const auto [it, inserted] =
-            seen.emplace((ec ? path : absolute).lexically_normal(), &what);
+        const auto [it, inserted] = seen.emplace((ec ? path : absolute).lexically_normal(), &what);
         if (inserted) continue;
         throw input_error("two outputs of this run are the same file, " + path.string() + ": " +
                           *it->second + " and " + what +
@@ -229,21 +248,23 @@ void refuse_colliding_outputs(const Prepared& p, const RenderOptions& options) {
 
 }  // namespace
 
-std::unique_ptr<Prepared> prepare(model::SimulationInputs loaded, const RenderOptions& options,
-                                  const Context& context) {
-    auto p = std::make_unique<Prepared>();
+PlannedRender plan_render(model::SimulationInputs loaded, const RenderOptions& options,
+                          const Context& context) {
+    auto p = std::make_unique<RenderPlan>();
     p->inputs = make_render_inputs(std::move(loaded), options, context);
     Selected selected = select_captures(p->inputs, options, context);
-    plan_outputs(p->inputs, selected, p->states, options, context, p->outputs);
+    const std::map<std::filesystem::path, PlannedFile> files = files_of(selected.captures);
+    p->states = plan_focal_planes(p->inputs, files, options, context);
+    ImageOutputs outputs = plan_outputs(p->inputs, selected, files, p->states, options);
     p->captures = std::move(selected.captures);
     p->telemetry = plan_telemetry(p->inputs, options, context);
     RenderReport& report = p->report;
-    report.files = p->outputs.planned();
+    report.files = outputs.planned();
     for (const PlannedTelemetry& t : p->telemetry) {
         report.files.push_back(t.csv);
         report.files.push_back(t.jsonl);
     }
-    refuse_colliding_outputs(*p, options);
+    refuse_colliding_outputs(outputs, p->telemetry, options);
     const RenderInputs& in = p->inputs;
     std::uint64_t triangles = 0;
     for (const model::Instance& instance : in.scene.instances) {
@@ -263,19 +284,18 @@ std::unique_ptr<Prepared> prepare(model::SimulationInputs loaded, const RenderOp
         largest = std::max<std::uint64_t>(largest, bytes);
     }
     report.memory_estimate_bytes = triangles * 85 + largest;
-    return p;
+    return {std::move(p), std::move(outputs)};
 }
 
-void write_log_info(const Prepared& prepared, const RenderOptions& options,
-                    const Context& context) {
+void write_log_info(const RenderPlan& plan, const RenderOptions& options, const Context& context) {
     if (options.log_info_file.empty()) return;
-    const RenderInputs& in = prepared.inputs;
+    const RenderInputs& in = plan.inputs;
     std::ostringstream text;
     schedule::CaptureListWriter list(
         text, *in.schedule,
         schedule::CaptureListProvenance{"glint-render", context.arguments, options.schedule.seed});
     list.begin();
-    for (const PlannedCapture& p : prepared.captures) {
+    for (const PlannedCapture& p : plan.captures) {
         list.add(p.capture, p.file, in.schedule->truth_files(p.capture));
     }
     list.end();

@@ -2,8 +2,9 @@
 // The data recorders of a render (render_parts.h): planned with the images (their files
 // BASENAME.csv and BASENAME.jsonl in their platform's output folder, with its prefix; their
 // clocks checked and their samples counted, so a bad clock fails before anything is written)
-// and written before the first capture, sample by sample, each file published whole. A --schedule run (a selection or a shard) writes none, with
-// one warning per recorder: every shard would write the same files.
+// and written before the first capture, sample by sample, each file published whole. A --schedule
+// run (a selection or a shard) writes none, with one warning per recorder: every shard would write
+// the same files.
 #include <set>
 
 #include "glint/core/atomic_file.h"
@@ -93,10 +94,9 @@ std::vector<PlannedTelemetry> plan_telemetry(const RenderInputs& inputs,
     return planned;
 }
 
-void write_telemetry(const Prepared& prepared, const RenderOptions& options,
-                     const Context& context) {
-    const RenderInputs& in = prepared.inputs;
-    for (const PlannedTelemetry& t : prepared.telemetry) {
+void write_telemetry(const RenderPlan& plan, const RenderOptions& options, const Context& context) {
+    const RenderInputs& in = plan.inputs;
+    for (const PlannedTelemetry& t : plan.telemetry) {
         const schedule::PluginSchedule& plugin = in.schedule->plugins()[t.plugin];
         sensor::TelemetryHeader header;
         header.instrument = t.recorder->name;
@@ -120,17 +120,18 @@ void write_telemetry(const Prepared& prepared, const RenderOptions& options,
         csv.write(sensor::telemetry_csv_head(header));
         jsonl.write(sensor::telemetry_jsonl_head(header));
         std::uint64_t index = 0;
-        for_each_tick(*t.recorder, plugin, [&](std::size_t task, const schedule::ClockTicks& ticks) {
-            for (std::uint64_t i = 0; i < ticks.size(); ++i, ++index) {
-                if (index % 4096 == 0) context.cancel.throw_if_cancelled();
-                const sensor::TelemetryRecord r = sensor::record_sample(
-                    *plugin.poses, t.instrument, task, ticks.time_s(i), index, in.frame,
-                    t.recorder->recorder.noise, options.schedule.seed, plugin.plugin_index);
-                csv.write(sensor::telemetry_csv_row(header, r));
-                jsonl.write(sensor::telemetry_jsonl_row(header, r));
-            }
-            return true;
-        });
+        for_each_tick(
+            *t.recorder, plugin, [&](std::size_t task, const schedule::ClockTicks& ticks) {
+                for (std::uint64_t i = 0; i < ticks.size(); ++i, ++index) {
+                    if (index % 4096 == 0) context.cancel.throw_if_cancelled();
+                    const sensor::TelemetryRecord r = sensor::record_sample(
+                        *plugin.poses, t.instrument, task, ticks.time_s(i), index, in.frame,
+                        t.recorder->recorder.noise, options.schedule.seed, plugin.plugin_index);
+                    csv.write(sensor::telemetry_csv_row(header, r));
+                    jsonl.write(sensor::telemetry_jsonl_row(header, r));
+                }
+                return true;
+            });
         csv.commit();
         jsonl.commit();
         context.log.info("Data recorder " + t.recorder->name + ": " + std::to_string(index) +

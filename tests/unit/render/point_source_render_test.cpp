@@ -52,14 +52,14 @@ void expect_at(const radiometry::PointLights& lights, std::size_t i, motion::Vec
 
 TEST(PointSources, StreetSourcesArePlacedAtTheCaptureTimeWithTheirMaterialsIntensity) {
     const auto prepared =
-        detail::prepare(load(kLights / "lights.jsim"), options_into(fs::path("unused")), {});
-    const detail::RenderInputs& in = prepared->inputs;
+        detail::plan_render(load(kLights / "lights.jsim"), options_into(fs::path("unused")), {});
+    const detail::RenderInputs& in = prepared.plan->inputs;
     ASSERT_EQ(in.scene.point_sources.size(), 3u);
     EXPECT_EQ(in.scene.point_sources[0].name, "lamp");
     EXPECT_EQ(in.scene.point_sources[1].name, "headlight");
     EXPECT_FALSE(in.scene.point_sources[1].dynamic());
     EXPECT_TRUE(in.scene.point_sources[2].dynamic());
-    const SpectralGrid& grid = prepared->states.at(0).grid;  // 0.50–0.60 µm at 0.02 µm
+    const SpectralGrid& grid = prepared.plan->states.at(0).grid;  // 0.50–0.60 µm at 0.02 µm
 
     const radiometry::PointLights at0 = detail::point_lights_at(in, grid, 0.0);
     ASSERT_EQ(at0.size(), 3u);
@@ -99,11 +99,13 @@ void write_lamp_scene(const fs::path& dir, double rho, double intensity, motion:
                "</geometrylist>\n"
                "  <matfilename>plate.mat</matfilename>\n"
                "</classicscene>\n");
-    write_text(dir / "plate.mat", "MATERIAL_ENTRY {\n ID = grey\n SURFACE_PROPERTIES {\n"
-                                  "  REFLECTANCE_PROP { TXT_FILENAME = grey.txt }\n }\n}\n"
-                                  "MATERIAL_ENTRY {\n ID = lamp\n OPTICAL_DESCRIPTION = SOURCE\n"
-                                  " INTENSITY_FILENAME = lamp.txt\n}\n");
-    write_text(dir / "grey.txt", "0.3 " + std::to_string(rho) + "\n1.0 " + std::to_string(rho) + "\n");
+    write_text(dir / "plate.mat",
+               "MATERIAL_ENTRY {\n ID = grey\n SURFACE_PROPERTIES {\n"
+               "  REFLECTANCE_PROP { TXT_FILENAME = grey.txt }\n }\n}\n"
+               "MATERIAL_ENTRY {\n ID = lamp\n OPTICAL_DESCRIPTION = SOURCE\n"
+               " INTENSITY_FILENAME = lamp.txt\n}\n");
+    write_text(dir / "grey.txt",
+               "0.3 " + std::to_string(rho) + "\n1.0 " + std::to_string(rho) + "\n");
     write_text(dir / "lamp.txt",
                "0.3 " + std::to_string(intensity) + "\n1.0 " + std::to_string(intensity) + "\n");
     write_text(dir / "plate.glist",
@@ -111,14 +113,16 @@ void write_lamp_scene(const fs::path& dir, double rho, double intensity, motion:
                " <object name=\"Plate\"><basegeometry><groundplane><matid>grey</matid>"
                "</groundplane></basegeometry><staticinstance/></object>\n"
                " <object name=\"Lamp\"><basesource><pointsource matid=\"lamp\"/></basesource>\n"
-               "  <staticinstance><translation><point><x>" + std::to_string(lamp_m.x) +
-                   "</x><y>" + std::to_string(lamp_m.y) + "</y><z>" + std::to_string(lamp_m.z) +
+               "  <staticinstance><translation><point><x>" +
+                   std::to_string(lamp_m.x) + "</x><y>" + std::to_string(lamp_m.y) + "</y><z>" +
+                   std::to_string(lamp_m.z) +
                    "</z></point></translation></staticinstance></object>\n"
                    "</geometrylist>\n");
-    write_text(dir / "night.tasks",
-               "<tasklist><reference><datetime type=\"absolute\">" + when +
-               "</datetime></reference><task><start><datetime type=\"relative\">0</datetime>"
-               "</start><stop><datetime type=\"relative\">0</datetime></stop></task></tasklist>\n");
+    write_text(
+        dir / "night.tasks",
+        "<tasklist><reference><datetime type=\"absolute\">" + when +
+            "</datetime></reference><task><start><datetime type=\"relative\">0</datetime>"
+            "</start><stop><datetime type=\"relative\">0</datetime></stop></task></tasklist>\n");
     write_text(dir / "plate.jsim",
                "[{\"scene_list\": [{\"inputs\": \"plate.scene\"}], \"plugin_list\": [\n"
                " {\"name\": \"BasicAtmosphere\", \"inputs\": {\"atmosphere_filename\": \"" +
@@ -133,7 +137,8 @@ void write_lamp_scene(const fs::path& dir, double rho, double intensity, motion:
 /// The solid angle of pixel (column, row)'s element, from the pinhole camera's geometry alone:
 /// s_x s_y cos³θ / f², θ the angle of its centre from the boresight (the element is 2e-4 rad
 /// wide: the formula's error is of that order squared).
-double pixel_solid_angle_sr(const sensor::CameraModel& camera, std::size_t column, std::size_t row) {
+double pixel_solid_angle_sr(const sensor::CameraModel& camera, std::size_t column,
+                            std::size_t row) {
     const motion::Vec3 d =
         motion::normalized(camera.direction(camera.focal_plane_point(column, row, 0.5, 0.5)));
     const double cos_theta = -d.z;
@@ -166,9 +171,9 @@ TEST(PointSources, PlateUnderALampFollowsIntensityCosineOverDistanceSquared) {
     // pixel's footprint by a 32 × 32 midpoint rule (samples are spread uniformly over each
     // pixel), in W/(cm² sr µm) (r in m: 10⁴ cm² per m²). The tophat channel is normalized and
     // the spectrum flat, so the channel value is the radiance itself.
-    const auto prepared = detail::prepare(load(dir / "plate.jsim"), options, {});
-    const detail::RenderInputs& in = prepared->inputs;
-    const detail::FocalPlaneState& state = prepared->states.at(0);
+    const auto prepared = detail::plan_render(load(dir / "plate.jsim"), options, {});
+    const detail::RenderInputs& in = prepared.plan->inputs;
+    const detail::FocalPlaneState& state = prepared.plan->states.at(0);
     const motion::Rigid pose = in.schedule->plugins()[0].poses->instrument_to_scene(0, 0.0);
     auto radiance_at = [&](const motion::Vec3& ground_m) {
         const motion::Vec3 to_lamp = lamp_m - ground_m;
@@ -188,7 +193,8 @@ TEST(PointSources, PlateUnderALampFollowsIntensityCosineOverDistanceSquared) {
                     const double u = (a + 0.5) / kGrid;
                     const double v = (b + 0.5) / kGrid;
                     const motion::Vec3 d = motion::apply_direction(
-                        pose, state.camera.direction(state.camera.focal_plane_point(column, row, u, v)));
+                        pose,
+                        state.camera.direction(state.camera.focal_plane_point(column, row, u, v)));
                     const double s = -pose.translation_m.z / d.z;
                     sum += radiance_at(pose.translation_m + d * s);
                 }
@@ -242,9 +248,9 @@ TEST(PointSources, TheCameraSeesALampThroughTheAtmosphere) {
                      fs::path(GLINT_TEST_DATA_DIR) / "atmosphere" / "parametric.yaml");
     RenderOptions options = options_into(dir / "out");
     options.convergence = radiometry::Convergence{4, 4, 0.0};
-    const auto prepared = detail::prepare(load(dir / "plate.jsim"), options, {});
-    const detail::RenderInputs& in = prepared->inputs;
-    const detail::FocalPlaneState& state = prepared->states.at(0);
+    const auto prepared = detail::plan_render(load(dir / "plate.jsim"), options, {});
+    const detail::RenderInputs& in = prepared.plan->inputs;
+    const detail::FocalPlaneState& state = prepared.plan->states.at(0);
     const motion::Rigid pose = in.schedule->plugins()[0].poses->instrument_to_scene(0, 0.0);
     const auto [column, row] = pixel_of(state.camera, pose, lamp_m);
     const motion::Vec3 to_camera = pose.translation_m - lamp_m;
@@ -252,8 +258,8 @@ TEST(PointSources, TheCameraSeesALampThroughTheAtmosphere) {
     const double omega_sr = pixel_solid_angle_sr(state.camera, column, row);
 
     glint::atmosphere::AtmosphereGeometry g;
-    g.sun_zenith_deg = motion::sun_position(in.schedule->plugins()[0].tasks.reference, in.frame)
-                           .zenith_deg;
+    g.sun_zenith_deg =
+        motion::sun_position(in.schedule->plugins()[0].tasks.reference, in.frame).zenith_deg;
     g.surface_altitude_m = 150.0 + lamp_m.z;
     g.sensor_altitude_m = 150.0 + pose.translation_m.z;
     g.view_zenith_deg = 0.0;  // 0.02° off the vertical: within 1e-7 of it in transmittance
@@ -308,9 +314,9 @@ TEST(Moonlight, TheMoonLightsTheNightScene) {
     const fs::path out = dir / "out";
     RenderOptions options = options_into(out);
     options.convergence = radiometry::Convergence{16, 16, 0.0};
-    const auto prepared = detail::prepare(load(dir / "plate.jsim"), options, {});
-    const detail::RenderInputs& in = prepared->inputs;
-    const detail::FocalPlaneState& state = prepared->states.at(0);
+    const auto prepared = detail::plan_render(load(dir / "plate.jsim"), options, {});
+    const detail::RenderInputs& in = prepared.plan->inputs;
+    const detail::FocalPlaneState& state = prepared.plan->states.at(0);
     const DateTime when = in.schedule->plugins()[0].tasks.reference;
     ASSERT_GT(motion::sun_position(when, in.frame).zenith_deg, 120.0);
     const motion::MoonPosition moon = motion::moon_position(when, in.frame);
@@ -325,14 +331,14 @@ TEST(Moonlight, TheMoonLightsTheNightScene) {
     const scene::GeometryScene empty = scene::GeometryScene::build(model::Scene{}, {}, {});
     const radiometry::Environment env = detail::capture_environment(
         in, state.grid, capture, in.schedule->sources()[capture.source], empty, cache, 1);
-    const double ratio = glint::atmosphere::lunar_irradiance_ratio(moon.phase_angle_deg,
-                                                                   moon.distance_km);
+    const double ratio =
+        glint::atmosphere::lunar_irradiance_ratio(moon.phase_angle_deg, moon.distance_km);
     EXPECT_GT(ratio, 2e-6);
     EXPECT_LT(ratio, 3e-6);
     const motion::Vec3 d = env.sun_direction(capture.t0_s);
     EXPECT_NEAR(motion::dot(d, moon.direction_enu), 1.0, 1e-12);
-    EXPECT_NEAR(env.sun_half_angle_rad(), glint::atmosphere::lunar_angular_radius_rad(moon.distance_km),
-                1e-15);
+    EXPECT_NEAR(env.sun_half_angle_rad(),
+                glint::atmosphere::lunar_angular_radius_rad(moon.distance_km), 1e-15);
     const std::vector<double> toa =
         in.sun->resample(state.grid, motion::sun_position(when, in.frame).distance_au);
     double mean = 0.0;
@@ -345,8 +351,8 @@ TEST(Moonlight, TheMoonLightsTheNightScene) {
     ASSERT_EQ(report.files, std::vector<fs::path>{out / "frame.img"});
     io::EnviHeader header;
     const std::vector<double> image = io::read_envi_bip(out / "frame.img", &header);
-    const double expected = kRho * mean * std::cos(moon.zenith_deg * std::numbers::pi / 180.0) /
-                            std::numbers::pi;
+    const double expected =
+        kRho * mean * std::cos(moon.zenith_deg * std::numbers::pi / 180.0) / std::numbers::pi;
     for (std::size_t i = 0; i < image.size(); ++i) {
         // 3 %: the channel's weights against the bands' plain mean over a solar spectrum that
         // varies by a few per cent across 0.50-0.60 um, and the disk's spread of cos z.
@@ -356,11 +362,12 @@ TEST(Moonlight, TheMoonLightsTheNightScene) {
 
 TEST(PointSources, ANonFinitePositionIsAnInputErrorAtTheSource) {
     const auto prepared =
-        detail::prepare(load(kLights / "lights.jsim"), options_into(fs::path("unused")), {});
-    detail::RenderInputs& in = prepared->inputs;
+        detail::plan_render(load(kLights / "lights.jsim"), options_into(fs::path("unused")), {});
+    detail::RenderInputs in = detail::make_render_inputs(load(kLights / "lights.jsim"),
+                                                         options_into(fs::path("unused")), {});
     in.scene.point_sources[0].position_m[2] = std::nan("");
     try {
-        (void)detail::point_lights_at(in, prepared->states.at(0).grid, 0.0);
+        (void)detail::point_lights_at(in, prepared.plan->states.at(0).grid, 0.0);
         FAIL() << "expected an error";
     } catch (const Error& e) {
         EXPECT_EQ(e.category(), ErrorCategory::input);

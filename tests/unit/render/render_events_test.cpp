@@ -37,8 +37,8 @@ std::vector<std::string> describe(const std::vector<model::ProcessingEvent>& eve
 }
 
 std::vector<std::string> events_of(const fs::path& jsim, RenderOptions options) {
-    const auto prepared = detail::prepare(load(jsim), options, {});
-    return describe(detail::plan_events(*prepared).in_order());
+    const auto prepared = detail::plan_render(load(jsim), options, {});
+    return describe(detail::plan_events(*prepared.plan).in_order());
 }
 
 TEST(RenderEvents, TwoFocalPlanesInterleaveInScheduleOrder) {

@@ -141,7 +141,8 @@ TEST(Render, PlanTwoPlatformsPrefixesTheirFiles) {
     // case's 6 captures and 288 pixels).
     const test::TempDir dir;
     const fs::path out = dir / "out";
-    const RenderReport report = dry_run(load(kRenderData / "two.jsim"), options_into(out), Context{});
+    const RenderReport report =
+        dry_run(load(kRenderData / "two.jsim"), options_into(out), Context{});
     EXPECT_EQ(report.captures.size(), 6u);
     EXPECT_EQ(report.pixels, 288u);
     EXPECT_EQ(names_of(report.files, out),
@@ -168,16 +169,16 @@ TEST(Render, PlanPushbroomOneLinePerCapture) {
     EXPECT_EQ(names_of(report.files, out), std::vector<std::string>{"frame.img"});
     EXPECT_EQ(report.memory_estimate_bytes, triangles * kBytesPerTriangle + 8 * kBandsPerPixel * 8);
 
-    const auto prepared = detail::prepare(load(dir / "one.jsim"), options_into(out), Context{});
-    ASSERT_EQ(prepared->inputs.schedule->sources().size(), 1u);
-    const schedule::ClockedFocalPlane& source = prepared->inputs.schedule->sources()[0];
+    const auto prepared = detail::plan_render(load(dir / "one.jsim"), options_into(out), Context{});
+    ASSERT_EQ(prepared.plan->inputs.schedule->sources().size(), 1u);
+    const schedule::ClockedFocalPlane& source = prepared.plan->inputs.schedule->sources()[0];
     EXPECT_EQ(source.lines_per_capture(), 1u);
     EXPECT_EQ(source.x_count, 8u);
-    EXPECT_EQ(prepared->captures.size(), 3u);
-    for (std::size_t i = 0; i < prepared->captures.size(); ++i) {
-        EXPECT_EQ(prepared->captures[i].file, out / "frame.img");
-        EXPECT_EQ(prepared->captures[i].event_number, i + 1);  // DIRSIG's "Event #N of 3"
-        EXPECT_EQ(prepared->captures[i].event_count, 3u);
+    EXPECT_EQ(prepared.plan->captures.size(), 3u);
+    for (std::size_t i = 0; i < prepared.plan->captures.size(); ++i) {
+        EXPECT_EQ(prepared.plan->captures[i].file, out / "frame.img");
+        EXPECT_EQ(prepared.plan->captures[i].event_number, i + 1);  // DIRSIG's "Event #N of 3"
+        EXPECT_EQ(prepared.plan->captures[i].event_count, 3u);
     }
 }
 
@@ -244,9 +245,9 @@ TEST(Render, LambertianPlateGivesTheAnalyticRadianceInTheOutputUnits) {
 
     // The expected value from the pieces render() starts from: the sun's position and the
     // ASTM G173 spectrum at the capture's time, the focal plane's grid and output units.
-    const auto prepared = detail::prepare(load(dir / "one.jsim"), options, Context{});
-    const detail::RenderInputs& in = prepared->inputs;
-    const detail::FocalPlaneState& state = prepared->states.at(0);
+    const auto prepared = detail::plan_render(load(dir / "one.jsim"), options, Context{});
+    const detail::RenderInputs& in = prepared.plan->inputs;
+    const detail::FocalPlaneState& state = prepared.plan->states.at(0);
     const DateTime reference = in.schedule->plugins()[0].tasks.reference;
     auto expected_at = [&](double t_s) {
         const motion::SunPosition sun = motion::sun_position(add_seconds(reference, t_s), in.frame);
@@ -289,9 +290,9 @@ TEST(Render, LambertianPlateGivesTheAnalyticRadianceInTheOutputUnits) {
 // ---- make_focal_plane_state -------------------------------------------------------------------
 
 TEST(Render, FocalPlaneStateOfAFrameCamera) {
-    const auto prepared = detail::prepare(load(kRenderData / "one.jsim"),
-                                          options_into("/nonexistent/out"), Context{});
-    const detail::FocalPlaneState& state = prepared->states.at(0);
+    const auto prepared = detail::plan_render(load(kRenderData / "one.jsim"),
+                                              options_into("/nonexistent/out"), Context{});
+    const detail::FocalPlaneState& state = prepared.plan->states.at(0);
     ASSERT_EQ(state.grid.size(), 6u);               // 0.50–0.60 µm at 0.02 µm
     EXPECT_NEAR(state.grid.min_um(), 0.50, 1e-12);  // µm; exact up to rounding
     EXPECT_NEAR(state.grid.max_um(), 0.60, 1e-12);
@@ -335,8 +336,8 @@ TEST_P(FocalPlaneConvergence, FromTheFocalPlaneElseTheOptionsElseTheDefault) {
                      std::string(c.element) + "</capturemethod>");
     RenderOptions options = options_into(dir / "out");
     options.convergence = c.option;
-    const auto prepared = detail::prepare(load(dir / "one.jsim"), options, Context{});
-    const radiometry::Convergence& got = prepared->states.at(0).convergence;
+    const auto prepared = detail::plan_render(load(dir / "one.jsim"), options, Context{});
+    const radiometry::Convergence& got = prepared.plan->states.at(0).convergence;
     EXPECT_EQ(got.min_samples, c.expected.min_samples);
     EXPECT_EQ(got.max_samples, c.expected.max_samples);
     EXPECT_EQ(got.threshold_w_per_cm2_sr_um, c.expected.threshold_w_per_cm2_sr_um);
@@ -369,7 +370,7 @@ TEST(Render, BadConvergenceIsAnInputErrorAtTheElement) {
         model::Convergence{9, 4, 0.0, ErrorContext{"cam.platform", 42, "convergence"}};
     inputs.platforms.at(0).platform = platform;
     try {
-        detail::prepare(std::move(inputs), options_into("/nonexistent/out"), Context{});
+        detail::plan_render(std::move(inputs), options_into("/nonexistent/out"), Context{});
         FAIL() << "expected an input error";
     } catch (const Error& e) {
         EXPECT_EQ(e.category(), ErrorCategory::input);
@@ -383,8 +384,8 @@ TEST(Render, DetectionChainOnlyWithADetectorModelUnlessRadianceOnly) {
     RenderOptions options = options_into("/nonexistent/out");
     {
         const auto prepared =
-            detail::prepare(load(kRenderData / "detector.jsim"), options, Context{});
-        const detail::FocalPlaneState& state = prepared->states.at(0);
+            detail::plan_render(load(kRenderData / "detector.jsim"), options, Context{});
+        const detail::FocalPlaneState& state = prepared.plan->states.at(0);
         EXPECT_TRUE(state.detection.has_value());
         // The in-render detection writes counts (glint-detect's header).
         EXPECT_EQ(state.header.data_units, "DN");
@@ -394,8 +395,8 @@ TEST(Render, DetectionChainOnlyWithADetectorModelUnlessRadianceOnly) {
     options.radiance_only = true;
     {
         const auto prepared =
-            detail::prepare(load(kRenderData / "detector.jsim"), options, Context{});
-        const detail::FocalPlaneState& state = prepared->states.at(0);
+            detail::plan_render(load(kRenderData / "detector.jsim"), options, Context{});
+        const detail::FocalPlaneState& state = prepared.plan->states.at(0);
         EXPECT_FALSE(state.detection.has_value());
         EXPECT_EQ(state.header.data_type, io::EnviDataType::float64);  // the photon product
         EXPECT_EQ(state.header.data_units, "Photons/cm2");
@@ -403,9 +404,9 @@ TEST(Render, DetectionChainOnlyWithADetectorModelUnlessRadianceOnly) {
 }
 
 TEST(Render, RendersOnlyEnabledGenericFocalPlanesWithAnImageFile) {
-    const auto prepared = detail::prepare(load(kRenderData / "one.jsim"),
-                                          options_into("/nonexistent/out"), Context{});
-    schedule::ClockedFocalPlane source = prepared->inputs.schedule->sources()[0];
+    const auto prepared = detail::plan_render(load(kRenderData / "one.jsim"),
+                                              options_into("/nonexistent/out"), Context{});
+    schedule::ClockedFocalPlane source = prepared.plan->inputs.schedule->sources()[0];
     std::string why;
     EXPECT_TRUE(detail::renders(source, why));
     EXPECT_EQ(why, "");
@@ -416,7 +417,7 @@ TEST(Render, RendersOnlyEnabledGenericFocalPlanesWithAnImageFile) {
     EXPECT_FALSE(detail::renders(source, why));
     EXPECT_EQ(why, "focal plane \"Frame\" is disabled");
 
-    model::FocalPlane no_file = *prepared->inputs.schedule->sources()[0].focal_plane;
+    model::FocalPlane no_file = *prepared.plan->inputs.schedule->sources()[0].focal_plane;
     no_file.capture_method.image_file.basename.clear();
     source.focal_plane = &no_file;
     EXPECT_FALSE(detail::renders(source, why));
@@ -428,13 +429,13 @@ TEST(Render, RendersOnlyEnabledGenericFocalPlanesWithAnImageFile) {
 /// The mask of capture 0 of `simulation`'s only source.
 std::vector<std::uint8_t> mask_of(const fs::path& simulation) {
     const RenderOptions options = options_into("/nonexistent/out");
-    const auto prepared = detail::prepare(load(simulation), options, Context{});
-    const detail::RenderInputs& in = prepared->inputs;
+    const auto prepared = detail::plan_render(load(simulation), options, Context{});
+    const detail::RenderInputs& in = prepared.plan->inputs;
     const schedule::ClockedFocalPlane& source = in.schedule->sources()[0];
     const scene::GeometryScene geometry = scene::GeometryScene::build(
         in.scene, in.trajectories, detail::build_options(options, 0.0, source.window_s()));
     const sensor::CaptureTiming timing{0.0, source.window_s(), 0.0, source.tdi_stages};
-    return sensor::hypersampled_pixels(in.scene, geometry, prepared->states.at(0).camera,
+    return sensor::hypersampled_pixels(in.scene, geometry, prepared.plan->states.at(0).camera,
                                        *in.schedule->plugins()[source.plugin].poses,
                                        source.instrument_index, timing);
 }

@@ -62,8 +62,8 @@ void write_simulation(const fs::path& dir, const std::string& entry = {}) {
 std::vector<detail::SpectralState> states_of(const fs::path& jsim, bool option) {
     RenderOptions options = options_into(jsim.parent_path() / "out");
     options.split_channels = option;
-    const auto prepared = detail::prepare(load(jsim), options, Context{});
-    return prepared->states.at(0).spectral_states;
+    const auto prepared = detail::plan_render(load(jsim), options, Context{});
+    return prepared.plan->states.at(0).spectral_states;
 }
 
 TEST(SplitChannels, OneStatePerChannelOverTheBandsItsResponseCovers) {

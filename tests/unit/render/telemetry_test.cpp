@@ -32,13 +32,13 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 
 TEST(Telemetry, RecordsThePoseServicesInstrumentPoseAtTheClockTicks) {
     test::TempDir dir;
-    const auto prepared = detail::prepare(load(kTelemetry / "recorder.jsim"),
-                                          options_into(dir / "out"), {});
-    ASSERT_EQ(prepared->telemetry.size(), 2u);
-    const detail::PlannedTelemetry& gps = prepared->telemetry[0];
+    const auto prepared =
+        detail::plan_render(load(kTelemetry / "recorder.jsim"), options_into(dir / "out"), {});
+    ASSERT_EQ(prepared.plan->telemetry.size(), 2u);
+    const detail::PlannedTelemetry& gps = prepared.plan->telemetry[0];
     EXPECT_EQ(gps.recorder->name, "GPS");
     EXPECT_EQ(gps.csv, dir / "out" / "gps.csv");
-    const schedule::PluginSchedule& plugin = prepared->inputs.schedule->plugins()[gps.plugin];
+    const schedule::PluginSchedule& plugin = prepared.plan->inputs.schedule->plugins()[gps.plugin];
     const auto times = sensor::recorder_times_s(*gps.recorder, *plugin.platform, plugin.tasks);
     // 10 Hz in [0, 0.25] and [1, 1.15].
     ASSERT_EQ(times.size(), 5u);
@@ -47,8 +47,9 @@ TEST(Telemetry, RecordsThePoseServicesInstrumentPoseAtTheClockTicks) {
 
     const motion::PoseService& poses = *plugin.poses;
     EXPECT_EQ(poses.platform_rotation_order(), motion::EulerOrder::zyx);
-    const auto records = sensor::record_telemetry(poses, gps.instrument, times, prepared->inputs.frame,
-                                          gps.recorder->recorder.noise, 1, plugin.plugin_index);
+    const auto records =
+        sensor::record_telemetry(poses, gps.instrument, times, prepared.plan->inputs.frame,
+                                 gps.recorder->recorder.noise, 1, plugin.plugin_index);
     ASSERT_EQ(records.size(), 5u);
     for (const sensor::TelemetryRecord& r : records) {
         const motion::Rigid pose = poses.instrument_to_scene(gps.instrument, r.time_s);
@@ -73,7 +74,7 @@ TEST(Telemetry, RecordsThePoseServicesInstrumentPoseAtTheClockTicks) {
         EXPECT_NEAR(std::abs(motion::dot(r.orientation * step, later.rotation)), 1.0, 1e-9)
             << r.time_s;
         // The geodetic and ECEF positions are the ENU point's.
-        const motion::Vec3 back = prepared->inputs.frame.ecef_to_enu(r.position_ecef_m);
+        const motion::Vec3 back = prepared.plan->inputs.frame.ecef_to_enu(r.position_ecef_m);
         EXPECT_LT(motion::norm(back - r.position_enu_m), 1e-6);
     }
     // It turns: about 10°/s about the vertical.
@@ -93,7 +94,7 @@ void prepare_with(const fs::path& dir, const std::string& recorder) {
         jsim.replace(at, from.size(), (fs::path(GLINT_TEST_DATA_DIR) / "render").string() + "/");
     }
     std::ofstream(dir / "recorder.jsim") << jsim;
-    (void)detail::prepare(load(dir / "recorder.jsim"), options_into(dir / "out"), {});
+    (void)detail::plan_render(load(dir / "recorder.jsim"), options_into(dir / "out"), {});
 }
 
 TEST(Telemetry, TwoRecordersWritingOneFileAreRefused) {
@@ -104,8 +105,9 @@ TEST(Telemetry, TwoRecordersWritingOneFileAreRefused) {
         prepare_with(dir.path(), "<instrument name=\"A\" type=\"datarecorder\">" + clock +
                                      "<output><basename>log</basename></output></instrument>"
                                      "<instrument name=\"B\" type=\"datarecorder\">" +
-                                     clock + "<output><basename>log</basename></output>"
-                                             "</instrument>");
+                                     clock +
+                                     "<output><basename>log</basename></output>"
+                                     "</instrument>");
         FAIL() << "expected an error";
     } catch (const Error& e) {
         EXPECT_EQ(e.category(), ErrorCategory::input);

@@ -117,7 +117,7 @@ struct PlateRender {
 
 /// Renders a 100 m plate of material b, kPlate_m high, on a ground plane of a, collecting
 /// `collectors` (kPlateSamples per pixel); the centres come from the camera model and the
-/// pose that the render uses (prepare()).
+/// pose that the render uses (plan_render()).
 PlateRender render_plate(const fs::path& dir, const std::string& collectors) {
     write_simulation(dir,
                      R"(materials:
@@ -130,10 +130,10 @@ objects:
                      truth_collection("T", "t", collectors));
     PlateRender plate;
     const auto prepared =
-        detail::prepare(load(dir / "one.jsim"), options_into(dir / "prep"), Context{});
-    const sensor::CameraModel& camera = prepared->states.at(0).camera;
-    const schedule::PluginSchedule& plugin = prepared->inputs.schedule->plugins().at(0);
-    const std::size_t instrument = prepared->inputs.schedule->sources().at(0).instrument_index;
+        detail::plan_render(load(dir / "one.jsim"), options_into(dir / "prep"), Context{});
+    const sensor::CameraModel& camera = prepared.plan->states.at(0).camera;
+    const schedule::PluginSchedule& plugin = prepared.plan->inputs.schedule->plugins().at(0);
+    const std::size_t instrument = prepared.plan->inputs.schedule->sources().at(0).instrument_index;
     const motion::Rigid pose = plugin.poses->instrument_to_scene(instrument, 0.0);
     const motion::Vec3 origin = motion::apply_point(pose, {});
     for (std::size_t row = 0; row < kSide; ++row) {

@@ -52,6 +52,8 @@ public:
     ~ImageOutputs();
     ImageOutputs(const ImageOutputs&) = delete;
     ImageOutputs& operator=(const ImageOutputs&) = delete;
+    ImageOutputs(ImageOutputs&&) noexcept;
+    ImageOutputs& operator=(ImageOutputs&&) noexcept;
 
     /// Declares that `path` receives `captures` captures of `lines_per_capture` lines each,
     /// with `header` (its `lines` is set here); `part`, when given, says what whole file it is
