@@ -10,7 +10,6 @@
 #include <charconv>
 #include <fstream>
 #include <map>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
 #include <string>
@@ -21,6 +20,7 @@
 #include "glint/core/error.h"
 #include "glint/core/folder_lock.h"
 #include "glint/core/text.h"
+#include "glint/inputs/schedule_file.h"
 #include "glint/io/envi.h"
 #include "glint/io/envi_part.h"
 #include "glint/io/input_files.h"
@@ -38,8 +38,6 @@ using io::kLinesPerCaptureKey;
 using io::kWindowsKey;
 constexpr const char* kCommandLineKey = "glint command line";
 
-/// The largest --expect file read (as glint-render's --schedule).
-constexpr std::size_t kMaxScheduleBytes = std::size_t{2} << 30;
 /// The most captures a whole file may have: what its merged header can list within the ENVI
 /// header limit, at 32 bytes a capture at the least (524,288).
 constexpr std::uint64_t kMaxWholeCaptures = io::kMaxEnviHeaderBytes / 32;
@@ -56,7 +54,7 @@ struct Piece {
     std::vector<std::string> ids, windows, datetimes;  ///< per capture
     std::uint64_t first_line = 0;  ///< lines first_line … end_line − 1 of each capture
     std::uint64_t end_line = 0;
-    std::uint64_t whole_lines = 0;              ///< lines per capture of the whole file
+    std::uint64_t whole_lines = 0;  ///< lines per capture of the whole file
     /// The whole file's captures as index runs ("{0:4, 7}"), compared between parts and
     /// expanded once per file (WholeFile::captures), never per part.
     std::string whole_captures;
@@ -231,8 +229,7 @@ std::vector<fs::path> files_under(const fs::path& part) {
 /// "5 (t0c2)": a capture's global index and id.
 std::string capture_name(const WholeFile& file, std::size_t position) {
     const Segment& s = file.segments[position].front();
-    return std::to_string(file.captures[position]) + " (" + s.piece->ids[s.position] +
-           ")";
+    return std::to_string(file.captures[position]) + " (" + s.piece->ids[s.position] + ")";
 }
 
 /// Checks that the pieces of `file` cover every line of every capture once and agree; fills
@@ -266,7 +263,8 @@ void resolve(WholeFile& file, const fs::path& shown, Problems& problems) {
         problems.add(shown, "its parts' \"" + std::string(io::kPartCapturesKey) + "\" lists " +
                                 std::to_string(first.whole_capture_count) +
                                 " captures, more than the header of a merged file can list (" +
-                                std::to_string(kMaxWholeCaptures) + "): not parts glint-render "
+                                std::to_string(kMaxWholeCaptures) +
+                                "): not parts glint-render "
                                 "wrote");
         return;
     }
@@ -366,36 +364,15 @@ fs::path comparable(const fs::path& path, const fs::path& base) {
 /// ones count from the folder glint-schedule ran in (provenance.working_folder), else, for a
 /// JSON without it, from the JSON's own folder.
 std::set<fs::path> expected_files(const fs::path& schedule) {
-    const std::string text =
-        io::read_input_file(schedule, schedule.string(), kMaxScheduleBytes, "schedule file");
-    const ErrorContext where{schedule.string(), 0, {}};
-    const nlohmann::json j = nlohmann::json::parse(text, nullptr, false);
-    if (j.is_discarded() || !j.is_object() || j.value("format", "") != "glint-schedule" ||
-        !j.contains("captures") || !j["captures"].is_array()) {
-        throw input_error(
-            "not a glint-schedule JSON file (write one with glint-schedule "
-            "SIM --output-folder OUT -o FILE)",
-            where);
-    }
+    const inputs::ScheduleFile listed = inputs::read_schedule_file(schedule, true);
     fs::path base = fs::absolute(schedule).parent_path();
-    if (j.contains("provenance") && j["provenance"].is_object()) {
-        const nlohmann::json& made_in = j["provenance"].value("working_folder", nlohmann::json());
-        if (made_in.is_string() && fs::path(made_in.get<std::string>()).is_absolute()) {
-            base = made_in.get<std::string>();
-        }
+    if (listed.working_folder && fs::path(*listed.working_folder).is_absolute()) {
+        base = *listed.working_folder;
     }
     std::set<fs::path> files;
-    for (const nlohmann::json& capture : j["captures"]) {
-        if (!capture.is_object() || !capture.contains("files")) continue;
-        const nlohmann::json& f = capture["files"];
-        if (f.contains("image") && f["image"].is_string()) {
-            files.insert(comparable(f["image"].get<std::string>(), base));
-        }
-        if (f.contains("truth") && f["truth"].is_array()) {
-            for (const nlohmann::json& t : f["truth"]) {
-                if (t.is_string()) files.insert(comparable(t.get<std::string>(), base));
-            }
-        }
+    for (const inputs::ScheduleFile::Capture& capture : listed.captures) {
+        if (!capture.image.empty()) files.insert(comparable(capture.image, base));
+        for (const std::string& t : capture.truth) files.insert(comparable(t, base));
     }
     return files;
 }
@@ -625,7 +602,8 @@ std::vector<fs::path> merge_parts(const MergeOptions& options, Context& ctx) {
     const auto stage = [&](const fs::path& rel) {
         const fs::path path = staging.path() / rel;
         fs::create_directories(path.parent_path(), ec);
-        if (ec) throw io_error("cannot create a folder: " + ec.message(), path.parent_path().string());
+        if (ec)
+            throw io_error("cannot create a folder: " + ec.message(), path.parent_path().string());
         staged.push_back({path, options.output_folder / rel});
         return path;
     };

@@ -14,6 +14,7 @@
 #include "glint/core/stdio_name.h"
 #include "glint/core/text.h"
 #include "glint/inputs/load.h"
+#include "glint/inputs/schedule_file.h"
 #include "glint/model/names.h"
 #include "glint/model/output_folder.h"
 
@@ -137,14 +138,17 @@ int run(const Options& options, Context& ctx, std::ostream& out) {
     if (settings.data_dir.empty()) settings.data_dir = default_data_dir();
     ctx.log.info("Data folder: " + settings.data_dir.string());
     if (!options.schedule.empty()) {
-        render::ScheduleSelection selection = render::read_schedule_selection(options.schedule);
-        settings.only_captures = std::move(selection.captures);
-        if (selection.rows) {
+        const inputs::ScheduleFile selection = inputs::read_schedule_file(options.schedule);
+        for (const inputs::ScheduleFile::Capture& c : selection.captures) {
+            settings.only_captures.insert(c.index);
+        }
+        if (selection.row_shard) {
             if (settings.rows) {
                 throw usage_error("--rows and a --by rows shard in --schedule " +
                                   options.schedule.string() + ": give one band of lines");
             }
-            settings.rows = selection.rows;
+            settings.rows = schedule::RowBand{};
+            settings.rows->shard = selection.row_shard;
         }
     }
     inputs::LoadOptions load_options;

@@ -110,17 +110,6 @@ RenderReport render(model::SimulationInputs inputs, const RenderOptions& options
 /// Prepares everything like render() and returns the captures, pixel counts, output files and
 /// memory estimate without tracing a ray (--dry-run).
 RenderReport dry_run(model::SimulationInputs inputs, const RenderOptions& options,
-                  const Context& context);
-
-/// What a glint-schedule JSON file selects: its `captures[].index`, and the row band of a
-/// `--by rows` shard (its `selection.shard` with `"by": "rows"`).
-struct ScheduleSelection {
-    std::set<std::uint64_t> captures;
-    std::optional<schedule::RowBand> rows;
-};
-
-/// Reads a glint-schedule JSON file's selection. Throws glint::Error (io) when unreadable,
-/// (input, with the file) when it is not a glint-schedule file or its row shard is invalid.
-ScheduleSelection read_schedule_selection(const std::filesystem::path& file);
+                     const Context& context);
 
 }  // namespace glint::render

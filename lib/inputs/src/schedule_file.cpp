@@ -1,39 +1,40 @@
 // SPDX-License-Identifier: Apache-2.0
-// read_schedule_selection: the capture indices of a glint-schedule JSON file (--schedule),
-// read by a SAX handler that keeps only them.
+// read_schedule_file: a glint-schedule JSON file read by a SAX handler that keeps only what
+// ScheduleFile holds (glint/inputs/schedule_file.h).
+#include "glint/inputs/schedule_file.h"
+
 #include <nlohmann/json.hpp>
 #include <optional>
-#include <set>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "glint/core/error.h"
 #include "glint/core/stdio_name.h"
 #include "glint/core/text.h"
 #include "glint/io/input_files.h"
-#include "glint/render/render.h"
 
-namespace glint::render {
+namespace glint::inputs {
 
 namespace {
 
-/// The largest schedule file read (2 GiB): a glint-schedule JSON of the 10⁶ captures one
-/// render plans is about 2 GB; anything larger is not one.
-constexpr std::size_t kMaxScheduleBytes = std::size_t{2} << 30;
-
 using Json = nlohmann::json;
 
-/// Reads what a selection needs — the top-level "format" and each captures[].index — as the
-/// parser goes (SAX), without building the document: a glint-schedule JSON holds some 2 kB per
-/// capture, and its document tree would take several times the text.
-class SelectionReader final : public nlohmann::json_sax<Json> {
+/// Reads what ScheduleFile holds — the top-level "format", each captures[].index (and, when
+/// asked, its files.image and files.truth[]), selection.shard and provenance.working_folder —
+/// as the parser goes (SAX), without building the document: a glint-schedule JSON holds some
+/// 2 kB per capture, and its document tree would take several times the text.
+class ScheduleReader final : public nlohmann::json_sax<Json> {
 public:
+    explicit ScheduleReader(bool with_files) : m_with_files(with_files) {}
+
     std::optional<std::string> format;
     bool has_captures = false;
     bool captures_is_array = false;
     std::optional<std::size_t> bad_capture;  ///< the first capture without a valid index
     std::optional<std::string> parse_problem;
-    std::set<std::uint64_t> indices;
+    std::vector<ScheduleFile::Capture> captures;
+    std::optional<std::string> working_folder;
     /// selection.shard's index, count and by (a "rows" shard renders a band of lines).
     std::optional<std::uint64_t> shard_index;
     std::optional<std::uint64_t> shard_count;
@@ -44,7 +45,7 @@ public:
     bool number_integer(number_integer_t) override { return scalar(); }
     bool number_unsigned(number_unsigned_t value) override {
         if (in_capture() && m_key == "index") {
-            indices.insert(value);
+            captures.back().index = value;
             m_capture_has_index = true;
             return true;
         }
@@ -55,6 +56,11 @@ public:
     bool number_float(number_float_t, const string_t&) override { return scalar(); }
     bool string(string_t& value) override {
         if (m_depth == 1 && m_key == "format") format = value;
+        if (m_depth == 2 && m_in_provenance && m_key == "working_folder") working_folder = value;
+        if (m_with_files && m_depth == 4 && m_in_files && m_key == "image") {
+            captures.back().image = value;
+        }
+        if (m_with_files && m_depth == 5 && m_in_truth) captures.back().truth.push_back(value);
         if (m_depth == 3 && m_in_shard && m_key == "by") shard_by = value;
         return scalar();
     }
@@ -97,7 +103,14 @@ private:
             m_in_captures = !object;
         } else if (at_capture_element()) {
             if (!object) note_bad_capture();
+            captures.emplace_back();
             m_capture_has_index = false;
+        } else if (in_capture() && m_key == "files" && object) {
+            m_in_files = true;
+        } else if (m_depth == 4 && m_in_files && m_key == "truth" && !object) {
+            m_in_truth = true;
+        } else if (m_depth == 1 && m_key == "provenance" && object) {
+            m_in_provenance = true;
         } else if (m_depth == 1 && m_key == "selection" && object) {
             m_in_selection = true;
         } else if (m_depth == 2 && m_in_selection && m_key == "shard" && object) {
@@ -112,7 +125,10 @@ private:
         if (at_capture_element()) ++m_capture;
         if (m_depth == 1) m_in_captures = false;
         if (m_depth == 1) m_in_selection = false;
+        if (m_depth == 1) m_in_provenance = false;
         if (m_depth == 2) m_in_shard = false;
+        if (m_depth == 3) m_in_files = false;
+        if (m_depth == 4) m_in_truth = false;
         m_key.clear();
         return true;
     }
@@ -123,23 +139,27 @@ private:
     std::size_t m_depth = 0;  ///< containers open around the current value
     std::string m_key;        ///< the current object key at this depth
     bool m_in_captures = false;
-    bool m_in_selection = false;  ///< inside the top-level "selection" object
-    bool m_in_shard = false;      ///< inside selection.shard
-    std::size_t m_capture = 0;    ///< index of the current captures[] element
+    bool m_in_selection = false;   ///< inside the top-level "selection" object
+    bool m_in_shard = false;       ///< inside selection.shard
+    bool m_in_provenance = false;  ///< inside the top-level "provenance" object
+    bool m_in_files = false;       ///< inside a capture's "files" object
+    bool m_in_truth = false;       ///< inside its "truth" array
+    bool m_with_files = false;     ///< keep the captures' files
+    std::size_t m_capture = 0;     ///< index of the current captures[] element
     bool m_capture_has_index = false;
 };
 
 }  // namespace
 
-ScheduleSelection read_schedule_selection(const std::filesystem::path& file) {
+ScheduleFile read_schedule_file(const std::filesystem::path& file, bool with_files) {
     // "-": the schedule piped in (glint-schedule ... --format json | jq ... | glint-render
     // --schedule - ...).
     const bool piped = is_stdio_name(file);
     const std::string text =
-        piped ? io::read_standard_input(kMaxScheduleBytes, "schedule")
-              : io::read_input_file(file, file.string(), kMaxScheduleBytes, "schedule file");
+        piped ? io::read_standard_input(kMaxScheduleFileBytes, "schedule")
+              : io::read_input_file(file, file.string(), kMaxScheduleFileBytes, "schedule file");
     const ErrorContext where{piped ? io::kStandardInputName : file.string(), 0, {}};
-    SelectionReader reader;
+    ScheduleReader reader(with_files);
     if (!Json::sax_parse(text, &reader) || reader.parse_problem) {
         throw input_error("not JSON: " + quote(reader.parse_problem.value_or("parse error")),
                           where);
@@ -158,9 +178,10 @@ ScheduleSelection read_schedule_selection(const std::filesystem::path& file) {
                               "] has no non-negative integer \"index\"",
                           where);
     }
-    if (reader.indices.empty()) throw input_error("the schedule selects no capture", where);
-    ScheduleSelection selection;
-    selection.captures = std::move(reader.indices);
+    if (reader.captures.empty()) throw input_error("the schedule selects no capture", where);
+    ScheduleFile schedule;
+    schedule.captures = std::move(reader.captures);
+    schedule.working_folder = std::move(reader.working_folder);
     if (reader.shard_by && *reader.shard_by != "captures") {
         if (*reader.shard_by != "rows") {
             throw input_error("selection.shard.by is " + quote(*reader.shard_by) +
@@ -174,11 +195,9 @@ ScheduleSelection read_schedule_selection(const std::filesystem::path& file) {
                 "<= N",
                 where);
         }
-        schedule::RowBand rows;
-        rows.shard = {*reader.shard_index, *reader.shard_count};
-        selection.rows = rows;
+        schedule.row_shard = {*reader.shard_index, *reader.shard_count};
     }
-    return selection;
+    return schedule;
 }
 
-}  // namespace glint::render
+}  // namespace glint::inputs
