@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // The capture-method half of the `.platform` reader: `<capturemethod>` and its children
-// (sample strategy, image file, spatial response, temporal integration, detector model,
-// convergence, PSF, active area, processing tasks), the same extras written directly in
-// `<focalplane>`, and the checks that need the whole focal plane. The spectral response is
-// read by spectral_reader.cpp. Every problem goes to Diagnostics with its location.
+// (sample strategy, image file, spatial response, temporal integration, lidar signal gate).
+// Its extras (detector model, convergence, PSF, active area, processing tasks) are read by
+// capture_extras_reader.cpp, the spectral response by spectral_reader.cpp, the checks that
+// need the whole focal plane are focal_plane_checks.cpp. Every problem goes to Diagnostics
+// with its location.
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -19,13 +20,10 @@
 namespace glint::dirsig::detail {
 namespace {
 
+using capture_io::non_empty_text;
 using capture_io::number_text;
-using capture_io::required_attribute;
 using capture_io::single_child;
 using capture_io::trim;
-
-/// The most paths per pixel a convergence setting may ask for.
-constexpr std::int64_t kMaxPathsPerPixel = 1'000'000'000;
 
 /// ENVI data types an image file may be written as.
 constexpr int kEnviDataTypes[] = {1, 2, 3, 4, 5, 12, 13, 14, 15};
@@ -44,20 +42,6 @@ std::optional<int> attribute_count(const io::XmlNode& node, std::string_view nam
     return static_cast<int>(*value);
 }
 
-/// Text of child `name` that must not be empty when given.
-std::optional<std::string> non_empty_text(const io::XmlNode& node, std::string_view name,
-                                          std::string_view expected, Diagnostics& diagnostics) {
-    const auto child = node.child(name);
-    if (!child) return std::nullopt;
-    std::string text = child->text();
-    if (text.empty()) {
-        diagnostics.error(child->where(),
-                          std::string(name) + " is empty, expected " + std::string(expected));
-        return std::nullopt;
-    }
-    return text;
-}
-
 /// Child `name` as a part of an output file name: non-empty, and nothing that could leave
 /// the output folder (model::output_name_problem); "" after an error.
 std::string output_name_part(const io::XmlNode& node, std::string_view name,
@@ -69,19 +53,6 @@ std::string output_name_part(const io::XmlNode& node, std::string_view name,
         return "";
     }
     return text;
-}
-
-/// A file named by child `name` (required), resolved against the platform file's folder.
-model::FileRef read_file_ref(const io::XmlNode& node, std::string_view name,
-                             const ReadContext& context, Diagnostics& diagnostics) {
-    const auto child = node.child(name);
-    if (!child) {
-        diagnostics.error(node.where(), "missing required element <" + std::string(name) + ">");
-        return {};
-    }
-    const auto text = non_empty_text(node, name, "a file name", diagnostics);
-    if (!text) return {};
-    return context.options.paths.resolve(*text, context.base_dir, child->where(), diagnostics);
 }
 
 model::SampleStrategy read_sample_strategy(const io::XmlNode& node, Diagnostics& diagnostics) {
@@ -148,211 +119,6 @@ model::TemporalIntegration read_temporal_integration(const io::XmlNode& node,
                                 "time");
     }
     return integration;
-}
-
-/// `<detectormodel>`; for a lidar capture (`lidar`), which applies the QE alone, the ADC's
-/// elements are optional.
-model::DetectorModel read_detector_model(const io::XmlNode& node, bool lidar,
-                                         Diagnostics& diagnostics) {
-    model::DetectorModel detector;
-    detector.where = node.where();
-    node.warn_unknown_children({"quantumefficiency", "readnoise", "darkcurrentdensity",
-                                "minelectrons", "maxelectrons", "bitdepth"},
-                               diagnostics);
-    if (lidar) {
-        for (const char* element :
-             {"readnoise", "darkcurrentdensity", "minelectrons", "maxelectrons", "bitdepth"}) {
-            if (node.child(element)) {
-                diagnostics.warning(node.where(),
-                                    "a lidar capture applies only the detector model's "
-                                    "<quantumefficiency> (its BIN file holds detected photons): "
-                                    "the read noise, dark current and ADC are read, not applied");
-                break;
-            }
-        }
-    }
-    const auto non_negative = io::NumberRule::non_negative();
-    detector.quantum_efficiency =
-        node.required_double("quantumefficiency", diagnostics, io::NumberRule::fraction())
-            .value_or(1.0);
-    detector.read_noise_e =
-        node.optional_double("readnoise", diagnostics, non_negative).value_or(0);
-    detector.dark_current_density_a_per_m2 =
-        node.optional_double("darkcurrentdensity", diagnostics, non_negative).value_or(0.0);
-    const auto min_e = lidar ? node.optional_double("minelectrons", diagnostics, non_negative)
-                             : node.required_double("minelectrons", diagnostics, non_negative);
-    const auto max_e = lidar ? node.optional_double("maxelectrons", diagnostics, non_negative)
-                             : node.required_double("maxelectrons", diagnostics, non_negative);
-    if (min_e) detector.min_electrons = *min_e;
-    if (max_e) detector.max_electrons = *max_e;
-    if (min_e && max_e && !(*min_e < *max_e)) {
-        diagnostics.error(node.child("maxelectrons")->where(),
-                          "minelectrons (" + number_text(*min_e) +
-                              ") must be less than maxelectrons (" + number_text(*max_e) + ")");
-    }
-    const auto bits = lidar ? node.optional_int("bitdepth", diagnostics, 1, 32)
-                            : node.required_int("bitdepth", diagnostics, 1, 32);
-    if (bits) detector.bit_depth = static_cast<int>(*bits);
-    return detector;
-}
-
-model::Convergence read_convergence(const io::XmlNode& node, Diagnostics& diagnostics) {
-    model::Convergence convergence;
-    convergence.where = node.where();
-    node.warn_unknown_children({"minimumsamples", "maximumsamples", "threshold"}, diagnostics);
-    const auto minimum = node.required_int("minimumsamples", diagnostics, 1, kMaxPathsPerPixel);
-    const auto maximum = node.required_int("maximumsamples", diagnostics, 1, kMaxPathsPerPixel);
-    if (minimum) convergence.minimum_samples = *minimum;
-    if (maximum) convergence.maximum_samples = *maximum;
-    if (minimum && maximum && *maximum < *minimum) {
-        diagnostics.error(node.child("maximumsamples")->where(),
-                          "maximumsamples (" + std::to_string(*maximum) +
-                              ") is below minimumsamples (" + std::to_string(*minimum) +
-                              "), expected maximumsamples >= minimumsamples");
-    }
-    convergence.threshold =
-        node.required_double("threshold", diagnostics, io::NumberRule::non_negative())
-            .value_or(0.0);
-    return convergence;
-}
-
-model::Psf read_psf(const io::XmlNode& node, const ReadContext& context, Diagnostics& diagnostics) {
-    model::Psf psf;
-    psf.where = node.where();
-    node.warn_unknown_children({"width", "image", "scale"}, diagnostics);
-    const bool has_width = node.child("width").has_value();
-    const bool has_image = node.child("image").has_value();
-    const bool has_scale = node.child("scale").has_value();
-    const std::string either =
-        "expected either <width> (Gaussian σ in pixels) or <image> with <scale> (its extent in "
-        "pixels)";
-    if (has_width && (has_image || has_scale)) {
-        diagnostics.error(node.where(), "both <width> and <image>/<scale> given, " + either);
-        return psf;
-    }
-    if (!has_width && !has_image && !has_scale) {
-        diagnostics.error(node.where(), "neither <width> nor <image> given, " + either);
-        return psf;
-    }
-    if (has_width) {
-        psf.width_px = node.optional_double("width", diagnostics, io::NumberRule::positive());
-        return psf;
-    }
-    if (!has_scale) {
-        diagnostics.error(node.where(),
-                          "missing required element <scale>: an <image> PSF needs its extent in "
-                          "pixels");
-    }
-    psf.image = read_file_ref(node, "image", context, diagnostics);
-    if (has_scale) {
-        psf.scale_px =
-            node.optional_double("scale", diagnostics, io::NumberRule::positive()).value_or(0.0);
-    }
-    return psf;
-}
-
-model::ProcessingTask read_processing_task(const io::XmlNode& node, Diagnostics& diagnostics) {
-    model::ProcessingTask task;
-    task.where = node.where();
-    node.warn_unknown_children({"message", "program", "argument", "removefile"}, diagnostics);
-    if (required_attribute(node, "schedule", diagnostics)) {
-        const auto schedule =
-            node.attribute_enum("schedule",
-                                {"collection_started", "task_started", "capture_started",
-                                 "capture_completed", "task_completed", "collection_completed"},
-                                diagnostics);
-        using S = model::ProcessingSchedule;
-        if (schedule == "collection_started") task.schedule = S::collection_started;
-        if (schedule == "task_started") task.schedule = S::task_started;
-        if (schedule == "capture_started") task.schedule = S::capture_started;
-        if (schedule == "capture_completed") task.schedule = S::capture_completed;
-        if (schedule == "task_completed") task.schedule = S::task_completed;
-        if (schedule == "collection_completed") task.schedule = S::collection_completed;
-    }
-    task.message = node.optional_text("message").value_or("");
-    if (!node.child("program")) {
-        diagnostics.error(node.where(), "missing required element <program>");
-    } else {
-        task.program = non_empty_text(node, "program", "the name or path of a program", diagnostics)
-                           .value_or("");
-    }
-    for (const auto& argument : node.children("argument")) {
-        std::string text = argument.text();
-        const bool blank = std::any_of(text.begin(), text.end(), [](char c) {
-            return std::isspace(static_cast<unsigned char>(c)) != 0;
-        });
-        if (blank) {
-            diagnostics.error(argument.where(),
-                              "argument '" + text +
-                                  "' contains whitespace, expected a single argument without "
-                                  "whitespace (split it into several <argument> elements)");
-        }
-        task.arguments.push_back(std::move(text));
-    }
-    task.remove_file = node.optional_bool("removefile", diagnostics).value_or(false);
-    return task;
-}
-
-std::vector<model::ProcessingTask> read_processing(const io::XmlNode& node,
-                                                   Diagnostics& diagnostics) {
-    node.warn_unknown_children({"task"}, diagnostics);
-    std::vector<model::ProcessingTask> tasks;
-    for (const auto& task : node.children("task")) {
-        tasks.push_back(read_processing_task(task, diagnostics));
-    }
-    return tasks;
-}
-
-/// The error for an extra given both in `<capturemethod>` and in `<focalplane>`.
-void report_twice(const io::XmlNode& node, const ErrorContext& first, Diagnostics& diagnostics) {
-    diagnostics.error(node.where(), "<" + node.name() +
-                                        "> is given both in <capturemethod> (line " +
-                                        std::to_string(first.line) +
-                                        ") and in <focalplane>, expected one of the two");
-}
-
-/// Reads psf, activearea, convergence, processing and detectormodel under `parent` into
-/// `capture`. `in_focal_plane`: `parent` is the focal plane, and what the capture method
-/// already holds must not be given again.
-void read_extras(const io::XmlNode& parent, model::CaptureMethod& capture,
-                 const ReadContext& context, Diagnostics& diagnostics, bool in_focal_plane) {
-    if (const auto node = single_child(parent, "detectormodel", diagnostics)) {
-        if (in_focal_plane && capture.detector_model) {
-            report_twice(*node, capture.detector_model->where, diagnostics);
-        } else {
-            capture.detector_model = read_detector_model(
-                *node, capture.type == model::CaptureMethodType::lidar, diagnostics);
-        }
-    }
-    if (const auto node = single_child(parent, "convergence", diagnostics)) {
-        if (in_focal_plane && capture.convergence) {
-            report_twice(*node, capture.convergence->where, diagnostics);
-        } else {
-            capture.convergence = read_convergence(*node, diagnostics);
-        }
-    }
-    if (const auto node = single_child(parent, "psf", diagnostics)) {
-        if (in_focal_plane && capture.psf) {
-            report_twice(*node, capture.psf->where, diagnostics);
-        } else {
-            capture.psf = read_psf(*node, context, diagnostics);
-        }
-    }
-    if (const auto node = single_child(parent, "activearea", diagnostics)) {
-        if (in_focal_plane && !capture.active_area_image.empty()) {
-            report_twice(*node, capture.active_area_image.where, diagnostics);
-        } else {
-            node->warn_unknown_children({"image"}, diagnostics);
-            capture.active_area_image = read_file_ref(*node, "image", context, diagnostics);
-        }
-    }
-    if (const auto node = single_child(parent, "processing", diagnostics)) {
-        if (in_focal_plane && !capture.processing.empty()) {
-            report_twice(*node, capture.processing.front().where, diagnostics);
-        } else {
-            capture.processing = read_processing(*node, diagnostics);
-        }
-    }
 }
 
 }  // namespace
@@ -508,111 +274,8 @@ model::CaptureMethod read_capture_method(const io::XmlNode& node, const ReadCont
     } else {
         capture.temporal_integration.where = capture.where;
     }
-    read_extras(node, capture, context, diagnostics, false);
+    read_capture_extras(node, capture, context, diagnostics, false);
     return capture;
-}
-
-void read_focal_plane_extras(const io::XmlNode& focal_plane, model::CaptureMethod& capture,
-                             const ReadContext& context, Diagnostics& diagnostics) {
-    read_extras(focal_plane, capture, context, diagnostics, true);
-}
-
-void check_focal_plane(const model::FocalPlane& focal_plane, Diagnostics& diagnostics) {
-    const auto& capture = focal_plane.capture_method;
-    capture_io::check_spectral_response(capture.spectral_response, capture.type, diagnostics);
-
-    const auto& integration = capture.temporal_integration;
-    if (integration.tdi) {
-        if (!(integration.time_s > 0.0)) {
-            diagnostics.error(integration.where,
-                              "tdi=\"true\" needs an integration time, expected <time> > 0");
-        }
-        const std::size_t stages = focal_plane.detector_array.y_count;
-        if (stages == 1) {
-            diagnostics.error(integration.where,
-                              "tdi=\"true\" uses the array's rows as TDI stages, expected "
-                              "<yelementcount> > 1 in <detectorarray> (it is 1)");
-        }
-    }
-    if (capture.detector_model && capture.type == model::CaptureMethodType::raw) {
-        diagnostics.error(capture.detector_model->where,
-                          "the detector model needs capturemethod type simple, expected no "
-                          "<detectormodel> in a raw capture");
-    }
-    if (capture.type == model::CaptureMethodType::lidar) {
-        // A pulse is one instant for every pixel and each pixel is one problem.
-        if (integration.tdi) {
-            diagnostics.error(integration.where,
-                              "tdi=\"true\" needs capturemethod type simple (a lidar receiver "
-                              "records every pixel at each pulse)");
-        }
-        if (focal_plane.detector_array.rolling_line_time_s) {
-            diagnostics.warning(focal_plane.detector_array.where,
-                                "rollingreadout is read, not applied on a lidar receiver: every "
-                                "row records the same pulse");
-        }
-        if (capture.sample_strategy.hypersampling_multiplier > 1.0) {
-            diagnostics.warning(capture.where,
-                                "<hypersamplingmultiplier> is read, not applied on a lidar "
-                                "receiver: its returns take the convergence maximum of samples "
-                                "in every pixel");
-        }
-    }
-    if (capture.type == model::CaptureMethodType::lidar && integration.time_s > 0.0) {
-        diagnostics.warning(integration.where,
-                            "<temporalintegration> does not apply to a lidar capture (the "
-                            "signal gate sets its times, and the passive term is a rate); "
-                            "ignored");
-    }
-    // A raw capture is the bandpass-sampled radiance for an external detection model: the
-    // TDI accumulation of the in-render detection is not for it (a <channelpattern> on it is
-    // refused by check_spectral_response).
-    if (capture.type == model::CaptureMethodType::raw && integration.tdi) {
-        diagnostics.error(integration.where,
-                          "tdi=\"true\" needs capturemethod type simple (TDI stages are "
-                          "accumulated by detection, which a raw capture leaves to an external "
-                          "model)");
-    }
-    if (capture.type == model::CaptureMethodType::raw &&
-        !capture.spectral_response.channels.empty()) {
-        diagnostics.warning(capture.spectral_response.channels.front().where,
-                            "the <channel>s of a raw capture are read, not applied: raw writes "
-                            "one band per bandpass sample");
-    }
-    const model::DetectorArray& array = focal_plane.detector_array;
-    if ((array.x_oversample > 1 || array.y_oversample > 1) &&
-        capture.type != model::CaptureMethodType::raw) {
-        diagnostics.warning(array.oversample_where,
-                            "<xoversample>/<yoversample> are read, not applied: they oversample "
-                            "a raw capture only (a simple capture samples each element's area)");
-    } else if (array.y_oversample > 1 && array.rolling_line_time_s) {
-        diagnostics.error(array.oversample_where,
-                          "<yoversample> with rollingreadout: the sub-rows of a raw capture have "
-                          "no readout time of their own, expected one of the two");
-    }
-    if (integration.tdi && focal_plane.detector_array.y_count > 1 &&
-        focal_plane.detector_array.rolling_line_time_s) {
-        diagnostics.warning(focal_plane.detector_array.where,
-                            "rollingreadout is read, not applied on a TDI array: its stages are "
-                            "read once per capture");
-    }
-    if (capture.detector_model && capture.type == model::CaptureMethodType::simple) {
-        for (const model::Channel& channel : capture.spectral_response.channels) {
-            if (channel.normalize) {
-                diagnostics.warning(channel.where,
-                                    "normalize of channel \"" + channel.name +
-                                        "\" is ignored with a detector model (detection counts "
-                                        "photons through the channel's response)");
-            }
-        }
-    }
-    const auto& file = capture.image_file;
-    if (capture.detector_model &&
-        (file.area_units != model::AreaUnits::cm2 || file.flux_units != model::FluxUnits::watts)) {
-        diagnostics.warning(file.where,
-                            "areaunits and fluxunits are ignored when the detector model is "
-                            "enabled (the output is in digital counts)");
-    }
 }
 
 }  // namespace glint::dirsig::detail

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // Internal interface between the two halves of the `.platform` reader: platform_reader.cpp
 // (the attachment tree, mounts, instruments, focal planes, detector arrays, clocks, truth)
-// and capture_reader.cpp (capture method, image file, spectral response and the capture
-// extras that the manual places either in <capturemethod> or directly in <focalplane>).
+// and capture_reader.cpp (capture method, image file, spectral response), with
+// capture_extras_reader.cpp (the capture extras that the manual places either in
+// <capturemethod> or directly in <focalplane>) and focal_plane_checks.cpp.
 #pragma once
 
 #include <filesystem>
@@ -23,6 +24,12 @@ struct ReadContext {
 /// Reads `<capturemethod>`.
 model::CaptureMethod read_capture_method(const io::XmlNode& node, const ReadContext& context,
                                          Diagnostics& diagnostics);
+
+/// Reads the capture extras (psf, activearea, convergence, processing, detectormodel) under
+/// `parent` into `capture`. `in_focal_plane`: `parent` is the focal plane, and what the
+/// capture method already holds must not be given again (capture_extras_reader.cpp).
+void read_capture_extras(const io::XmlNode& parent, model::CaptureMethod& capture,
+                         const ReadContext& context, Diagnostics& diagnostics, bool in_focal_plane);
 
 /// Reads the capture extras written directly under `<focalplane>` (psf, activearea,
 /// convergence, processing, detectormodel) into `capture`; a value given in both places is

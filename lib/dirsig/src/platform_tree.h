@@ -2,7 +2,7 @@
 // Internal interface between the files of the `.platform` reader's tree half:
 // platform_reader.cpp (file, metadata, clock table, attachments, affine transforms),
 // mount_reader.cpp (mounts and their jitter), instrument_reader.cpp (instruments, focal
-// planes, truth) and detector_reader.cpp (detector arrays and clocks). The capture-method
+// planes, truth) and array_clock_reader.cpp (detector arrays and clocks). The capture-method
 // half is behind platform_parts.h.
 #pragma once
 

@@ -296,9 +296,9 @@ void check_pattern(const ChannelPattern& pattern, const std::vector<Channel>& ch
             continue;
         }
         // Captured by name: clang before 16 cannot capture a structured binding.
-        const bool found = std::any_of(
-            channels.begin(), channels.end(),
-            [&name = channel_name](const Channel& c) { return c.name == name; });
+        const bool found =
+            std::any_of(channels.begin(), channels.end(),
+                        [&name = channel_name](const Channel& c) { return c.name == name; });
         if (!found) {
             diagnostics.error(pattern.where, "filter '" + filter + "' is mapped to channel '" +
                                                  channel_name +
@@ -313,6 +313,19 @@ void check_pattern(const ChannelPattern& pattern, const std::vector<Channel>& ch
 std::string number_text(double value) {
     char text[64];
     std::snprintf(text, sizeof text, "%.10g", value);
+    return text;
+}
+
+std::optional<std::string> non_empty_text(const io::XmlNode& node, std::string_view name,
+                                          std::string_view expected, Diagnostics& diagnostics) {
+    const auto child = node.child(name);
+    if (!child) return std::nullopt;
+    std::string text = child->text();
+    if (text.empty()) {
+        diagnostics.error(child->where(),
+                          std::string(name) + " is empty, expected " + std::string(expected));
+        return std::nullopt;
+    }
     return text;
 }
 

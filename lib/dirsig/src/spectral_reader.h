@@ -26,6 +26,11 @@ std::string number_text(double value);
 /// `text` without leading and trailing blanks.
 std::string trim(const std::string& text);
 
+/// Text of child `name` that must not be empty when given (an error naming `expected` when it
+/// is empty); nullopt when absent or empty.
+std::optional<std::string> non_empty_text(const io::XmlNode& node, std::string_view name,
+                                          std::string_view expected, Diagnostics& diagnostics);
+
 /// The only child called `name`, if any; a second one is an error (and ignored).
 std::optional<io::XmlNode> single_child(const io::XmlNode& node, std::string_view name,
                                         Diagnostics& diagnostics);
