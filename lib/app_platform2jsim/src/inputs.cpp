@@ -15,7 +15,6 @@
 #include "glint/dirsig/scene_reader.h"
 #include "glint/inputs/load.h"
 #include "glint/inputs/simulation_inputs.h"
-#include "glint/io/image.h"
 #include "glint/model/derived.h"
 #include "glint/model/truth.h"
 
@@ -79,20 +78,12 @@ void check_mount_references(const model::Mount& mount, LoadedInputs& inputs) {
     for (const model::Attachment& a : mount.attachments) check_attachment_references(a, inputs);
 }
 
-/// A PSF or active-area image, read and checked as the renderer does (io::read_grey_image,
-/// io::weight_image_problem with `max_value`), so --check refuses what a render refuses; the
-/// error goes to `where` as "<element> "file": problem".
+/// A PSF or active-area image, read and checked by the reader a render reads it with
+/// (inputs::read_weight_image), so --check refuses what a render refuses, with its message.
 void check_weight_image(const model::FileRef& ref, const std::string& element,
                         const ErrorContext& where, double max_value, LoadedInputs& inputs) {
     if (!check_exists(ref, element, inputs)) return;
-    std::optional<std::string> problem;
-    try {
-        problem = io::weight_image_problem(io::read_grey_image(ref.resolved), max_value);
-    } catch (const Error& e) {
-        if (e.category() != ErrorCategory::input && e.category() != ErrorCategory::io) throw;
-        problem = e.message();
-    }
-    if (problem) inputs.diagnostics.error(where, element + " " + quote(ref.text) + ": " + *problem);
+    (void)inputs::read_weight_image(ref, element, where, max_value, inputs.diagnostics);
 }
 
 /// The files a platform names: mount jitter PSD tables, PSF and active-area images,
@@ -103,8 +94,8 @@ void check_platform_references(const model::Platform& platform, LoadedInputs& in
         for (const model::FocalPlane& fp : path.instrument->focal_planes) {
             const model::CaptureMethod& capture = fp.capture_method;
             if (capture.psf && !capture.psf->image.empty()) {
-                check_weight_image(capture.psf->image, "<psf><image>", capture.psf->where,
-                                   INFINITY, inputs);
+                check_weight_image(capture.psf->image, "<psf><image>", capture.psf->where, INFINITY,
+                                   inputs);
             }
             if (!capture.active_area_image.empty()) {
                 check_weight_image(capture.active_area_image, "<activearea><image>",
@@ -113,7 +104,6 @@ void check_platform_references(const model::Platform& platform, LoadedInputs& in
             if (!fp.detector_array.clock.trigger_file.empty()) {
                 check_exists(fp.detector_array.clock.trigger_file, "trigger", inputs);
             }
-
         }
     }
 }
@@ -144,15 +134,14 @@ std::string describe(const model::Atmosphere& atmosphere) {
             const model::ParametricAtmosphere& p = atmosphere.parametric;
             return kind + ", aerosol optical depth " +
                    format_shortest(p.aerosol_optical_depth_550) + " at 0.55 um, " +
-                   (p.gas_absorption ? "gases (water " + format_shortest(p.water_vapor_cm) +
-                                           " cm, ozone " + format_shortest(p.ozone_atm_cm) +
-                                           " atm-cm)"
-                                     : std::string("no gas absorption")) +
+                   (p.gas_absorption
+                        ? "gases (water " + format_shortest(p.water_vapor_cm) + " cm, ozone " +
+                              format_shortest(p.ozone_atm_cm) + " atm-cm)"
+                        : std::string("no gas absorption")) +
                    ", " +
-                   (p.multiple_scattering
-                        ? "multiple scattering over ground albedo " +
-                              format_shortest(p.ground_albedo)
-                        : std::string("single scattering"));
+                   (p.multiple_scattering ? "multiple scattering over ground albedo " +
+                                                format_shortest(p.ground_albedo)
+                                          : std::string("single scattering"));
         }
         case model::AtmosphereKind::tabulated: {
             const std::vector<double>& w = atmosphere.tabulated.wavelengths_um;
@@ -302,8 +291,8 @@ void load_basic_platform(const model::BasicPlatformInputs& entry, LoadedInputs& 
     if (check_exists(entry.motion_file, "motion", inputs) && depth == LoadDepth::contents) {
         const fs::path key = key_of(entry.motion_file.resolved);
         if (inputs.motions.count(key) == 0) {
-            inputs.motions.emplace(key, dirsig::read_motion(entry.motion_file.resolved, options,
-                                                            inputs.diagnostics));
+            inputs.motions.emplace(
+                key, dirsig::read_motion(entry.motion_file.resolved, options, inputs.diagnostics));
         }
     }
     load_tasks_ref(entry.tasks_file, inputs, options);

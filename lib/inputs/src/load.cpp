@@ -130,6 +130,7 @@ std::shared_ptr<const model::Platform> parsed_platform(const std::filesystem::pa
             std::make_shared<model::Platform>(dirsig::read_platform(file, options, diagnostics));
         read_psd_tables(*platform, options, diagnostics);
         read_trigger_files(*platform, options, diagnostics);
+        read_weight_images(*platform, diagnostics);
         slot = std::move(platform);
     }
     return slot;

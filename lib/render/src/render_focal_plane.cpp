@@ -65,7 +65,8 @@ radiometry::Convergence convergence_of(const model::FocalPlane& fp, const Render
     return options.convergence.value_or(kDefaultConvergence);
 }
 
-io::EnviHeader header_of(const schedule::ClockedFocalPlane& source, const sensor::OutputUnits& units,
+io::EnviHeader header_of(const schedule::ClockedFocalPlane& source,
+                         const sensor::OutputUnits& units,
                          const radiometry::Convergence& convergence, const RenderOptions& options,
                          const RenderInputs& inputs, const Context& context) {
     const model::FocalPlane& fp = *source.focal_plane;
@@ -170,8 +171,8 @@ model::CaptureMethod lidar_units_method(const schedule::ClockedFocalPlane& sourc
 
 /// The focal plane's spectral states: one over the whole grid, or, split, one per channel
 /// over the bands its response covers, each converging at the band nearest its centre.
-std::vector<SpectralState> spectral_states(const SpectralGrid& grid, const sensor::OutputUnits& units,
-                                           bool split) {
+std::vector<SpectralState> spectral_states(const SpectralGrid& grid,
+                                           const sensor::OutputUnits& units, bool split) {
     const auto centre_band = [&](BandRange r) {
         const double lo = grid.wavelength_um(r.first);
         const double hi = grid.wavelength_um(r.first + r.count - 1);
@@ -220,7 +221,7 @@ FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t s
     SpectralGrid grid = model::bandpass_grid(method.spectral_response.bandpass);
     radiometry::MaterialTable materials(inputs.scene.materials, grid, context.log);
     sensor::CameraModel camera(source.instrument->properties, fp.detector_array, source.x_count,
-                       source.y_count);
+                               source.y_count);
     sensor::OutputUnits units(method, source.instrument->properties, grid);
     std::vector<SpectralState> states = spectral_states(
         grid, units,
@@ -228,10 +229,10 @@ FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t s
 
     const radiometry::Convergence convergence = convergence_of(fp, options);
     io::EnviHeader header = header_of(source, units, convergence, options, inputs, context);
-    FocalPlaneState state{std::move(grid),   std::move(states), std::move(materials),
-                          std::move(camera), std::move(units),  convergence,
-                          std::move(header), std::nullopt,      std::nullopt,
-                          std::nullopt,      sensor::TruthLayout{},     0,
+    FocalPlaneState state{std::move(grid),   std::move(states),     std::move(materials),
+                          std::move(camera), std::move(units),      convergence,
+                          std::move(header), std::nullopt,          std::nullopt,
+                          std::nullopt,      sensor::TruthLayout{}, 0,
                           std::nullopt};
     state.reference_band =
         radiometry::nearest_band(state.grid, 0.5 * (state.grid.min_um() + state.grid.max_um()));
@@ -251,7 +252,8 @@ FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t s
                                format_shortest(lens->aperture_diameter_m) + " m");
     }
     if (!fp.capture_method.active_area_image.empty()) {
-        state.mask = sensor::ActiveArea::from_model(fp.capture_method.active_area_image);
+        state.mask = sensor::ActiveArea::from_model(fp.capture_method.active_area_image,
+                                                    fp.capture_method.active_area);
         state.header.set_extra("glint active area", state.mask->description());
     }
     if (lidar) return state;  // its detector model gives the QE alone (make_lidar_state)

@@ -27,9 +27,13 @@ ActiveArea::ActiveArea(const GreyImage& mask, std::string name)
                     std::to_string(mask.height) + ", mean sensitivity " + format_shortest(m_mean);
 }
 
-ActiveArea ActiveArea::from_model(const model::FileRef& image) {
+ActiveArea ActiveArea::from_model(const model::FileRef& image, const model::WeightImage& mask) {
+    if (mask.empty()) {
+        throw internal_error(format_located(
+            image.where, "<activearea><image> " + quote(image.text) + " was not read"));
+    }
     try {
-        return ActiveArea(read_grey_image(image.resolved), image.text);
+        return ActiveArea(GreyImage{mask.width, mask.height, mask.values}, image.text);
     } catch (const Error& e) {
         if (e.category() != ErrorCategory::input && e.category() != ErrorCategory::io) throw;
         throw input_error("<activearea><image> " + quote(image.text) + ": " + e.message(),

@@ -26,24 +26,28 @@ PsfSampler PsfSampler::gaussian(double sigma_px) {
 PsfSampler PsfSampler::table(std::vector<double> weights, std::size_t width, std::size_t height,
                              double extent_px) {
     if (!std::isfinite(extent_px) || !(extent_px > 0.0)) {
-        throw input_error("the PSF scale (the image's extent in pixels) must be a finite number "
-                          "> 0, got " +
-                          format_shortest(extent_px));
+        throw input_error(
+            "the PSF scale (the image's extent in pixels) must be a finite number "
+            "> 0, got " +
+            format_shortest(extent_px));
     }
     PsfSampler psf;
     psf.m_table.emplace(weights, width, height);
     psf.m_pixel_px = extent_px / static_cast<double>(width);
-    psf.m_description = std::to_string(width) + " x " + std::to_string(height) +
-                        " image over " + format_shortest(extent_px) + " px";
+    psf.m_description = std::to_string(width) + " x " + std::to_string(height) + " image over " +
+                        format_shortest(extent_px) + " px";
     return psf;
 }
 
 PsfSampler PsfSampler::from_model(const model::Psf& psf) {
     try {
         if (psf.width_px) return gaussian(*psf.width_px);
-        GreyImage image = read_grey_image(psf.image.resolved);
-        PsfSampler sampler = table(std::move(image.values), image.width, image.height,
-                                   psf.scale_px);
+        if (psf.weights.empty()) {
+            throw internal_error(format_located(
+                psf.where, "<psf><image> " + quote(psf.image.text) + " was not read"));
+        }
+        PsfSampler sampler =
+            table(psf.weights.values, psf.weights.width, psf.weights.height, psf.scale_px);
         sampler.m_description = "image " + psf.image.text + " " + sampler.m_description;
         return sampler;
     } catch (const Error& e) {
@@ -68,7 +72,8 @@ std::array<double, 2> PsfSampler::offset_px(double r1, double r2) const noexcept
 double PsfSampler::reach_px() const noexcept {
     if (m_sigma_px > 0.0) return 4.0 * m_sigma_px;
     return 0.5 * m_pixel_px *
-           std::hypot(static_cast<double>(m_table->width()), static_cast<double>(m_table->height()));
+           std::hypot(static_cast<double>(m_table->width()),
+                      static_cast<double>(m_table->height()));
 }
 
 }  // namespace glint::sensor

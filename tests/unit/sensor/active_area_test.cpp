@@ -3,6 +3,8 @@
 // black moves every sample into the right half (a thin line's centroid moves by a quarter
 // element) and halves the response; a circular mask's response to an edge swept across the
 // pixel follows the disc's area on the bright side; bad masks are refused.
+#include "glint/sensor/active_area.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -16,7 +18,6 @@
 #include "glint/io/image.h"
 #include "glint/motion/euler.h"
 #include "glint/motion/rigid.h"
-#include "glint/sensor/active_area.h"
 #include "glint/sensor/camera.h"
 #include "glint/sensor/pixel_ray_source.h"
 #include "glint/test/platforms.h"
@@ -37,7 +38,6 @@ GreyImage left_half_black() {
     return mask;
 }
 
-
 TEST(ActiveArea, LeftHalfBlackMovesTheCentroidAQuarterElementAndHalvesTheResponse) {
     const ActiveArea mask(left_half_black(), "half.png");
     EXPECT_DOUBLE_EQ(mask.mean_sensitivity(), 0.5);  // a uniform field's signal halves
@@ -51,7 +51,8 @@ TEST(ActiveArea, LeftHalfBlackMovesTheCentroidAQuarterElementAndHalvesTheRespons
     model::InstrumentProperties p;
     p.focal_length_m = 0.1;
     const CameraModel camera(p, a, 10, 6);
-    const motion::PoseService poses(test::one_mount_platform(), std::make_unique<test::HoverTrajectory>(1000.0), {}, {});
+    const motion::PoseService poses(test::one_mount_platform(),
+                                    std::make_unique<test::HoverTrajectory>(1000.0), {}, {});
     const motion::Rigid to_instrument = motion::inverse(poses.instrument_to_scene(0, 0.0));
     for (const bool masked : {false, true}) {
         const PixelRaySource source(camera, poses, 0, {0.0, 0.0, 0.0}, nullptr,
@@ -123,20 +124,26 @@ TEST(ActiveArea, RefusesBadMasks) {
     } catch (const Error& e) {
         EXPECT_STREQ(e.what(), "a value is above 1 (1.5)");
     }
-    test::TempDir dir;
-    model::FileRef ref{"mask.png", dir.path() / "mask.png", ErrorContext{"cam.platform", 9, {}}};
+    model::FileRef ref{"mask.png", "/nowhere/mask.png", ErrorContext{"cam.platform", 9, {}}};
     try {
-        ActiveArea::from_model(ref);
+        ActiveArea::from_model(ref, model::WeightImage{2, 1, {0.0, 0.0}});
         FAIL() << "no error";
     } catch (const Error& e) {
         EXPECT_EQ(e.category(), ErrorCategory::input);
-        EXPECT_NE(std::string(e.what()).find("cam.platform:9: <activearea><image> \"mask.png\": "),
+        EXPECT_NE(std::string(e.what()).find(
+                      "cam.platform:9: <activearea><image> \"mask.png\": the image is all zero"),
                   std::string::npos)
             << e.what();
     }
-    // An 8-bit mask: 255 is unity, 0 blind.
-    io::write_image(ref.resolved, 2, 1, 1, std::vector<double>{255, 0}, {});
-    EXPECT_DOUBLE_EQ(ActiveArea::from_model(ref).mean_sensitivity(), 0.5);
+    try {
+        ActiveArea::from_model(ref, model::WeightImage{});
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.category(), ErrorCategory::internal) << "the readers read every mask";
+    }
+    const ActiveArea half = ActiveArea::from_model(ref, model::WeightImage{2, 1, {1.0, 0.0}});
+    EXPECT_DOUBLE_EQ(half.mean_sensitivity(), 0.5);
+    EXPECT_EQ(half.description(), "mask.png 2 x 1, mean sensitivity 0.5");
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <optional>
+#include <string>
 
 #include "glint/core/diagnostics.h"
 #include "glint/core/log.h"
@@ -77,5 +78,19 @@ void read_psd_tables(model::PlatformMotion& motion, const dirsig::ReadOptions& o
 /// Clock::trigger_times_s.
 void read_trigger_files(model::Platform& platform, const dirsig::ReadOptions& options,
                         Diagnostics& diagnostics);
+
+/// Reads a PSF or active-area image (`element`: "<psf><image>" or "<activearea><image>")
+/// through OpenImageIO (a grey image of at most 4096 × 4096 pixels; a colour image's first
+/// channel) and checks its values as sampling weights (io::weight_image_problem: none
+/// negative, none above `max_value`, not all zero). A problem is an error at `where`,
+/// `element "file": problem`, and gives nullopt.
+std::optional<model::WeightImage> read_weight_image(const model::FileRef& image,
+                                                    const std::string& element,
+                                                    const ErrorContext& where, double max_value,
+                                                    Diagnostics& diagnostics);
+/// Reads the PSF and active-area images of every enabled focal plane of `platform` into
+/// Psf::weights and CaptureMethod::active_area (read_weight_image; a PSF's values unbounded,
+/// a mask's at most 1).
+void read_weight_images(model::Platform& platform, Diagnostics& diagnostics);
 
 }  // namespace glint::inputs

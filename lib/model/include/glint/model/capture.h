@@ -43,6 +43,7 @@
 // clang-format on
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -100,10 +101,21 @@ struct Convergence {
     ErrorContext where;
 };
 
+/// The values of a grey image used as sampling weights (a PSF or active-area image), as the
+/// readers (glint/inputs/load.h, read_weight_image) read it: its first channel, integer codes
+/// divided by the type's largest code, line 0 at the top.
+struct WeightImage {
+    std::size_t width = 0;
+    std::size_t height = 0;
+    std::vector<double> values;  ///< width × height, row-major
+    bool empty() const noexcept { return values.empty(); }
+};
+
 /// Point spread function: a Gaussian of σ `width_px` pixels, or an image spanning `scale_px`.
 struct Psf {
     std::optional<double> width_px;
     FileRef image;
+    WeightImage weights;  ///< the image's values (read with the platform); empty: not read
     double scale_px = 0.0;
     ErrorContext where;
 };
@@ -173,6 +185,7 @@ struct CaptureMethod {
     std::optional<Convergence> convergence;
     std::optional<Psf> psf;
     FileRef active_area_image;  ///< empty = full pixel
+    WeightImage active_area;    ///< its values (read with the platform); empty: not read
     std::vector<ProcessingTask> processing;
     std::optional<SignalGate> signal_gate;  ///< lidar captures only
     ErrorContext where;

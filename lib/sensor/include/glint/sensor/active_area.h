@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "glint/model/capture.h"
 #include "glint/model/common.h"
 #include "glint/sensor/pixel_table.h"
 
@@ -22,9 +23,10 @@ public:
     /// From the mask's values in [0, 1]. Throws glint::Error (input, no context) with
     /// io::weight_image_problem's message (maximum 1) otherwise.
     explicit ActiveArea(const GreyImage& mask, std::string name = "mask");
-    /// The mask an <activearea><image> names. Throws glint::Error (input, at the element) for
-    /// an image that cannot be read, is too large or is all zero.
-    static ActiveArea from_model(const model::FileRef& image);
+    /// The mask an <activearea><image> names, from its values (CaptureMethod::active_area,
+    /// read with the platform by glint/inputs/load.h). Throws glint::Error (input, at the
+    /// element) for values the constructor refuses, (internal) when the image was not read.
+    static ActiveArea from_model(const model::FileRef& image, const model::WeightImage& mask);
 
     /// The element point (u, v) ∈ [0, 1]² for two uniforms, its density proportional to the
     /// mask.

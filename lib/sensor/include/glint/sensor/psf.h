@@ -18,10 +18,9 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
-
-#include <optional>
 
 #include "glint/model/capture.h"
 #include "glint/sensor/pixel_table.h"
@@ -37,10 +36,10 @@ public:
     /// glint::Error (input, no context) otherwise (PixelTable's messages).
     static PsfSampler table(std::vector<double> weights, std::size_t width, std::size_t height,
                             double extent_px);
-    /// The PSF a focal plane's <psf> describes: its Gaussian, or its image read through
-    /// OpenImageIO (a grey image of at most 4096 × 4096 pixels; a colour image's first
-    /// channel). Throws glint::Error (input, at the element) for an image that cannot be read,
-    /// is too large or is all zero.
+    /// The PSF a focal plane's <psf> describes: its Gaussian, or the table of its image's
+    /// values (Psf::weights, read with the platform by glint/inputs/load.h). Throws
+    /// glint::Error (input, at the element) for weights PixelTable refuses, (internal) when
+    /// the image was not read.
     static PsfSampler from_model(const model::Psf& psf);
 
     /// The offset (dx, dy) in pixels for two uniforms in [0, 1).
