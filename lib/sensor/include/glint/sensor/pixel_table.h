@@ -16,7 +16,6 @@
 namespace glint::sensor {
 
 using io::GreyImage;
-using io::read_grey_image;
 
 class PixelTable {
 public:
