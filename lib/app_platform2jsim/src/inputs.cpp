@@ -15,8 +15,10 @@
 #include "glint/dirsig/scene_reader.h"
 #include "glint/inputs/load.h"
 #include "glint/inputs/simulation_inputs.h"
+#include "glint/io/input_files.h"
 #include "glint/model/derived.h"
 #include "glint/model/truth.h"
+#include "glint/schedule/schedule.h"
 
 namespace glint::app_platform2jsim {
 namespace {
@@ -33,34 +35,12 @@ bool same_place(const ErrorContext& a, const ErrorContext& b) {
     return a.file == b.file && a.line == b.line && a.element == b.element;
 }
 
-/// Whether an error was already reported at `where` (a reader that checks existence itself).
-bool error_reported_at(const Diagnostics& diagnostics, const ErrorContext& where) {
-    return std::any_of(
-        diagnostics.items().begin(), diagnostics.items().end(), [&](const Diagnostic& d) {
-            return d.severity == Diagnostic::Severity::error && same_place(d.where, where);
-        });
-}
-
 /// Counts the file and checks that it exists and is not a folder; reports `role` (e.g.
 /// "motion") otherwise, unless an error was already reported where it is named.
 bool check_exists(const model::FileRef& ref, const std::string& role, LoadedInputs& inputs) {
     if (ref.empty() || ref.resolved.empty()) return false;  // the reader has reported it
     inputs.files.insert(key_of(ref.resolved));
-    std::error_code ec;
-    const fs::file_status status = fs::status(ref.resolved, ec);
-    std::string problem;
-    if (!fs::exists(status)) {
-        problem = role + " file does not exist: " + ref.resolved.string();
-        if (dirsig::is_windows_absolute(ref.text)) problem += " (a Windows path)";
-    } else if (fs::is_directory(status)) {
-        problem = role + " path is a folder, expected a file: " + ref.resolved.string();
-    } else {
-        return true;
-    }
-    if (!error_reported_at(inputs.diagnostics, ref.where)) {
-        inputs.diagnostics.error(ref.where, problem);
-    }
-    return false;
+    return inputs::existing_file(ref, role, inputs.diagnostics);
 }
 
 void check_platform_references(const model::Platform& platform, LoadedInputs& inputs);
@@ -183,22 +163,6 @@ const model::Scene* load_scene_ref(const model::FileRef& ref, LoadedInputs& inpu
     return &inputs.scenes.emplace(key, std::move(scene)).first->second;
 }
 
-/// Reads every scene of a simulation and, when there are several, merges them as a run
-/// would (materials by id, origin), reporting what the merge finds.
-void load_scenes(const model::Simulation& simulation, LoadedInputs& inputs,
-                 const dirsig::ReadOptions& options) {
-    std::vector<const model::Scene*> parts;
-    for (const model::SceneEntry& entry : simulation.scenes) {
-        inputs::check_scene_offset(entry, inputs.diagnostics);
-        if (const model::Scene* scene = load_scene_ref(entry.file, inputs, options)) {
-            parts.push_back(scene);
-        }
-    }
-    if (parts.size() < 2) return;
-    model::Scene merged;
-    for (const model::Scene* part : parts) inputs::merge_scene(merged, *part, inputs.diagnostics);
-}
-
 /// Reads an atmosphere file (once).
 void load_atmosphere_ref(const model::FileRef& ref, LoadedInputs& inputs,
                          const dirsig::ReadOptions& options) {
@@ -233,35 +197,111 @@ void load_tasks_ref(const model::FileRef& ref, LoadedInputs& inputs,
     inputs.task_lists.emplace(key, dirsig::read_tasks(ref.resolved, options, inputs.diagnostics));
 }
 
+/// What load() reads, as --check reports it: one contents line per scene and atmosphere file,
+/// and each scene kept for the truth-target check.
+class ContentsObserver final : public inputs::ReadObserver {
+public:
+    explicit ContentsObserver(LoadedInputs& inputs) : m_inputs(inputs) {}
+    void scene_read(const fs::path& file, std::size_t errors, const model::Scene& scene) override {
+        // A file checked before (another argument) is reported once.
+        if (!m_inputs.scenes.emplace(key_of(file), scene).second) return;
+        m_inputs.contents.push_back(contents_line("scene", file, errors, describe(scene)));
+    }
+    void atmosphere_read(const model::Simulation& simulation, const model::FileRef* file,
+                         std::size_t errors, const model::Atmosphere& atmosphere) override {
+        if (file == nullptr) {
+            m_inputs.contents.push_back(
+                "atmosphere (default: " + inputs::default_atmosphere_reason(simulation) +
+                "): " + describe(atmosphere));
+            return;
+        }
+        if (!m_inputs.atmospheres.emplace(key_of(file->resolved), atmosphere).second) return;
+        m_inputs.contents.push_back(
+            contents_line("atmosphere", file->resolved, errors, describe(atmosphere)));
+    }
+
+private:
+    LoadedInputs& m_inputs;
+};
+
+/// Reads a simulation with the loader glint-render reads it with (inputs::load, going on
+/// past errors to find them all), then builds its schedule as a render does (its own checks:
+/// clocks, output names, poses), so --check refuses what a render refuses.
+void check_simulation(const fs::path& file, LoadedInputs& inputs,
+                      const dirsig::ReadOptions& options, const Log& log) {
+    inputs::LoadOptions load_options;
+    load_options.read = options;
+    load_options.read.files = std::make_shared<io::InputFiles>(log);
+    load_options.keep_going = true;
+    ContentsObserver observer(inputs);
+    load_options.observer = &observer;
+    Diagnostics found;
+    std::optional<model::SimulationInputs> loaded;
+    try {
+        loaded = inputs::load(file, load_options, log, found);
+        if (!found.has_errors()) {
+            (void)schedule::Schedule::build(*loaded, schedule::ScheduleOptions{}, log, found);
+        }
+    } catch (const Error& error) {
+        if (error.category() != ErrorCategory::input) throw;
+        if (!found.has_errors()) found.add(error);
+    }
+    for (const Diagnostic& d : found.items()) {
+        // A problem of a file checked before (another argument) is reported once.
+        const auto& seen = inputs.diagnostics.items();
+        if (std::any_of(seen.begin(), seen.end(), [&](const Diagnostic& s) {
+                return s.severity == d.severity && s.message == d.message &&
+                       same_place(s.where, d.where);
+            })) {
+            continue;
+        }
+        if (d.severity == Diagnostic::Severity::error) {
+            inputs.diagnostics.error(d.where, d.message);
+        } else {
+            inputs.diagnostics.warning(d.where, d.message);
+        }
+    }
+    inputs.files.insert(key_of(file));
+    for (const fs::path& opened : load_options.read.files->opened()) {
+        inputs.files.insert(key_of(opened));
+    }
+    if (!loaded) return;
+    for (const model::PlatformInputs& entry : loaded->platforms) {
+        const model::BasicPlatformInputs& files =
+            *loaded->simulation.plugins[entry.plugin_index].basic_platform;
+        inputs.platforms.emplace(key_of(files.platform_file.resolved), *entry.platform);
+        inputs.task_lists.emplace(key_of(files.tasks_file.resolved), entry.tasks);
+        inputs.motions.emplace(key_of(files.motion_file.resolved), entry.motion);
+        for (const model::InstrumentPath& path : model::list_instruments(*entry.platform)) {
+            for (const model::FocalPlane& fp : path.instrument->focal_planes) {
+                const model::CaptureMethod& capture = fp.capture_method;
+                if (capture.psf && !capture.psf->image.empty()) {
+                    inputs.files.insert(key_of(capture.psf->image.resolved));
+                }
+                if (!capture.active_area_image.empty()) {
+                    inputs.files.insert(key_of(capture.active_area_image.resolved));
+                }
+            }
+        }
+    }
+    check_output_names(loaded->simulation, inputs.diagnostics);
+    inputs.simulations.push_back(std::move(loaded->simulation));
+}
+
 void load_one_simulation(std::size_t index, LoadedInputs& inputs,
                          const dirsig::ReadOptions& options, LoadDepth depth) {
     // Copy what is needed: loading may not touch inputs.simulations, but keep it simple.
     const model::Simulation simulation = inputs.simulations[index];
-    const bool contents = depth == LoadDepth::contents;
-    if (contents) {
-        load_scenes(simulation, inputs, options);
-    } else if (depth == LoadDepth::everything) {
+    if (depth == LoadDepth::everything) {
         for (const model::SceneEntry& scene : simulation.scenes) {
             check_exists(scene.file, "scene", inputs);
         }
-    }
-    const model::Plugin* used_atmosphere =
-        contents ? inputs::used_atmosphere_plugin(simulation, inputs.diagnostics) : nullptr;
-    if (contents && used_atmosphere == nullptr) {
-        inputs.contents.push_back(
-            "atmosphere (default: " + inputs::default_atmosphere_reason(simulation) +
-            "): " + describe(inputs::default_atmosphere()));
     }
     for (const model::Plugin& plugin : simulation.plugins) {
         if (plugin.basic_platform) {
             load_basic_platform(*plugin.basic_platform, inputs, options, depth);
         } else if (plugin.basic_atmosphere && depth != LoadDepth::platforms) {
-            const model::FileRef& ref = plugin.basic_atmosphere->atmosphere_file;
-            if (&plugin == used_atmosphere) {
-                load_atmosphere_ref(ref, inputs, options);
-            } else {
-                check_exists(ref, "atmosphere", inputs);
-            }
+            check_exists(plugin.basic_atmosphere->atmosphere_file, "atmosphere", inputs);
         }
     }
     if (depth != LoadDepth::platforms) check_output_names(simulation, inputs.diagnostics);
@@ -287,14 +327,7 @@ void load_basic_platform(const model::BasicPlatformInputs& entry, LoadedInputs& 
                          const dirsig::ReadOptions& options, LoadDepth depth) {
     load_platform_ref(entry.platform_file, inputs, options, depth);
     if (depth == LoadDepth::platforms) return;
-    // --check reads the motion file as a render does, so it refuses what a render refuses.
-    if (check_exists(entry.motion_file, "motion", inputs) && depth == LoadDepth::contents) {
-        const fs::path key = key_of(entry.motion_file.resolved);
-        if (inputs.motions.count(key) == 0) {
-            inputs.motions.emplace(
-                key, dirsig::read_motion(entry.motion_file.resolved, options, inputs.diagnostics));
-        }
-    }
+    check_exists(entry.motion_file, "motion", inputs);
     load_tasks_ref(entry.tasks_file, inputs, options);
 }
 
@@ -318,7 +351,8 @@ const model::Platform* load_platform_file(const fs::path& file, LoadedInputs& in
     return &it->second;
 }
 
-void check_file(const fs::path& file, LoadedInputs& inputs, const dirsig::ReadOptions& options) {
+void check_file(const fs::path& file, LoadedInputs& inputs, const dirsig::ReadOptions& options,
+                const Log& log) {
     const std::string extension = to_lower(file.extension().string());
     if (extension == ".platform") {
         load_platform_file(file, inputs, options);
@@ -372,11 +406,7 @@ void check_file(const fs::path& file, LoadedInputs& inputs, const dirsig::ReadOp
                                                 plural(materials.size(), "material")));
         return;
     }
-    const std::size_t first = inputs.simulations.size();
-    load_simulation_file(file, inputs, options);
-    for (std::size_t i = first; i < inputs.simulations.size(); ++i) {
-        load_one_simulation(i, inputs, options, LoadDepth::contents);
-    }
+    check_simulation(file, inputs, options, log);
 }
 
 std::string describe_output_name(const model::BasicPlatformInputs& entry) {

@@ -299,7 +299,9 @@ void list_output_folders(LoadedInputs& inputs) {
 int run_check(const Options& options, Context& ctx, std::ostream& out) {
     if (options.check_files.empty()) throw usage_error("--check needs at least one FILE");
     LoadedInputs inputs;
-    for (const fs::path& file : options.check_files) check_file(file, inputs, options.read_options);
+    for (const fs::path& file : options.check_files) {
+        check_file(file, inputs, options.read_options, ctx.log);
+    }
     check_truth_targets(inputs);
     list_output_folders(inputs);
     list_processing(inputs, options, ctx);

@@ -178,6 +178,17 @@ std::optional<model::PlatformInputs> read_entry(const model::Simulation& simulat
     const model::FileRef* tasks_file =
         required_file(files.tasks_file, "tasks_filename", plugin, diagnostics);
     if (!platform_file || !motion_file || !tasks_file) return std::nullopt;
+    // Each that is missing is said at the entry's key; the rest are still read.
+    const bool platform_exists = existing_file(*platform_file, "platform", diagnostics);
+    const bool motion_exists = existing_file(*motion_file, "motion", diagnostics);
+    const bool tasks_exists = existing_file(*tasks_file, "tasks", diagnostics);
+    if (!platform_exists || !motion_exists || !tasks_exists) {
+        if (platform_exists)
+            (void)parsed_platform(platform_file->resolved, options, parsed, diagnostics);
+        if (motion_exists) (void)parsed_motion(motion_file->resolved, options, parsed, diagnostics);
+        if (tasks_exists) (void)parsed_tasks(tasks_file->resolved, options, parsed, diagnostics);
+        return std::nullopt;
+    }
 
     model::PlatformInputs entry;
     entry.plugin_index = plugin_index;
@@ -239,6 +250,23 @@ void report_scene_problems(const model::Simulation& simulation, const Diagnostic
                                    "glint-render and glint-platform2jsim --check refuse it");
 }
 
+/// Tells `observer` what the simulation's atmosphere file held (the errors found since `errors`
+/// were counted); nothing when its file does not exist.
+void report_atmosphere(const model::SimulationInputs& inputs, std::size_t errors,
+                       const Diagnostics& diagnostics, ReadObserver& observer) {
+    Diagnostics repeated;  // used_atmosphere_plugin's warnings were given once already
+    const model::Plugin* plugin = used_atmosphere_plugin(inputs.simulation, repeated);
+    if (plugin == nullptr) {
+        observer.atmosphere_read(inputs.simulation, nullptr, 0, inputs.atmosphere);
+        return;
+    }
+    const model::FileRef& file = plugin->basic_atmosphere->atmosphere_file;
+    std::error_code ec;
+    if (file.resolved.empty() || !std::filesystem::is_regular_file(file.resolved, ec)) return;
+    observer.atmosphere_read(inputs.simulation, &file, diagnostics.error_count() - errors,
+                             inputs.atmosphere);
+}
+
 }  // namespace
 
 std::optional<model::PlatformInputs> read_platform_entry(const model::Simulation& simulation,
@@ -256,7 +284,8 @@ model::SimulationInputs load(const std::filesystem::path& simulation_file,
 
     std::vector<model::Simulation> simulations =
         dirsig::read_simulation(simulation_file, read, diagnostics);
-    diagnostics.throw_if_errors();
+    // keep_going: a simulation with errors is still looked into, to find the others.
+    if (!options.keep_going || simulations.size() != 1) diagnostics.throw_if_errors();
     if (simulations.size() != 1) {
         throw input_error("the file holds " + std::to_string(simulations.size()) +
                               " simulations, expected one (split the array into one .jsim "
@@ -269,7 +298,8 @@ model::SimulationInputs load(const std::filesystem::path& simulation_file,
     // needed (LoadOptions::scene_contents).
     Diagnostics scene_problems;
     try {
-        inputs.scene = read_simulation_scene(inputs.simulation, read, scene_problems);
+        inputs.scene =
+            read_simulation_scene(inputs.simulation, read, scene_problems, options.observer);
     } catch (const Error& e) {
         if (e.category() != ErrorCategory::input) throw;
         scene_problems.add(e);
@@ -286,11 +316,14 @@ model::SimulationInputs load(const std::filesystem::path& simulation_file,
                       : std::string(model::to_string(inputs.atmosphere.kind))) +
                  " (in place of the simulation's)");
     } else if (options.atmosphere) {
+        const std::size_t errors = diagnostics.error_count();
         inputs.atmosphere = read_simulation_atmosphere(inputs.simulation, read, diagnostics, log);
+        if (options.observer != nullptr)
+            report_atmosphere(inputs, errors, diagnostics, *options.observer);
     } else {
         inputs.atmosphere = default_atmosphere();
     }
-    diagnostics.throw_if_errors();  // the scene's problems before the platforms'
+    if (!options.keep_going) diagnostics.throw_if_errors();  // the scene's before the platforms'
     ParsedFiles parsed;
     for (const std::size_t index : inputs.simulation.basic_platform_indices()) {
         if (auto entry = read_entry(inputs.simulation, index, read, parsed, diagnostics)) {
@@ -304,7 +337,7 @@ model::SimulationInputs load(const std::filesystem::path& simulation_file,
         }
         report_scene_problems(inputs.simulation, scene_problems, targets, diagnostics);
     }
-    diagnostics.throw_if_errors();
+    if (!options.keep_going) diagnostics.throw_if_errors();
     read.files->clear();  // the texts were parsed; the record of opens stays
     return inputs;
 }

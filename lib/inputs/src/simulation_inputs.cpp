@@ -4,6 +4,7 @@
 // entry read with read_scene and merged (origin, materials by id, objects, instances).
 #include "glint/inputs/simulation_inputs.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -24,23 +25,6 @@ namespace fs = std::filesystem;
 /// Origins closer than this are the same (about 0.1 mm on the ground).
 constexpr double kOriginTolerance_deg = 1e-9;
 constexpr double kOriginTolerance_m = 1e-4;
-
-/// An error at `ref.where` unless `ref` names an existing file; `role` is e.g. "scene".
-bool existing_file(const model::FileRef& ref, const std::string& role, Diagnostics& diagnostics) {
-    if (ref.resolved.empty()) return false;  // the reader of the simulation reported it
-    std::error_code ec;
-    const fs::file_status status = fs::status(ref.resolved, ec);
-    if (!fs::exists(status)) {
-        diagnostics.error(ref.where, role + " file does not exist: " + ref.resolved.string());
-        return false;
-    }
-    if (fs::is_directory(status)) {
-        diagnostics.error(ref.where,
-                          role + " path is a folder, expected a file: " + ref.resolved.string());
-        return false;
-    }
-    return true;
-}
 
 std::string describe(const model::SceneOrigin& origin) {
     return "latitude " + format_shortest(origin.latitude_deg) + " deg, longitude " +
@@ -72,6 +56,31 @@ bool zero_offset(const std::string& offset) {
 }
 
 }  // namespace
+
+bool existing_file(const model::FileRef& ref, const std::string& role, Diagnostics& diagnostics) {
+    if (ref.resolved.empty()) return false;  // the reader of the simulation reported it
+    const auto& items = diagnostics.items();
+    if (std::any_of(items.begin(), items.end(), [&](const Diagnostic& d) {
+            return d.severity == Diagnostic::Severity::error && d.where.file == ref.where.file &&
+                   d.where.line == ref.where.line && d.where.element == ref.where.element;
+        })) {
+        return false;  // the reader of the simulation checked it, and reported it
+    }
+    std::error_code ec;
+    const fs::file_status status = fs::status(ref.resolved, ec);
+    if (!fs::exists(status)) {
+        diagnostics.error(ref.where,
+                          role + " file does not exist: " + ref.resolved.string() +
+                              (dirsig::is_windows_absolute(ref.text) ? " (a Windows path)" : ""));
+        return false;
+    }
+    if (fs::is_directory(status)) {
+        diagnostics.error(ref.where,
+                          role + " path is a folder, expected a file: " + ref.resolved.string());
+        return false;
+    }
+    return true;
+}
 
 model::Atmosphere default_atmosphere() {
     model::Atmosphere atmosphere;
@@ -228,23 +237,30 @@ void merge_scene(model::Scene& scene, model::Scene part, Diagnostics& diagnostic
 void check_scene_offset(const model::SceneEntry& entry, Diagnostics& diagnostics) {
     if (entry.offset.empty() || zero_offset(entry.offset)) return;
     diagnostics.warning(entry.offset_where.file.empty() ? entry.file.where : entry.offset_where,
-                        "scene offset \"" + entry.offset + "\" is read, not applied: the scene "
-                        "is placed at its own origin");
+                        "scene offset \"" + entry.offset +
+                            "\" is read, not applied: the scene "
+                            "is placed at its own origin");
 }
 
 model::Scene read_simulation_scene(const model::Simulation& simulation, const ReadOptions& options,
-                                   Diagnostics& diagnostics) {
+                                   Diagnostics& diagnostics, ReadObserver* observer) {
     model::Scene scene;
     for (const model::SceneEntry& entry : simulation.scenes) {
         check_scene_offset(entry, diagnostics);
         if (!existing_file(entry.file, "scene", diagnostics)) continue;
+        const std::size_t errors = diagnostics.error_count();
         model::Scene part;
+        bool read = true;
         try {
             part = read_scene(entry.file.resolved, options, diagnostics);
         } catch (const Error& error) {
             diagnostics.add(error);
-            continue;
+            read = false;
         }
+        if (observer != nullptr) {
+            observer->scene_read(entry.file.resolved, diagnostics.error_count() - errors, part);
+        }
+        if (!read) continue;
         merge_scene(scene, std::move(part), diagnostics);
     }
     return scene;

@@ -63,6 +63,15 @@ protected:
         return false;
     }
 
+    /// The logged lines above debug level (debug has a "reading FILE" line per file opened).
+    std::vector<std::string> problems() const {
+        std::vector<std::string> lines;
+        for (const std::string& line : m_log) {
+            if (line.rfind("debug: ", 0) != 0) lines.push_back(line);
+        }
+        return lines;
+    }
+
     std::string log_text() const {
         std::string text;
         for (const std::string& line : m_log) text += line + "\n";
@@ -290,8 +299,8 @@ TEST_F(Platform2JsimTest, CheckPrintsASummaryAndExitsZeroOnGoodInputs) {
                                "atmosphere " +
                                (kData / "clear.atm").string() +
                                ": simple, sky at 260 K\n"
-                               "check: 0 errors, 0 warnings in 6 files\n");
-    EXPECT_TRUE(m_log.empty()) << log_text();
+                               "check: 0 errors, 0 warnings in 9 files\n");
+    EXPECT_TRUE(problems().empty()) << log_text();
 }
 
 TEST_F(Platform2JsimTest, CheckListsEveryProblem) {
@@ -299,8 +308,8 @@ TEST_F(Platform2JsimTest, CheckListsEveryProblem) {
     o.mode = Mode::check;
     o.check_files = {kData / "bad" / "broken.sim"};
     EXPECT_EQ(run_mode(o), 1);
-    EXPECT_THAT(m_out.str(), ::testing::EndsWith("check: 4 errors, 0 warnings in 6 files\n"));
-    EXPECT_EQ(m_log.size(), 4u) << log_text();
+    EXPECT_THAT(m_out.str(), ::testing::EndsWith("check: 4 errors, 0 warnings in 8 files\n"));
+    EXPECT_EQ(problems().size(), 4u) << log_text();
     EXPECT_FALSE(logged("nothing written"));
 }
 
@@ -313,7 +322,9 @@ TEST_F(Platform2JsimTest, CheckTakesPlatformAndTasksFilesAlone) {
     EXPECT_EQ(m_out.str(), "check: 1 error, 0 warnings in 2 files\n");
 }
 
-TEST_F(Platform2JsimTest, CheckWarnsAboutEntriesThatWriteTheSameFiles) {
+// Two entries writing the same files: a render refuses them (the schedule's own check), so
+// --check does too, besides the warning that their output names are the same.
+TEST_F(Platform2JsimTest, CheckRefusesEntriesThatWriteTheSameFilesAsARenderDoes) {
     const fs::path in = copy_inputs("in");
     std::ofstream(in / "twice.jsim") << R"([{"scene_list": [], "plugin_list": [
         {"name": "BasicPlatform", "inputs": {"platform_filename": "cam.platform",
@@ -323,7 +334,12 @@ TEST_F(Platform2JsimTest, CheckWarnsAboutEntriesThatWriteTheSameFiles) {
     Options o;
     o.mode = Mode::check;
     o.check_files = {in / "twice.jsim"};
-    EXPECT_EQ(run_mode(o), 0) << log_text();
+    EXPECT_EQ(run_mode(o), 1) << log_text();
+    EXPECT_TRUE(logged("error: " + (in / "twice.jsim").string() +
+                       ":4: [0].plugin_list[1]: output file \"rgb-t0000-c0000.img\" of "
+                       "plugin_list[1] (instrument \"Cam\" focal plane \"RGB\") is also "
+                       "written by plugin_list[0]"))
+        << log_text();
     EXPECT_TRUE(logged("warning: ")) << log_text();
     EXPECT_TRUE(
         logged("plugin_list[1] (BasicPlatform) has the same output_folder '' and "
@@ -333,7 +349,7 @@ TEST_F(Platform2JsimTest, CheckWarnsAboutEntriesThatWriteTheSameFiles) {
                                " names none): parametric, aerosol optical depth 0.1 at 0.55 "
                                "um, gases (water 2.924 cm, ozone 0.332 atm-cm), multiple "
                                "scattering over ground albedo 0.2\n"
-                               "check: 0 errors, 1 warning in 6 files\n");
+                               "check: 2 errors, 1 warning in 6 files\n");
 }
 
 TEST_F(Platform2JsimTest, CheckReadsScenesAndAtmospheres) {

@@ -384,7 +384,7 @@ TEST(Schedule, SynchronousAndTriggeredClocks) {
 TEST(Schedule, RollingLineTimeIsNoneForGlobalShuttersAndTdi) {
     model::FocalPlane plane;
     ClockedFocalPlane source;
-    source.focal_plane = &plane;  // never null in a loaded schedule
+    source.focal_plane = &plane;                            // never null in a loaded schedule
     EXPECT_EQ(source.rolling_line_time_s(), std::nullopt);  // global shutter
     plane.detector_array.rolling_line_time_s = 2e-5;
     EXPECT_EQ(source.rolling_line_time_s(), 2e-5);
@@ -484,7 +484,10 @@ TEST(Schedule, TaskEndingBeforeItStartsIsAnError) {
 TEST(Schedule, MissingPlatformIsAnError) {
     Diagnostics diagnostics;
     const std::string error = load_error("missing_platform.jsim", diagnostics);
-    EXPECT_EQ(error, kData + "/nowhere.platform: cannot open file: No such file or directory");
+    EXPECT_EQ(error, kData +
+                         "/missing_platform.jsim:5: [0].plugin_list[0].inputs.platform_filename: "
+                         "platform file does not exist: " +
+                         kData + "/nowhere.platform");
     EXPECT_TRUE(diagnostics.has_errors());
 }
 

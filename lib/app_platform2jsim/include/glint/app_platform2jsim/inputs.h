@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // Loading a simulation and every file it references, collecting every problem: the shared
-// first stage of all glint-platform2jsim modes. `.platform` and `.tasks` files are read
-// with their readers; scenes and atmospheres are read with theirs by --check (LoadDepth::
-// contents) and checked for existence otherwise; motion files and the files a platform
-// names (PSF and active-area images, trigger files, jitter PSD tables) are checked for
-// existence only. A file referenced several times is read once.
+// first stage of all glint-platform2jsim modes. --check reads a simulation with glint-render's
+// own loader (inputs::load, going on past errors) and builds its schedule as a render does,
+// so it refuses what a render refuses; a file checked alone is read with its reader. The
+// conversions read `.platform` and `.tasks` files with their readers and check that the other
+// files exist. A file referenced several times is read once.
 #pragma once
 
 #include <cstddef>
@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "glint/core/diagnostics.h"
+#include "glint/core/log.h"
 #include "glint/dirsig/read_options.h"
 #include "glint/model/atmosphere.h"
 #include "glint/model/motion.h"
@@ -31,9 +32,9 @@ struct LoadedInputs {
     /// Platforms and task lists that were read, by resolved path.
     std::map<std::filesystem::path, model::Platform> platforms;
     std::map<std::filesystem::path, model::TaskList> task_lists;
-    /// Motion files that were read (LoadDepth::contents, as a render reads them).
+    /// Motion files that were read (--check, as a render reads them).
     std::map<std::filesystem::path, model::PlatformMotion> motions;
-    /// Scenes and atmospheres that were read (LoadDepth::contents), by resolved path.
+    /// Scenes and atmospheres that were read (--check), by resolved path.
     std::map<std::filesystem::path, model::Scene> scenes;
     std::map<std::filesystem::path, model::Atmosphere> atmospheres;
     /// One line per scene or atmosphere read, or default atmosphere used, in reading order:
@@ -51,7 +52,6 @@ struct LoadedInputs {
 enum class LoadDepth {
     platforms,   ///< the platforms only, not the files they name (what --dump-platform needs)
     everything,  ///< platforms, task lists and the existence of every other file
-    contents,    ///< everything, and scenes and atmospheres read with their readers (--check)
 };
 
 /// Reads a `.sim` or `.jsim` into inputs.simulations (appended).
@@ -74,16 +74,18 @@ const model::Platform* load_platform_file(const std::filesystem::path& file, Loa
                                           bool check_references = true);
 
 /// What --check adds about the truth collections of the platforms of each simulation read
-/// with its scenes (LoadDepth::contents): the errors and warnings glint-render gives for
+/// with its scenes: the errors and warnings glint-render gives for
 /// their Abundance targets (a material the scene does not have, a tag no instance carries).
 void check_truth_targets(LoadedInputs& inputs);
 
 /// What --check does with one file, by extension (any case): alone, as a render reads it —
 /// `.platform` (and the files it names), `.tasks`, `.ppd`/`.motion` (and their PSD tables),
 /// `.scene` (with its `.mat`, `.glist`s, OBJ and curve files), `.atm`, `.mat` (with its curve
-/// files); anything else as a simulation with load_references(contents).
+/// files); anything else as a simulation, read by inputs::load as glint-render reads it (going
+/// on past errors to report them all) and given the schedule's own checks (Schedule::build).
+/// `log` gets the debug line of every file opened.
 void check_file(const std::filesystem::path& file, LoadedInputs& inputs,
-                const dirsig::ReadOptions& options);
+                const dirsig::ReadOptions& options, const Log& log = {});
 
 /// Warnings for BasicPlatform entries of `simulation` that share output folder and prefix
 /// (their outputs may overwrite each other).

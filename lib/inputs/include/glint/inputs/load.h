@@ -37,6 +37,12 @@ struct LoadOptions {
     /// Set: this atmosphere replaces the simulation's, whose BasicAtmosphere file is then
     /// not read (glint-render --atmosphere).
     std::optional<AtmosphereOverride> atmosphere_override;
+    /// True (glint-platform2jsim --check): read every file even after errors, and return what
+    /// was read instead of throwing for its errors (the caller reads `diagnostics`). Errors in
+    /// the simulation file itself still throw: without it nothing else can be found.
+    bool keep_going = false;
+    /// Told what each scene and atmosphere file held (glint-platform2jsim --check).
+    ReadObserver* observer = nullptr;
 };
 
 /// Reads `simulation_file` (a `.jsim` holding one simulation, or a `.sim`) and everything it

@@ -101,10 +101,31 @@ void merge_scene(model::Scene& scene, model::Scene part, Diagnostics& diagnostic
 /// applied).
 void check_scene_offset(const model::SceneEntry& entry, Diagnostics& diagnostics);
 
+/// Told what a simulation's scene and atmosphere files held as they are read (glint-platform2jsim
+/// --check reports it file by file).
+class ReadObserver {
+public:
+    virtual ~ReadObserver() = default;
+    /// A scene_list file that exists was read: the errors found in it (and in the files it
+    /// names) and the scene it holds (partial when `errors` > 0).
+    virtual void scene_read(const std::filesystem::path& file, std::size_t errors,
+                            const model::Scene& scene) = 0;
+    /// The atmosphere of `simulation`: its file (nullptr: the default, no BasicAtmosphere
+    /// file) and the errors found in it. Not called when the file does not exist.
+    virtual void atmosphere_read(const model::Simulation& simulation, const model::FileRef* file,
+                                 std::size_t errors, const model::Atmosphere& atmosphere) = 0;
+};
+
+/// Whether `ref` names an existing file; otherwise an error at `ref.where`, "<role> file does
+/// not exist: PATH" (or "<role> path is a folder ..."), unless an error is reported there
+/// already (the reader of a `.sim` checks its references itself). `role`: "scene", "motion"...
+bool existing_file(const model::FileRef& ref, const std::string& role, Diagnostics& diagnostics);
+
 /// Reads every scene_list entry of `simulation` with read_scene and merges them in order
 /// (merge_scene). A file that does not exist or is a folder is an error at its entry. An
-/// empty scene_list gives an empty scene (no origin, no objects).
+/// empty scene_list gives an empty scene (no origin, no objects). `observer`, when given, is
+/// told each file read.
 model::Scene read_simulation_scene(const model::Simulation& simulation, const ReadOptions& options,
-                                   Diagnostics& diagnostics);
+                                   Diagnostics& diagnostics, ReadObserver* observer = nullptr);
 
 }  // namespace glint::inputs
