@@ -52,7 +52,7 @@ void check_attachment_references(const model::Attachment& attachment, LoadedInpu
 }
 
 void check_mount_references(const model::Mount& mount, LoadedInputs& inputs) {
-    for (const model::JitterAxis& axis : mount.deviates.axes) {
+    for (const model::JitterSpec& axis : mount.deviates.axes) {
         if (!axis.psd_file.empty()) check_exists(axis.psd_file, "jitter PSD", inputs);
     }
     for (const model::Attachment& a : mount.attachments) check_attachment_references(a, inputs);

@@ -63,11 +63,11 @@ Json deviates_json(const RotationDeviates& deviates) {
     static constexpr const char* kAxisNames[3] = {"x", "y", "z"};
     Json axes = Json::array();
     for (std::size_t i = 0; i < deviates.axes.size(); ++i) {
-        const JitterAxis& a = deviates.axes[i];
+        const JitterSpec& a = deviates.axes[i];
         axes.push_back(Json{{"axis", kAxisNames[i]},
                             {"kind", name_of(a.kind)},
-                            {"mean_rad", a.mean_rad},
-                            {"stddev_rad", a.stddev_rad},
+                            {"mean_rad", a.mean},
+                            {"stddev_rad", a.stddev},
                             {"psd_file", file_ref(a.psd_file)}});
     }
     return Json{{"any", deviates.any()}, {"axes", std::move(axes)}};

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "glint/core/text.h"
+#include "jitter_reader.h"
 #include "platform_tree.h"
 
 namespace glint::dirsig::detail {
@@ -233,57 +234,6 @@ model::TrackingTarget read_tracking(const io::XmlNode& source, Diagnostics& diag
     return target;
 }
 
-/// One axis of <rotationdeviates>.
-model::JitterAxis read_jitter_axis(const io::XmlNode& node, double factor,
-                                   const ReadContext& context, Diagnostics& diagnostics) {
-    model::JitterAxis axis;
-    const std::optional<std::string> raw = node.attribute("type");
-    const std::optional<io::XmlNode> file =
-        node.child("psdfile") ? node.child("psdfile") : node.child("filename");
-    std::string type;
-    if (raw) {
-        type = lower_trimmed(*raw);
-    } else if (file) {
-        type = "psd";
-    } else if (!node.children().empty()) {
-        type = "normal";
-    } else {
-        type = "none";
-    }
-    if (type == "normal" || type == "gaussian") {
-        axis.kind = model::JitterAxis::Kind::normal;
-        axis.mean_rad = node.optional_double("mean", diagnostics).value_or(0.0) * factor;
-        const std::optional<double> stddev =
-            read_either(node, "stddev", "sigma", diagnostics, io::NumberRule::non_negative());
-        if (stddev) {
-            axis.stddev_rad = *stddev * factor;
-        } else if (!node.child("stddev") && !node.child("sigma")) {
-            diagnostics.error(node.where(),
-                              "missing required element <stddev> (a normal jitter needs a "
-                              "standard deviation)");
-        }
-    } else if (type == "psd") {
-        axis.kind = model::JitterAxis::Kind::psd;
-        if (node.child("psdfile") && node.child("filename")) {
-            diagnostics.error(node.child("filename")->where(),
-                              "both <psdfile> and <filename> given, expected only one of the two");
-        }
-        if (!file || file->text().empty()) {
-            diagnostics.error(node.where(),
-                              "missing required element <psdfile> (a psd jitter needs a file of "
-                              "frequency, PSD pairs)");
-        } else {
-            axis.psd_file = context.options.paths.resolve(file->text(), context.base_dir,
-                                                          file->where(), diagnostics);
-        }
-    } else if (type != "none") {
-        diagnostics.error(node.where_attribute("type"),
-                          "unknown jitter type \"" + *raw + "\", expected normal, psd or none");
-    }
-    node.warn_unknown_children({"mean", "stddev", "sigma", "psdfile", "filename"}, diagnostics);
-    return axis;
-}
-
 }  // namespace
 
 model::RotationDeviates read_rotation_deviates(const io::XmlNode& node, const ReadContext& context,
@@ -305,7 +255,8 @@ model::RotationDeviates read_rotation_deviates(const io::XmlNode& node, const Re
             continue;
         }
         given_by[index] = child.name();
-        deviates.axes[index] = read_jitter_axis(child, factor, context, diagnostics);
+        deviates.axes[index] = read_jitter_axis(child, JitterQuantity::angle, factor,
+                                                context.options, context.base_dir, diagnostics);
     }
     node.warn_unknown_children({"xrotation", "yrotation", "zrotation", "alongtrack", "acrosstrack"},
                                diagnostics);

@@ -15,6 +15,7 @@
 #include "glint/core/text.h"
 #include "glint/core/units.h"
 #include "glint/dirsig/readers.h"
+#include "motion_parts.h"
 #include "platform_tree.h"
 
 namespace glint::dirsig {
@@ -38,14 +39,7 @@ std::string lower_trimmed(std::string_view text) {
 std::string number_text(double value) { return format_shortest(value); }
 
 double angular_unit_factor(const io::XmlNode& node, Diagnostics& diagnostics) {
-    const std::optional<std::string> raw = node.attribute("angularunits");
-    if (!raw) return deg_to_rad(1.0);
-    const std::string units = lower_trimmed(*raw);
-    if (units == "degrees" || units == "degree" || units == "deg") return deg_to_rad(1.0);
-    if (units == "radians" || units == "radian" || units == "rad") return 1.0;
-    diagnostics.error(node.where_attribute("angularunits"),
-                      "unknown angularunits \"" + *raw + "\", expected degrees or radians");
-    return deg_to_rad(1.0);
+    return angle_unit_factor(node, "angularunits", deg_to_rad(1.0), diagnostics);
 }
 
 std::string read_rotation_order(const io::XmlNode& node, Diagnostics& diagnostics) {

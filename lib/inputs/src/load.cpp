@@ -44,8 +44,8 @@ void read_mount_psd(std::vector<model::Attachment>& attachments, const ReadOptio
                     Diagnostics& diagnostics) {
     for (model::Attachment& attachment : attachments) {
         for (model::Mount& mount : attachment.mounts) {
-            for (model::JitterAxis& axis : mount.deviates.axes) {
-                if (axis.kind == model::JitterAxis::Kind::psd && !axis.psd) {
+            for (model::JitterSpec& axis : mount.deviates.axes) {
+                if (axis.kind == model::JitterSpec::Kind::psd && !axis.psd) {
                     axis.psd = read_psd(axis.psd_file, options, diagnostics);
                 }
             }

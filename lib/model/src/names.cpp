@@ -124,13 +124,13 @@ const char* name_of(ClockType type) {
     return "independent";
 }
 
-const char* name_of(JitterAxis::Kind kind) {
+const char* name_of(JitterSpec::Kind kind) {
     switch (kind) {
-        case JitterAxis::Kind::none:
+        case JitterSpec::Kind::none:
             return "none";
-        case JitterAxis::Kind::normal:
+        case JitterSpec::Kind::normal:
             return "normal";
-        case JitterAxis::Kind::psd:
+        case JitterSpec::Kind::psd:
             return "psd";
     }
     return "none";

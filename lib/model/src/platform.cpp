@@ -38,8 +38,8 @@ bool AffineTransform::is_identity() const {
 }
 
 bool RotationDeviates::any() const {
-    for (const JitterAxis& axis : axes) {
-        if (axis.kind != JitterAxis::Kind::none) return true;
+    for (const JitterSpec& axis : axes) {
+        if (axis.kind != JitterSpec::Kind::none) return true;
     }
     return false;
 }

@@ -293,27 +293,6 @@ JitterModel jitter_model(const model::JitterSpec& spec) {
     return m;
 }
 
-JitterModel jitter_model(const model::JitterAxis& axis, const ErrorContext& where) {
-    JitterModel m;
-    m.mean = axis.mean_rad;
-    m.stddev = axis.stddev_rad;
-    m.where = where;
-    switch (axis.kind) {
-        case model::JitterAxis::Kind::none:
-            m.kind = JitterModel::Kind::none;
-            break;
-        case model::JitterAxis::Kind::normal:
-            m.kind = JitterModel::Kind::normal;
-            break;
-        case model::JitterAxis::Kind::psd:
-            m.kind = JitterModel::Kind::psd;
-            m.psd = &psd_table(axis.psd, axis.psd_file,
-                               axis.psd_file.where.file.empty() ? where : axis.psd_file.where);
-            break;
-    }
-    return m;
-}
-
 namespace {
 
 std::vector<std::uint64_t> with_ids(std::vector<std::uint64_t> ids, std::uint64_t domain,
@@ -361,7 +340,7 @@ MountJitterSampler::MountJitterSampler(const model::RotationDeviates& deviates, 
                                        const std::vector<std::uint64_t>& stream_ids, double t0_s,
                                        double t1_s, const JitterSynthesisOptions& options) {
     for (std::size_t i = 0; i < 3; ++i) {
-        m_axes[i] = JitterSeries(jitter_model(deviates.axes[i], deviates.where), seed,
+        m_axes[i] = JitterSeries(jitter_model(deviates.axes[i]), seed,
                                  with_ids(stream_ids, kJitterDomainMount, i), t0_s, t1_s, options);
     }
 }

@@ -687,8 +687,8 @@ TEST(MotionReaderErrors, BadJitter) {
     expect_diagnostic(read, "unknown angularunits \"furlongs\", expected degrees or radians", 4,
                       oj + "@angularunits");
     expect_diagnostic(read,
-                      "unknown jitter type \"brownian\", expected correlated, uncorrelated or "
-                      "none",
+                      "unknown jitter type \"brownian\", expected correlated (psd), uncorrelated "
+                      "(normal) or none",
                       5, oj + "/xaxis@type");
     expect_diagnostic(read, "missing required element <stddev>", 6, oj + "/yaxis");
     expect_diagnostic(read, "missing required element <psd> (a correlated jitter needs", 7,

@@ -50,15 +50,15 @@ TEST(MountReader, MountsFixtureFieldByField) {
     // Jitter: along-track = x (normal), across-track = y (psd), z none.
     ASSERT_TRUE(pointer.deviates.any());
     const auto& x = pointer.deviates.axes[0];
-    EXPECT_EQ(x.kind, model::JitterAxis::Kind::normal);
-    EXPECT_EQ(x.mean_rad, 0.0);
-    EXPECT_DOUBLE_EQ(x.stddev_rad, 0.01 * kDeg);
+    EXPECT_EQ(x.kind, model::JitterSpec::Kind::normal);
+    EXPECT_EQ(x.mean, 0.0);
+    EXPECT_DOUBLE_EQ(x.stddev, 0.01 * kDeg);
     const auto& y = pointer.deviates.axes[1];
-    EXPECT_EQ(y.kind, model::JitterAxis::Kind::psd);
+    EXPECT_EQ(y.kind, model::JitterSpec::Kind::psd);
     EXPECT_EQ(y.psd_file.text, "jitter_psd.txt");
     EXPECT_EQ(y.psd_file.resolved, fixture_dir() / "jitter_psd.txt");
     EXPECT_TRUE(std::filesystem::exists(y.psd_file.resolved));
-    EXPECT_EQ(pointer.deviates.axes[2].kind, model::JitterAxis::Kind::none);
+    EXPECT_EQ(pointer.deviates.axes[2].kind, model::JitterSpec::Kind::none);
 
     // Tabulated in radians with @period.
     const model::Mount& table = pointer.attachments.at(0).mounts.at(0);
@@ -88,11 +88,11 @@ TEST(MountReader, MountsFixtureFieldByField) {
     EXPECT_EQ(scanner.whisk->rate_hz, 10.0);
     EXPECT_DOUBLE_EQ(scanner.whisk->phase_rad, std::numbers::pi / 2);
     EXPECT_FALSE(scanner.whisk->sinusoidal);
-    EXPECT_EQ(scanner.deviates.axes[0].kind, model::JitterAxis::Kind::normal);
-    EXPECT_DOUBLE_EQ(scanner.deviates.axes[0].mean_rad, 0.001);
-    EXPECT_DOUBLE_EQ(scanner.deviates.axes[0].stddev_rad, 0.0002);  // <sigma>
-    EXPECT_EQ(scanner.deviates.axes[1].kind, model::JitterAxis::Kind::none);
-    EXPECT_EQ(scanner.deviates.axes[2].kind, model::JitterAxis::Kind::none);
+    EXPECT_EQ(scanner.deviates.axes[0].kind, model::JitterSpec::Kind::normal);
+    EXPECT_DOUBLE_EQ(scanner.deviates.axes[0].mean, 0.001);
+    EXPECT_DOUBLE_EQ(scanner.deviates.axes[0].stddev, 0.0002);  // <sigma>
+    EXPECT_EQ(scanner.deviates.axes[1].kind, model::JitterSpec::Kind::none);
+    EXPECT_EQ(scanner.deviates.axes[2].kind, model::JitterSpec::Kind::none);
     const model::Mount& nodder = second.mounts[2];
     ASSERT_TRUE(nodder.whisk);
     EXPECT_EQ(nodder.whisk->axis, model::WhiskScan::Axis::along_track);
@@ -249,12 +249,42 @@ TEST(MountReader, RotationDeviatesErrors) {
     const Read read = read_text(dir, text);
     const std::string rd = std::string(kMountPath) + "/rotationdeviates";
     expect_diagnostic(read, "unknown angularunits \"arcsec\"", 6, rd + "@angularunits");
-    expect_diagnostic(read, "unknown jitter type \"uniform\", expected normal, psd or none", 7,
-                      rd + "/xrotation@type");
+    expect_diagnostic(
+        read,
+        "unknown jitter type \"uniform\", expected correlated (psd), uncorrelated (normal) or none",
+        7, rd + "/xrotation@type");
     expect_diagnostic(read, "missing required element <stddev>", 8, rd + "/yrotation");
     expect_diagnostic(read, "<yrotation> and <acrosstrack> both give the jitter about y", 9,
                       rd + "/acrosstrack");
-    expect_diagnostic(read, "missing required element <psdfile>", 10, rd + "/zrotation");
+    expect_diagnostic(
+        read,
+        "missing required element <psd> (a correlated jitter needs a <psd> table or a <psdfile>)",
+        10, rd + "/zrotation");
+}
+
+// A mount axis is read by the same reader as a motion file's jitter axis: an inline <psd>
+// table, and the axis' own angularunits over the element's.
+TEST(MountReader, RotationDeviatesTakeTheMotionJitterVocabulary) {
+    TempDir dir;
+    const Read read = read_text(
+        dir, with_mount("<mount name=\"M\"><rotationdeviates angularunits=\"radians\">\n"
+                        "<xrotation type=\"correlated\" angularunits=\"degrees\">\n"
+                        "<psd magnitudeunits=\"degrees\"><entry><frequency>0</frequency>"
+                        "<magnitude>2</magnitude></entry><entry><frequency>5</frequency>"
+                        "<magnitude>1</magnitude></entry></psd></xrotation>\n"
+                        "<yrotation type=\"uncorrelated\"><stddev>0.5</stddev></yrotation>\n"
+                        "</rotationdeviates></mount>"));
+    ASSERT_FALSE(read.diagnostics.has_errors()) << dump(read.diagnostics);
+    const auto& d = read.platform.attachments.at(0).mounts.at(0).deviates;
+    EXPECT_EQ(d.axes[0].kind, model::JitterSpec::Kind::psd);
+    ASSERT_TRUE(d.axes[0].psd);
+    EXPECT_EQ(d.axes[0].psd->frequency_hz, (std::vector<double>{0.0, 5.0}));
+    // 2 deg²/Hz and 1 deg²/Hz in rad²/Hz.
+    EXPECT_DOUBLE_EQ(d.axes[0].psd->psd[0], 2.0 * kDeg * kDeg);
+    EXPECT_DOUBLE_EQ(d.axes[0].psd->psd[1], 1.0 * kDeg * kDeg);
+    EXPECT_EQ(d.axes[0].where.element, std::string(kMountPath) + "/rotationdeviates/xrotation");
+    EXPECT_EQ(d.axes[1].kind, model::JitterSpec::Kind::normal);
+    EXPECT_EQ(d.axes[1].stddev, 0.5) << "the element's radians";
 }
 
 TEST(MountReader, RotationDeviatesInferredKindsAndVariables) {
@@ -266,11 +296,11 @@ TEST(MountReader, RotationDeviatesInferredKindsAndVariables) {
                         "<zrotation/></rotationdeviates></mount>"));
     ASSERT_FALSE(read.diagnostics.has_errors()) << dump(read.diagnostics);
     const auto& d = read.platform.attachments.at(0).mounts.at(0).deviates;
-    EXPECT_EQ(d.axes[0].kind, model::JitterAxis::Kind::normal);
-    EXPECT_EQ(d.axes[0].stddev_rad, 0.5);
-    EXPECT_EQ(d.axes[1].kind, model::JitterAxis::Kind::psd);
+    EXPECT_EQ(d.axes[0].kind, model::JitterSpec::Kind::normal);
+    EXPECT_EQ(d.axes[0].stddev, 0.5);
+    EXPECT_EQ(d.axes[1].kind, model::JitterSpec::Kind::psd);
     EXPECT_EQ(d.axes[1].psd_file.resolved, std::filesystem::path("/opt/glint-test/psd.txt"));
-    EXPECT_EQ(d.axes[2].kind, model::JitterAxis::Kind::none);
+    EXPECT_EQ(d.axes[2].kind, model::JitterSpec::Kind::none);
     EXPECT_EQ(d.where.element, std::string(kMountPath) + "/rotationdeviates");
 
     const Read undefined = read_text(

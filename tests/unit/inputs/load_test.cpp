@@ -143,8 +143,8 @@ TEST(InputsLoad, PsdFilesAreReadIntoTheModel) {
     bool found = false;
     for (const model::InstrumentPath& path : model::list_instruments(platform)) {
         for (const model::Mount* mount : path.mounts) {
-            for (const model::JitterAxis& axis : mount->deviates.axes) {
-                if (axis.kind != model::JitterAxis::Kind::psd) continue;
+            for (const model::JitterSpec& axis : mount->deviates.axes) {
+                if (axis.kind != model::JitterSpec::Kind::psd) continue;
                 ASSERT_TRUE(axis.psd.has_value());
                 EXPECT_GE(axis.psd->frequency_hz.size(), 2u);
                 found = true;

@@ -35,10 +35,10 @@ TEST(AffineTransform, AnyPartMakesItNonIdentity) {
 TEST(RotationDeviates, AnyAxisThatIsNotNone) {
     RotationDeviates d;
     EXPECT_FALSE(d.any());
-    d.axes[2].kind = JitterAxis::Kind::psd;
+    d.axes[2].kind = JitterSpec::Kind::psd;
     EXPECT_TRUE(d.any());
-    d.axes[2].kind = JitterAxis::Kind::none;
-    d.axes[0].kind = JitterAxis::Kind::normal;
+    d.axes[2].kind = JitterSpec::Kind::none;
+    d.axes[0].kind = JitterSpec::Kind::normal;
     EXPECT_TRUE(d.any());
 }
 

@@ -437,9 +437,9 @@ TEST(JitterSamplers, MountUsesItsPsdTable) {
         out << "# across-track\n0.5 1e-8\n50 1e-10\n";
     }
     model::RotationDeviates d;
-    d.axes[0].kind = model::JitterAxis::Kind::normal;
-    d.axes[0].stddev_rad = 1e-4;
-    d.axes[1].kind = model::JitterAxis::Kind::psd;
+    d.axes[0].kind = model::JitterSpec::Kind::normal;
+    d.axes[0].stddev = 1e-4;
+    d.axes[1].kind = model::JitterSpec::Kind::psd;
     d.axes[1].psd_file.text = "across.psd";
     d.axes[1].psd_file.resolved = path;
     // The input loader reads the file the axis names; the sampler takes the table.
@@ -461,13 +461,14 @@ TEST(JitterSamplers, MountUsesItsPsdTable) {
               "frequencies must be strictly increasing");
     // A file named but never read (the loader was bypassed), and no file at all.
     d.axes[1].psd.reset();
-    d.where = ErrorContext{"a.platform", 40, "mount[M]/rotationdeviates"};
+    d.axes[1].where = ErrorContext{"a.platform", 41, "mount[M]/rotationdeviates/yrotation"};
     EXPECT_EQ(error_text([&] { MountJitterSampler(d, 3, {9}, 0.0, 2.0); }),
-              "a.platform:40: mount[M]/rotationdeviates: psd jitter: the PSD file across.psd was "
-              "not read (inputs::load reads the PSD files a platform or motion names)");
+              "a.platform:41: mount[M]/rotationdeviates/yrotation: psd jitter: the PSD file "
+              "across.psd was not read (inputs::load reads the PSD files a platform or motion "
+              "names)");
     d.axes[1].psd_file = {};
     EXPECT_EQ(error_text([&] { MountJitterSampler(d, 3, {9}, 0.0, 2.0); }),
-              "a.platform:40: mount[M]/rotationdeviates: psd jitter names no PSD file");
+              "a.platform:41: mount[M]/rotationdeviates/yrotation: psd jitter names no PSD file");
 }
 
 }  // namespace

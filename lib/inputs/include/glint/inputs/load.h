@@ -50,7 +50,7 @@ struct LoadOptions {
 /// read_simulation_scene); its atmosphere (read_simulation_atmosphere); then each BasicPlatform
 /// entry's platform, motion and tasks files (a file two entries name is parsed once and its
 /// model shared, so its problems are reported once); then the PSD files named by jitter (filling
-/// JitterSpec::psd and JitterAxis::psd) and the trigger files of external clocks (filling
+/// JitterSpec::psd and JitterSpec::psd) and the trigger files of external clocks (filling
 /// Clock::trigger_times_s). Every problem goes to `diagnostics` (file:line); a BasicPlatform
 /// entry without one of its three files is an error at the entry. Throws glint::Error (input)
 /// when diagnostics has errors after the simulation file, and again after everything.
@@ -72,8 +72,8 @@ std::optional<model::PlatformInputs> read_platform_entry(const model::Simulation
 model::SimulationInputs load_logged(const std::filesystem::path& simulation_file,
                                     const LoadOptions& options, const Log& log);
 
-/// Reads the PSD files that `platform`'s mount jitter names (JitterAxis::psd_file) into
-/// JitterAxis::psd, each through `options`.
+/// Reads the PSD files that `platform`'s mount jitter names (JitterSpec::psd_file) into
+/// JitterSpec::psd, each through `options`.
 void read_psd_tables(model::Platform& platform, const dirsig::ReadOptions& options,
                      Diagnostics& diagnostics);
 /// Reads the PSD files that `motion`'s platform jitter names (JitterSpec::psd_file) into

@@ -2,7 +2,7 @@
 // A simulation with every file it names already read: what the input loader (glint/inputs)
 // returns and the layers below take — the schedule, the pose services and the renderer read
 // no file themselves. PSD jitter tables and trigger times are filled in (JitterSpec::psd,
-// JitterAxis::psd, Clock::trigger_times_s).
+// JitterSpec::psd, Clock::trigger_times_s).
 #pragma once
 
 #include <cstddef>

@@ -4,7 +4,7 @@
 // (docs/references.md): each degree of freedom either uncorrelated (normal deviates with a
 // mean and σ, drawn per sample time) or correlated, synthesised from a user power spectral
 // density. Platform jitter has six degrees of freedom (location x/y/z in m, orientation x/y/z
-// in rad); mount jitter (platform.h, JitterAxis) two or three, in rad.
+// in rad); mount jitter (platform.h, JitterSpec) two or three, in rad.
 #pragma once
 
 #include <array>

@@ -21,7 +21,7 @@ const char* name_of(ProcessingSchedule schedule);
 const char* name_of(ChannelShape shape);
 const char* name_of(ChannelPatternKind kind);
 const char* name_of(ClockType type);
-const char* name_of(JitterAxis::Kind kind);
+const char* name_of(JitterSpec::Kind kind);
 const char* name_of(WhiskScan::Axis axis);
 
 }  // namespace glint::model

@@ -68,19 +68,10 @@ struct TrackingTarget {
     std::optional<std::array<double, 3>> point_m;  ///< a fixed scene point instead of a name
 };
 
-/// Pointing jitter of one rotation axis.
-struct JitterAxis {
-    enum class Kind { none, normal, psd };
-    Kind kind = Kind::none;
-    double mean_rad = 0.0;
-    double stddev_rad = 0.0;      ///< normal: uncorrelated samples
-    FileRef psd_file;             ///< psd: frequency (Hz), PSD (rad²/Hz) table
-    std::optional<PsdTable> psd;  ///< psd_file's table, as the input loader (glint/inputs) read it
-};
-
-/// `<rotationdeviates>`: jitter about x, y, z (empty element = none).
+/// `<rotationdeviates>`: jitter about x, y, z (empty element = none), each axis a JitterSpec
+/// in radians (mean, stddev; a PSD in rad²/Hz).
 struct RotationDeviates {
-    std::array<JitterAxis, 3> axes;
+    std::array<JitterSpec, 3> axes;
     ErrorContext where;
     bool any() const;
 };

@@ -135,10 +135,8 @@ private:
 /// Converts a model::JitterSpec into a JitterModel, pointing at its PSD table (given inline, or
 /// read from its file by the input loader). Throws glint::Error (input) for a psd spec
 /// without a table.
+/// without a table. Platform jitter axes and mount jitter axes alike.
 JitterModel jitter_model(const model::JitterSpec& spec);
-/// The same for a mount axis (model::JitterAxis); `where` is the axis' `<rotationdeviates>`
-/// element (used when the file reference has no location).
-JitterModel jitter_model(const model::JitterAxis& axis, const ErrorContext& where);
 
 /// Samples six-degree-of-freedom platform jitter.
 class PlatformJitterSampler {

@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
-// The platform jitter elements of both motion file kinds (`locationjitter`,
-// `orientationjitter`): per axis uncorrelated (mean, stddev) or correlated (an inline `<psd>`
-// entry table or a PSD file), into model::PlatformJitter.
+// Jitter, read one way wherever DIRSIG files give it (jitter_reader.h): the axes of the
+// platform jitter elements of both motion file kinds (`locationjitter`, `orientationjitter`)
+// and of a mount's `<rotationdeviates>`, each uncorrelated (mean, stddev) or correlated (an
+// inline `<psd>` entry table or a PSD file), into model::JitterSpec.
+#include "jitter_reader.h"
+
 #include <cmath>
 #include <string>
 #include <string_view>
@@ -64,9 +67,13 @@ void read_psd_entries(const io::XmlNode& psd, double magnitude_factor, double ph
     }
 }
 
-/// One axis (`xaxis`, `yaxis`, `zaxis`) of a jitter element.
-model::JitterSpec read_jitter_spec(const io::XmlNode& axis, bool location, double parent_factor,
-                                   const MotionReadContext& context, Diagnostics& diagnostics) {
+}  // namespace
+
+model::JitterSpec read_jitter_axis(const io::XmlNode& axis, JitterQuantity quantity,
+                                   double parent_factor, const ReadOptions& options,
+                                   const std::filesystem::path& base_dir,
+                                   Diagnostics& diagnostics) {
+    const bool location = quantity == JitterQuantity::length;
     model::JitterSpec spec;
     spec.where = axis.where();
     const char* const unit_attribute = location ? "spatialunits" : "angularunits";
@@ -87,9 +94,9 @@ model::JitterSpec read_jitter_spec(const io::XmlNode& axis, bool location, doubl
         } else if (value == "none") {
             type = "none";
         } else {
-            diagnostics.error(
-                axis.where_attribute("type"),
-                "unknown jitter type \"" + *raw + "\", expected correlated, uncorrelated or none");
+            diagnostics.error(axis.where_attribute("type"),
+                              "unknown jitter type \"" + *raw +
+                                  "\", expected correlated (psd), uncorrelated (normal) or none");
             return spec;
         }
     } else if (psd || psd_file || file_name) {
@@ -109,8 +116,8 @@ model::JitterSpec read_jitter_spec(const io::XmlNode& axis, bool location, doubl
             spec.stddev = *stddev * factor;
         } else if (!axis.child("stddev") && !axis.child("sigma")) {
             diagnostics.error(axis.where(),
-                              "missing required element <stddev> (an uncorrelated jitter needs "
-                              "a standard deviation)");
+                              "missing required element <stddev> (an uncorrelated (normal) "
+                              "jitter needs a standard deviation)");
         }
     } else if (type == "psd") {
         spec.kind = model::JitterSpec::Kind::psd;
@@ -143,8 +150,8 @@ model::JitterSpec read_jitter_spec(const io::XmlNode& axis, bool location, doubl
             if (file->text().empty()) {
                 diagnostics.error(file->where(), "expected a file path, got an empty one");
             } else {
-                spec.psd_file = context.options.paths.resolve(file->text(), context.base_dir,
-                                                              file->where(), diagnostics);
+                spec.psd_file =
+                    options.paths.resolve(file->text(), base_dir, file->where(), diagnostics);
             }
         } else {
             diagnostics.error(axis.where(),
@@ -156,6 +163,8 @@ model::JitterSpec read_jitter_spec(const io::XmlNode& axis, bool location, doubl
                                diagnostics);
     return spec;
 }
+
+namespace {
 
 /// The axes of one jitter element into `axes`.
 void read_jitter_axes(const io::XmlNode& node, bool location,
@@ -173,7 +182,9 @@ void read_jitter_axes(const io::XmlNode& node, bool location,
                                                     std::to_string(given[0].line()) +
                                                     "), expected one element per axis");
         }
-        axes[i] = read_jitter_spec(given[0], location, factor, context, diagnostics);
+        axes[i] =
+            read_jitter_axis(given[0], location ? JitterQuantity::length : JitterQuantity::angle,
+                             factor, context.options, context.base_dir, diagnostics);
     }
     node.warn_unknown_children({"xaxis", "yaxis", "zaxis"}, diagnostics);
 }
