@@ -16,6 +16,7 @@
 #include "glint/atmosphere/solar.h"
 #include "glint/core/context.h"
 #include "glint/core/spectral.h"
+#include "glint/inputs/data_tables.h"
 #include "glint/inputs/load.h"
 #include "glint/motion/frames.h"
 #include "glint/motion/scene_instances.h"
@@ -110,9 +111,10 @@ int main(int argc, char** argv) try {
     // 3. Spectral grid, materials, atmosphere, sun, and this capture's environment.
     const glint::SpectralGrid grid = glint::SpectralGrid::regular(0.40, 0.90, 0.01);
     const glint::radiometry::MaterialTable materials(sim.scene.materials, grid, log);
-    const auto atmosphere = glint::atmosphere::load_atmosphere_model(sim.atmosphere, data_dir);
-    const auto solar_file = data_dir / glint::atmosphere::SolarSpectrum::kAstmRelativePath;
-    const auto sun = glint::atmosphere::SolarSpectrum::load_astm_g173(solar_file);
+    const glint::atmosphere::DataTables tables = glint::inputs::read_data_tables(
+        data_dir, glint::atmosphere::needs_gas_table(sim.atmosphere));
+    const auto atmosphere = glint::atmosphere::make_atmosphere_model(sim.atmosphere, tables.gases);
+    const glint::atmosphere::SolarSpectrum& sun = *tables.sun;
     const glint::motion::SunPosition sun_at = glint::motion::sun_position(when, frame);
     glint::radiometry::EnvironmentInputs env;
     env.sun_direction_begin = env.sun_direction_end = sun_at.direction_enu;

@@ -13,6 +13,7 @@
 #include "glint/core/runner.h"
 #include "glint/core/stdio_name.h"
 #include "glint/core/text.h"
+#include "glint/inputs/data_tables.h"
 #include "glint/inputs/load.h"
 #include "glint/inputs/schedule_file.h"
 #include "glint/model/names.h"
@@ -157,6 +158,8 @@ int run(const Options& options, Context& ctx, std::ostream& out) {
         load_options.atmosphere_override = inputs::parse_atmosphere_override(options.atmosphere);
     }
     model::SimulationInputs loaded = inputs::load_logged(options.input, load_options, ctx.log);
+    settings.data =
+        inputs::read_data_tables(settings.data_dir, atmosphere::needs_gas_table(loaded.atmosphere));
     process::ProcessingOptions processing = options.processing;
     if (processing.tools_dir.empty()) processing.tools_dir = executable_path().parent_path();
     if (processing.allow_list.empty() && !processing.allow_all) {

@@ -86,15 +86,9 @@ std::unique_ptr<AtmosphereModel> make_atmosphere_model(const model::Atmosphere& 
     throw internal_error("unknown atmosphere kind");
 }
 
-std::unique_ptr<AtmosphereModel> load_atmosphere_model(const model::Atmosphere& atmosphere,
-                                                       const std::filesystem::path& data_dir) {
-    std::shared_ptr<const GasBandModel> gases;
-    if (atmosphere.kind == model::AtmosphereKind::parametric &&
-        atmosphere.parametric.gas_absorption) {
-        const std::filesystem::path table = data_dir / GasBandModel::kRelativePath;
-        gases = std::make_shared<const GasBandModel>(GasBandModel::load(table, table.string()));
-    }
-    return make_atmosphere_model(atmosphere, std::move(gases));
+bool needs_gas_table(const model::Atmosphere& atmosphere) {
+    return atmosphere.kind == model::AtmosphereKind::parametric &&
+           atmosphere.parametric.gas_absorption;
 }
 
 }  // namespace glint::atmosphere

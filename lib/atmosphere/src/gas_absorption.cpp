@@ -10,7 +10,6 @@
 
 #include "glint/core/error.h"
 #include "glint/core/text.h"
-#include "glint/io/input_files.h"
 
 namespace glint::atmosphere {
 namespace {
@@ -67,10 +66,7 @@ BandRows band_rows(std::span<const double> table_um, const SpectralGrid& grid, s
 
 }  // namespace
 
-GasBandModel GasBandModel::load(const std::filesystem::path& csv_path,
-                                const std::string& display_name) {
-    const std::string file = display_name.empty() ? csv_path.string() : display_name;
-    const std::string text = io::read_input_file(csv_path, file);
+GasBandModel GasBandModel::from_csv(const std::string& text, const std::string& file) {
     GasBandModel out;
     int line_number = 0;
     bool header = false;

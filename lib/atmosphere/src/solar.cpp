@@ -12,7 +12,6 @@
 
 #include "glint/core/error.h"
 #include "glint/core/text.h"
-#include "glint/io/input_files.h"
 
 namespace glint::atmosphere {
 namespace {
@@ -22,10 +21,7 @@ constexpr double kAstmToInternal = 0.1;
 
 }  // namespace
 
-SolarSpectrum SolarSpectrum::load_astm_g173(const std::filesystem::path& csv_path,
-                                            const std::string& display_name) {
-    const std::string file = display_name.empty() ? csv_path.string() : display_name;
-    const std::string text = io::read_input_file(csv_path, file);
+SolarSpectrum SolarSpectrum::from_astm_g173(const std::string& text, const std::string& file) {
     std::vector<double> wavelengths_um;
     std::vector<double> values;
     int line_number = 0;

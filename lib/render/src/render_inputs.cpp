@@ -22,8 +22,8 @@ namespace {
 /// bands there take the nearest row's transmittance.
 void warn_beyond_gas_table(const RenderInputs& in, const RenderOptions& options,
                            Diagnostics& diagnostics) {
-    const auto* parametric =
-        dynamic_cast<const glint::atmosphere::ParametricAtmosphereModel*>(in.atmosphere_model.get());
+    const auto* parametric = dynamic_cast<const glint::atmosphere::ParametricAtmosphereModel*>(
+        in.atmosphere_model.get());
     const glint::atmosphere::GasBandModel* table =
         parametric != nullptr ? parametric->gas_table() : nullptr;
     if (table == nullptr || table->wavelengths_um().empty()) return;
@@ -36,16 +36,14 @@ void warn_beyond_gas_table(const RenderInputs& in, const RenderOptions& options,
         if (!(band.min_um < first_um || band.max_um > last_um) || !said.insert(&fp).second) {
             continue;
         }
-        diagnostics.warning(band.where,
-                            "focal plane " + quote(fp.name) + "'s bandpass " +
-                                format_shortest(band.min_um) + "-" + format_shortest(band.max_um) +
-                                " um reaches beyond the gas absorption table (" +
-                                format_shortest(first_um) + "-" + format_shortest(last_um) +
-                                " um, " +
-                                (options.data_dir / glint::atmosphere::GasBandModel::kRelativePath)
-                                    .string() +
-                                "): its bands there take the transmittance of the table's "
-                                "nearest wavelength");
+        diagnostics.warning(
+            band.where,
+            "focal plane " + quote(fp.name) + "'s bandpass " + format_shortest(band.min_um) + "-" +
+                format_shortest(band.max_um) + " um reaches beyond the gas absorption table (" +
+                format_shortest(first_um) + "-" + format_shortest(last_um) + " um, " +
+                (options.data_dir / glint::atmosphere::GasBandModel::kRelativePath).string() +
+                "): its bands there take the transmittance of the table's "
+                "nearest wavelength");
     }
 }
 
@@ -56,12 +54,14 @@ void build_all(RenderInputs& in, model::SimulationInputs loaded, const RenderOpt
     in.simulation = std::move(loaded.simulation);
     in.scene = std::move(loaded.scene);
     in.atmosphere = std::move(loaded.atmosphere);
+    if (!options.data.sun ||
+        (glint::atmosphere::needs_gas_table(in.atmosphere) && !options.data.gases)) {
+        throw internal_error("glint's data tables were not read (inputs::read_data_tables)");
+    }
     in.atmosphere_model =
-        glint::atmosphere::load_atmosphere_model(in.atmosphere, options.data_dir);
+        glint::atmosphere::make_atmosphere_model(in.atmosphere, options.data.gases);
     in.frame = in.schedule->frame();
-    const std::filesystem::path solar =
-        options.data_dir / glint::atmosphere::SolarSpectrum::kAstmRelativePath;
-    in.sun.emplace(glint::atmosphere::SolarSpectrum::load_astm_g173(solar, solar.string()));
+    in.sun.emplace(*options.data.sun);
 
     const DateTime reference = in.schedule->plugins().empty()
                                    ? DateTime{}

@@ -10,14 +10,16 @@
 #include <fstream>
 #include <vector>
 
-#include "glint/test/temp_dir.h"
+#include "glint/io/input_files.h"
 
 namespace glint::atmosphere {
 namespace {
 
 SolarSpectrum load() {
-    return SolarSpectrum::load_astm_g173(std::filesystem::path(GLINT_SOURCE_DIR) / "data" /
-                                         SolarSpectrum::kAstmRelativePath);
+    return SolarSpectrum::from_astm_g173(
+        io::read_input_file(std::filesystem::path(GLINT_SOURCE_DIR) / "data" /
+                            SolarSpectrum::kAstmRelativePath),
+        SolarSpectrum::kAstmRelativePath);
 }
 
 /// ∫ E dλ in W/m² over [lo, hi] µm on a fine regular grid (step 0.0005 µm below 4 µm,
@@ -87,16 +89,14 @@ TEST(SolarSpectrum, UnitsAndRange) {
 }
 
 TEST(SolarSpectrum, BadFileHasFileAndLine) {
-    test::TempDir dir;
-    std::ofstream(dir / "s.csv") << "title\nwavelength,extraterrestrial\n280,0.1\n290,x\n";
     try {
-        (void)SolarSpectrum::load_astm_g173(dir / "s.csv", "s.csv");
+        (void)SolarSpectrum::from_astm_g173("title\nwavelength,extraterrestrial\n280,0.1\n290,x\n",
+                                            "s.csv");
         FAIL() << "expected an error";
     } catch (const Error& e) {
         EXPECT_EQ(e.context().file, "s.csv");
         EXPECT_EQ(e.context().line, 4);
     }
-    EXPECT_THROW((void)SolarSpectrum::load_astm_g173(dir / "missing.csv"), Error);
 }
 
 }  // namespace

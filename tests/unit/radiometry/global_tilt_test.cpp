@@ -20,6 +20,7 @@
 #include "glint/atmosphere/gas_absorption.h"
 #include "glint/atmosphere/solar.h"
 #include "glint/core/spectral.h"
+#include "glint/io/input_files.h"
 #include "tracer_fixture.h"
 
 namespace glint::radiometry {
@@ -90,10 +91,12 @@ TEST(GlobalTilt, WhitePlateTiltedTowardsTheSunMatchesAstmG173) {
     p.ground_albedo = 0.2;
     const glint::atmosphere::ParametricAtmosphereModel atmosphere(
         p, std::make_shared<const glint::atmosphere::GasBandModel>(
-               glint::atmosphere::GasBandModel::load(
-                   kData / glint::atmosphere::GasBandModel::kRelativePath)));
-    const auto sun = glint::atmosphere::SolarSpectrum::load_astm_g173(
-        kData / glint::atmosphere::SolarSpectrum::kAstmRelativePath);
+               glint::atmosphere::GasBandModel::from_csv(
+                   io::read_input_file(kData / glint::atmosphere::GasBandModel::kRelativePath),
+                   glint::atmosphere::GasBandModel::kRelativePath)));
+    const auto sun = glint::atmosphere::SolarSpectrum::from_astm_g173(
+        io::read_input_file(kData / glint::atmosphere::SolarSpectrum::kAstmRelativePath),
+        glint::atmosphere::SolarSpectrum::kAstmRelativePath);
     const SpectralGrid grid = SpectralGrid::regular(0.300, 2.500, 0.005);
     EnvironmentInputs inputs;
     inputs.sun_direction_begin = inputs.sun_direction_end = to_sun;
@@ -135,7 +138,8 @@ TEST(GlobalTilt, WhitePlateTiltedTowardsTheSunMatchesAstmG173) {
         top[i] = n > 0 ? top[i] / n * dot(to_sun, normal) : 0.0;
     }
     std::vector<double> ours(grid.size());
-    for (std::size_t i = 0; i < grid.size(); ++i) ours[i] = kPi * s.radiance_w_per_cm2_sr_um[i] * 10.0;
+    for (std::size_t i = 0; i < grid.size(); ++i)
+        ours[i] = kPi * s.radiance_w_per_cm2_sr_um[i] * 10.0;
     // For the documentation's plot (scripts/atmosphere_plots.py): the two spectra.
     if (const char* plots = std::getenv("GLINT_ATMOSPHERE_PLOT_DIR")) {
         std::ofstream csv(std::filesystem::path(plots) / "global_tilt.csv");
@@ -175,9 +179,10 @@ TEST(GlobalTilt, WhitePlateTiltedTowardsTheSunMatchesAstmG173) {
         }
         const bool relative = std::abs(a / b - 1.0) <= 0.10;
         relative_bands += relative ? 1 : 0;
-        bands += " " + std::to_string(static_cast<int>(start)) + ":" +
-                 std::to_string(static_cast<int>(std::lround(100.0 * (a / b - 1.0)))) +
-                 (relative ? "" : "(" + std::to_string(std::lround(100.0 * (a - b) / e0)) + "% of E0)");
+        bands +=
+            " " + std::to_string(static_cast<int>(start)) + ":" +
+            std::to_string(static_cast<int>(std::lround(100.0 * (a / b - 1.0)))) +
+            (relative ? "" : "(" + std::to_string(std::lround(100.0 * (a - b) / e0)) + "% of E0)");
         EXPECT_TRUE(relative || std::abs(a - b) <= 0.10 * e0) << start << " nm";
     }
     EXPECT_GE(relative_bands, 30);

@@ -17,6 +17,7 @@
 #include "glint/core/cancel.h"
 #include "glint/core/error.h"
 #include "glint/core/spectral.h"
+#include "glint/io/input_files.h"
 #include "tracer_fixture.h"
 
 namespace glint::radiometry {
@@ -33,8 +34,10 @@ using ::testing::HasSubstr;
 /// glint's gas band-model table (data/atmosphere/gas_band_model.csv).
 std::shared_ptr<const glint::atmosphere::GasBandModel> gas_table() {
     return std::make_shared<const glint::atmosphere::GasBandModel>(
-        glint::atmosphere::GasBandModel::load(std::filesystem::path(GLINT_SOURCE_DIR) / "data" /
-                                              glint::atmosphere::GasBandModel::kRelativePath));
+        glint::atmosphere::GasBandModel::from_csv(
+            io::read_input_file(std::filesystem::path(GLINT_SOURCE_DIR) / "data" /
+                                glint::atmosphere::GasBandModel::kRelativePath),
+            glint::atmosphere::GasBandModel::kRelativePath));
 }
 
 const SpectralGrid kGrid({0.45, 0.55, 0.65});

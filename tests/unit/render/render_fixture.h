@@ -8,6 +8,7 @@
 #include <sstream>
 #include <string>
 
+#include "glint/inputs/data_tables.h"
 #include "glint/inputs/load.h"
 #include "glint/render/render.h"
 
@@ -27,11 +28,12 @@ inline model::SimulationInputs load(const std::filesystem::path& simulation) {
     return inputs::load_logged(simulation, inputs::LoadOptions{}, Log{});
 }
 
-/// Options writing into `out`, the solar spectrum from the source tree's data folder.
+/// Options writing into `out`, glint's data tables from the source tree's data folder.
 inline RenderOptions options_into(const std::filesystem::path& out) {
     RenderOptions options;
     options.schedule.output_folder = out.string();
     options.data_dir = std::filesystem::path(GLINT_SOURCE_DIR) / "data";
+    options.data = inputs::read_data_tables(options.data_dir, true);
     return options;
 }
 

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "glint/atmosphere/gas_absorption.h"
+#include "glint/atmosphere/solar.h"
 #include "glint/core/spectral.h"
 #include "glint/model/atmosphere.h"
 
@@ -252,10 +253,16 @@ double zenith_for_relative_air_mass(double air_mass);
 std::unique_ptr<AtmosphereModel> make_atmosphere_model(
     const model::Atmosphere& atmosphere, std::shared_ptr<const GasBandModel> gases = nullptr);
 
-/// make_atmosphere_model with the data its model needs read from glint's data folder
-/// `data_dir` (the gas band-model table, GasBandModel::kRelativePath, when the parametric
-/// model's gas absorption is on). Throws glint::Error (io) when that file is unreadable.
-std::unique_ptr<AtmosphereModel> load_atmosphere_model(const model::Atmosphere& atmosphere,
-                                                       const std::filesystem::path& data_dir);
+/// Whether the model `atmosphere` selects needs the gas band-model table (the parametric
+/// model with its gas absorption on).
+bool needs_gas_table(const model::Atmosphere& atmosphere);
+
+/// glint's own data a render needs, read from its data folder by the readers
+/// (glint/inputs/data_tables.h): the solar spectrum, and the gas band-model table when the
+/// atmosphere needs it (needs_gas_table; null otherwise).
+struct DataTables {
+    std::shared_ptr<const SolarSpectrum> sun;
+    std::shared_ptr<const GasBandModel> gases;
+};
 
 }  // namespace glint::atmosphere

@@ -37,12 +37,12 @@ public:
     /// Absorber groups, in the order of the table's columns.
     static constexpr std::size_t kGroups = 3;
 
-    /// Reads the CSV (`#` comment lines, a header line, then `wavelength_um,wavenumber_cm1,`
-    /// and τ₁, a for water, ozone and mixed gases). Throws glint::Error (io when unreadable;
-    /// input with file:line for a malformed row, wavelengths not increasing, negative τ₁ or
-    /// an exponent outside (0, 2], fewer than 2 rows).
-    static GasBandModel load(const std::filesystem::path& csv_path,
-                             const std::string& display_name = {});
+    /// Parses the text of the CSV named `file` (`#` comment lines, a header line, then
+    /// `wavelength_um,wavenumber_cm1,` and τ₁, a for water, ozone and mixed gases;
+    /// glint/inputs/data_tables.h reads it). Throws glint::Error (input with file:line for a
+    /// malformed row, wavelengths not increasing, negative τ₁ or an exponent outside (0, 2],
+    /// fewer than 2 rows).
+    static GasBandModel from_csv(const std::string& text, const std::string& file);
 
     /// Row wavelengths, µm, increasing.
     std::span<const double> wavelengths_um() const noexcept { return m_wavelengths_um; }

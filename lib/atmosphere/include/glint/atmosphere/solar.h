@@ -28,12 +28,12 @@ public:
     /// The ASTM file's path below glint's data folder.
     static constexpr const char* kAstmRelativePath = "solar/astm_g173.csv";
 
-    /// Reads an ASTM G173 CSV (two header lines, then `wavelength_nm,extraterrestrial,global,
-    /// direct` in W·m⁻²·nm⁻¹). Throws glint::Error (io when unreadable; input with file:line
-    /// for a malformed row, fewer than 2 rows, wavelengths not increasing, negative values,
-    /// or a table that does not end at kTailStartUm within 1 nm).
-    static SolarSpectrum load_astm_g173(const std::filesystem::path& csv_path,
-                                        const std::string& display_name = {});
+    /// Parses the text of an ASTM G173 CSV named `file` (two header lines, then
+    /// `wavelength_nm,extraterrestrial,global,direct` in W·m⁻²·nm⁻¹; glint/inputs/data_tables.h
+    /// reads it). Throws glint::Error (input with file:line for a malformed row, fewer than 2
+    /// rows, wavelengths not increasing, negative values, or a table that does not end at
+    /// kTailStartUm within 1 nm).
+    static SolarSpectrum from_astm_g173(const std::string& text, const std::string& file);
 
     /// A spectrum from a table already in µm and W/(cm² µm) (the last wavelength is where the
     /// tail starts). Throws glint::Error (input) for a bad table or a last value ≤ 0.

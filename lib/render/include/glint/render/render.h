@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "glint/atmosphere/atmosphere.h"
 #include "glint/core/context.h"
 #include "glint/model/inputs.h"
 #include "glint/model/processing.h"
@@ -45,8 +46,11 @@ struct RenderOptions {
     bool radiance_only = false;
     radiometry::TracerSettings tracer;
     scene::DeviceSettings device;
-    /// glint's data folder (solar/astm_g173.csv).
+    /// glint's data folder, named in messages about its tables.
     std::filesystem::path data_dir;
+    /// glint's data tables read from it (glint/inputs/data_tables.h): the solar spectrum, and
+    /// the gas band-model table when the atmosphere needs it.
+    atmosphere::DataTables data;
     /// Global capture indices to render (--schedule FILE); empty: all.
     std::set<std::uint64_t> only_captures;
     /// --rows A:B or a --by rows shard: only these lines of every capture (docs/scale.md). A
