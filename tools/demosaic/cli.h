@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "glint/app_demosaic/demosaic.h"
+#include "glint/app_demosaic/demosaic_tool.h"
 #include "glint/core/context.h"
 
 namespace glint::tools::demosaic {

@@ -41,7 +41,7 @@ void RenderCli::configure(CLI::App& app) {
                    "Use this atmosphere in place of the simulation's: none, parametric (the "
                    "default parametric model) or a glint YAML atmosphere or DIRSIG .atm file")
         ->type_name("none|parametric|FILE");
-    app.add_option("--schedule", m_options.schedule,
+    app.add_option("--schedule", m_options.schedule_file,
                    "Render only the captures of this glint-schedule JSON (a subset or shard)")
         ->type_name("FILE");
     app.add_option("--rows", m_rows,
@@ -121,7 +121,8 @@ int RenderCli::execute(Context& ctx, std::ostream& out) {
         settings.convergence = app_render::parse_convergence(m_convergence);
     }
     if (app.count("--max-memory") > 0) {
-        settings.device.max_memory_bytes = *parse_byte_size(m_max_memory);  // checked by byte_size()
+        settings.device.max_memory_bytes =
+            *parse_byte_size(m_max_memory);  // checked by byte_size()
     }
     if (m_processing_timeout_s > 0.0) {
         m_options.processing.timeout = std::chrono::milliseconds(

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "glint/app_demosaic/demosaic.h"
+#include "glint/app_demosaic/demosaic_tool.h"
 
 namespace glint::app_demosaic::internal {
 
@@ -20,9 +20,9 @@ struct MosaicSource {
     std::size_t width = 0;
     std::size_t height = 0;
     std::size_t max_memory_bytes = kDefaultMaxMemoryBytes;  ///< --max-memory, for the readers
-    std::optional<io::EnviHeader> envi;        ///< the header, for ENVI inputs
-    std::string type_name;                     ///< "uint16", "float32", ...
-    std::vector<std::filesystem::path> files;  ///< every file read (overwrite checks)
+    std::optional<io::EnviHeader> envi;                     ///< the header, for ENVI inputs
+    std::string type_name;                                  ///< "uint16", "float32", ...
+    std::vector<std::filesystem::path> files;               ///< every file read (overwrite checks)
 };
 
 /// Opens a one-band ENVI file, or an image when the name has an image extension, and

@@ -10,7 +10,7 @@
 #include <limits>
 #include <set>
 
-#include "glint/app_envi/lidar_bin.h"
+#include "glint/app_envi/bin_commands.h"
 #include "glint/core/error.h"
 #include "glint/core/runner.h"
 #include "glint/core/text.h"

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 // `glint-envi info`: text and JSON reports of ENVI headers.
 #include "glint/app_envi/info.h"
-#include "glint/app_envi/lidar_bin.h"
 
 #include <algorithm>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "glint/app_envi/bin_commands.h"
 #include "glint/core/error.h"
 #include "glint/core/json_text.h"
 #include "glint/core/stdio_name.h"

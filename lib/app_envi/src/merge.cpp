@@ -15,7 +15,7 @@
 #include <string>
 #include <utility>
 
-#include "glint/app_envi/lidar_bin.h"
+#include "glint/app_envi/bin_commands.h"
 #include "glint/core/atomic_file.h"
 #include "glint/core/error.h"
 #include "glint/core/folder_lock.h"

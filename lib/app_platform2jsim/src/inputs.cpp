@@ -14,7 +14,7 @@
 #include "glint/dirsig/readers.h"
 #include "glint/dirsig/scene_reader.h"
 #include "glint/inputs/load.h"
-#include "glint/inputs/simulation_inputs.h"
+#include "glint/inputs/scene_atmosphere.h"
 #include "glint/io/input_files.h"
 #include "glint/model/derived.h"
 #include "glint/model/truth.h"

@@ -12,14 +12,14 @@
 #include "glint/core/atomic_file.h"
 #include "glint/core/error.h"
 #include "glint/core/install_paths.h"
-#include "glint/core/stdio_name.h"
 #include "glint/core/json_text.h"
+#include "glint/core/stdio_name.h"
 #include "glint/core/text.h"
 #include "glint/dirsig/readers.h"
 #include "glint/model/names.h"
 #include "glint/model/output_folder.h"
 #include "glint/model/output_name.h"
-#include "glint/process/processing.h"
+#include "glint/process/processing_runner.h"
 
 namespace glint::app_platform2jsim {
 namespace {
@@ -259,8 +259,7 @@ void list_processing(LoadedInputs& inputs, const Options& options, const Context
                         line += format_command_line(command.argv);
                         if (command.refusal) {
                             line += " (refused: not allowed)";
-                            inputs.diagnostics.error(task.where,
-                                                     *command.refusal);
+                            inputs.diagnostics.error(task.where, *command.refusal);
                         }
                     } catch (const Error& error) {
                         line += "(" + terminal_safe_line(error.message()) + ")";
@@ -286,9 +285,9 @@ void list_output_folders(LoadedInputs& inputs) {
         for (const model::OutputFolder& output :
              model::output_folders(simulation, std::nullopt, working)) {
             if (!output.from_simulation) continue;
-            inputs.contents.push_back("output folder " + output.folder.string() +
-                                      ": plugin_list[" + std::to_string(output.plugin_index) +
-                                      "] of " + simulation.file);
+            inputs.contents.push_back("output folder " + output.folder.string() + ": plugin_list[" +
+                                      std::to_string(output.plugin_index) + "] of " +
+                                      simulation.file);
             if (auto why = model::unexpected_output_folder(output, simulation, working)) {
                 inputs.diagnostics.warning(output.where, *why);
             }
@@ -356,8 +355,7 @@ int run(const Options& options, Context& ctx, std::ostream& out) {
     refuse_stdio_names(options);
     if (options.output_prefix) {
         if (const auto problem = model::output_name_problem(*options.output_prefix)) {
-            throw usage_error("--output_prefix " + quote(*options.output_prefix) + " " +
-                              *problem);
+            throw usage_error("--output_prefix " + quote(*options.output_prefix) + " " + *problem);
         }
     }
     switch (options.mode) {

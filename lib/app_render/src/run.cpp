@@ -138,15 +138,15 @@ int run(const Options& options, Context& ctx, std::ostream& out) {
     settings.radiance_only = options.radiance_only;
     if (settings.data_dir.empty()) settings.data_dir = default_data_dir();
     ctx.log.info("Data folder: " + settings.data_dir.string());
-    if (!options.schedule.empty()) {
-        const inputs::ScheduleFile selection = inputs::read_schedule_file(options.schedule);
+    if (!options.schedule_file.empty()) {
+        const inputs::ScheduleFile selection = inputs::read_schedule_file(options.schedule_file);
         for (const inputs::ScheduleFile::Capture& c : selection.captures) {
             settings.only_captures.insert(c.index);
         }
         if (selection.row_shard) {
             if (settings.rows) {
                 throw usage_error("--rows and a --by rows shard in --schedule " +
-                                  options.schedule.string() + ": give one band of lines");
+                                  options.schedule_file.string() + ": give one band of lines");
             }
             settings.rows = schedule::RowBand{};
             settings.rows->shard = selection.row_shard;

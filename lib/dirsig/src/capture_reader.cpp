@@ -21,8 +21,8 @@ namespace glint::dirsig::detail {
 namespace {
 
 using capture_io::non_empty_text;
-using capture_io::number_text;
 using capture_io::single_child;
+using capture_io::ten_digit_text;
 using capture_io::trim;
 
 /// ENVI data types an image file may be written as.
@@ -35,7 +35,7 @@ std::optional<int> attribute_count(const io::XmlNode& node, std::string_view nam
     if (!value) return std::nullopt;
     if (*value != std::floor(*value)) {
         diagnostics.error(node.where_attribute(name), std::string(name) + " " +
-                                                          number_text(*value) +
+                                                          ten_digit_text(*value) +
                                                           " is invalid, expected an integer >= 1");
         return std::nullopt;
     }

@@ -260,8 +260,8 @@ void GlistReader::read_obj(const io::XmlNode& g, const model::FileRef& ref,
 
 void GlistReader::read_object(const io::XmlNode& node) {
     if (node.attribute_bool("enabled", diagnostics) == false) return;
-    node.warn_unknown_children({"basegeometry", "basesource", "staticinstance",
-                                "dynamicinstance", "tags", "localmaterials", "assign", "name"},
+    node.warn_unknown_children({"basegeometry", "basesource", "staticinstance", "dynamicinstance",
+                                "tags", "localmaterials", "assign", "name"},
                                diagnostics);
     const bool local = search_paths_local(node, diagnostics);
     model::GeometryObject object;
@@ -296,8 +296,9 @@ void GlistReader::read_object(const io::XmlNode& node) {
         return;
     }
     if (!base) {
-        diagnostics.error(node.where(), "missing required element <basegeometry> (or "
-                                        "<basesource>)");
+        diagnostics.error(node.where(),
+                          "missing required element <basegeometry> (or "
+                          "<basesource>)");
         return;
     }
     const auto kids = base->children();

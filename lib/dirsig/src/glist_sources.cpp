@@ -39,8 +39,9 @@ void check_pointing(const io::XmlNode& source, Diagnostics& diagnostics) {
         diagnostics.error(pointing->where(), "pointing vector must be finite and not zero");
         return;
     }
-    diagnostics.warning(pointing->where(), "<pointing> is read, not applied: glint's point "
-                                           "sources emit the same intensity in every direction");
+    diagnostics.warning(pointing->where(),
+                        "<pointing> is read, not applied: glint's point "
+                        "sources emit the same intensity in every direction");
 }
 
 }  // namespace
@@ -105,9 +106,10 @@ void place_nested_sources(const std::vector<model::PointSource>& inner,
         for (const model::PointSource& s : inner) {
             model::PointSource placed = s;
             if (s.dynamic() && (o.dynamic() || !is_identity(outer_matrix))) {
-                diagnostics.error(s.where, "a moving point source in a nested glist cannot be "
-                                           "placed again by " +
-                                               o.where.element);
+                diagnostics.error(s.where,
+                                  "a moving point source in a nested glist cannot be "
+                                  "placed again by " +
+                                      o.where.element);
                 continue;
             }
             if (o.dynamic()) {

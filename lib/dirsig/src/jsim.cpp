@@ -14,8 +14,8 @@
 #include "glint/dirsig/readers.h"
 #include "glint/io/xml.h"
 #include "glint/model/output_name.h"
-#include "json_lines.h"
 #include "jsim_keys.h"
+#include "json_lines.h"
 
 namespace glint::dirsig {
 namespace {

@@ -98,11 +98,11 @@ struct Parser {
         }
         if (!(*v >= 0.0 && *v <= source.max_value && std::isfinite(*v))) {
             const bool bounded = std::isfinite(source.max_value);
-            diagnostics.error(at(row.line),
-                              source.quantity + " " + format_shortest(*v) +
-                                  (bounded ? " is outside [0, " + format_shortest(source.max_value) +
-                                                 "]"
-                                           : " is not a finite number >= 0"));
+            diagnostics.error(
+                at(row.line),
+                source.quantity + " " + format_shortest(*v) +
+                    (bounded ? " is outside [0, " + format_shortest(source.max_value) + "]"
+                             : " is not a finite number >= 0"));
             return std::nullopt;
         }
         return std::make_pair(*x, *v);

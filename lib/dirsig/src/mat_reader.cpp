@@ -187,8 +187,8 @@ struct MatReader {
             diagnostics.add(error.with_file(file, entry.line));
             return table;
         }
-        detail::parse_curve_text(text, detail::CurveSource{name, path, quantity, max_value},
-                                 table, diagnostics);
+        detail::parse_curve_text(text, detail::CurveSource{name, path, quantity, max_value}, table,
+                                 diagnostics);
         return table;
     }
 
@@ -262,9 +262,8 @@ struct MatReader {
                                 "\": INTENSITY_FILENAME read as wavelength (um) and spectral "
                                 "intensity (W/(sr um)) columns, an isotropic source "
                                 "(glint's reading)");
-        m.intensity_w_per_sr_um =
-            read_curve(*intensity, path + "/INTENSITY_FILENAME", "intensity",
-                       std::numeric_limits<double>::infinity());
+        m.intensity_w_per_sr_um = read_curve(*intensity, path + "/INTENSITY_FILENAME", "intensity",
+                                             std::numeric_limits<double>::infinity());
     }
 
     model::Material read_entry(const MatBlock& block, std::size_t index) {
@@ -277,11 +276,11 @@ struct MatReader {
         if (m.id.empty()) diagnostics.error(m.where, "missing ID");
         const MatEntry* name = block.find("NAME");
         m.name = name && !name->value.empty() ? name->value : m.id;
-        warn_unknown(block, path,
-                     {"ID", "NAME", "EDITOR_COLOR", "DOUBLE_SIDED", "RAD_SOLVER_NAME",
-                      "TEMP_SOLVER_NAME", "TEMPERATURE", "BUNDLE_FILENAME", "OPTICAL_DESCRIPTION",
-                      "INTENSITY_FILENAME"},
-                     {"SURFACE_PROPERTIES", "RAD_SOLVER", "TEMP_SOLVER"});
+        warn_unknown(
+            block, path,
+            {"ID", "NAME", "EDITOR_COLOR", "DOUBLE_SIDED", "RAD_SOLVER_NAME", "TEMP_SOLVER_NAME",
+             "TEMPERATURE", "BUNDLE_FILENAME", "OPTICAL_DESCRIPTION", "INTENSITY_FILENAME"},
+            {"SURFACE_PROPERTIES", "RAD_SOLVER", "TEMP_SOLVER"});
         if (const MatEntry* bundle = block.find("BUNDLE_FILENAME")) {
             diagnostics.error(at(bundle->line, path + "/BUNDLE_FILENAME"),
                               "material bundles (" + bundle->value +

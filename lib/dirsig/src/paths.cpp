@@ -4,8 +4,8 @@
 // every other path absolute against the folder of the file that names it.
 #include <cstdlib>
 
-#include "glint/dirsig/read_options.h"
 #include "glint/core/text.h"
+#include "glint/dirsig/read_options.h"
 
 namespace glint::dirsig {
 namespace {
@@ -86,8 +86,8 @@ std::optional<std::string> PathResolver::expand(const std::string& text, const E
         std::optional<std::string> value;
         if (name == "SCENE_DIR") {
             if (!scene_dir) {
-                diagnostics.error(
-                    where, "$SCENE_DIR used outside a scene file in path " + quote(written));
+                diagnostics.error(where,
+                                  "$SCENE_DIR used outside a scene file in path " + quote(written));
                 ok = false;
             } else {
                 value = scene_dir->string();

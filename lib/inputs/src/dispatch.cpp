@@ -8,7 +8,7 @@
 #include "glint/core/text.h"
 #include "glint/dirsig/atm_reader.h"
 #include "glint/dirsig/scene_reader.h"
-#include "glint/inputs/simulation_inputs.h"
+#include "glint/inputs/scene_atmosphere.h"
 #include "glint/yaml/atmosphere_reader.h"
 #include "glint/yaml/scene_reader.h"
 

@@ -16,7 +16,7 @@
 #include "glint/dirsig/pulse_shape.h"
 #include "glint/dirsig/readers.h"
 #include "glint/dirsig/trigger_file.h"
-#include "glint/inputs/simulation_inputs.h"
+#include "glint/inputs/scene_atmosphere.h"
 
 namespace glint::inputs {
 namespace {

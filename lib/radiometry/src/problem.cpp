@@ -434,15 +434,6 @@ std::uint64_t solve_each(const PathTracer& tracer, const ProblemBatch& batch,
                          const Context& context, const SolutionReceiver& receive) {
     return solve_batch(
         tracer, batch, context,
-        [](std::uint64_t, Workspace& ws) { return std::span<double>(ws.radiance); },
-        [&](std::uint64_t i, std::span<double> radiance, std::span<const std::uint32_t>,
-            std::uint64_t samples, double error) { receive(i, radiance, samples, error); });
-}
-
-std::uint64_t solve_each(const PathTracer& tracer, const ProblemBatch& batch,
-                         const Context& context, const SparseSolutionReceiver& receive) {
-    return solve_batch(
-        tracer, batch, context,
         [](std::uint64_t, Workspace& ws) { return std::span<double>(ws.radiance); }, receive);
 }
 

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "glint/app_demosaic/demosaic.h"
+#include "glint/app_demosaic/demosaic_tool.h"
 #include "glint/core/error.h"
 #include "glint/io/envi.h"
 #include "glint/io/image.h"
@@ -45,8 +45,7 @@ dm::Plane write_mosaic(const std::filesystem::path& path, std::size_t w, std::si
     return plane;
 }
 
-Options options(const std::filesystem::path& input,
-                            const std::filesystem::path& output) {
+Options options(const std::filesystem::path& input, const std::filesystem::path& output) {
     Options o;
     o.input = input;
     o.output = output;

@@ -11,7 +11,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "glint/inputs/simulation_inputs.h"
+#include "glint/inputs/scene_atmosphere.h"
 
 namespace glint::atmosphere {
 namespace {

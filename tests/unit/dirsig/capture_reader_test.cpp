@@ -354,7 +354,7 @@ TEST(CaptureReader, ProcessingTasksEverySchedule) {
         "<argument>--input_filename=$$IMG_BASENAME$$.img</argument>"
         "<removefile>true</removefile></task>\n</processing>";
     const auto read = read_capture(capture_xml(tasks));
-    // glint-render runs them (glint/process/processing.h): nothing to say.
+    // glint-render runs them (glint/process/processing_runner.h): nothing to say.
     EXPECT_EQ(read.diagnostics.error_count(), 0u) << list_diagnostics(read.diagnostics);
     EXPECT_EQ(read.diagnostics.warning_count(), 0u) << list_diagnostics(read.diagnostics);
     const auto& p = read.capture.processing;

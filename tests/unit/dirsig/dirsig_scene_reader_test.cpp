@@ -10,7 +10,7 @@
 #include <string>
 
 #include "glint/dirsig/scene_reader.h"
-#include "glint/inputs/simulation_inputs.h"
+#include "glint/inputs/scene_atmosphere.h"
 #include "glint/test/diagnostics.h"
 #include "glint/test/temp_dir.h"
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "glint/inputs/simulation_inputs.h"
+#include "glint/inputs/scene_atmosphere.h"
 #include "glint/test/temp_dir.h"
 
 namespace glint::inputs {
@@ -186,42 +186,47 @@ TEST(AtmosphereReader, GasAndScatteringKeys) {
 TEST(AtmosphereReader, KeysLeftWithoutEffectAreWarnedAtTheirLine) {
     test::TempDir dir;
     using V = std::vector<std::string>;
-    EXPECT_EQ(messages_of(dir, "model: parametric\ngas_absorption: false\nwater_vapor_cm: 1\n"
-                               "ozone_atm_cm: 0.3\nmultiple_scattering: false\n"
-                               "ground_albedo: 0.4\n"),
+    EXPECT_EQ(messages_of(dir,
+                          "model: parametric\ngas_absorption: false\nwater_vapor_cm: 1\n"
+                          "ozone_atm_cm: 0.3\nmultiple_scattering: false\n"
+                          "ground_albedo: 0.4\n"),
               (V{"e.yaml:3: water_vapor_cm: has no effect: gas_absorption is false",
                  "e.yaml:4: ozone_atm_cm: has no effect: gas_absorption is false",
                  "e.yaml:6: ground_albedo: has no effect: multiple_scattering is false"}));
-    EXPECT_EQ(messages_of(dir, "model: parametric\naerosol_model: urban\nangstrom_exponent: 1\n"
-                               "aerosol_single_scatter_albedo: 0.9\naerosol_asymmetry: 0.6\n"),
+    EXPECT_EQ(messages_of(dir,
+                          "model: parametric\naerosol_model: urban\nangstrom_exponent: 1\n"
+                          "aerosol_single_scatter_albedo: 0.9\naerosol_asymmetry: 0.6\n"),
               V{"e.yaml:2: aerosol_model: has no effect: angstrom_exponent, "
                 "aerosol_single_scatter_albedo and aerosol_asymmetry are all given"});
     // Two of the three given: the model still sets the third, so no warning.
-    EXPECT_EQ(messages_of(dir, "model: parametric\naerosol_model: urban\nangstrom_exponent: 1\n"
-                               "aerosol_asymmetry: 0.6\n"),
+    EXPECT_EQ(messages_of(dir,
+                          "model: parametric\naerosol_model: urban\nangstrom_exponent: 1\n"
+                          "aerosol_asymmetry: 0.6\n"),
               V{});
 }
 
 TEST(AtmosphereReader, AerosolModelAndVisibility) {
     test::TempDir dir;
     Diagnostics diagnostics;
-    const auto a = read_atmosphere(
-        write(dir, "m.yaml",
-              "model: parametric\naerosol_model: maritime\naerosol_asymmetry: 0.8\n"
-              "visibility_km: 23\naerosol_scale_height_m: 1000\n"),
-        {}, diagnostics, "m.yaml");
+    const auto a =
+        read_atmosphere(write(dir, "m.yaml",
+                              "model: parametric\naerosol_model: maritime\naerosol_asymmetry: 0.8\n"
+                              "visibility_km: 23\naerosol_scale_height_m: 1000\n"),
+                        {}, diagnostics, "m.yaml");
     EXPECT_EQ(diagnostics.items().size(), 0u) << first_error(diagnostics);
-    EXPECT_DOUBLE_EQ(a.parametric.angstrom_exponent, 0.35);            // maritime
+    EXPECT_DOUBLE_EQ(a.parametric.angstrom_exponent, 0.35);              // maritime
     EXPECT_DOUBLE_EQ(a.parametric.aerosol_single_scatter_albedo, 0.99);  // maritime
-    EXPECT_DOUBLE_EQ(a.parametric.aerosol_asymmetry, 0.8);              // the explicit key wins
+    EXPECT_DOUBLE_EQ(a.parametric.aerosol_asymmetry, 0.8);               // the explicit key wins
     // Koschmieder: β = 3.912/23 − 0.01159 = 0.15850 km⁻¹ over a 1 km scale height.
     EXPECT_NEAR(a.parametric.aerosol_optical_depth_550, 3.912 / 23.0 - 0.01159, 1e-12);
 
     using V = std::vector<std::string>;
-    EXPECT_EQ(messages_of(dir, "model: parametric\naerosol_model: volcanic\n"),
-              V{"e.yaml:2: aerosol_model: expected rural, urban, maritime or desert, got 'volcanic'"});
-    EXPECT_EQ(messages_of(dir, "model: parametric\naerosol_optical_depth_550: 0.1\nvisibility_km: 20\n"),
-              V{"e.yaml:3: visibility_km: give aerosol_optical_depth_550 or visibility_km, not both"});
+    EXPECT_EQ(
+        messages_of(dir, "model: parametric\naerosol_model: volcanic\n"),
+        V{"e.yaml:2: aerosol_model: expected rural, urban, maritime or desert, got 'volcanic'"});
+    EXPECT_EQ(
+        messages_of(dir, "model: parametric\naerosol_optical_depth_550: 0.1\nvisibility_km: 20\n"),
+        V{"e.yaml:3: visibility_km: give aerosol_optical_depth_550 or visibility_km, not both"});
     EXPECT_EQ(messages_of(dir, "model: parametric\nvisibility_km: 400\n"),
               V{"e.yaml:2: visibility_km: visibility 400 km is beyond that of aerosol-free air "
                 "(337 km)"});

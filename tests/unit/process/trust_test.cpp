@@ -11,7 +11,7 @@
 #include <fstream>
 
 #include "glint/core/error.h"
-#include "glint/process/processing.h"
+#include "glint/process/processing_runner.h"
 #include "glint/test/captured_log.h"
 #include "glint/test/temp_dir.h"
 
@@ -36,11 +36,26 @@ std::string problem_of(const std::string& argument) {
 }
 
 TEST(ProcessingTrust, TheManualsArgumentsStayInTheFolder) {
-    for (const char* argument :
-         {"convert", "--gamma=1", "--format=png", "--output_filename=demo-t0000-c0001.png",
-          "demo-t0000-c0001.img", "-y", "-framerate", "15", "-i", "demo-t0000-c%04d.png",
-          "video.mp4", "--pattern=truesense", "--input_filename=a.img", "-c:v", "libx264",
-          "scale=640:480", "frames/a.png", "-pix_fmt", "yuv420p", "a..b.png"}) {
+    for (const char* argument : {"convert",
+                                 "--gamma=1",
+                                 "--format=png",
+                                 "--output_filename=demo-t0000-c0001.png",
+                                 "demo-t0000-c0001.img",
+                                 "-y",
+                                 "-framerate",
+                                 "15",
+                                 "-i",
+                                 "demo-t0000-c%04d.png",
+                                 "video.mp4",
+                                 "--pattern=truesense",
+                                 "--input_filename=a.img",
+                                 "-c:v",
+                                 "libx264",
+                                 "scale=640:480",
+                                 "frames/a.png",
+                                 "-pix_fmt",
+                                 "yuv420p",
+                                 "a..b.png"}) {
         EXPECT_EQ(argument_problem(argument), std::nullopt) << argument;
     }
 }
@@ -61,8 +76,9 @@ TEST(ProcessingTrust, ArgumentsThatLeaveTheFolderAreNamed) {
     EXPECT_EQ(problem_of("movie=tcp:host:9"), "holds a URL or protocol (tcp:)");
     EXPECT_EQ(problem_of("a,..,b"), "holds a '..' component (a file outside the output folder)");
     // Characters a filter graph, a shell or a terminal would act on.
-    const std::string rule = " (only letters, digits and _ . / = : , + % @ - are given to a "
-                             "default program)";
+    const std::string rule =
+        " (only letters, digits and _ . / = : , + % @ - are given to a "
+        "default program)";
     EXPECT_EQ(problem_of("echo${IFS}x"), "holds \"$\"" + rule);
     EXPECT_EQ(problem_of("a;b"), "holds \";\"" + rule);
     EXPECT_EQ(problem_of("a b"), "holds \" \"" + rule);
@@ -77,7 +93,8 @@ TEST(ProcessingTrust, OnlyTheDefaultProgramsRunUnasked) {
     EXPECT_EQ(refusal("image_tool", "/opt/glint/bin/glint-envi", {"convert", "a.img"}, none),
               std::nullopt);
     EXPECT_EQ(refusal("glint-demosaic", "/usr/bin/glint-demosaic", {}, none), std::nullopt);
-    EXPECT_EQ(default_programs_text(), "image_tool, demosaic, ffmpeg, glint-envi and glint-demosaic");
+    EXPECT_EQ(default_programs_text(),
+              "image_tool, demosaic, ffmpeg, glint-envi and glint-demosaic");
 
     EXPECT_EQ(refusal("/bin/sh", "/bin/sh", {"-c", "echo${IFS}pwned>pwned"}, none).value_or(""),
               "program \"/bin/sh\" is not one glint runs by default (image_tool, demosaic, "
@@ -95,8 +112,9 @@ TEST(ProcessingTrust, OnlyTheDefaultProgramsRunUnasked) {
               "stay in the output folder; allow it with --allow-processing for this run, or with "
               "the line \"ffmpeg\" in /home/me/.config/glint/allowed-programs "
               "(docs/processing.md, \"Which programs run\")");
-    EXPECT_NE(refusal("record", "/opt/x/record", {}, listed).value_or("").find(
-                  "program \"record\" (/opt/x/record) is not one glint runs by default"),
+    EXPECT_NE(refusal("record", "/opt/x/record", {}, listed)
+                  .value_or("")
+                  .find("program \"record\" (/opt/x/record) is not one glint runs by default"),
               std::string::npos);
 
     ProcessingTrust all;
@@ -110,8 +128,8 @@ TEST(ProcessingTrust, TheAllowListAllowsByNameOrByPath) {
     write_script(dir / "bin" / "record", "exit 0");
     fs::create_symlink(dir / "bin" / "record", dir / "bin" / "record-link");
     const fs::path list = dir / "allowed-programs";
-    write_file(list, "# my programs\n\n  convert   # ImageMagick\n" + (dir / "bin" / "record-link").string() +
-                         "\n/no/such/program\nffmpeg\n");
+    write_file(list, "# my programs\n\n  convert   # ImageMagick\n" +
+                         (dir / "bin" / "record-link").string() + "\n/no/such/program\nffmpeg\n");
     const ProcessingTrust trust = read_allow_list(list);
     EXPECT_EQ(trust.allow_list, list);
     ASSERT_EQ(trust.allowed.size(), 3u);  // a path naming nothing allows nothing, and says so
@@ -231,14 +249,14 @@ TEST(ProcessingTrust, TheRunnerRefusesBeforeAnythingRunsEvenWithKeepGoing) {
     } catch (const Error& e) {
         EXPECT_EQ(e.message(), "nothing written: 2 errors in the inputs");
     }
-    EXPECT_NE(log.text().find("error: cam.platform:30: processing/task: program "
-                             "\"record\" (" +
-                             (dir / "path" / "record").string() +
-                             ") is not one glint runs by default"),
-              std::string::npos)
+    EXPECT_NE(
+        log.text().find("error: cam.platform:30: processing/task: program "
+                        "\"record\" (" +
+                        (dir / "path" / "record").string() + ") is not one glint runs by default"),
+        std::string::npos)
         << log.text();
     EXPECT_NE(log.text().find("error: cam.platform:36: processing/task: argument "
-                             "3 of ffmpeg, \"/tmp/x.mp4\", is an absolute path"),
+                              "3 of ffmpeg, \"/tmp/x.mp4\", is an absolute path"),
               std::string::npos)
         << log.text();
     EXPECT_EQ(log.text().find("cam.platform:42"), std::string::npos) << log.text();

@@ -69,7 +69,7 @@ struct ConvertOptions {
     std::optional<int> bit_depth;               ///< 8, 16, 32 (64 for ENVI)
     std::optional<io::EnviDataType> data_type;  ///< ENVI output type
     Colormap colormap = Colormap::automatic;    ///< how one band of labels is drawn
-    /// A DIRSIG lidar BIN input: the pulse to write (glint/app_envi/lidar_bin.h); unset: all.
+    /// A DIRSIG lidar BIN input: the pulse to write (glint/app_envi/bin_commands.h); unset: all.
     std::optional<std::uint64_t> pulse;
     /// A DIRSIG lidar BIN input: range images (convert_bin's `range`) instead of cubes.
     bool range = false;

@@ -13,18 +13,18 @@
 
 #include "glint/core/context.h"
 #include "glint/dirsig/read_options.h"
-#include "glint/process/processing.h"
+#include "glint/process/processing_runner.h"
 #include "glint/render/render.h"
 
 namespace glint::app_render {
 
 struct Options {
-    std::filesystem::path input;     ///< the .jsim or .sim
-    std::filesystem::path schedule;  ///< --schedule FILE (empty: the whole schedule)
-    bool dry_run = false;            ///< print the plan, trace nothing
-    bool radiance_only = false;      ///< --radiance-only: write radiance, no detector stage
-    render::RenderOptions render;    ///< everything else
-    dirsig::ReadOptions read;        ///< how the input files are resolved
+    std::filesystem::path input;          ///< the .jsim or .sim
+    std::filesystem::path schedule_file;  ///< --schedule FILE (empty: the whole schedule)
+    bool dry_run = false;                 ///< print the plan, trace nothing
+    bool radiance_only = false;           ///< --radiance-only: write radiance, no detector stage
+    render::RenderOptions render;         ///< everything else
+    dirsig::ReadOptions read;             ///< how the input files are resolved
     /// --atmosphere none|parametric|FILE: replaces the simulation's atmosphere (whose file is
     /// then not read); empty: the simulation's
     std::string atmosphere;

@@ -15,8 +15,8 @@
 #include "glint/core/diagnostics.h"
 #include "glint/core/log.h"
 #include "glint/dirsig/read_options.h"
-#include "glint/inputs/simulation_inputs.h"
-#include "glint/model/inputs.h"
+#include "glint/inputs/scene_atmosphere.h"
+#include "glint/model/simulation_inputs.h"
 
 namespace glint::inputs {
 

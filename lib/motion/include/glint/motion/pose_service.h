@@ -26,10 +26,10 @@
 
 #include "glint/core/diagnostics.h"
 #include "glint/core/log.h"
-#include "glint/model/inputs.h"
 #include "glint/model/jitter.h"
 #include "glint/model/platform.h"
 #include "glint/model/simulation.h"
+#include "glint/model/simulation_inputs.h"
 #include "glint/model/tasks.h"
 #include "glint/motion/euler.h"
 #include "glint/motion/frames.h"

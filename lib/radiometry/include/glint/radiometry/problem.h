@@ -159,17 +159,12 @@ Solutions solve(const PathTracer& tracer, const ProblemBatch& batch, const Conte
 
 /// Receives each solved problem of a batch (solve_each): its index in the batch (0 … count −
 /// 1), its radiance (one value per band, in a buffer of the solving thread that the receiver
-/// may change and must not keep), its sample count and its standard error at the reference
-/// band. Called from the solving threads, once per index; calls for different indices run
-/// at the same time.
+/// may change and must not keep), the bands that may be non-zero (under spectral sampling,
+/// TracerSettings::spectral_samples, the bands the problem's samples reached, ascending:
+/// radiance is exactly 0 at every other band; empty when every band may be non-zero), its
+/// sample count and its standard error at the reference band. Called from the solving
+/// threads, once per index; calls for different indices run at the same time.
 using SolutionReceiver =
-    std::function<void(std::uint64_t index, std::span<double> radiance_w_per_cm2_sr_um,
-                       std::uint64_t samples, double standard_error_w_per_cm2_sr_um)>;
-
-/// SolutionReceiver with the bands that may be non-zero: under spectral sampling
-/// (TracerSettings::spectral_samples) the bands the problem's samples reached, ascending
-/// (radiance is exactly 0 at every other band); empty when every band may be non-zero.
-using SparseSolutionReceiver =
     std::function<void(std::uint64_t index, std::span<double> radiance_w_per_cm2_sr_um,
                        std::span<const std::uint32_t> nonzero_bands, std::uint64_t samples,
                        double standard_error_w_per_cm2_sr_um)>;
@@ -180,8 +175,5 @@ using SparseSolutionReceiver =
 /// the rays traced.
 std::uint64_t solve_each(const PathTracer& tracer, const ProblemBatch& batch,
                          const Context& context, const SolutionReceiver& receive);
-/// solve_each() that also says which bands may be non-zero (a receiver can skip the rest).
-std::uint64_t solve_each(const PathTracer& tracer, const ProblemBatch& batch,
-                         const Context& context, const SparseSolutionReceiver& receive);
 
 }  // namespace glint::radiometry

@@ -21,8 +21,8 @@
 
 #include "glint/atmosphere/atmosphere.h"
 #include "glint/core/context.h"
-#include "glint/model/inputs.h"
 #include "glint/model/processing.h"
+#include "glint/model/simulation_inputs.h"
 #include "glint/radiometry/path_tracer.h"
 #include "glint/radiometry/problem.h"
 #include "glint/scene/geometry_scene.h"

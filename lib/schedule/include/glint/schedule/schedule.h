@@ -18,10 +18,10 @@
 
 #include "glint/core/diagnostics.h"
 #include "glint/core/log.h"
-#include "glint/model/inputs.h"
 #include "glint/model/platform.h"
 #include "glint/model/scene.h"
 #include "glint/model/simulation.h"
+#include "glint/model/simulation_inputs.h"
 #include "glint/model/tasks.h"
 #include "glint/motion/pose_service.h"
 #include "glint/schedule/clock_ticks.h"
@@ -62,8 +62,8 @@ struct ClockedFocalPlane {
     /// Never null once loaded: every source is an enabled focal plane (a data recorder's
     /// own clock makes no source; docs/data-recorder.md).
     const model::FocalPlane* focal_plane = nullptr;
-    std::size_t x_count = 0;                         ///< pixel counts after scale_resolution
-    std::size_t y_count = 0;                         ///< rows; for TDI the stages (never scaled)
+    std::size_t x_count = 0;  ///< pixel counts after scale_resolution
+    std::size_t y_count = 0;  ///< rows; for TDI the stages (never scaled)
     /// Problems (pixels rendered) per capture: x_count · y_count, or x_count for TDI (the
     /// stages of one output pixel are one problem).
     std::uint64_t problems_per_capture = 0;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // glint's own atmosphere files: the YAML atmosphere (model none, parametric, tabulated; keys
 // in glint/model/atmosphere.h) and the table file of the tabulated model. (The DIRSIG `.atm`
-// is glint/dirsig/atm_reader.h; glint/inputs/simulation_inputs.h tells the two apart.)
+// is glint/dirsig/atm_reader.h; glint/inputs/scene_atmosphere.h tells the two apart.)
 //
 // Table file format (glint's definition, docs/physics.md ("Atmosphere and sun")):
 //

@@ -5,8 +5,8 @@
 // demosaic::DemosaicStream reads the mosaic line by line and each output line is written as it
 // is made, so memory holds a window of lines (a few dozen lines' worth at most), whatever the
 // height; a mosaic so wide that the window would pass the context's --max-memory is refused
-// with the memory it needs (pan-guided: 536 bytes per pixel of width). A stretch whose limits come from the data reads the
-// mosaic once more (min/max) or twice more (percentiles) before writing.
+// with the memory it needs (pan-guided: 536 bytes per pixel of width). A stretch whose limits come
+// from the data reads the mosaic once more (min/max) or twice more (percentiles) before writing.
 //
 // Output kind: `format` (png, tiff, jpeg, exr, ppm, envi), else the output's extension
 // (.png, .tif/.tiff, .jpg/.jpeg, .exr, .ppm/.pnm; .img, .dat, .raw, .bsq, .bil, .bip, .envi

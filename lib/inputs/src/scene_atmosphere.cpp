@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// A simulation's atmosphere and merged scene (glint/inputs/simulation_inputs.h): the first
+// A simulation's atmosphere and merged scene (glint/inputs/scene_atmosphere.h): the first
 // BasicAtmosphere plugin's file or the embedded parametric default, and every scene_list
 // entry read with read_scene and merged (origin, materials by id, objects, instances).
-#include "glint/inputs/simulation_inputs.h"
+#include "glint/inputs/scene_atmosphere.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// ProcessingRunner (glint/process/processing.h): program lookup (PATH, then glint's stand-ins
-// for DIRSIG's image_tool and demosaic), the checks made before a render starts, and running
-// an event's tasks through run_process.
-#include "glint/process/processing.h"
+// ProcessingRunner (glint/process/processing_runner.h): program lookup (PATH, then glint's
+// stand-ins for DIRSIG's image_tool and demosaic), the checks made before a render starts, and
+// running an event's tasks through run_process.
+#include "glint/process/processing_runner.h"
 
 #include <unistd.h>
 
@@ -47,8 +47,7 @@ std::string task_name(const model::ProcessingTask& task) {
 /// "capture_completed of Cam -> Frame (task 1, capture 3)".
 std::string event_name(const model::ProcessingEvent& event) {
     return std::string(model::name_of(event.kind)) + " of " + event.focal_plane + " (task " +
-           std::to_string(event.task + 1) + ", capture " + std::to_string(event.capture + 1) +
-           ")";
+           std::to_string(event.task + 1) + ", capture " + std::to_string(event.capture + 1) + ")";
 }
 
 /// Logs each line of a task's output stream, prefixed by the task's program.
@@ -79,7 +78,8 @@ constexpr std::size_t kMaxArgumentBytes = 32 * 4096;
 std::optional<std::string> argv_problem(const std::vector<std::string>& argv) {
     std::size_t total = 0;
     for (std::size_t i = 0; i < argv.size(); ++i) {
-        const std::string what = i == 0 ? std::string("the program") : "argument " + std::to_string(i);
+        const std::string what =
+            i == 0 ? std::string("the program") : "argument " + std::to_string(i);
         if (argv[i].find('\0') != std::string::npos) {
             return what + " holds a NUL byte, which no program can be given";
         }
@@ -93,7 +93,8 @@ std::optional<std::string> argv_problem(const std::vector<std::string>& argv) {
     const std::size_t limit = arg_max > 0 ? static_cast<std::size_t>(arg_max) / 4 : 512 * 1024;
     if (total > limit) {
         return "its arguments are " + format_byte_size(static_cast<double>(total)) +
-               " in all; the system passes at most " + format_byte_size(static_cast<double>(limit)) +
+               " in all; the system passes at most " +
+               format_byte_size(static_cast<double>(limit)) +
                " (a quarter of ARG_MAX, the rest left to the environment)";
     }
     return std::nullopt;
@@ -136,7 +137,8 @@ std::optional<TaskCommand> ProcessingRunner::find(const std::string& program) {
     const char* glint_tool = stand_in_for(program);
     if (glint_tool == nullptr) return std::nullopt;
     std::optional<fs::path> tool;
-    if (!m_options.tools_dir.empty()) tool = find_program((m_options.tools_dir / glint_tool).string());
+    if (!m_options.tools_dir.empty())
+        tool = find_program((m_options.tools_dir / glint_tool).string());
     if (!tool) tool = find_program(glint_tool, path);
     if (!tool) return std::nullopt;
     command.program = fs::absolute(*tool).lexically_normal();
@@ -175,16 +177,16 @@ TaskCommand ProcessingRunner::build(const model::ProcessingTask& task, const std
     const std::string program = substitute_basename(task.program, shown);
     std::optional<TaskCommand> command = find(program);
     if (!command) {
-        throw input_error("program " + quote(program) +
-                              (program.find('/') != std::string::npos
-                                   ? " is not an executable file"
-                                   : " is not on PATH" +
-                                         std::string(stand_in_for(program)
-                                                         ? std::string(" (nor is ") +
-                                                               stand_in_for(program) +
-                                                               ", which stands for it)"
-                                                         : "")),
-                          task.where);
+        throw input_error(
+            "program " + quote(program) +
+                (program.find('/') != std::string::npos
+                     ? " is not an executable file"
+                     : " is not on PATH" +
+                           std::string(stand_in_for(program)
+                                           ? std::string(" (nor is ") + stand_in_for(program) +
+                                                 ", which stands for it)"
+                                           : "")),
+            task.where);
     }
     command->argv.push_back(command->program.string());
     std::vector<std::string> judged_arguments;
@@ -203,10 +205,10 @@ TaskCommand ProcessingRunner::build(const model::ProcessingTask& task, const std
 
 void ProcessingRunner::check(const std::vector<model::ProcessingEvent>& events) {
     Diagnostics diagnostics;
-    std::set<std::pair<std::string, int>> warned;  // task file:line warned about the basename
+    std::set<std::pair<std::string, int>> warned;   // task file:line warned about the basename
     std::set<std::pair<std::string, int>> missing;  // task file:line whose program is missing
     std::set<std::pair<std::string, int>> early_removal;  // removefile before completion
-    std::set<std::pair<std::string, int>> refused;  // task file:line the user has not allowed
+    std::set<std::pair<std::string, int>> refused;        // task file:line the user has not allowed
     for (const model::ProcessingEvent& event : events) {
         for (const model::ProcessingTask& task : event.tasks) {
             const auto key = std::make_pair(task.where.file, task.where.line);
@@ -221,20 +223,20 @@ void ProcessingRunner::check(const std::vector<model::ProcessingEvent>& events) 
                 continue;
             }
             if (uses_basename(task) && !event.file_complete && warned.insert(key).second) {
-                diagnostics.warning(task.where,
-                                    std::string(kImageBasename) + " at " +
-                                        model::name_of(event.kind) + " names " +
-                                        event.file.stem().string() +
-                                        ", whose image is not complete then (glint publishes an "
-                                        "image when its last capture is written): the program "
-                                        "will not find it");
+                diagnostics.warning(
+                    task.where, std::string(kImageBasename) + " at " + model::name_of(event.kind) +
+                                    " names " + event.file.stem().string() +
+                                    ", whose image is not complete then (glint publishes an "
+                                    "image when its last capture is written): the program "
+                                    "will not find it");
             }
             try {
                 const TaskCommand planned = command(task, event);
                 if (planned.refusal && refused.insert(key).second) {
                     diagnostics.error(task.where, *planned.refusal);
                 }
-                if (auto problem = argv_problem(planned.argv); problem && refused.insert(key).second) {
+                if (auto problem = argv_problem(planned.argv);
+                    problem && refused.insert(key).second) {
                     diagnostics.error(task.where, *problem);
                 }
             } catch (const Error& e) {

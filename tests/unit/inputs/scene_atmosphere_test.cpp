@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
-// Tests of a simulation's atmosphere and merged scene (glint/inputs/simulation_inputs.h):
+// Tests of a simulation's atmosphere and merged scene (glint/inputs/scene_atmosphere.h):
 // the BasicAtmosphere file (YAML and .atm), the embedded parametric default when none is
 // named, missing files and extra plugins; scenes merged in scene_list order (materials by
 // id with their triangles remapped, objects, instances, origin), duplicate ids naming both
 // files, a shared .mat merged once, a differing origin, offsets and missing files; and a
 // .jsim read end to end.
-#include "glint/inputs/simulation_inputs.h"
+#include "glint/inputs/scene_atmosphere.h"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

@@ -23,7 +23,7 @@ bool is_lidar_bin(const std::filesystem::path& path);
 /// What `info` reports of a BIN file: every header, and each pulse's totals.
 struct BinSummary {
     struct Pulse {
-        io::BinPulse header;  ///< `data` empty
+        io::BinPulse header;                 ///< `data` empty
         double passive_photons_per_s = 0.0;  ///< the sum of every pixel's passive rate
         double active_photons = 0.0;         ///< the sum of every time sample
     };

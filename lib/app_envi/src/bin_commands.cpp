@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// glint-envi on DIRSIG lidar BIN files (glint/app_envi/lidar_bin.h).
-#include "glint/app_envi/lidar_bin.h"
+// glint-envi on DIRSIG lidar BIN files (glint/app_envi/bin_commands.h).
+#include "glint/app_envi/bin_commands.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -103,12 +103,11 @@ std::vector<double> line_buffer(const io::BinFileHeader& h, const io::BinPulse& 
                                 std::size_t max_memory_bytes) {
     const std::uint64_t values = static_cast<std::uint64_t>(h.x_count) * p.values_per_pixel();
     if (values * sizeof(double) > max_memory_bytes) {
-        throw usage_error("a line of BIN pulse " + std::to_string(p.pulse_index) + " (" +
-                          std::to_string(h.x_count) + " pixels of " +
-                          std::to_string(p.values_per_pixel()) + " values) needs " +
-                          format_byte_size(static_cast<double>(values * sizeof(double))) +
-                          ", more than --max-memory " +
-                          format_byte_size(static_cast<double>(max_memory_bytes)));
+        throw usage_error(
+            "a line of BIN pulse " + std::to_string(p.pulse_index) + " (" +
+            std::to_string(h.x_count) + " pixels of " + std::to_string(p.values_per_pixel()) +
+            " values) needs " + format_byte_size(static_cast<double>(values * sizeof(double))) +
+            ", more than --max-memory " + format_byte_size(static_cast<double>(max_memory_bytes)));
     }
     return std::vector<double>(static_cast<std::size_t>(values));
 }
@@ -230,7 +229,8 @@ BinSummary summarize_bin(const fs::path& path, const CancelToken& cancel) {
                     std::min<std::uint64_t>(reader.values_left(), kChunkValues)));
                 reader.read_values(chunk);
                 for (const double v : chunk) {
-                    (index % per_pixel == 0 ? totals.passive_photons_per_s : totals.active_photons) += v;
+                    (index % per_pixel == 0 ? totals.passive_photons_per_s
+                                            : totals.active_photons) += v;
                     ++index;
                 }
             }
@@ -249,8 +249,7 @@ std::string format_bin_text(const fs::path& path, const BinSummary& file) {
     std::ostringstream out;
     out << path.string() << ": DIRSIG BIN version " << int(h.version) << ", "
         << (h.little_endian ? "little" : "big") << " endian, " << h.x_count << " x " << h.y_count
-        << " pixels, " << file.tasks.size() << " task(s), " << file.pulse_count()
-        << " pulse(s)\n";
+        << " pixels, " << file.tasks.size() << " task(s), " << file.pulse_count() << " pulse(s)\n";
     out << "  created: " << h.created << "; written by: " << h.dirsig_version << "\n";
     if (!h.description.empty()) out << "  description: " << h.description << "\n";
     out << "  scene origin: " << num(h.origin_latitude_deg) << " deg, "

@@ -55,9 +55,8 @@ bool set_pixel_counts(ClockedFocalPlane& source, double factor, Diagnostics& dia
     if (x > kMaxAxisCount || y > kMaxAxisCount || x * y > kMaxElementCount) {
         diagnostics.error(array.where,
                           "--scale_resolution " + format_shortest(factor) +
-                              (kx * ky > 1.0 ? " and the raw oversampling " +
-                                                   format_shortest(kx) + "x" +
-                                                   format_shortest(ky) + " make the "
+                              (kx * ky > 1.0 ? " and the raw oversampling " + format_shortest(kx) +
+                                                   "x" + format_shortest(ky) + " make the "
                                              : std::string(" makes the ")) +
                               std::to_string(array.x_count) + "x" + std::to_string(array.y_count) +
                               " detector array " + std::to_string(static_cast<std::uint64_t>(x)) +
@@ -73,21 +72,21 @@ bool set_pixel_counts(ClockedFocalPlane& source, double factor, Diagnostics& dia
     return true;
 }
 
-/// Everything load() works with besides the Impl being filled.
-struct Loader {
+/// Everything Schedule::build works with besides the Impl being filled.
+struct Builder {
     const model::Simulation& simulation;
     const ScheduleOptions& options;
     const Log& log;
     Diagnostics& diagnostics;
     detail::ScheduleData& impl;
 
-    void load_plugin(const model::PlatformInputs& inputs);
+    void build_plugin(const model::PlatformInputs& inputs);
     void add_sources(std::size_t plugin_slot);
     void check_output_names();
     void compute_ticks();
 };
 
-void Loader::load_plugin(const model::PlatformInputs& inputs) {
+void Builder::build_plugin(const model::PlatformInputs& inputs) {
     const std::size_t plugin_index = inputs.plugin_index;
     const model::Plugin& plugin = simulation.plugins.at(plugin_index);
     std::shared_ptr<const motion::PoseService> poses;
@@ -119,7 +118,7 @@ void Loader::load_plugin(const model::PlatformInputs& inputs) {
     add_sources(impl.plugins.size() - 1);
 }
 
-void Loader::add_sources(std::size_t plugin_slot) {
+void Builder::add_sources(std::size_t plugin_slot) {
     const PluginSchedule& entry = impl.plugins[plugin_slot];
     const motion::PoseService& poses = *entry.poses;
     for (std::size_t k = 0; k < poses.instrument_count(); ++k) {
@@ -150,7 +149,7 @@ void Loader::add_sources(std::size_t plugin_slot) {
     }
 }
 
-void Loader::check_output_names() {
+void Builder::check_output_names() {
     struct Owner {
         std::size_t plugin_index;
         std::string what;
@@ -193,7 +192,7 @@ void Loader::check_output_names() {
     }
 }
 
-void Loader::compute_ticks() {
+void Builder::compute_ticks() {
     impl.ticks.resize(impl.sources.size());
     for (std::size_t s = 0; s < impl.sources.size(); ++s) {
         const ClockedFocalPlane& source = impl.sources[s];
@@ -256,8 +255,7 @@ Schedule Schedule::build(const model::SimulationInputs& inputs, const ScheduleOp
     }
     if (options.output_prefix) {
         if (const auto problem = model::output_name_problem(*options.output_prefix)) {
-            throw usage_error("--output_prefix " + quote(*options.output_prefix) + " " +
-                              *problem);
+            throw usage_error("--output_prefix " + quote(*options.output_prefix) + " " + *problem);
         }
     }
     const model::Simulation& simulation = inputs.simulation;
@@ -276,12 +274,12 @@ Schedule Schedule::build(const model::SimulationInputs& inputs, const ScheduleOp
     const DateTime reference =
         inputs.platforms.empty() ? DateTime{} : inputs.platforms.front().tasks.reference;
     impl.targets = std::make_shared<const motion::SceneTargets>(scene, impl.frame, reference, log);
-    Loader loader{simulation, options, log, diagnostics, impl};
+    Builder loader{simulation, options, log, diagnostics, impl};
     if (simulation.basic_platform_indices().empty()) {
         diagnostics.warning(ErrorContext{simulation.file, 0, ""},
                             "no BasicPlatform entry in plugin_list: the schedule is empty");
     }
-    for (const model::PlatformInputs& platform : inputs.platforms) loader.load_plugin(platform);
+    for (const model::PlatformInputs& platform : inputs.platforms) loader.build_plugin(platform);
     loader.check_output_names();
     loader.compute_ticks();
     diagnostics.throw_if_errors();

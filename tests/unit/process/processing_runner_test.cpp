@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
-// Tests of the processing-task runner (glint/process/processing.h): the $$IMG_BASENAME$$
+// Tests of the processing-task runner (glint/process/processing_runner.h): the $$IMG_BASENAME$$
 // substitution, program lookup (PATH, a path, DIRSIG's image_tool and demosaic standing for
 // glint-envi and glint-demosaic in the tools folder first), the checks made before a render
 // (a missing program, <removefile> before the image is complete, the basename of an
 // incomplete image), running an event's tasks in the image's folder and <removefile>.
-#include "glint/process/processing.h"
+#include "glint/process/processing_runner.h"
 
 #include <gtest/gtest.h>
 
@@ -79,9 +79,10 @@ TEST(Processing, DirsigProgramsStandForGlintToolsInTheToolsFolderFirst) {
     Context context;
     context.log = log.log();
     ProcessingRunner runner(options, context);
-    const auto e = event(ProcessingSchedule::capture_completed, dir / "out" / "frame-t0000.img",
-                         true, {});
-    const TaskCommand envi = runner.command(task("image_tool", {"convert", "$$IMG_BASENAME$$.img"}), e);
+    const auto e =
+        event(ProcessingSchedule::capture_completed, dir / "out" / "frame-t0000.img", true, {});
+    const TaskCommand envi =
+        runner.command(task("image_tool", {"convert", "$$IMG_BASENAME$$.img"}), e);
     EXPECT_EQ(envi.program, dir / "tools" / "glint-envi");
     EXPECT_EQ(envi.stands_for, "image_tool");
     EXPECT_EQ(envi.argv, (std::vector<std::string>{(dir / "tools" / "glint-envi").string(),
@@ -120,8 +121,8 @@ TEST(Processing, CheckRefusesMissingProgramsAndEarlyRemovalAndWarnsOfIncompleteI
     const fs::path file = dir / "out" / "frame.img";
     const std::vector<model::ProcessingEvent> events{
         event(ProcessingSchedule::capture_completed, file, false,
-              {task("record", {"$$IMG_BASENAME$$"}, false, 10),
-               task("record", {}, true, 11), task("nowhere", {}, false, 12)}),
+              {task("record", {"$$IMG_BASENAME$$"}, false, 10), task("record", {}, true, 11),
+               task("nowhere", {}, false, 12)}),
         event(ProcessingSchedule::capture_completed, file, true,
               {task("record", {"$$IMG_BASENAME$$"}, false, 10), task("record", {}, true, 11),
                task("nowhere", {}, false, 12)})};
@@ -209,8 +210,8 @@ TEST(Processing, RunsInTheImagesFolderThenRemovesTheImage) {
     ProcessingRunner runner(options, context);
     model::ProcessingTask first = task("record", {"--in=$$IMG_BASENAME$$.img", "-x"});
     first.message = "Recording";
-    const auto e = event(ProcessingSchedule::capture_completed, out / "frame-t0000-c0001.img",
-                         true, {first, task("record", {"second"}, true)});
+    const auto e = event(ProcessingSchedule::capture_completed, out / "frame-t0000-c0001.img", true,
+                         {first, task("record", {"second"}, true)});
     runner.run(e);
     EXPECT_EQ(read_text(out / "where.txt"), fs::canonical(out).string() + "\n");
     EXPECT_EQ(read_text(out / "args.txt"), "--in=frame-t0000-c0001.img\n-x\nsecond\n");
@@ -234,7 +235,8 @@ TEST(Processing, AProgramThatCannotStartIsNamedWithItsTask) {
     // Executable, but neither a binary nor a script (no #!): the exec fails.
     test::TempDir dir;
     fs::create_directories(dir / "path");
-    std::ofstream(dir / "path" / "garbage") << "not a program\n\x7f" "ELFxx";
+    std::ofstream(dir / "path" / "garbage") << "not a program\n\x7f"
+                                               "ELFxx";
     fs::permissions(dir / "path" / "garbage", fs::perms::owner_all);
     const fs::path out = dir / "out";
     fs::create_directories(out);

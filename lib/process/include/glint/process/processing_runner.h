@@ -72,10 +72,11 @@ public:
     ProcessingRunner(ProcessingOptions options, const Context& context);
 
     /// Checks the events a render will fire before it starts: a program found nowhere, a
-    /// program the user has not allowed (even with keep_going), a `<removefile>` at an event whose image is not complete then (e.g. capture_completed
-    /// of a file holding every capture) are errors at the task's file:line (with keep_going
-    /// a missing program is a warning and its task is skipped); $$IMG_BASENAME$$ at such an
-    /// event is one warning per task. Throws glint::Error (input) after logging every problem.
+    /// program the user has not allowed (even with keep_going), a `<removefile>` at an event whose
+    /// image is not complete then (e.g. capture_completed of a file holding every capture) are
+    /// errors at the task's file:line (with keep_going a missing program is a warning and its task
+    /// is skipped); $$IMG_BASENAME$$ at such an event is one warning per task. Throws glint::Error
+    /// (input) after logging every problem.
     void check(const std::vector<model::ProcessingEvent>& events);
 
     /// Runs the event's tasks in order, then removes its image when one of them asks to.
