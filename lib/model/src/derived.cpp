@@ -49,6 +49,45 @@ double triangle(double offset_um, double half_um) {
     return value > 0.0 ? value : 0.0;
 }
 
+/// The response-weighted mean wavelength ∫λR dλ / ∫R dλ of the piecewise-linear table (exact).
+double table_centroid_um(const Channel& channel) {
+    const std::vector<double>& wl = channel.table_wavelength_um;
+    const std::vector<double>& r = channel.table_value;
+    double moment = 0.0;
+    double area = 0.0;
+    for (std::size_t i = 1; i < wl.size(); ++i) {
+        const double a = wl[i - 1];
+        const double b = wl[i];
+        area += 0.5 * (b - a) * (r[i - 1] + r[i]);
+        moment += (b - a) / 6.0 * (r[i - 1] * (2.0 * a + b) + r[i] * (a + 2.0 * b));
+    }
+    if (area > 0.0) return moment / area;
+    // A one-point table (or an all-zero one, rejected earlier): its own wavelength(s).
+    return 0.5 * (wl.front() + wl.back());
+}
+
+/// Distance between the outermost crossings of half the table's peak (µm).
+double table_fwhm_um(const Channel& channel) {
+    const std::vector<double>& wl = channel.table_wavelength_um;
+    const std::vector<double>& r = channel.table_value;
+    const double half = 0.5 * *std::max_element(r.begin(), r.end());
+    std::size_t first = 0;  // the peak itself is >= half, so both loops stop at or before it
+    while (first + 1 < r.size() && r[first] < half) ++first;
+    std::size_t last = r.size() - 1;
+    while (last > first && r[last] < half) --last;
+    double left_um = wl[first];
+    if (first > 0) {
+        const double t = (half - r[first - 1]) / (r[first] - r[first - 1]);
+        left_um = wl[first - 1] + t * (wl[first] - wl[first - 1]);
+    }
+    double right_um = wl[last];
+    if (last + 1 < r.size()) {
+        const double t = (r[last] - half) / (r[last] - r[last + 1]);
+        right_um = wl[last] + t * (wl[last + 1] - wl[last]);
+    }
+    return right_um - left_um;
+}
+
 }  // namespace
 
 std::optional<double> f_number(const InstrumentProperties& properties) {
@@ -131,6 +170,24 @@ std::vector<double> channel_response(const Channel& channel, const SpectralGrid&
 
 double channel_integral_um(const Channel& channel, const SpectralGrid& grid) {
     return integrate_trapezoid(grid, channel_response(channel, grid));
+}
+
+double channel_center_um(const Channel& channel) {
+    return channel.shape == ChannelShape::tabulated ? table_centroid_um(channel)
+                                                    : channel.center_um;
+}
+
+double channel_fwhm_um(const Channel& channel) {
+    switch (channel.shape) {
+        case ChannelShape::gaussian:  // width is the FWHM
+        case ChannelShape::tophat:    // a box's FWHM is its full width
+            return channel.width_um;
+        case ChannelShape::triangle:  // half height at ±width/4
+            return 0.5 * channel.width_um;
+        case ChannelShape::tabulated:
+            return table_fwhm_um(channel);
+    }
+    throw internal_error("unknown channel shape");
 }
 
 }  // namespace glint::model

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // The output-units map of the simple and raw capture methods: per-channel band weights
 // (trapezoid weight × response × flux, area, aperture and time factors × gain / ∫R), the
-// bias, the ENVI `data units` strings (Table 1's spelling) and the channels' ENVI centres and
-// FWHMs. Formulas and conventions are in output_units.h and docs/units.md.
+// bias and the ENVI `data units` strings (Table 1's spelling); the channels' ENVI centres and
+// FWHMs are the spectral response's (model::channel_center_um, channel_fwhm_um). Formulas and
+// conventions are in output_units.h and docs/units.md.
 #include "glint/sensor/output_units.h"
 
 #include <algorithm>
@@ -72,64 +73,6 @@ const char* flux_word(model::FluxUnits flux, bool temporal_integration) {
             return temporal_integration ? "Electrons" : "Electrons/s";
     }
     throw internal_error("unknown flux units");
-}
-
-/// The response-weighted mean wavelength ∫λR dλ / ∫R dλ of the piecewise-linear table (exact).
-double table_centroid_um(const model::Channel& channel) {
-    const std::vector<double>& wl = channel.table_wavelength_um;
-    const std::vector<double>& r = channel.table_value;
-    double moment = 0.0;
-    double area = 0.0;
-    for (std::size_t i = 1; i < wl.size(); ++i) {
-        const double a = wl[i - 1];
-        const double b = wl[i];
-        area += 0.5 * (b - a) * (r[i - 1] + r[i]);
-        moment += (b - a) / 6.0 * (r[i - 1] * (2.0 * a + b) + r[i] * (a + 2.0 * b));
-    }
-    if (area > 0.0) return moment / area;
-    // A one-point table (or an all-zero one, rejected earlier): its own wavelength(s).
-    return 0.5 * (wl.front() + wl.back());
-}
-
-/// Distance between the outermost crossings of half the table's peak (µm).
-double table_fwhm_um(const model::Channel& channel) {
-    const std::vector<double>& wl = channel.table_wavelength_um;
-    const std::vector<double>& r = channel.table_value;
-    const double half = 0.5 * *std::max_element(r.begin(), r.end());
-    std::size_t first = 0;  // the peak itself is >= half, so both loops stop at or before it
-    while (first + 1 < r.size() && r[first] < half) ++first;
-    std::size_t last = r.size() - 1;
-    while (last > first && r[last] < half) --last;
-    double left_um = wl[first];
-    if (first > 0) {
-        const double t = (half - r[first - 1]) / (r[first] - r[first - 1]);
-        left_um = wl[first - 1] + t * (wl[first] - wl[first - 1]);
-    }
-    double right_um = wl[last];
-    if (last + 1 < r.size()) {
-        const double t = (r[last] - half) / (r[last] - r[last + 1]);
-        right_um = wl[last] + t * (wl[last + 1] - wl[last]);
-    }
-    return right_um - left_um;
-}
-
-void set_center_and_fwhm(const model::Channel& channel, double& center_um, double& fwhm_um) {
-    switch (channel.shape) {
-        case model::ChannelShape::gaussian:  // width is the FWHM
-        case model::ChannelShape::tophat:    // a box's FWHM is its full width
-            center_um = channel.center_um;
-            fwhm_um = channel.width_um;
-            return;
-        case model::ChannelShape::triangle:  // half height at ±width/4
-            center_um = channel.center_um;
-            fwhm_um = 0.5 * channel.width_um;
-            return;
-        case model::ChannelShape::tabulated:
-            center_um = table_centroid_um(channel);
-            fwhm_um = table_fwhm_um(channel);
-            return;
-    }
-    throw internal_error("unknown channel shape");
 }
 
 }  // namespace
@@ -213,7 +156,8 @@ OutputUnits::OutputUnits(const model::CaptureMethod& method,
         }
         add_row(row);
         m_bias[c] = channel.bias;
-        set_center_and_fwhm(channel, m_centers_um[c], m_fwhm_um[c]);
+        m_centers_um[c] = model::channel_center_um(channel);
+        m_fwhm_um[c] = model::channel_fwhm_um(channel);
         m_band_names.push_back(channel.name);
         m_description.per_channel_units.push_back(
             data_units_string(file.flux_units, file.area_units, m_description.aperture,

@@ -211,3 +211,35 @@ TEST(ChannelResponse, InvalidWidthOrTableThrowsAtTheChannel) {
 
 }  // namespace
 }  // namespace glint::model
+
+namespace glint::model {
+namespace {
+
+// The ENVI wavelength and fwhm of each channel shape: a gaussian's width is its FWHM, a box's
+// its full width, a triangle's half its base; a table's centroid and half-peak width are
+// exact for a piecewise-linear response (a symmetric triangle table: centre 0.55, FWHM 0.05).
+TEST(ChannelCenterAndFwhm, FollowEachShape) {
+    Channel c;
+    c.center_um = 0.55;
+    c.width_um = 0.1;
+    c.shape = ChannelShape::gaussian;
+    EXPECT_EQ(channel_center_um(c), 0.55);
+    EXPECT_EQ(channel_fwhm_um(c), 0.1);
+    c.shape = ChannelShape::tophat;
+    EXPECT_EQ(channel_fwhm_um(c), 0.1);
+    c.shape = ChannelShape::triangle;
+    EXPECT_EQ(channel_fwhm_um(c), 0.05);
+    c.shape = ChannelShape::tabulated;
+    c.table_wavelength_um = {0.50, 0.55, 0.60};
+    c.table_value = {0.0, 1.0, 0.0};
+    EXPECT_NEAR(channel_center_um(c), 0.55, 1e-15);
+    EXPECT_NEAR(channel_fwhm_um(c), 0.05, 1e-15);
+    // Skewed: ∫λR/∫R of a right triangle 0.5 → 0.6 rising is 0.5 + 2/3 · 0.1.
+    c.table_wavelength_um = {0.50, 0.60};
+    c.table_value = {0.0, 1.0};
+    EXPECT_NEAR(channel_center_um(c), 0.5 + 0.2 / 3.0, 1e-15);
+    EXPECT_NEAR(channel_fwhm_um(c), 0.05, 1e-15);
+}
+
+}  // namespace
+}  // namespace glint::model

@@ -34,5 +34,11 @@ SpectralGrid bandpass_grid(const Bandpass& bandpass);
 std::vector<double> channel_response(const Channel& channel, const SpectralGrid& grid);
 /// ∫ R(λ) dλ over the grid (trapezoid), in µm.
 double channel_integral_um(const Channel& channel, const SpectralGrid& grid);
+/// The channel's ENVI `wavelength`, µm: its centre (gaussian, tophat, triangle), or a table's
+/// response-weighted mean wavelength ∫λR dλ / ∫R dλ of the piecewise-linear table (exact).
+double channel_center_um(const Channel& channel);
+/// The channel's ENVI `fwhm`, µm: a gaussian's width, a tophat's full width, half a
+/// triangle's base, a table's distance between the outermost crossings of half its peak.
+double channel_fwhm_um(const Channel& channel);
 
 }  // namespace glint::model
