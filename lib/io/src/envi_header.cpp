@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// ENVI header model and parser: the data type table, `key = value` parsing (keys
-// case-insensitive, brace values over several lines, `;` comments, unknown keys kept) and
-// the validation that names file, line and key before anything data-sized is allocated.
+// ENVI header model and parser: `key = value` parsing (keys case-insensitive, brace values
+// over several lines, `;` comments, unknown keys kept) and the validation that names file,
+// line and key before anything data-sized is allocated. The data types are envi_types.cpp's.
 #include <algorithm>
-#include <bit>
 #include <cctype>
 #include <charconv>
 #include <map>
@@ -81,33 +80,6 @@ std::vector<std::string> split_list(std::string_view value) {
 
 namespace {
 
-struct TypeInfo {
-    EnviDataType type;
-    std::size_t size;
-    const char* name;
-};
-
-constexpr TypeInfo kTypes[] = {
-    {EnviDataType::uint8, 1, "uint8"},
-    {EnviDataType::int16, 2, "int16"},
-    {EnviDataType::int32, 4, "int32"},
-    {EnviDataType::float32, 4, "float32"},
-    {EnviDataType::float64, 8, "float64"},
-    {EnviDataType::complex64, 8, "complex64"},
-    {EnviDataType::complex128, 16, "complex128"},
-    {EnviDataType::uint16, 2, "uint16"},
-    {EnviDataType::uint32, 4, "uint32"},
-    {EnviDataType::int64, 8, "int64"},
-    {EnviDataType::uint64, 8, "uint64"},
-};
-
-const TypeInfo* find_type(EnviDataType type) {
-    for (const TypeInfo& info : kTypes) {
-        if (info.type == type) return &info;
-    }
-    return nullptr;
-}
-
 using detail::brace_content;
 using detail::is_standard_key;
 using detail::normalize_key;
@@ -133,9 +105,9 @@ std::vector<Entry> split_entries(std::string_view text, const std::string& file)
     std::string_view first = lines.front();
     if (first.substr(0, kBom.size()) == kBom) first.remove_prefix(kBom.size());
     if (trim(first) != "ENVI") {
-        throw input_error("missing ENVI magic: the first line is " + quote(trim(first)) +
-                              ", expected \"ENVI\"",
-                          ErrorContext{file, 1, {}});
+        throw input_error(
+            "missing ENVI magic: the first line is " + quote(trim(first)) + ", expected \"ENVI\"",
+            ErrorContext{file, 1, {}});
     }
     std::vector<Entry> entries;
     for (std::size_t i = 1; i < lines.size(); ++i) {
@@ -191,9 +163,8 @@ double parse_number(std::string_view item, const Entry& entry, const std::string
     double value = 0;
     const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
     if (text.empty() || end != text.data() + text.size() || ec != std::errc()) {
-        throw input_error(
-            "value " + std::to_string(index + 1) + " is not a number: " + quote(item),
-            ErrorContext{file, entry.line, entry.key});
+        throw input_error("value " + std::to_string(index + 1) + " is not a number: " + quote(item),
+                          ErrorContext{file, entry.line, entry.key});
     }
     return value;
 }
@@ -218,52 +189,6 @@ void check_list_length(std::size_t count, std::size_t bands, const char* what,
 }
 
 }  // namespace
-
-std::size_t envi_type_size(EnviDataType type) {
-    const TypeInfo* info = find_type(type);
-    if (!info) throw internal_error("envi_type_size: invalid EnviDataType");
-    return info->size;
-}
-
-std::optional<EnviDataType> envi_type_from_code(long code) {
-    for (const TypeInfo& info : kTypes) {
-        if (static_cast<long>(info.type) == code) return info.type;
-    }
-    return std::nullopt;
-}
-
-std::optional<EnviDataType> envi_type_from_string(std::string_view text) {
-    const std::string name = normalize_key(text);
-    for (const TypeInfo& info : kTypes) {
-        if (name == info.name || name == std::to_string(static_cast<long>(info.type))) {
-            return info.type;
-        }
-    }
-    return std::nullopt;
-}
-
-const char* envi_type_name(EnviDataType type) {
-    const TypeInfo* info = find_type(type);
-    return info ? info->name : "invalid";
-}
-
-const char* interleave_name(Interleave interleave) {
-    switch (interleave) {
-        case Interleave::bsq:
-            return "bsq";
-        case Interleave::bil:
-            return "bil";
-        case Interleave::bip:
-            return "bip";
-    }
-    return "invalid";
-}
-
-ByteOrder native_byte_order() {
-    static_assert(std::endian::native == std::endian::little ||
-                  std::endian::native == std::endian::big);
-    return std::endian::native == std::endian::little ? ByteOrder::little : ByteOrder::big;
-}
 
 std::optional<std::string> EnviHeader::find_extra(std::string_view key) const {
     for (const auto& [name, value] : extra) {
@@ -416,9 +341,8 @@ EnviHeader parse_envi_header(std::string_view text, const std::string& file) {
         } else if (value == "1") {
             header.byte_order = ByteOrder::big;
         } else {
-            throw input_error(
-                "expected 0 (little-endian) or 1 (big-endian), got " + quote(value),
-                ErrorContext{file, entry->line, entry->key});
+            throw input_error("expected 0 (little-endian) or 1 (big-endian), got " + quote(value),
+                              ErrorContext{file, entry->line, entry->key});
         }
     }
     if (const Entry* entry = find("description")) header.description = brace_content(entry->value);
