@@ -1,22 +1,40 @@
 // SPDX-License-Identifier: Apache-2.0
-// Tests of io::ImageReader / io::ImageWriter (lib/io/image.h, exercised here because
-// convert is their user): round trips per format and pixel type, code values, clamping,
-// errors naming the file, and atomic output.
+// Tests of io::ImageReader / io::ImageWriter (glint/io/image.h; image_reader.cpp,
+// image_writer.cpp, image_types.cpp): round trips per format and pixel type, code values,
+// clamping, errors naming the file, and atomic output.
 #include "glint/io/image.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <fstream>
+#include <string>
+#include <vector>
 
 #include "glint/core/error.h"
-#include "test_util.h"
+#include "glint/test/temp_dir.h"
 
 namespace glint::io {
 namespace {
 
 namespace fs = std::filesystem;
-using ImageTest = app_envi::testing::TempDirTest;
+/// A fresh folder per test, removed after it.
+class ImageTest : public ::testing::Test {
+protected:
+    std::filesystem::path path(const std::string& name) const { return m_temp / name; }
+
+    /// Names in the folder containing ".tmp-" (temporary files that should be gone).
+    std::vector<std::string> temporaries() const {
+        std::vector<std::string> found;
+        for (const std::string& name : m_temp.entries()) {
+            if (name.find(".tmp-") != std::string::npos) found.push_back(name);
+        }
+        return found;
+    }
+
+private:
+    glint::test::TempDir m_temp;
+};
 
 std::vector<double> pattern(std::size_t w, std::size_t h, std::size_t c, double scale) {
     std::vector<double> v(w * h * c);
