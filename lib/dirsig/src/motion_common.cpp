@@ -2,7 +2,7 @@
 // The motion file entry point (read_motion: `.ppd` or `.motion` by root element) and the
 // parts the GenericMotion and FlexMotion readers share: unit attributes, locations, direction
 // hints, CDATA data tables reported row by row at their own file lines, the time-order
-// check. The platform jitter elements are read in motion_jitter_reader.cpp.
+// check. The platform jitter elements are read in jitter_reader.cpp.
 #include <algorithm>
 #include <cctype>
 #include <cmath>
