@@ -64,20 +64,6 @@ std::string out_of_memory(const detail::RenderPlan& plan, const detail::PlannedC
 /// One warning when an atmosphere of one geometry (a tabulated one: its numbers hold for the
 /// height it was computed for) lights surfaces spread over more than one level of height: it
 /// is applied at every height as written.
-void warn_one_geometry(const model::Atmosphere& atmosphere, const scene::GeometryScene& geometry,
-                       const Log& log) {
-    if (atmosphere.kind != model::AtmosphereKind::tabulated) return;
-    const std::vector<double> levels = radiometry::altitude_levels(geometry);
-    if (levels.size() < 2) return;
-    log.warning(format_located(
-        atmosphere.where,
-        "a tabulated atmosphere is one geometry: its sun, sky and path terms are applied at "
-        "every height, but the scene has surfaces from " +
-            format_shortest(levels.front()) + " m to " + format_shortest(levels.back()) +
-            " m above its origin (docs/scene.md, \"At which altitude each light path sees the "
-            "atmosphere\")"));
-}
-
 }  // namespace
 
 RenderReport render(model::SimulationInputs inputs, const RenderOptions& options,
@@ -97,11 +83,11 @@ RenderReport render(model::SimulationInputs inputs, const RenderOptions& options
         }
     };
     std::optional<scene::GeometryScene> static_scene;
-    if (!in.dynamic_scene) {
-        static_scene.emplace(scene::GeometryScene::build(
-            in.scene, in.trajectories, detail::build_options(options, 0.0, 0.0), context.log));
+    if (!in.scene_motion->moves()) {
+        static_scene.emplace(in.scene_motion->build(
+            in.scene, detail::build_options(options, 0.0, 0.0), context.log));
         report.device = static_scene->device();
-        warn_one_geometry(in.atmosphere, *static_scene, context.log);
+        in.light->warn_if_one_geometry(*static_scene, context.log);
     }
     detail::write_telemetry(plan, options, context);                  // complete before any capture
     std::map<std::size_t, radiometry::SensorPathCache> path_caches;   // per focal plane
@@ -113,12 +99,12 @@ RenderReport render(model::SimulationInputs inputs, const RenderOptions& options
         context.cancel.throw_if_cancelled();
         fire(events.before[i]);
         std::optional<scene::GeometryScene> moving;
-        if (in.dynamic_scene) {
-            moving.emplace(scene::GeometryScene::build(
-                in.scene, in.trajectories,
-                detail::build_options(options, p.capture.t0_s, p.capture.t1_s), context.log));
+        if (in.scene_motion->moves()) {
+            moving.emplace(in.scene_motion->build(
+                in.scene, detail::build_options(options, p.capture.t0_s, p.capture.t1_s),
+                context.log));
             report.device = moving->device();
-            if (i == 0) warn_one_geometry(in.atmosphere, *moving, context.log);
+            if (i == 0) in.light->warn_if_one_geometry(*moving, context.log);
         }
         CaptureReport stats;
         const scene::GeometryScene& geometry = moving ? *moving : *static_scene;

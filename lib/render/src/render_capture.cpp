@@ -7,11 +7,8 @@
 #include <future>
 #include <string>
 
-#include "glint/atmosphere/lunar.h"
 #include "glint/core/datetime.h"
 #include "glint/core/text.h"
-#include "glint/motion/moon.h"
-#include "glint/motion/sun.h"
 #include "render_parts.h"
 
 namespace glint::render::detail {
@@ -28,9 +25,10 @@ std::string bandpass_line(const SpectralGrid& grid) {
 /// The sun's and the moon's state at the run's first capture, as DIRSIG's console shows it
 /// before its first capture (its "declination" column is the zenith angle;
 /// docs/tools/glint-render.md).
-void log_ephemeris(const DateTime& when, const motion::SceneFrame& frame, const Context& context) {
-    const motion::SunPosition sun = motion::sun_position(when, frame);
-    const motion::MoonPosition moon = motion::moon_position(when, frame);
+void log_ephemeris(const DateTime& when, const radiometry::Illumination& light,
+                   const Context& context) {
+    const motion::SunPosition sun = light.sun_at(when);
+    const motion::MoonPosition moon = light.moon_at(when);
     char line[128];
     context.log.info("Solar state update notification from 'glint ephemeris (NREL SPA)'");
     std::snprintf(line, sizeof line,
@@ -48,9 +46,9 @@ void log_ephemeris(const DateTime& when, const motion::SceneFrame& frame, const 
 
 void log_capture_start(const PlannedCapture& p, const schedule::ClockedFocalPlane& source,
                        const FocalPlaneState& state, const DateTime& reference,
-                       const motion::SceneFrame& frame, const Context& context) {
+                       const radiometry::Illumination& light, const Context& context) {
     if (!context.log.enabled(LogLevel::info)) return;
-    if (p.event_number == 1) log_ephemeris(add_seconds(reference, p.capture.t0_s), frame, context);
+    if (p.event_number == 1) log_ephemeris(add_seconds(reference, p.capture.t0_s), light, context);
     char relative[64];
     std::snprintf(relative, sizeof relative, "%e", p.capture.t0_s);
     context.log.info("Starting capture: Task #" + std::to_string(p.capture.task_index + 1) +
@@ -97,36 +95,11 @@ radiometry::Environment capture_environment(const RenderInputs& in, const Spectr
                                             const scene::GeometryScene& geometry,
                                             radiometry::SensorPathCache& cache, unsigned threads) {
     const schedule::PluginSchedule& plugin = in.schedule->plugins()[source.plugin];
-    const DateTime& reference = plugin.tasks.reference;
-    const motion::SunPosition sun0 =
-        motion::sun_position(add_seconds(reference, capture.t0_s), in.frame);
-    const motion::SunPosition sun1 =
-        motion::sun_position(add_seconds(reference, capture.t1_s), in.frame);
     const double mid = 0.5 * (capture.t0_s + capture.t1_s);
     const motion::Rigid pose = plugin.poses->instrument_to_scene(source.instrument_index, mid);
-    radiometry::EnvironmentInputs env;
-    env.sun_direction_begin = sun0.direction_enu;
-    env.sun_direction_end = sun1.direction_enu;
-    env.window_begin_s = capture.t0_s;
-    env.window_end_s = capture.t1_s;
-    env.sun_distance_au = sun0.distance_au;
-    if (0.5 * (sun0.zenith_deg + sun1.zenith_deg) >= 90.0) {
-        // Night: the moon is the directional source (docs/physics.md, "The moon").
-        const motion::MoonPosition moon0 =
-            motion::moon_position(add_seconds(reference, capture.t0_s), in.frame);
-        const motion::MoonPosition moon1 =
-            motion::moon_position(add_seconds(reference, capture.t1_s), in.frame);
-        env.sun_direction_begin = moon0.direction_enu;
-        env.sun_direction_end = moon1.direction_enu;
-        env.source_irradiance_scale =
-            glint::atmosphere::lunar_irradiance_ratio(moon0.phase_angle_deg, moon0.distance_km);
-        env.source_half_angle_rad = glint::atmosphere::lunar_angular_radius_rad(moon0.distance_km);
-    }
-    env.surface_altitude_m = in.frame.origin().altitude_m;
-    env.sensor_altitude_m = in.frame.origin().altitude_m + pose.translation_m.z;
-    env.levels_z_m = radiometry::altitude_levels(geometry);
-    env.threads = threads;
-    return radiometry::Environment::make(grid, *in.atmosphere_model, *in.sun, env, &cache);
+    return in.light->environment(grid, {plugin.tasks.reference, capture.t0_s, capture.t1_s},
+                                 pose.translation_m.z, radiometry::altitude_levels(geometry),
+                                 threads, &cache);
 }
 
 CaptureReport render_capture(const RenderPlan& plan, ImageOutputs& outputs, const PlannedCapture& p,
@@ -141,7 +114,7 @@ CaptureReport render_capture(const RenderPlan& plan, ImageOutputs& outputs, cons
     const schedule::ClockedFocalPlane& source = in.schedule->sources()[capture.source];
     const schedule::PluginSchedule& plugin = in.schedule->plugins()[source.plugin];
     const FocalPlaneState& state = plan.states.at(capture.source);
-    log_capture_start(p, source, state, plugin.tasks.reference, in.frame, context);
+    log_capture_start(p, source, state, plugin.tasks.reference, *in.light, context);
 
     const radiometry::Environment environment =
         capture_environment(in, state.grid, capture, source, geometry, path_cache, context.threads);
@@ -181,7 +154,7 @@ CaptureReport render_capture(const RenderPlan& plan, ImageOutputs& outputs, cons
         &state.units, state.reference_band, state.mask ? state.mask->mean_sensitivity() : 1.0};
     // Point sources sit where they are at mid-window (docs/physics.md, "Point sources").
     const radiometry::PointLights lights =
-        point_lights_at(in, state.grid, 0.5 * (capture.t0_s + capture.t1_s));
+        in.light->point_lights_at(in.scene, state.grid, 0.5 * (capture.t0_s + capture.t1_s));
     // What the pixels see of the sources themselves (a source is a point: no ray hits it).
     const sensor::SeenPointSources seen = sensor::seen_point_sources(
         state.camera, *plugin.poses, source.instrument_index, timing,

@@ -1,17 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
 // The render's inputs: the loaded simulation (scene, atmosphere, platforms) taken over, the
-// atmosphere model, the solar spectrum, the schedule and the scene instances' trajectories.
+// schedule, the scene's motion and the light (radiometry::Illumination).
+#include <array>
+#include <optional>
 #include <set>
 #include <string>
 #include <utility>
 
-#include "glint/atmosphere/atmosphere.h"
 #include "glint/atmosphere/gas_absorption.h"
 #include "glint/core/diagnostics.h"
 #include "glint/core/error.h"
 #include "glint/core/text.h"
-#include "glint/motion/scene_instances.h"
-#include "glint/scene/geometry_scene.h"
 #include "render_parts.h"
 
 namespace glint::render::detail {
@@ -22,13 +21,10 @@ namespace {
 /// bands there take the nearest row's transmittance.
 void warn_beyond_gas_table(const RenderInputs& in, const RenderOptions& options,
                            Diagnostics& diagnostics) {
-    const auto* parametric = dynamic_cast<const glint::atmosphere::ParametricAtmosphereModel*>(
-        in.atmosphere_model.get());
-    const glint::atmosphere::GasBandModel* table =
-        parametric != nullptr ? parametric->gas_table() : nullptr;
-    if (table == nullptr || table->wavelengths_um().empty()) return;
-    const double first_um = table->wavelengths_um().front();
-    const double last_um = table->wavelengths_um().back();
+    const std::optional<std::array<double, 2>> range = in.light->gas_table_range_um();
+    if (!range) return;
+    const double first_um = (*range)[0];
+    const double last_um = (*range)[1];
     std::set<const model::FocalPlane*> said;
     for (const schedule::ClockedFocalPlane& source : in.schedule->sources()) {
         const model::FocalPlane& fp = *source.focal_plane;
@@ -54,28 +50,16 @@ void build_all(RenderInputs& in, model::SimulationInputs loaded, const RenderOpt
     in.simulation = std::move(loaded.simulation);
     in.scene = std::move(loaded.scene);
     in.atmosphere = std::move(loaded.atmosphere);
-    if (!options.data.sun ||
-        (glint::atmosphere::needs_gas_table(in.atmosphere) && !options.data.gases)) {
-        throw internal_error("glint's data tables were not read (inputs::read_data_tables)");
-    }
-    in.atmosphere_model =
-        glint::atmosphere::make_atmosphere_model(in.atmosphere, options.data.gases);
     in.frame = in.schedule->frame();
-    in.sun.emplace(*options.data.sun);
-
     const DateTime reference = in.schedule->plugins().empty()
                                    ? DateTime{}
                                    : in.schedule->plugins().front().tasks.reference;
-    in.trajectories =
-        motion::make_instance_trajectories(in.scene, in.frame, reference, context.log);
-    in.source_trajectories =
-        motion::make_point_source_trajectories(in.scene, in.frame, reference, context.log);
+    in.scene_motion.emplace(scene::SceneMotion::make(in.scene, in.frame, reference, context.log));
+    in.light.emplace(radiometry::Illumination::make(in.atmosphere, options.data, in.scene, in.frame,
+                                                    reference, context.log));
     if (const std::size_t n = in.scene.point_sources.size(); n > 0) {
         context.log.info("Point sources = " + std::to_string(n) +
                          " (lit by next-event estimation, at mid-window in each capture)");
-    }
-    for (const model::Instance& instance : in.scene.instances) {
-        in.dynamic_scene = in.dynamic_scene || instance.dynamic();
     }
     warn_beyond_gas_table(in, options, diagnostics);
     // A BasicPlatform entry's split_channels takes precedence over the option (as the DIRSIG5

@@ -212,7 +212,8 @@ CaptureReport render_pulse(const RenderPlan& plan, ImageOutputs& outputs, const 
     {
         const radiometry::Environment environment = capture_environment(
             in, state.grid, capture, source, geometry, path_cache, context.threads);
-        const radiometry::PointLights lights = point_lights_at(in, state.grid, capture.t0_s);
+        const radiometry::PointLights lights =
+            in.light->point_lights_at(in.scene, state.grid, capture.t0_s);
         const radiometry::PathTracer tracer(geometry, state.materials, environment, options.tracer,
                                             lights.empty() ? nullptr : &lights);
         radiometry::ProblemBatch batch;

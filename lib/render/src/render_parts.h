@@ -12,8 +12,6 @@
 #include <optional>
 #include <vector>
 
-#include "glint/atmosphere/atmosphere.h"
-#include "glint/atmosphere/solar.h"
 #include "glint/core/spectral.h"
 #include "glint/detect/chain.h"
 #include "glint/io/envi.h"
@@ -23,14 +21,15 @@
 #include "glint/model/simulation.h"
 #include "glint/model/simulation_inputs.h"
 #include "glint/motion/frames.h"
-#include "glint/motion/trajectory.h"
 #include "glint/radiometry/environment.h"
+#include "glint/radiometry/illumination.h"
 #include "glint/radiometry/lidar.h"
 #include "glint/radiometry/materials.h"
 #include "glint/radiometry/point_lights.h"
 #include "glint/render/image_outputs.h"
 #include "glint/render/render.h"
 #include "glint/scene/geometry_scene.h"
+#include "glint/scene/scene_motion.h"
 #include "glint/sensor/camera.h"
 #include "glint/sensor/hypersampling.h"
 #include "glint/sensor/output_units.h"
@@ -45,21 +44,19 @@ struct RenderInputs {
     model::Simulation simulation;
     model::Scene scene;
     model::Atmosphere atmosphere;
-    std::unique_ptr<glint::atmosphere::AtmosphereModel> atmosphere_model;
-    std::optional<glint::atmosphere::SolarSpectrum> sun;
     motion::SceneFrame frame;
     std::optional<schedule::Schedule> schedule;
-    std::vector<std::unique_ptr<motion::Trajectory>> trajectories;
-    /// The scene's moving point sources' trajectories (nullptr for static ones), indexed like
-    /// scene.point_sources.
-    std::vector<std::unique_ptr<motion::Trajectory>> source_trajectories;
-    bool dynamic_scene = false;  ///< some instance moves: the Embree scene is per capture
+    /// The scene instances' trajectories: the Embree scene once, or per capture when
+    /// something moves.
+    std::optional<scene::SceneMotion> scene_motion;
+    /// The sun or moon through the atmosphere, and the point sources.
+    std::optional<radiometry::Illumination> light;
 };
 
 /// Takes over a loaded simulation (glint/inputs/load.h) and builds what the captures share:
-/// the schedule (placed at the scene's origin), the atmosphere model, the solar spectrum (read
-/// from options.data_dir) and the scene instances' trajectories. Logs every problem of the
-/// schedule; throws glint::Error (input) when there are errors.
+/// the schedule (placed at the scene's origin), the scene's motion and the light (the
+/// atmosphere model with options.data's solar spectrum and gas table, the point sources). Logs
+/// every problem of the schedule; throws glint::Error (input) when there are errors.
 RenderInputs make_render_inputs(model::SimulationInputs loaded, const RenderOptions& options,
                                 const Context& context);
 
@@ -143,12 +140,6 @@ bool splits_channels(const RenderInputs& inputs, std::size_t plugin_index,
 /// Whether a schedule source produces an image glint renders (a generic instrument's
 /// enabled focal plane with an image file); `why` gets the reason when not.
 bool renders(const schedule::ClockedFocalPlane& source, std::string& why);
-
-/// The scene's point sources on `grid` at `t_s` (a capture's mid-window time): each one's
-/// material intensity resampled on the grid, its position at that time. Throws
-/// glint::Error (input, at the source) for a non-finite position.
-radiometry::PointLights point_lights_at(const RenderInputs& inputs, const SpectralGrid& grid,
-                                        double t_s);
 
 /// A capture of the selection with what the loop needs about it.
 /// The most captures one glint-render run plans (the plan keeps each, ~200 bytes); more is

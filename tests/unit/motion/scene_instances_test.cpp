@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "glint/test/motions.h"
+
 namespace glint::motion {
 namespace {
 
@@ -14,19 +16,6 @@ model::Instance named(const std::string& name) {
     return instance;
 }
 
-model::PlatformMotion driving_east() {
-    model::GenericMotion generic;
-    generic.entries.resize(2);
-    generic.entries[0].time_s = 0.0;
-    generic.entries[0].location.xyz_m = {10.0, 0.0, 0.0};
-    generic.entries[1].time_s = 4.0;
-    generic.entries[1].location.xyz_m = {50.0, 0.0, 0.0};
-    model::PlatformMotion motion;
-    motion.file = "drive.ppd";
-    motion.generic = generic;
-    return motion;
-}
-
 TEST(SceneTargets, StaticDynamicRepeatedAndUnknownNames) {
     model::Scene scene;
     model::Instance a = named("tower");
@@ -34,7 +23,7 @@ TEST(SceneTargets, StaticDynamicRepeatedAndUnknownNames) {
     model::Instance b = named("sign");
     b.transform.matrix = std::array<double, 16>{0, -1, 0, 7, 1, 0, 0, 8, 0, 0, 1, 9, 0, 0, 0, 1};
     model::Instance c = named("truck");
-    c.motion = std::make_shared<const model::PlatformMotion>(driving_east());
+    c.motion = std::make_shared<const model::PlatformMotion>(test::driving_east());
     model::Instance d = named("tower");  // a second "tower": the first one is the target
     d.transform.translation_m = {-5.0, -5.0, 0.0};
     scene.instances = {a, b, c, d};
@@ -51,7 +40,7 @@ TEST(SceneTargets, StaticDynamicRepeatedAndUnknownNames) {
 TEST(SceneTargets, TrajectoriesAreIndexedLikeTheInstances) {
     model::Scene scene;
     model::Instance moving = named("truck");
-    moving.motion = std::make_shared<const model::PlatformMotion>(driving_east());
+    moving.motion = std::make_shared<const model::PlatformMotion>(test::driving_east());
     scene.instances = {named("house"), moving};
     const auto trajectories = make_instance_trajectories(scene, SceneFrame(), DateTime{});
     ASSERT_EQ(trajectories.size(), 2u);

@@ -61,7 +61,7 @@ TEST(PointSources, StreetSourcesArePlacedAtTheCaptureTimeWithTheirMaterialsInten
     EXPECT_TRUE(in.scene.point_sources[2].dynamic());
     const SpectralGrid& grid = prepared.plan->states.at(0).grid;  // 0.50–0.60 µm at 0.02 µm
 
-    const radiometry::PointLights at0 = detail::point_lights_at(in, grid, 0.0);
+    const radiometry::PointLights at0 = in.light->point_lights_at(in.scene, grid, 0.0);
     ASSERT_EQ(at0.size(), 3u);
     expect_at(at0, 0, {0.4, 0.3, 0.5});
     // The parked car: headlight (0, 0.2, 0.05) in the bundle, turned 90° about z, moved to
@@ -70,7 +70,7 @@ TEST(PointSources, StreetSourcesArePlacedAtTheCaptureTimeWithTheirMaterialsInten
     // The driving car starts at (−0.6, 0.3, 0) heading east at 2 m/s; its +y (forward) is
     // along the velocity.
     expect_at(at0, 2, {-0.4, 0.3, 0.05});
-    expect_at(detail::point_lights_at(in, grid, 0.5), 2, {0.6, 0.3, 0.05});
+    expect_at(in.light->point_lights_at(in.scene, grid, 0.5), 2, {0.6, 0.3, 0.05});
 
     // The lamp's flat 2 W/(sr µm); the headlamp's curve interpolated (0.45 → 0.015,
     // 0.55 → 0.025, 0.70 → 0.03).
@@ -263,7 +263,7 @@ TEST(PointSources, TheCameraSeesALampThroughTheAtmosphere) {
     g.surface_altitude_m = 150.0 + lamp_m.z;
     g.sensor_altitude_m = 150.0 + pose.translation_m.z;
     g.view_zenith_deg = 0.0;  // 0.02° off the vertical: within 1e-7 of it in transmittance
-    const std::vector<double> t = in.atmosphere_model->sensor_transmittance(state.grid, g);
+    const std::vector<double> t = in.light->atmosphere_model().sensor_transmittance(state.grid, g);
     double mean_t = 0.0;
     for (const double v : t) mean_t += v / static_cast<double>(t.size());
     ASSERT_LT(mean_t, 0.95);
@@ -339,8 +339,8 @@ TEST(Moonlight, TheMoonLightsTheNightScene) {
     EXPECT_NEAR(motion::dot(d, moon.direction_enu), 1.0, 1e-12);
     EXPECT_NEAR(env.sun_half_angle_rad(),
                 glint::atmosphere::lunar_angular_radius_rad(moon.distance_km), 1e-15);
-    const std::vector<double> toa =
-        in.sun->resample(state.grid, motion::sun_position(when, in.frame).distance_au);
+    const std::vector<double> toa = in.light->solar_spectrum().resample(
+        state.grid, motion::sun_position(when, in.frame).distance_au);
     double mean = 0.0;
     for (std::size_t b = 0; b < state.grid.size(); ++b) {
         EXPECT_NEAR(env.sun_irradiance_w_per_cm2_um()[b], toa[b] * ratio, 1e-6 * toa[b] * ratio);
@@ -367,7 +367,7 @@ TEST(PointSources, ANonFinitePositionIsAnInputErrorAtTheSource) {
                                                          options_into(fs::path("unused")), {});
     in.scene.point_sources[0].position_m[2] = std::nan("");
     try {
-        (void)detail::point_lights_at(in, prepared.plan->states.at(0).grid, 0.0);
+        (void)in.light->point_lights_at(in.scene, prepared.plan->states.at(0).grid, 0.0);
         FAIL() << "expected an error";
     } catch (const Error& e) {
         EXPECT_EQ(e.category(), ErrorCategory::input);

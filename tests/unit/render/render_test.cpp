@@ -252,7 +252,8 @@ TEST(Render, LambertianPlateGivesTheAnalyticRadianceInTheOutputUnits) {
     auto expected_at = [&](double t_s) {
         const motion::SunPosition sun = motion::sun_position(add_seconds(reference, t_s), in.frame);
         EXPECT_LT(sun.zenith_deg, 40.0);  // 16:00 UTC near the June solstice at 43° N
-        const std::vector<double> e = in.sun->resample(state.grid, sun.distance_au);
+        const std::vector<double> e =
+            in.light->solar_spectrum().resample(state.grid, sun.distance_au);
         std::vector<double> radiance(e.size());
         for (std::size_t b = 0; b < e.size(); ++b) {
             radiance[b] = kPlateReflectance * e[b] * sun.direction_enu.z / std::numbers::pi;
@@ -432,8 +433,8 @@ std::vector<std::uint8_t> mask_of(const fs::path& simulation) {
     const auto prepared = detail::plan_render(load(simulation), options, Context{});
     const detail::RenderInputs& in = prepared.plan->inputs;
     const schedule::ClockedFocalPlane& source = in.schedule->sources()[0];
-    const scene::GeometryScene geometry = scene::GeometryScene::build(
-        in.scene, in.trajectories, detail::build_options(options, 0.0, source.window_s()));
+    const scene::GeometryScene geometry =
+        in.scene_motion->build(in.scene, detail::build_options(options, 0.0, source.window_s()));
     const sensor::CaptureTiming timing{0.0, source.window_s(), 0.0, source.tdi_stages};
     return sensor::hypersampled_pixels(in.scene, geometry, prepared.plan->states.at(0).camera,
                                        *in.schedule->plugins()[source.plugin].poses,
