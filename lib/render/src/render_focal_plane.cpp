@@ -219,23 +219,26 @@ FocalPlaneState make_focal_plane_state(const RenderInputs& inputs, std::size_t s
     const bool lidar = source.instrument->type == model::InstrumentType::lidar;
     const model::CaptureMethod method = lidar ? lidar_units_method(source) : units_method(source);
     SpectralGrid grid = model::bandpass_grid(method.spectral_response.bandpass);
+    // radiometry: the materials on the focal plane's grid, the convergence of its pixels and
+    // the band that watches it.
     radiometry::MaterialTable materials(inputs.scene.materials, grid, context.log);
+    const radiometry::Convergence convergence = convergence_of(fp, options);
+    const std::size_t reference_band =
+        radiometry::nearest_band(grid, 0.5 * (grid.min_um() + grid.max_um()));
+    // sensor: the camera, the output units and their spectral states, then the truth, the PSF
+    // and the mask.
     sensor::CameraModel camera(source.instrument->properties, fp.detector_array, source.x_count,
                                source.y_count);
     sensor::OutputUnits units(method, source.instrument->properties, grid);
     std::vector<SpectralState> states = spectral_states(
         grid, units,
         splits_channels(inputs, inputs.schedule->plugins()[source.plugin].plugin_index, options));
-
-    const radiometry::Convergence convergence = convergence_of(fp, options);
     io::EnviHeader header = header_of(source, units, convergence, options, inputs, context);
     FocalPlaneState state{std::move(grid),   std::move(states),     std::move(materials),
                           std::move(camera), std::move(units),      convergence,
                           std::move(header), std::nullopt,          std::nullopt,
-                          std::nullopt,      sensor::TruthLayout{}, 0,
+                          std::nullopt,      sensor::TruthLayout{}, reference_band,
                           std::nullopt};
-    state.reference_band =
-        radiometry::nearest_band(state.grid, 0.5 * (state.grid.min_um() + state.grid.max_um()));
     if (lidar) {
         state.lidar.emplace(
             make_lidar_state(source, inputs.scene, state.camera, convergence, context));
