@@ -116,8 +116,13 @@ CaptureReport render_capture(const RenderPlan& plan, ImageOutputs& outputs, cons
     const FocalPlaneState& state = plan.states.at(capture.source);
     log_capture_start(p, source, state, plugin.tasks.reference, *in.light, context);
 
+    // The light of the capture: the sun or moon through the atmosphere, the point sources.
     const radiometry::Environment environment =
         capture_environment(in, state.grid, capture, source, geometry, path_cache, context.threads);
+    // Point sources sit where they are at mid-window (docs/physics.md, "Point sources").
+    const radiometry::PointLights lights =
+        in.light->point_lights_at(in.scene, state.grid, 0.5 * (capture.t0_s + capture.t1_s));
+    // What the camera sees: its rays, the pixels to hypersample, the sources seen, truth.
     sensor::CaptureTiming timing{capture.t0_s, capture.t1_s,
                                  source.rolling_line_time_s().value_or(0.0), source.tdi_stages};
     const sensor::PixelRaySource rays(state.camera, *plugin.poses, source.instrument_index, timing,
@@ -152,9 +157,6 @@ CaptureReport render_capture(const RenderPlan& plan, ImageOutputs& outputs, cons
     const sensor::TruthContext truth_context{
         &in.scene,    &state.materials,     &in.frame,
         &state.units, state.reference_band, state.mask ? state.mask->mean_sensitivity() : 1.0};
-    // Point sources sit where they are at mid-window (docs/physics.md, "Point sources").
-    const radiometry::PointLights lights =
-        in.light->point_lights_at(in.scene, state.grid, 0.5 * (capture.t0_s + capture.t1_s));
     // What the pixels see of the sources themselves (a source is a point: no ray hits it).
     const sensor::SeenPointSources seen = sensor::seen_point_sources(
         state.camera, *plugin.poses, source.instrument_index, timing,
