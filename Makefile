@@ -28,8 +28,8 @@ build: configure
 test: build
 	@ctest --preset $(PRESET)
 
-# The unit and CLI suites under AddressSanitizer + UndefinedBehaviorSanitizer (CI runs it
-# after `make test`; docs/testing.md).
+# The unit, integration and CLI suites under AddressSanitizer + UndefinedBehaviorSanitizer (CI
+# runs it after `make test`; docs/testing.md).
 test-asan: deps
 	@cmake --preset asan >/dev/null
 	@cmake --build --preset asan

@@ -79,26 +79,49 @@ function(glint_add_man_page tool description)
     install(FILES "${page}" DESTINATION "${CMAKE_INSTALL_MANDIR}/man1")
 endfunction()
 
-# glint_add_unit_test(<component> DEPENDS <targets>...)
-#   tests/unit/<component>/*.cpp -> one gtest executable, each test registered with label unit.
-function(glint_add_unit_test component)
+# glint_add_gtest_folder(<folder> <component> <label> DEPENDS <targets>...)
+#   tests/<folder>/<component>/*.cpp -> one gtest executable, <folder>_<component> (test_ for
+#   unit), each test registered as <folder>/<component>/<Suite.Name> with label <label>. The
+#   support headers and the component's unit folder (shared fixtures) are on the include path.
+function(glint_add_gtest_folder folder component label)
     cmake_parse_arguments(ARG "" "" "DEPENDS" ${ARGN})
-    file(GLOB sources CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/unit/${component}/*.cpp")
+    file(GLOB sources CONFIGURE_DEPENDS "${CMAKE_CURRENT_SOURCE_DIR}/${folder}/${component}/*.cpp")
     if(NOT sources)
         return()
     endif()
-    add_executable(test_${component} ${sources})
-    target_link_libraries(test_${component} PRIVATE glint_standard glint_warnings glint_sanitize
+    if(folder STREQUAL "unit")
+        set(target test_${component})
+    else()
+        set(target ${folder}_${component})
+    endif()
+    add_executable(${target} ${sources})
+    target_link_libraries(${target} PRIVATE glint_standard glint_warnings glint_sanitize
         GTest::gtest_main GTest::gmock ${ARG_DEPENDS})
-    target_include_directories(test_${component} PRIVATE "${CMAKE_CURRENT_SOURCE_DIR}/support/include")
-    target_compile_definitions(test_${component} PRIVATE
+    target_include_directories(${target} PRIVATE
+        "${CMAKE_CURRENT_SOURCE_DIR}/support/include"
+        "${CMAKE_CURRENT_SOURCE_DIR}/unit/${component}")
+    target_compile_definitions(${target} PRIVATE
         GLINT_TEST_DATA_DIR="${CMAKE_CURRENT_SOURCE_DIR}/data"
         GLINT_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
-    set_target_properties(test_${component} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/tests")
-    gtest_discover_tests(test_${component}
-        TEST_PREFIX "unit/${component}/"
-        PROPERTIES LABELS unit
+    set_target_properties(${target} PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${CMAKE_BINARY_DIR}/tests")
+    gtest_discover_tests(${target}
+        TEST_PREFIX "${folder}/${component}/"
+        PROPERTIES LABELS ${label}
         DISCOVERY_TIMEOUT 60)
+endfunction()
+
+# glint_add_unit_test(<component> DEPENDS <targets>...)
+#   tests/unit/<component>/*.cpp -> one gtest executable, each test registered with label unit.
+function(glint_add_unit_test component)
+    glint_add_gtest_folder(unit ${component} unit ${ARGN})
+endfunction()
+
+# glint_add_integration_test(<component> DEPENDS <targets>...)
+#   tests/integration/<component>/*.cpp -> one gtest executable whose tests run a component on
+#   what the readers make of real DIRSIG files (tests/data/), so that the component's unit
+#   tests link no reader; label integration.
+function(glint_add_integration_test component)
+    glint_add_gtest_folder(integration ${component} integration ${ARGN})
 endfunction()
 
 # glint_add_oracle_test(<component> DEPENDS <targets>...)

@@ -8,10 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <filesystem>
 #include <vector>
-
-#include "glint/inputs/scene_atmosphere.h"
 
 namespace glint::atmosphere {
 namespace {
@@ -250,11 +247,16 @@ TEST(SimpleAtmosphere, SkyAtApparentTemperature) {
 }
 
 TEST(TabulatedAtmosphere, InterpolatesTheTableAndRefusesToExtrapolate) {
-    Diagnostics diagnostics;
-    const auto atmosphere = inputs::read_atmosphere(
-        std::filesystem::path(GLINT_TEST_DATA_DIR) / "atmosphere" / "tabulated.yaml", {},
-        diagnostics);
-    ASSERT_FALSE(diagnostics.has_errors());
+    // The table of tests/data/atmosphere/table.txt, as the reader gives it.
+    model::Atmosphere atmosphere;
+    atmosphere.kind = model::AtmosphereKind::tabulated;
+    model::TabulatedAtmosphere& table = atmosphere.tabulated;
+    table.wavelengths_um = {0.40, 0.55, 1.00, 2.50};
+    table.sun_transmittance = {0.60, 0.75, 0.90, 0.95};
+    table.sensor_transmittance = {0.70, 0.82, 0.93, 0.97};
+    table.path_radiance_w_per_cm2_sr_um = {0.0030, 0.0015, 0.0004, 0.0001};
+    table.sky_irradiance_w_per_cm2_um = {0.030, 0.020, 0.006, 0.001};
+    table.sky_temperature_k = 250.0;
     const auto model = make_atmosphere_model(atmosphere);
     const SpectralGrid grid({0.4, 0.475, 1.0});
     const auto g = nadir(30.0, 1000.0);

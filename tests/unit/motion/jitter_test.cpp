@@ -11,7 +11,6 @@
 #include <cmath>
 #include <complex>
 #include <cstdio>
-#include <fstream>
 #include <functional>
 #include <numbers>
 #include <string>
@@ -20,9 +19,7 @@
 #include <vector>
 
 #include "glint/core/error.h"
-#include "glint/dirsig/psd_reader.h"
 #include "glint/motion/fft.h"
-#include "glint/test/temp_dir.h"
 
 namespace glint::motion {
 namespace {
@@ -430,22 +427,16 @@ TEST(JitterSamplers, PlatformAxesUseTheirOwnStreams) {
 }
 
 TEST(JitterSamplers, MountUsesItsPsdTable) {
-    test::TempDir dir;
-    const auto path = dir / "across.psd";
-    {
-        std::ofstream out(path);
-        out << "# across-track\n0.5 1e-8\n50 1e-10\n";
-    }
     model::RotationDeviates d;
     d.axes[0].kind = model::JitterSpec::Kind::normal;
     d.axes[0].stddev = 1e-4;
     d.axes[1].kind = model::JitterSpec::Kind::psd;
     d.axes[1].psd_file.text = "across.psd";
-    d.axes[1].psd_file.resolved = path;
-    // The input loader reads the file the axis names; the sampler takes the table.
-    Diagnostics diagnostics;
-    d.axes[1].psd = dirsig::read_psd_file(path, {}, diagnostics, "across.psd");
-    ASSERT_FALSE(diagnostics.has_errors());
+    d.axes[1].psd_file.resolved = "/data/across.psd";
+    // The table inputs::load reads from the file the axis names (its first row on line 2,
+    // after a comment); the sampler takes the table.
+    d.axes[1].psd = table({0.5, 50.0}, {1e-8, 1e-10});
+    d.axes[1].psd->where = ErrorContext{"across.psd", 2, {}};
     const MountJitterSampler sampler(d, 3, {9}, 0.0, 2.0);
     EXPECT_TRUE(sampler.any());
     EXPECT_DOUBLE_EQ(sampler.axis(1).sample_rate_hz(), 500.0);

@@ -1,12 +1,18 @@
 // SPDX-License-Identifier: Apache-2.0
 // gtest expectations shared by the motion tests: vectors, matrices and rotations compared
-// component by component within a tolerance.
+// component by component within a tolerance; the glint::Error a callable throws; warnings
+// collected from a Log.
 #pragma once
 
 #include <gtest/gtest.h>
 
 #include <cstddef>
+#include <mutex>
+#include <string>
+#include <vector>
 
+#include "glint/core/error.h"
+#include "glint/core/log.h"
 #include "glint/motion/geometry.h"
 
 namespace glint::motion {
@@ -33,5 +39,32 @@ inline void expect_same_rotation(const Quaternion& q, const Quaternion& r, doubl
     EXPECT_NEAR(q.y, sign * r.y, tolerance);
     EXPECT_NEAR(q.z, sign * r.z, tolerance);
 }
+
+/// The glint::Error thrown by `f` (fails the test when none is).
+template <typename F>
+Error thrown(F&& f) {
+    try {
+        f();
+    } catch (const Error& error) {
+        return error;
+    }
+    ADD_FAILURE() << "no glint::Error thrown";
+    return internal_error("none");
+}
+
+/// Warnings collected from a Log (thread-safe).
+struct Warnings {
+    std::mutex mutex;
+    std::vector<std::string> items;
+
+    Log log() {
+        return Log(
+            [this](LogLevel, const std::string& message) {
+                const std::lock_guard<std::mutex> lock(mutex);
+                items.push_back(message);
+            },
+            LogLevel::warning);
+    }
+};
 
 }  // namespace glint::motion

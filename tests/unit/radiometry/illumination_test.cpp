@@ -135,7 +135,7 @@ TEST(Illumination, ATabulatedAtmosphereWarnsOnceForSurfacesAtSeveralHeights) {
     tabulated.tabulated.sensor_transmittance = {0.8, 0.9};
     tabulated.tabulated.path_radiance_w_per_cm2_sr_um = {0.0, 0.0};
     tabulated.tabulated.sky_irradiance_w_per_cm2_um = {0.0, 0.0};
-    tabulated.where = {"sky.atm.yaml", 3};
+    tabulated.where = {"sky.atm.yaml", 3, {}};
     model::Scene scene;
     scene.materials.push_back(model::flat_material("grey", 0.5));
     test::add_primitive(scene, test::ground_plane(), 0);
