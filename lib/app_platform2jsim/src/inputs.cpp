@@ -255,11 +255,7 @@ void check_simulation(const fs::path& file, LoadedInputs& inputs,
             })) {
             continue;
         }
-        if (d.severity == Diagnostic::Severity::error) {
-            inputs.diagnostics.error(d.where, d.message);
-        } else {
-            inputs.diagnostics.warning(d.where, d.message);
-        }
+        inputs.diagnostics.copy(d);
     }
     inputs.files.insert(key_of(file));
     for (const fs::path& opened : load_options.read.files->opened()) {

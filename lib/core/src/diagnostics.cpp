@@ -8,16 +8,32 @@
 namespace glint {
 
 void Diagnostics::error(ErrorContext where, std::string message) {
-    m_items.push_back(Diagnostic{Diagnostic::Severity::error, std::move(where), std::move(message)});
+    m_items.push_back(
+        Diagnostic{Diagnostic::Severity::error, std::move(where), std::move(message), 0, 0});
     ++m_errors;
 }
 
 void Diagnostics::warning(ErrorContext where, std::string message) {
     m_items.push_back(
-        Diagnostic{Diagnostic::Severity::warning, std::move(where), std::move(message)});
+        Diagnostic{Diagnostic::Severity::warning, std::move(where), std::move(message), 0, 0});
+    ++m_warnings;
 }
 
 void Diagnostics::add(const Error& error) { this->error(error.context(), error.message()); }
+
+void Diagnostics::copy(const Diagnostic& d) { copy(d, d.where); }
+
+void Diagnostics::copy(const Diagnostic& d, ErrorContext where) {
+    Diagnostic copied = d;
+    copied.where = std::move(where);
+    if (d.errors_left_off + d.warnings_left_off > 0) {
+        m_errors += d.errors_left_off;
+        m_warnings += d.warnings_left_off;
+    } else {
+        ++(d.severity == Diagnostic::Severity::error ? m_errors : m_warnings);
+    }
+    m_items.push_back(std::move(copied));
+}
 
 void Diagnostics::append_capped(const Diagnostics& other, std::size_t per_file) {
     struct Count {
@@ -32,8 +48,7 @@ void Diagnostics::append_capped(const Diagnostics& other, std::size_t per_file) 
         const bool is_error = d.severity == Diagnostic::Severity::error;
         if (count.kept < per_file) {
             ++count.kept;
-            m_items.push_back(d);
-            if (is_error) ++m_errors;
+            copy(d);
             continue;
         }
         if (count.errors + count.warnings == 0) order.push_back(d.where.file);
@@ -47,11 +62,10 @@ void Diagnostics::append_capped(const Diagnostics& other, std::size_t per_file) 
         const std::string message = "… and " + std::to_string(count.errors + count.warnings) +
                                     " more (" + plural(count.errors, "error") + ", " +
                                     plural(count.warnings, "warning") + ") not shown";
-        if (count.errors > 0) {
-            error(ErrorContext{file, 0, {}}, message);
-        } else {
-            warning(ErrorContext{file, 0, {}}, message);
-        }
+        // The line stands for what it counts: those are counted, it is not.
+        copy(Diagnostic{
+            count.errors > 0 ? Diagnostic::Severity::error : Diagnostic::Severity::warning,
+            ErrorContext{file, 0, {}}, message, count.errors, count.warnings});
     }
 }
 
@@ -89,8 +103,7 @@ void Diagnostics::log_and_rethrow(const Error& error, const Log& log) const {
     const auto first = std::find_if(m_items.begin(), m_items.end(), [](const Diagnostic& d) {
         return d.severity == Diagnostic::Severity::error;
     });
-    const bool raised_here = first != m_items.end() &&
-                             first->where.file == error.context().file &&
+    const bool raised_here = first != m_items.end() && first->where.file == error.context().file &&
                              first->where.line == error.context().line &&
                              error.message().rfind(first->message, 0) == 0;
     std::size_t count = m_errors;

@@ -7,8 +7,11 @@
 #include <algorithm>
 #include <cctype>
 #include <limits>
+#include <map>
 #include <set>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "glint/core/text.h"
 #include "glint/dirsig/scene_reader.h"
@@ -151,6 +154,21 @@ struct MatReader {
 
     ErrorContext at(int line, const std::string& path) const { return {file, line, path}; }
 
+    /// Where one kind of thing a material names is ignored ("unknown key SPECIFIC_HEAT"): said
+    /// once per file (flush_ignored), at the first place, with the count and the next lines.
+    struct Ignored {
+        ErrorContext first;
+        std::vector<int> lines;
+    };
+    std::map<std::string, Ignored> ignored;
+    std::vector<std::string> ignored_order;  ///< as first met
+
+    void ignore(const std::string& what, ErrorContext where) {
+        auto [it, added] = ignored.try_emplace(what, Ignored{where, {}});
+        if (added) ignored_order.push_back(what);
+        it->second.lines.push_back(where.line);
+    }
+
     void warn_unknown(const MatBlock& block, const std::string& path,
                       std::initializer_list<std::string_view> known_entries,
                       std::initializer_list<std::string_view> known_blocks) {
@@ -159,16 +177,41 @@ struct MatReader {
         };
         for (const MatEntry& e : block.entries) {
             if (!known(known_entries, e.key)) {
-                diagnostics.warning(at(e.line, path + "/" + e.key),
-                                    "unknown key " + e.key + " ignored");
+                ignore("unknown key " + e.key, at(e.line, path + "/" + e.key));
             }
         }
         for (const MatBlock& b : block.blocks) {
             if (!known(known_blocks, b.name)) {
-                diagnostics.warning(at(b.line, path + "/" + b.name),
-                                    "unsupported block " + b.name + " ignored");
+                ignore("unsupported block " + b.name, at(b.line, path + "/" + b.name));
             }
         }
+    }
+
+    /// One warning per ignored key or block: "unknown key SPECIFIC_HEAT ignored", and when it
+    /// occurs more than once, "(57 times: also lines 40, 68, 96 and 53 more)".
+    void flush_ignored() {
+        constexpr std::size_t kLinesShown = 3;
+        for (const std::string& what : ignored_order) {
+            const Ignored& i = ignored.at(what);
+            std::string message = what + " ignored";
+            if (i.lines.size() > 1) {
+                message += " (" + std::to_string(i.lines.size()) + " times: also line";
+                message += i.lines.size() > 2 ? "s " : " ";
+                const std::size_t shown = std::min(kLinesShown, i.lines.size() - 1);
+                for (std::size_t k = 1; k <= shown; ++k) {
+                    if (k > 1)
+                        message += k == shown && i.lines.size() - 1 == shown ? " and " : ", ";
+                    message += std::to_string(i.lines[k]);
+                }
+                if (const std::size_t rest = i.lines.size() - 1 - shown; rest > 0) {
+                    message += " and " + std::to_string(rest) + " more";
+                }
+                message += ")";
+            }
+            diagnostics.warning(i.first, message);
+        }
+        ignored.clear();
+        ignored_order.clear();
     }
 
     /// Reads a curve file: two columns (wavelength µm, value in [0, max_value]) or a classic
@@ -424,6 +467,7 @@ std::vector<model::Material> read_materials(const std::filesystem::path& file,
         }
         materials.push_back(std::move(m));
     }
+    reader.flush_ignored();
     if (root.blocks.empty()) diagnostics.error({name, 0, {}}, "no MATERIAL_ENTRY blocks");
     return materials;
 }

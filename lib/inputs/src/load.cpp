@@ -211,14 +211,6 @@ bool tracks_named_target(const std::vector<model::Attachment>& attachments) {
     return false;
 }
 
-void copy_diagnostic(const Diagnostic& d, Diagnostics& to) {
-    if (d.severity == Diagnostic::Severity::error) {
-        to.error(d.where, d.message);
-    } else {
-        to.warning(d.where, d.message);
-    }
-}
-
 /// Copies the scene's problems `found` into `diagnostics`. With `contents_needed` false, its
 /// errors outside the scene-list files themselves become one warning.
 void report_scene_problems(const model::Simulation& simulation, const Diagnostics& found,
@@ -233,7 +225,7 @@ void report_scene_problems(const model::Simulation& simulation, const Diagnostic
         const bool contents_error = !contents_needed && d.severity == Diagnostic::Severity::error &&
                                     scene_files.count(d.where.file) == 0;
         if (!contents_error) {
-            copy_diagnostic(d, diagnostics);
+            diagnostics.copy(d);
             continue;
         }
         ++left;

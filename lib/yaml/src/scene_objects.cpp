@@ -35,8 +35,7 @@ model::PlatformMotion read_inline_motion(Reader& r, const YAML::Node& node,
         const io::XmlNode root = document.root("motion");
         const MotionReadContext context{r.options, r.base_dir, text};
         // As in a .motion file, the type is optional here but must be flexible when given.
-        if (const auto type = root.attribute("type");
-            type && to_lower(trim(*type)) != "flexible") {
+        if (const auto type = root.attribute("type"); type && to_lower(trim(*type)) != "flexible") {
             local.error(root.where_attribute("type"),
                         "motion type \"" + *type + "\" is not supported, expected flexible");
         }
@@ -51,11 +50,7 @@ model::PlatformMotion read_inline_motion(Reader& r, const YAML::Node& node,
             where.line = where.line > 0 ? where.line + first_line - 1 : first_line - 1;
             where.element = path + (where.element.empty() ? "" : " " + where.element);
         }
-        if (d.severity == Diagnostic::Severity::error) {
-            r.diagnostics.error(where, d.message);
-        } else {
-            r.diagnostics.warning(where, d.message);
-        }
+        r.diagnostics.copy(d, std::move(where));
     }
     return motion;
 }

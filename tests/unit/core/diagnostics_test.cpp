@@ -63,9 +63,11 @@ struct Rethrown {
 
 Rethrown rethrow(const Diagnostics& d, const Error& error) {
     Rethrown out;
-    Log log([&](LogLevel level, const std::string& m) {
-        out.lines.push_back(std::string(log_level_name(level)) + " " + m);
-    }, LogLevel::warning);
+    Log log(
+        [&](LogLevel level, const std::string& m) {
+            out.lines.push_back(std::string(log_level_name(level)) + " " + m);
+        },
+        LogLevel::warning);
     try {
         d.log_and_rethrow(error, log);
     } catch (const Error& e) {
@@ -126,7 +128,19 @@ TEST(Diagnostics, AppendCappedKeepsTwentyPerFileAndCountsTheRest) {
     EXPECT_EQ(all.items()[20].text(), "m.mat:3: unknown key");
     EXPECT_EQ(all.items()[21].text(), "x.ems: … and 6 more (5 errors, 1 warning) not shown");
     EXPECT_EQ(all.items()[21].severity, Diagnostic::Severity::error);
-    EXPECT_EQ(all.error_count(), 21u);
+    // The counts are of every problem found: the summary line stands for the 6 left off.
+    EXPECT_EQ(all.error_count(), 25u);
+    EXPECT_EQ(all.warning_count(), 2u);
+    // Copied into another list (as the loaders do), the line keeps what it stands for.
+    Diagnostics copied;
+    for (const Diagnostic& d : all.items()) copied.copy(d);
+    EXPECT_EQ(copied.error_count(), 25u);
+    EXPECT_EQ(copied.warning_count(), 2u);
+    copied.copy(all.items()[21], ErrorContext{"moved.ems", 0, {}});
+    EXPECT_EQ(copied.error_count(), 30u);
+    EXPECT_EQ(copied.warning_count(), 3u);
+    EXPECT_EQ(copied.items().back().text(),
+              "moved.ems: … and 6 more (5 errors, 1 warning) not shown");
 
     Diagnostics warnings_only;
     for (int line = 1; line <= 22; ++line) {
@@ -136,6 +150,7 @@ TEST(Diagnostics, AppendCappedKeepsTwentyPerFileAndCountsTheRest) {
     capped.append_capped(warnings_only);
     EXPECT_FALSE(capped.has_errors());
     EXPECT_EQ(capped.items().back().text(), "w.mat: … and 2 more (0 errors, 2 warnings) not shown");
+    EXPECT_EQ(capped.warning_count(), 22u);
 }
 
 }  // namespace

@@ -202,6 +202,33 @@ INSTANTIATE_TEST_SUITE_P(MatReader, ClassicEmsErrors, ::testing::ValuesIn(kEmsEr
                              return std::string(test_case.param.name);
                          });
 
+TEST(MatReader, AnIgnoredKeyIsSaidOncePerFileWithItsCountAndPlaces) {
+    // Six materials with SPECIFIC_HEAT (DIRSIG's thermal keys: a real database has it in
+    // every entry), two with DENSITY, one with an unknown block: three warnings, not nine.
+    TempDir dir;
+    std::string mat;
+    for (int id = 1; id <= 6; ++id) {
+        mat += "MATERIAL_ENTRY {\n  ID = " + std::to_string(id) + "\n  SPECIFIC_HEAT = 0.2\n" +
+               (id <= 2 ? "  DENSITY = 1.5\n" : "") + (id == 3 ? "  GLOW { A = 1 }\n" : "") +
+               "  SURFACE_PROPERTIES {\n    EMISSIVITY_PROP { FILENAME = x.ems }\n  }\n}\n";
+    }
+    write_file(dir / "x.ems", "0.4 0.9\n0.7 0.9\n");
+    write_file(dir / "m.mat", mat);
+    Diagnostics diagnostics;
+    read_dirsig_materials(dir / "m.mat", {}, diagnostics);
+    EXPECT_FALSE(diagnostics.has_errors()) << diagnostics_text(diagnostics);
+    const std::string file = (dir / "m.mat").string();
+    EXPECT_EQ(warnings_text(diagnostics),
+              file +
+                  ":3: MATERIAL_ENTRY[1]/SPECIFIC_HEAT: unknown key SPECIFIC_HEAT ignored (6 "
+                  "times: also lines 11, 19, 27 and 2 more)\n" +
+                  file +
+                  ":4: MATERIAL_ENTRY[1]/DENSITY: unknown key DENSITY ignored (2 times: "
+                  "also line 12)\n" +
+                  file + ":20: MATERIAL_ENTRY[3]/GLOW: unsupported block GLOW ignored\n");
+    EXPECT_EQ(diagnostics.warning_count(), 3u);
+}
+
 TEST(MatReader, AFilesDiagnosticsAreCappedAtTwenty) {
     TempDir dir;
     std::string rows = "1\nCURVE_BEGIN\n";
@@ -214,7 +241,7 @@ TEST(MatReader, AFilesDiagnosticsAreCappedAtTwenty) {
     EXPECT_EQ(diagnostics.items()[19].where.line, 22);
     EXPECT_EQ(diagnostics.items()[20].text(),
               (dir / "x.ems").string() + ": … and 30 more (30 errors, 0 warnings) not shown");
-    EXPECT_EQ(diagnostics.error_count(), 21u);
+    EXPECT_EQ(diagnostics.error_count(), 50u);  // every error found, those not shown included
 }
 
 }  // namespace

@@ -18,6 +18,11 @@ struct Diagnostic {
     Severity severity = Severity::error;
     ErrorContext where;
     std::string message;
+    /// For the line that stands for diagnostics left off (Diagnostics::append_capped): how
+    /// many errors and warnings it stands for; 0 and 0 for any other diagnostic, which counts
+    /// as one of its severity.
+    std::size_t errors_left_off = 0;
+    std::size_t warnings_left_off = 0;
 
     /// "file:line: element: message".
     std::string text() const { return format_located(where, message); }
@@ -38,14 +43,20 @@ public:
     void warning(ErrorContext where, std::string message);
     /// Records a glint::Error raised by a nested reader as an error diagnostic.
     void add(const Error& error);
+    /// Appends a diagnostic of another list as it is (counted as it was there), at `where`
+    /// when given.
+    void copy(const Diagnostic& d);
+    void copy(const Diagnostic& d, ErrorContext where);
     /// Appends the diagnostics of `other` in order, keeping at most `per_file` of each file
     /// (Diagnostic::where.file); those left off become one diagnostic per file at its end,
-    /// "… and N more (E errors, W warnings)", an error when any left off is one.
+    /// "… and N more (E errors, W warnings)", an error when any left off is one. The counts
+    /// below count those left off, not the line that stands for them.
     void append_capped(const Diagnostics& other, std::size_t per_file = kMaxDiagnosticsPerFile);
 
     const std::vector<Diagnostic>& items() const { return m_items; }
+    /// Every error and warning found, those append_capped left off included.
     std::size_t error_count() const { return m_errors; }
-    std::size_t warning_count() const { return m_items.size() - m_errors; }
+    std::size_t warning_count() const { return m_warnings; }
     bool has_errors() const { return m_errors > 0; }
 
     /// Writes every diagnostic to `log` (errors at error level, warnings at warning level).
@@ -63,6 +74,7 @@ public:
 private:
     std::vector<Diagnostic> m_items;
     std::size_t m_errors = 0;
+    std::size_t m_warnings = 0;
 };
 
 }  // namespace glint
