@@ -172,12 +172,13 @@ Channel read_channel(const io::XmlNode& node, double factor, Diagnostics& diagno
                               "channel name is empty, expected a name");
         }
     }
-    const auto shape =
-        node.attribute_enum("shape", {"gaussian", "tabulated", "tophat", "triangle"}, diagnostics);
+    const auto shape = node.attribute_enum(
+        "shape", {"gaussian", "tabulated", "tophat", "rectangular", "triangle"}, diagnostics);
     const bool shape_ok = shape.has_value() || !node.attribute("shape").has_value();
     const std::string shape_text = shape.value_or("gaussian");
     if (shape_text == "tabulated") channel.shape = ChannelShape::tabulated;
-    if (shape_text == "tophat") channel.shape = ChannelShape::tophat;
+    // "rectangular" (in DIRSIG's own notebooks) is the tophat under another name.
+    if (shape_text == "tophat" || shape_text == "rectangular") channel.shape = ChannelShape::tophat;
     if (shape_text == "triangle") channel.shape = ChannelShape::triangle;
     channel.normalize = node.attribute_bool("normalize", diagnostics).value_or(false);
     channel.gain = node.attribute_double("gain", diagnostics).value_or(1.0);

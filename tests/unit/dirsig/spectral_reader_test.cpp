@@ -165,6 +165,19 @@ TEST(SpectralReader, BayerAndTrueSensePatterns) {
     EXPECT_EQ(truesense.channel_for("pan"), "P");
 }
 
+TEST(SpectralReader, RectangularIsTheTophat) {
+    // DIRSIG's own notebooks write shape="rectangular": the same box as "tophat".
+    const auto read = read_spectral(std::string(kBandpass) +
+                                    "<channellist><channel name=\"R\" shape=\"rectangular\">"
+                                    "<center>0.55</center><width>0.1</width></channel>"
+                                    "</channellist>");
+    ASSERT_TRUE(clean(read));
+    const model::Channel& channel = read.capture.spectral_response.channels.at(0);
+    EXPECT_EQ(channel.shape, ChannelShape::tophat);
+    EXPECT_EQ(channel.center_um, 0.55);
+    EXPECT_EQ(channel.width_um, 0.1);
+}
+
 TEST(SpectralReader, ChannelCentreJustOutsideTheBandpassIsAWarning) {
     // Real AVIRIS files put channel #1 (0.3734 µm, FWHM 0.0099) below a 0.38 µm bandpass.
     const auto read = read_spectral(
@@ -288,8 +301,8 @@ std::vector<SpectralErrorCase> spectral_errors() {
         {"ChannelWithoutName", attributes, "missing required attribute name", "<channel shape",
          list + "/channel"},
         {"UnknownChannelShape", attributes,
-         "expected one of gaussian, tabulated, tophat, triangle, got \"square\"", "<channel shape",
-         list + "/channel@shape"},
+         "expected one of gaussian, tabulated, tophat, rectangular, triangle, got \"square\"",
+         "<channel shape", list + "/channel@shape"},
         {"EmptyChannelName", attributes, "channel name is empty, expected a name",
          "<channel name=\" \"", list + "/channel[ ]@name"},
         {"NormalizeNotABoolean", attributes, "expected a boolean", "<channel name=\" \"",
