@@ -136,11 +136,9 @@ model::Simulation JsimReader::read_simulation(const Json& value, const std::stri
     for (const model::Plugin& plugin : simulation.plugins) {
         if (plugin.basic_platform || plugin.basic_atmosphere || plugin.name.empty()) continue;
         m_diagnostics.warning(plugin.where,
-                              "plugin \"" + plugin.name +
-                                  "\" is read, not applied: glint runs BasicPlatform and "
-                                  "BasicAtmosphere only; instead " +
+                              "plugin \"" + plugin.name + "\" is not run: " +
                                   unsupported_plugin_fallback(plugin.name, has_basic_atmosphere) +
-                                  " (the plugin is kept when the .jsim is rewritten)");
+                                  " (kept in a rewritten .jsim)");
     }
 
     if (const auto it = value.find("medium_list"); it != value.end()) {
@@ -148,8 +146,8 @@ model::Simulation JsimReader::read_simulation(const Json& value, const std::stri
             simulation.medium_list_json = it->dump();
             if (!it->empty()) {
                 m_diagnostics.warning(at(key_path(path, "medium_list")),
-                                      "medium_list is read, not applied: glint models no "
-                                      "participating media (kept when the .jsim is rewritten)");
+                                      "medium_list is not applied: glint models no "
+                                      "participating media (kept in a rewritten .jsim)");
             }
         } else {
             wrong_type(key_path(path, "medium_list"), "an array", *it);
@@ -267,21 +265,20 @@ std::string unsupported_plugin_fallback(std::string_view name, bool has_basic_at
     switch (plugin_kind(name)) {
         case PluginKind::atmosphere:
             return has_basic_atmosphere
-                       ? std::string("glint uses the BasicAtmosphere entry's atmosphere")
+                       ? std::string("the BasicAtmosphere entry's atmosphere is used")
                        : std::string(
-                             "glint uses its default parametric atmosphere (glint-render "
-                             "--atmosphere none|parametric|FILE picks another)");
+                             "glint's default atmosphere is used (--atmosphere picks "
+                             "another)");
         case PluginKind::ephemeris:
-            return "glint computes the sun and moon positions itself from the tasks' times and "
-                   "the scene origin (NREL SPA, ELP 2000)";
+            return "glint places the sun and moon itself";
         case PluginKind::thermal:
-            return "glint uses each material's own temperature (no weather, no thermal model)";
+            return "materials keep their own temperatures";
         case PluginKind::basic_platform:
         case PluginKind::basic_atmosphere:
         case PluginKind::other:
             break;
     }
-    return "it has no effect on the run";
+    return "it has no effect";
 }
 
 std::vector<model::Simulation> read_jsim(const std::filesystem::path& file,
