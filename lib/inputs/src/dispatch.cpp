@@ -53,17 +53,19 @@ model::Atmosphere read_atmosphere(const std::filesystem::path& path, const ReadO
                                   Diagnostics& diagnostics, const std::string& display_name) {
     const std::string file = display_name.empty() ? path.string() : display_name;
     const std::string text = options.read_text(path, file);
+    model::Atmosphere atmosphere;
     if (looks_like_xml(text)) {
         try {
-            return dirsig::parse_atm(text, file, diagnostics);
+            atmosphere = dirsig::parse_atm(text, file, diagnostics);
         } catch (const Error& e) {
             diagnostics.add(e);
-            model::Atmosphere atmosphere;
             atmosphere.where = ErrorContext{file, 0, {}};
-            return atmosphere;
         }
+    } else {
+        atmosphere = yaml::parse_yaml_atmosphere(text, path, file, options, diagnostics);
     }
-    return yaml::parse_yaml_atmosphere(text, path, file, options, diagnostics);
+    atmosphere.source = path.string();
+    return atmosphere;
 }
 
 }  // namespace glint::inputs

@@ -119,8 +119,10 @@ model::Atmosphere read_atmosphere_override(const AtmosphereOverride& choice,
     atmosphere.where = ErrorContext{"--atmosphere", 0, {}};
     if (choice.kind == AtmosphereOverride::Kind::none) {
         atmosphere.kind = model::AtmosphereKind::none;
+        atmosphere.source = "--atmosphere none";
         return atmosphere;
     }
+    atmosphere.source = "--atmosphere parametric";
     if (choice.kind == AtmosphereOverride::Kind::parametric) return atmosphere;
     model::FileRef ref;
     ref.text = choice.file.string();

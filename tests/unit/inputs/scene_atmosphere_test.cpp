@@ -113,6 +113,7 @@ TEST(SimulationAtmosphere, DefaultsToParametricWithADebugMessageOnly) {
     EXPECT_EQ(a.parametric.sea_level_pressure_hpa, defaults.sea_level_pressure_hpa);
     EXPECT_EQ(a.parametric.air_temperature_k, defaults.air_temperature_k);
     EXPECT_EQ(a.where.file, "plain.jsim");
+    EXPECT_EQ(a.source, "default");  // the outputs' "glint atmosphere source"
     ASSERT_EQ(messages.size(), 1u);
     EXPECT_THAT(messages[0], HasSubstr("debug: plain.jsim: no BasicAtmosphere plugin: using the "
                                        "default atmosphere (parametric"));

@@ -21,12 +21,12 @@
 // | `gas_absorption` | true, false | – | true | parametric (H₂O, O₃, O₂, CO₂, CH₄, … bands) |
 // | `water_vapor_cm` | number ≥ 0 | cm | 2.924 | parametric (precipitable water, vertical) |
 // | `ozone_atm_cm` | number ≥ 0 | atm-cm | 0.332 | parametric (ozone column, vertical) |
-// | `aerosol_model` | rural, urban, maritime, desert | – | (none) | parametric: sets the next three |
-// | `visibility_km` | number > 0 | km | – | parametric: τ₅₅₀ by Koschmieder (not with τ₅₅₀) |
-// | `multiple_scattering` | true, false | – | true | parametric (sky and path radiance) |
-// | `ground_albedo` | number in [0, 1] | – | 0.2 | parametric (Lambertian ground of the sky) |
-// | `table` | path | – | (required) | tabulated (relative to the YAML file) |
-// | `sky_temperature_k` | number ≥ 0 | K | 0 (black) | tabulated without a thermal column |
+// | `aerosol_model` | rural, urban, maritime, desert | – | (none) | parametric: sets the next three
+// | | `visibility_km` | number > 0 | km | – | parametric: τ₅₅₀ by Koschmieder (not with τ₅₅₀) | |
+// `multiple_scattering` | true, false | – | true | parametric (sky and path radiance) | |
+// `ground_albedo` | number in [0, 1] | – | 0.2 | parametric (Lambertian ground of the sky) | |
+// `table` | path | – | (required) | tabulated (relative to the YAML file) | | `sky_temperature_k` |
+// number ≥ 0 | K | 0 (black) | tabulated without a thermal column |
 //
 // DIRSIG .atm subset: `<atmosphericconditions>` > `<simpleradiativetransfer>` >
 // `<apparentskytemperature>` (K, default 0) gives kind simple.
@@ -120,6 +120,10 @@ struct Atmosphere {
     TabulatedAtmosphere tabulated;
     SimpleAtmosphere simple;
     ErrorContext where;  ///< the file (and line of `model`) it was read from
+    /// What it came from, for the outputs' provenance: the file read (its path), or
+    /// "--atmosphere none" / "--atmosphere parametric", or "default" (glint's default
+    /// parametric atmosphere, the simulation naming none).
+    std::string source = "default";
 };
 
 /// "none", "parametric", "tabulated" or "simple".
