@@ -268,7 +268,8 @@ void ProcessingRunner::run_task(const model::ProcessingTask& task,
     if (command->refusal) {  // check() refused it before the render began
         throw input_error(*command->refusal, task.where);
     }
-    if (!task.message.empty()) m_context.log.info(task.message);
+    // DIRSIG prints a task's <message> as it runs: so does glint, at normal verbosity.
+    if (!task.message.empty()) m_context.log.notice(task.message);
     ProcessOptions options;
     options.argv = command->argv;
     // Tasks run in the image's folder, which a *_started event may find not yet created.
