@@ -227,7 +227,8 @@ struct MatReader {
         try {
             text = options.read_text(table.file.resolved, name);
         } catch (const Error& error) {
-            diagnostics.add(error.with_file(file, entry.line));
+            // Said at the material's key that names the file, with the file's path.
+            diagnostics.error(table.where, quantity + " file " + name + ": " + error.message());
             return table;
         }
         detail::parse_curve_text(text, detail::CurveSource{name, path, quantity, max_value}, table,

@@ -229,6 +229,21 @@ TEST(MatReader, AnIgnoredKeyIsSaidOncePerFileWithItsCountAndPlaces) {
     EXPECT_EQ(diagnostics.warning_count(), 3u);
 }
 
+TEST(MatReader, AMissingCurveFileIsSaidAtTheKeyThatNamesIt) {
+    TempDir dir;
+    write_file(dir / "m.mat",
+               "MATERIAL_ENTRY {\n  ID = 1\n  SURFACE_PROPERTIES {\n"
+               "    EMISSIVITY_PROP { FILENAME = gone.ems }\n  }\n}\n");
+    Diagnostics diagnostics;
+    read_dirsig_materials(dir / "m.mat", {}, diagnostics);
+    ASSERT_EQ(diagnostics.error_count(), 1u) << diagnostics_text(diagnostics);
+    EXPECT_EQ(diagnostics.items().at(0).text(),
+              (dir / "m.mat").string() +
+                  ":4: MATERIAL_ENTRY[1]/SURFACE_PROPERTIES/EMISSIVITY_PROP/FILENAME: emissivity "
+                  "file " +
+                  (dir / "gone.ems").string() + ": cannot open file: No such file or directory");
+}
+
 TEST(MatReader, AFilesDiagnosticsAreCappedAtTwenty) {
     TempDir dir;
     std::string rows = "1\nCURVE_BEGIN\n";
