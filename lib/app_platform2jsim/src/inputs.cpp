@@ -8,6 +8,7 @@
 #include <cctype>
 #include <cmath>
 #include <optional>
+#include <sstream>
 
 #include "glint/core/text.h"
 #include "glint/dirsig/motion_reader.h"
@@ -25,11 +26,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path key_of(const fs::path& file) {
-    std::error_code ec;
-    fs::path absolute = fs::absolute(file, ec);
-    return (ec ? file : absolute).lexically_normal();
-}
+fs::path key_of(const fs::path& file) { return LoadedInputs::key_of(file); }
 
 bool same_place(const ErrorContext& a, const ErrorContext& b) {
     return a.file == b.file && a.line == b.line && a.element == b.element;
@@ -86,10 +83,6 @@ void check_platform_references(const model::Platform& platform, LoadedInputs& in
             }
         }
     }
-}
-
-std::string plural(std::size_t count, const char* noun) {
-    return std::to_string(count) + " " + noun + (count == 1 ? "" : "s");
 }
 
 /// "2 materials, 3 objects, 4 instances, 26 triangles".
@@ -305,6 +298,12 @@ void load_one_simulation(std::size_t index, LoadedInputs& inputs,
 
 }  // namespace
 
+fs::path LoadedInputs::key_of(const fs::path& file) {
+    std::error_code ec;
+    fs::path absolute = fs::absolute(file, ec);
+    return (ec ? file : absolute).lexically_normal();
+}
+
 const model::Platform* LoadedInputs::platform_of(const model::BasicPlatformInputs& inputs) const {
     if (inputs.platform_file.resolved.empty()) return nullptr;
     const auto it = platforms.find(key_of(inputs.platform_file.resolved));
@@ -345,6 +344,41 @@ const model::Platform* load_platform_file(const fs::path& file, LoadedInputs& in
     const auto [it, inserted] = inputs.platforms.emplace(key, std::move(platform));
     if (check_references) check_platform_references(it->second, inputs);
     return &it->second;
+}
+
+/// Whether a glint YAML file is an atmosphere: a line starting "model:" (its one required
+/// key), which no scene has at the top level.
+bool is_yaml_atmosphere(const fs::path& file, const dirsig::ReadOptions& options) {
+    std::string text;
+    try {
+        text = options.read_text(file, file.string());
+    } catch (const Error&) {
+        return false;  // the scene reader says why it cannot be read
+    }
+    std::istringstream lines(text);
+    for (std::string line; std::getline(lines, line);) {
+        if (line.rfind("model:", 0) == 0 || line.rfind("model :", 0) == 0) return true;
+    }
+    return false;
+}
+
+/// Checks a material curve file alone: its layout and values, and one contents line.
+void check_curve_file(const fs::path& file, const std::string& quantity, LoadedInputs& inputs,
+                      const dirsig::ReadOptions& options) {
+    inputs.files.insert(key_of(file));
+    const std::size_t errors = inputs.diagnostics.error_count();
+    const model::SpectralTable table =
+        dirsig::read_curve_file(file, quantity, options, inputs.diagnostics);
+    std::string description = plural(table.wavelengths_um.size(), "point");
+    if (!table.wavelengths_um.empty()) {
+        const auto [low, high] = std::minmax_element(table.values.begin(), table.values.end());
+        description += ", " + format_shortest(table.wavelengths_um.front()) + "-" +
+                       format_shortest(table.wavelengths_um.back()) + " um, values " +
+                       format_shortest(*low) + "-" + format_shortest(*high);
+    }
+    inputs.contents.push_back(contents_line(quantity == "emissivity" ? "emissivity curve" : "curve",
+                                            file, inputs.diagnostics.error_count() - errors,
+                                            description));
 }
 
 void check_file(const fs::path& file, LoadedInputs& inputs, const dirsig::ReadOptions& options,
@@ -388,6 +422,28 @@ void check_file(const fs::path& file, LoadedInputs& inputs, const dirsig::ReadOp
         load_atmosphere_ref(ref, inputs, options);
         return;
     }
+    if (extension == ".yaml" || extension == ".yml") {
+        // A glint YAML file is an atmosphere (a top-level "model:" key) or a scene.
+        if (is_yaml_atmosphere(file, options)) {
+            load_atmosphere_ref(ref, inputs, options);
+        } else {
+            load_scene_ref(ref, inputs, options);
+        }
+        return;
+    }
+    if (extension == ".ems" || extension == ".txt") {
+        check_curve_file(file, extension == ".ems" ? "emissivity" : "intensity", inputs, options);
+        return;
+    }
+    if (extension == ".glist") {
+        // Its matids name the materials of the .mat its .scene names: alone it cannot be read.
+        inputs.files.insert(key_of(file));
+        inputs.diagnostics.warning(
+            ErrorContext{file.string(), 0, {}},
+            "a .glist is not checked alone: its matids name the materials of the .mat its "
+            ".scene names; check the .scene");
+        return;
+    }
     if (extension == ".mat") {
         inputs.files.insert(key_of(file));
         const std::size_t errors = inputs.diagnostics.error_count();
@@ -403,87 +459,6 @@ void check_file(const fs::path& file, LoadedInputs& inputs, const dirsig::ReadOp
         return;
     }
     check_simulation(file, inputs, options, log);
-}
-
-std::string describe_output_name(const model::BasicPlatformInputs& entry) {
-    return "output_folder '" + entry.output_folder.value_or("") + "' and output_prefix '" +
-           entry.output_prefix.value_or("") + "'";
-}
-
-void check_output_names(const model::Simulation& simulation, Diagnostics& diagnostics) {
-    const std::vector<std::size_t> indices = simulation.basic_platform_indices();
-    for (std::size_t j = 0; j < indices.size(); ++j) {
-        const model::Plugin& later = simulation.plugins[indices[j]];
-        for (std::size_t i = 0; i < j; ++i) {
-            const model::Plugin& earlier = simulation.plugins[indices[i]];
-            const model::BasicPlatformInputs& a = *earlier.basic_platform;
-            const model::BasicPlatformInputs& b = *later.basic_platform;
-            if (a.output_folder.value_or("") != b.output_folder.value_or("") ||
-                a.output_prefix.value_or("") != b.output_prefix.value_or("")) {
-                continue;
-            }
-            diagnostics.warning(later.where, "plugin_list[" + std::to_string(indices[j]) +
-                                                 "] (BasicPlatform) has the same " +
-                                                 describe_output_name(b) + " as plugin_list[" +
-                                                 std::to_string(indices[i]) +
-                                                 "]: their output files may overwrite each other");
-            break;
-        }
-    }
-}
-
-std::string summary_text(std::size_t errors, std::size_t warnings, std::size_t files) {
-    return plural(errors, "error") + ", " + plural(warnings, "warning") + " in " +
-           plural(files, "file");
-}
-
-void check_truth_targets(LoadedInputs& inputs) {
-    for (const model::Simulation& simulation : inputs.simulations) {
-        std::vector<const model::TruthCollector*> abundance;
-        for (std::size_t index : simulation.basic_platform_indices()) {
-            const model::Platform* platform =
-                inputs.platform_of(*simulation.plugins[index].basic_platform);
-            if (platform == nullptr) continue;
-            for (const model::InstrumentPath& path : model::list_instruments(*platform)) {
-                for (const model::FocalPlane& fp : path.instrument->focal_planes) {
-                    for (const model::TruthCollection& truth : fp.truth_collections) {
-                        if (!model::writes_truth(truth)) continue;
-                        for (const model::TruthCollector& collector : truth.collectors) {
-                            if (!collector.materials.empty() || !collector.tags.empty()) {
-                                abundance.push_back(&collector);
-                            }
-                        }
-                    }
-                }
-            }
-        }
-        if (abundance.empty() || simulation.scenes.empty()) continue;
-        // The simulation's scene as the render sees it (several merge into one; load_scenes
-        // reported what merging finds).
-        model::Scene scene;
-        Diagnostics merge_problems;
-        bool complete = true;
-        for (const model::SceneEntry& entry : simulation.scenes) {
-            const auto it = inputs.scenes.find(key_of(entry.file.resolved));
-            if (it == inputs.scenes.end()) {
-                complete = false;
-                break;
-            }
-            inputs::merge_scene(scene, it->second, merge_problems);
-        }
-        if (!complete) continue;
-        for (const model::TruthCollector* collector : abundance) {
-            std::vector<std::string> warnings;
-            try {
-                model::resolve_abundance(*collector, scene, warnings);
-            } catch (const Error& error) {
-                inputs.diagnostics.add(error);
-            }
-            for (const std::string& warning : warnings) {
-                inputs.diagnostics.warning(collector->where, warning);
-            }
-        }
-    }
 }
 
 }  // namespace glint::app_platform2jsim

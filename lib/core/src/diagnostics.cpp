@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <map>
 
+#include "glint/core/text.h"
+
 namespace glint {
 
 void Diagnostics::error(ErrorContext where, std::string message) {
@@ -54,9 +56,6 @@ void Diagnostics::append_capped(const Diagnostics& other, std::size_t per_file) 
         if (count.errors + count.warnings == 0) order.push_back(d.where.file);
         ++(is_error ? count.errors : count.warnings);
     }
-    const auto plural = [](std::size_t n, const char* word) {
-        return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
-    };
     for (const std::string& file : order) {
         const Count& count = counts[file];
         const std::string message = "… and " + std::to_string(count.errors + count.warnings) +

@@ -79,9 +79,12 @@ namespace {
 char32_t decode_utf8(std::string_view text, std::size_t at, std::size_t length) noexcept {
     const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(text[at + k]); };
     switch (length) {
-        case 1: return byte(0);
-        case 2: return ((byte(0) & 0x1Fu) << 6) | (byte(1) & 0x3Fu);
-        case 3: return ((byte(0) & 0x0Fu) << 12) | ((byte(1) & 0x3Fu) << 6) | (byte(2) & 0x3Fu);
+        case 1:
+            return byte(0);
+        case 2:
+            return ((byte(0) & 0x1Fu) << 6) | (byte(1) & 0x3Fu);
+        case 3:
+            return ((byte(0) & 0x0Fu) << 12) | ((byte(1) & 0x3Fu) << 6) | (byte(2) & 0x3Fu);
         default:
             return ((byte(0) & 0x07u) << 18) | ((byte(1) & 0x3Fu) << 12) |
                    ((byte(2) & 0x3Fu) << 6) | (byte(3) & 0x3Fu);
@@ -220,8 +223,7 @@ std::optional<std::int64_t> parse_int(std::string_view text) {
 std::optional<std::uint64_t> parse_byte_size(std::string_view text) {
     const std::string_view value = trim(text);
     std::size_t end = 0;
-    while (end < value.size() &&
-           ((value[end] >= '0' && value[end] <= '9') || value[end] == '.')) {
+    while (end < value.size() && ((value[end] >= '0' && value[end] <= '9') || value[end] == '.')) {
         ++end;
     }
     if (end == 0 || value[0] == '.' || value.substr(0, end).find('.') != value.rfind('.', end)) {
@@ -260,7 +262,10 @@ std::string format_byte_size(double bytes) {
         ++unit;
     }
     char text[32];
-    std::snprintf(text, sizeof text, value < 10 ? "%.2f %s" : value < 100 ? "%.1f %s" : "%.0f %s",
+    std::snprintf(text, sizeof text,
+                  value < 10    ? "%.2f %s"
+                  : value < 100 ? "%.1f %s"
+                                : "%.0f %s",
                   value, kUnits[unit]);
     return text;
 }
@@ -396,6 +401,10 @@ std::vector<std::string_view> split_lines(std::string_view text) {
         start = end + 1;
     }
     return lines;
+}
+
+std::string plural(std::size_t count, std::string_view noun) {
+    return std::to_string(count) + " " + std::string(noun) + (count == 1 ? "" : "s");
 }
 
 }  // namespace glint

@@ -452,7 +452,8 @@ std::vector<model::Material> read_materials(const std::filesystem::path& file,
         return materials;
     }
     const MatBlock root = parse_blocks(text, name, diagnostics);
-    MatReader reader{name, std::filesystem::absolute(file).parent_path(), options, diagnostics};
+    MatReader reader{name, std::filesystem::absolute(file).parent_path(), options, diagnostics, {},
+                     {}};
     for (const MatEntry& e : root.entries) {
         diagnostics.warning({name, e.line, e.key}, "key outside MATERIAL_ENTRY ignored");
     }
@@ -474,6 +475,26 @@ std::vector<model::Material> read_materials(const std::filesystem::path& file,
 }
 
 }  // namespace
+
+model::SpectralTable read_curve_file(const std::filesystem::path& file, const std::string& quantity,
+                                     const ReadOptions& options, Diagnostics& diagnostics) {
+    model::SpectralTable table;
+    const std::string name = file.string();
+    table.where = ErrorContext{name, 0, {}};
+    table.file = model::FileRef{name, file, table.where};
+    std::string text;
+    try {
+        text = options.read_text(file, name);
+    } catch (const Error& error) {
+        diagnostics.add(error);
+        return table;
+    }
+    const double max_value =
+        quantity == "intensity" ? std::numeric_limits<double>::infinity() : 1.0;
+    detail::parse_curve_text(text, detail::CurveSource{name, {}, quantity, max_value}, table,
+                             diagnostics);
+    return table;
+}
 
 std::vector<model::Material> read_dirsig_materials(const std::filesystem::path& file,
                                                    const ReadOptions& options,

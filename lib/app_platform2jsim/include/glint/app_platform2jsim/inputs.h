@@ -46,6 +46,8 @@ struct LoadedInputs {
 
     /// The platform of a BasicPlatform entry, if it was read.
     const model::Platform* platform_of(const model::BasicPlatformInputs& inputs) const;
+    /// The key a file is kept under: its absolute, lexically normal path.
+    static std::filesystem::path key_of(const std::filesystem::path& file);
 };
 
 /// How far load_references goes.

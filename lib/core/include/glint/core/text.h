@@ -22,6 +22,9 @@ std::string to_lower(std::string_view text);
 /// True when `a` and `b` are equal ignoring ASCII case.
 bool iequals(std::string_view a, std::string_view b) noexcept;
 
+/// "1 error", "3 errors": the count and the noun, with an "s" unless the count is 1.
+std::string plural(std::size_t count, std::string_view noun);
+
 /// The items separated by `separator`, the last two by `last_separator` when one is given:
 /// join({"a", "b", "c"}, ", ", " or ") is "a, b or c".
 std::string join(std::span<const std::string_view> items, std::string_view separator,

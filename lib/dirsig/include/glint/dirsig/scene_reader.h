@@ -35,6 +35,14 @@ std::vector<model::Material> read_dirsig_materials(const std::filesystem::path& 
                                                    const ReadOptions& options,
                                                    Diagnostics& diagnostics);
 
+/// Reads one material curve file alone (as glint-platform2jsim --check does): a two-column
+/// curve (wavelength µm, value) or a classic `.ems`, read as a `.mat` would read it for
+/// `quantity` ("reflectance", "emissivity": values in [0, 1]; "intensity": values >= 0).
+/// docs/formats.md ("Material curve files") gives the layouts. Each problem goes to
+/// `diagnostics` at the file's line; an empty table means nothing usable was read.
+model::SpectralTable read_curve_file(const std::filesystem::path& file, const std::string& quantity,
+                                     const ReadOptions& options, Diagnostics& diagnostics);
+
 /// Reads the Wavefront OBJ `file` through `options` and parses it (mesh::parse_obj_mesh:
 /// `usemtl` names looked up with `material_index`, faces before any `usemtl` take
 /// `default_material`). `display_name` names the file in messages.
