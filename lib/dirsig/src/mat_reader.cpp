@@ -444,13 +444,9 @@ std::vector<model::Material> read_materials(const std::filesystem::path& file,
                                             const ReadOptions& options, Diagnostics& diagnostics) {
     std::vector<model::Material> materials;
     const std::string name = file.string();
-    std::string text;
-    try {
-        text = options.read_text(file, name);
-    } catch (const Error& error) {
-        diagnostics.add(error);
-        return materials;
-    }
+    const std::optional<std::string> read = options.read_text_reported(file, name, diagnostics);
+    if (!read) return materials;
+    const std::string& text = *read;
     const MatBlock root = parse_blocks(text, name, diagnostics);
     MatReader reader{name, std::filesystem::absolute(file).parent_path(), options, diagnostics, {},
                      {}};
@@ -482,13 +478,9 @@ model::SpectralTable read_curve_file(const std::filesystem::path& file, const st
     const std::string name = file.string();
     table.where = ErrorContext{name, 0, {}};
     table.file = model::FileRef{name, file, table.where};
-    std::string text;
-    try {
-        text = options.read_text(file, name);
-    } catch (const Error& error) {
-        diagnostics.add(error);
-        return table;
-    }
+    const std::optional<std::string> read = options.read_text_reported(file, name, diagnostics);
+    if (!read) return table;
+    const std::string& text = *read;
     const double max_value =
         quantity == "intensity" ? std::numeric_limits<double>::infinity() : 1.0;
     detail::parse_curve_text(text, detail::CurveSource{name, {}, quantity, max_value}, table,

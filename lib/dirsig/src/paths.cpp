@@ -151,4 +151,15 @@ std::string ReadOptions::read_text(const std::filesystem::path& file,
     return io::read_input_file(file, display_name);
 }
 
+std::optional<std::string> ReadOptions::read_text_reported(const std::filesystem::path& file,
+                                                           const std::string& display_name,
+                                                           Diagnostics& diagnostics) const {
+    try {
+        return read_text(file, display_name);
+    } catch (const Error& error) {
+        diagnostics.add(error);
+        return std::nullopt;
+    }
+}
+
 }  // namespace glint::dirsig

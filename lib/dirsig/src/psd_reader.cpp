@@ -53,13 +53,9 @@ model::PsdTable read_psd_file(const std::filesystem::path& file, const ReadOptio
     model::PsdTable table;
     const std::string name = display_name.empty() ? file.string() : display_name;
     table.where.file = name;
-    std::string text;
-    try {
-        text = options.read_text(file, name);
-    } catch (const Error& error) {
-        diagnostics.add(error);
-        return table;
-    }
+    const std::optional<std::string> read = options.read_text_reported(file, name, diagnostics);
+    if (!read) return table;
+    const std::string& text = *read;
     std::string_view rest(text);
     if (rest.starts_with("\xEF\xBB\xBF")) rest.remove_prefix(3);
 

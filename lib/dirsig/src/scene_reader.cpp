@@ -132,13 +132,9 @@ model::Mesh load_obj_mesh(const std::filesystem::path& file, const std::string& 
                           std::optional<std::uint32_t> default_material, std::size_t material_count,
                           Diagnostics& diagnostics) {
     const std::string name = display_name.empty() ? file.string() : display_name;
-    std::string text;
-    try {
-        text = options.read_text(file, name);
-    } catch (const Error& error) {
-        diagnostics.add(error);
-        return {};
-    }
+    const std::optional<std::string> read = options.read_text_reported(file, name, diagnostics);
+    if (!read) return {};
+    const std::string& text = *read;
     return mesh::parse_obj_mesh(text, name, material_index, default_material, material_count,
                                 diagnostics);
 }

@@ -135,13 +135,10 @@ model::Simulation read_sim(const std::filesystem::path& file, const ReadOptions&
 std::vector<model::Simulation> read_simulation(const std::filesystem::path& file,
                                                const ReadOptions& options,
                                                Diagnostics& diagnostics) {
-    std::string text;
-    try {
-        text = options.read_text(file, file.string());
-    } catch (const Error& error) {
-        diagnostics.add(error);
-        return {};
-    }
+    const std::optional<std::string> read =
+        options.read_text_reported(file, file.string(), diagnostics);
+    if (!read) return {};
+    const std::string& text = *read;
     const char first = first_significant(text);
     if (first == '[' || first == '{') return read_jsim(file, options, diagnostics);
     if (first == '<') return {read_sim(file, options, diagnostics)};

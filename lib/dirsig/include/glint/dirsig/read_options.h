@@ -62,6 +62,10 @@ struct ReadOptions {
     /// Throws glint::Error as io::read_input_file does.
     std::string read_text(const std::filesystem::path& file,
                           const std::string& display_name = {}) const;
+    /// read_text, with the error it would throw added to `diagnostics` instead (nullopt).
+    std::optional<std::string> read_text_reported(const std::filesystem::path& file,
+                                                  const std::string& display_name,
+                                                  Diagnostics& diagnostics) const;
 };
 
 /// True for `C:\x`, `C:/x`, `\\server\x`.
