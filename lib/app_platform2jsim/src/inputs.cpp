@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <sstream>
 
@@ -372,9 +373,14 @@ void check_curve_file(const fs::path& file, const std::string& quantity, LoadedI
     std::string description = plural(table.wavelengths_um.size(), "point");
     if (!table.wavelengths_um.empty()) {
         const auto [low, high] = std::minmax_element(table.values.begin(), table.values.end());
-        description += ", " + format_shortest(table.wavelengths_um.front()) + "-" +
-                       format_shortest(table.wavelengths_um.back()) + " um, values " +
-                       format_shortest(*low) + "-" + format_shortest(*high);
+        const auto six = [](double value) {  // 6 significant digits (10⁴ / ν is rarely short)
+            char text[32];
+            std::snprintf(text, sizeof text, "%.6g", value);
+            return std::string(text);
+        };
+        description += ", " + six(table.wavelengths_um.front()) + "-" +
+                       six(table.wavelengths_um.back()) + " um, values " + six(*low) + "-" +
+                       six(*high);
     }
     inputs.contents.push_back(contents_line(quantity == "emissivity" ? "emissivity curve" : "curve",
                                             file, inputs.diagnostics.error_count() - errors,

@@ -49,13 +49,18 @@ bool is_keyword(const Row& row, std::string_view keyword) {
     return row.columns.size() == 1 && to_lower(row.columns[0]) == to_lower(keyword);
 }
 
-/// A whole number ≥ 1 (the curve count of a classic `.ems`).
-std::optional<std::size_t> parse_count(const std::string& text) {
+/// A whole number of at most 6 digits (a classic `.ems`'s curve count or curve number).
+std::optional<std::size_t> parse_whole(const std::string& text) {
     if (text.empty() || text.size() > 6) return std::nullopt;
     if (!std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; })) {
         return std::nullopt;
     }
-    const std::size_t n = std::stoul(text);
+    return std::stoul(text);
+}
+
+/// A whole number ≥ 1 (the curve count of a classic `.ems`).
+std::optional<std::size_t> parse_count(const std::string& text) {
+    const std::optional<std::size_t> n = parse_whole(text);
     if (n == 0) return std::nullopt;
     return n;
 }
@@ -197,12 +202,28 @@ struct Parser {
         return curves;
     }
 
-    /// The wavenumber layout: rows `wavenumber_cm-1 value` in descending wavenumber; a row
-    /// whose wavenumber is not below the previous one starts the next curve.
+    /// The wavenumber layout: rows `wavenumber_cm-1 value` in descending wavenumber. A curve
+    /// starts at a line holding its number alone (0, 1, …: DIRSIG's "old" .ems format), or,
+    /// without such lines, at a row whose wavenumber is not below the previous one.
     std::vector<Curve> wavenumber_curves(const std::vector<Row>& rows, std::size_t i) {
         std::vector<Curve> curves;
+        bool numbered = false;  // the curve just begun was started by its number line
         for (; i < rows.size(); ++i) {
             const Row& row = rows[i];
+            if (row.columns.size() == 1) {
+                const std::optional<std::size_t> index = parse_whole(row.columns[0]);
+                if (!index || *index != curves.size()) {
+                    diagnostics.error(at(row.line),
+                                      "expected curve number " + std::to_string(curves.size()) +
+                                          " or a row \"wavenumber_cm-1 value\", got \"" +
+                                          row.columns[0] + "\"");
+                }
+                if (index) {  // a curve starts here, its number right or wrong
+                    curves.push_back(Curve{row.line, {}, {}});
+                    numbered = true;
+                }
+                continue;
+            }
             const auto xv = numbers(row, "wavenumber_cm-1");
             if (!xv) continue;
             if (!(xv->first > 0.0)) {
@@ -210,7 +231,15 @@ struct Parser {
                                                     " cm-1 is not positive");
                 continue;
             }
-            if (curves.empty() || !(xv->first < curves.back().x.back())) {
+            const bool begun = numbered && curves.back().x.empty();
+            if (!begun && (curves.empty() || !(xv->first < curves.back().x.back()))) {
+                if (numbered) {
+                    diagnostics.error(at(row.line),
+                                      "wavenumber " + format_shortest(xv->first) +
+                                          " cm-1 is not below the previous row's (a numbered "
+                                          "curve's rows descend)");
+                    continue;
+                }
                 curves.push_back(Curve{row.line, {}, {}});
             }
             curves.back().x.push_back(xv->first);

@@ -202,6 +202,39 @@ INSTANTIATE_TEST_SUITE_P(MatReader, ClassicEmsErrors, ::testing::ValuesIn(kEmsEr
                              return std::string(test_case.param.name);
                          });
 
+TEST(MatReader, OldEmsFormatNumbersItsCurves) {
+    // DIRSIG's "old" .ems: the count, 91 angular rows, then each curve after a line holding
+    // its number (0, 1, …), in descending wavenumber (real anadirsig.mat bundles).
+    TempDir dir;
+    std::string ems = "2\n";
+    for (int angle = 0; angle <= 90; ++angle) ems += "1.0\n";
+    ems += "0\n1000 0.90\n500 0.95\n1\n1000 0.80\n500 0.85\n";
+    write_file(dir / "x.ems", ems);
+    write_file(dir / "m.mat", kEmsMaterial);
+    Diagnostics diagnostics;
+    const auto materials = read_dirsig_materials(dir / "m.mat", {}, diagnostics);
+    EXPECT_FALSE(diagnostics.has_errors()) << diagnostics_text(diagnostics);
+    ASSERT_EQ(materials.size(), 1u);
+    // The first curve, λ = 10⁴ / ν: 10 and 20 µm.
+    EXPECT_THAT(materials[0].emissivity.wavelengths_um, ElementsAre(10.0, 20.0));
+    expect_values(materials[0].emissivity.values, {0.90, 0.95});
+    EXPECT_THAT(warnings_text(diagnostics), HasSubstr("classic .ems with 2 curves (texture "
+                                                      "classes): glint uses the first (line 93)"));
+
+    // A curve number out of sequence is an error at its line.
+    std::string wrong_ems = "2\n";
+    for (int angle = 0; angle <= 90; ++angle) wrong_ems += "1.0\n";
+    write_file(dir / "x.ems", wrong_ems + "0\n1000 0.9\n500 0.95\n2\n1000 0.8\n500 0.85\n");
+    Diagnostics wrong;
+    read_dirsig_materials(dir / "m.mat", {}, wrong);
+    ASSERT_TRUE(wrong.has_errors());
+    ASSERT_EQ(wrong.error_count(), 1u) << diagnostics_text(wrong);
+    const Diagnostic& error = wrong.items().back();
+    EXPECT_EQ(error.where.line, 96);
+    EXPECT_EQ(error.message,
+              "expected curve number 1 or a row \"wavenumber_cm-1 value\", got \"2\"");
+}
+
 TEST(MatReader, AnIgnoredKeyIsSaidOncePerFileWithItsCountAndPlaces) {
     // Six materials with SPECIFIC_HEAT (DIRSIG's thermal keys: a real database has it in
     // every entry), two with DENSITY, one with an unknown block: three warnings, not nine.
