@@ -4,9 +4,9 @@
 // from --platform/--motion/--tasks, --append, --check, --dump-platform.
 #include "cli.h"
 
-#include "glint/core/runner.h"
-
+#include "../read_options_cli.h"
 #include "glint/core/error.h"
+#include "glint/core/runner.h"
 
 namespace glint::tools::platform2jsim {
 namespace {
@@ -43,11 +43,7 @@ void Platform2JsimCli::configure(CLI::App& app) {
     app.add_option("--output-folder,--output_folder", m_output_folder,
                    "BasicPlatform output_folder, written as given")
         ->type_name("DIR");
-    app.add_option("--max-instances", m_options.read_options.max_instances,
-                   "Most scene instances nested glists may expand to (counted before building)")
-        ->check(whole_number())
-        ->type_name("N")
-        ->capture_default_str();
+    add_read_options(app, m_options.read_options);
     app.add_option("--output-prefix,--output_prefix", m_output_prefix,
                    "BasicPlatform output_prefix (tells constellation members apart)")
         ->type_name("PREFIX");

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "../read_options_cli.h"
 #include "glint/core/runner.h"
 #include "glint/core/text.h"
 #include "glint/schedule/row_band.h"
@@ -57,11 +58,7 @@ void RenderCli::configure(CLI::App& app) {
                    "Cap the memory of the ray-tracing scene (bytes, or with K, M, G, T)")
         ->check(byte_size())
         ->type_name("SIZE");
-    app.add_option("--max-instances", m_options.read.max_instances,
-                   "Most scene instances nested glists may expand to (counted before building)")
-        ->check(whole_number())
-        ->type_name("N")
-        ->capture_default_str();
+    add_read_options(app, m_options.read);
     app.add_option("--max-bounces", m_options.render.tracer.max_bounces,
                    "Surface scatterings after the first hit (Russian roulette ends most paths "
                    "earlier)")

@@ -4,6 +4,7 @@
 // --log_info_filename; dashed spellings accepted too).
 #include "cli.h"
 
+#include "../read_options_cli.h"
 #include "glint/core/error.h"
 #include "glint/core/runner.h"
 
@@ -50,11 +51,7 @@ void ScheduleCli::configure(CLI::App& app) {
         ->type_name("FACTOR")
         ->check(CLI::PositiveNumber)
         ->capture_default_str();
-    app.add_option("--max-instances", m_options.read_options.max_instances,
-                   "Most scene instances nested glists may expand to (counted before building)")
-        ->check(whole_number())
-        ->type_name("N")
-        ->capture_default_str();
+    add_read_options(app, m_options.read_options);
     app.add_option("--log-info-filename,--log_info_filename", m_options.log_info_file,
                    "Also write DIRSIG's capture_list JSON of the selected captures to FILE")
         ->type_name("FILE");

@@ -2,13 +2,36 @@
 // PathResolver: expands $NAME / ${NAME} variables ($SCENE_DIR from the scene being read, the
 // others from the environment), keeps Windows absolute paths as written (with '/'), and makes
 // every other path absolute against the folder of the file that names it.
+#include <cctype>
 #include <cstdlib>
+#include <optional>
+#include <string>
 
 #include "glint/core/text.h"
 #include "glint/dirsig/read_options.h"
 
 namespace glint::dirsig {
 namespace {
+
+/// `path` with `mapping.from` replaced by `mapping.to` when it begins `path` in whole folders
+/// (case-insensitively for a Windows path); nullopt when it does not.
+std::optional<std::string> mapped_path(const PathMapping& mapping, const std::string& path) {
+    const std::string& from = mapping.from;
+    if (path.size() < from.size()) return std::nullopt;
+    const bool windows = is_windows_absolute(from) || from.rfind("//", 0) == 0;
+    for (std::size_t k = 0; k < from.size(); ++k) {
+        const char a = path[k];
+        const char b = from[k];
+        const bool same = windows ? std::tolower(static_cast<unsigned char>(a)) ==
+                                        std::tolower(static_cast<unsigned char>(b))
+                                  : a == b;
+        if (!same) return std::nullopt;
+    }
+    if (path.size() > from.size() && path[from.size()] != '/' && from.back() != '/') {
+        return std::nullopt;
+    }
+    return mapping.to + path.substr(from.size());
+}
 
 bool is_name_start(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; }
 
@@ -116,6 +139,28 @@ std::optional<std::string> PathResolver::expand(const std::string& text, const E
     return expanded;
 }
 
+PathMapping PathMapping::parse(const std::string& text) {
+    const std::size_t eq = text.find('=');
+    PathMapping mapping;
+    if (eq != std::string::npos) {
+        mapping.from = text.substr(0, eq);
+        mapping.to = text.substr(eq + 1);
+    }
+    for (char& c : mapping.from) {
+        if (c == '\\') c = '/';
+    }
+    while (mapping.from.size() > 1 && mapping.from.back() == '/') mapping.from.pop_back();
+    if (eq == std::string::npos || mapping.from.empty() || mapping.to.empty()) {
+        throw usage_error("--path-map " + quote(text) +
+                          ": expected FROM=TO, e.g. C:/DIRSIG=/data/dirsig");
+    }
+    // A relative TO is relative to the folder glint runs in, as any path on its command line.
+    std::error_code ec;
+    const std::filesystem::path to = std::filesystem::absolute(mapping.to, ec);
+    if (!ec) mapping.to = to.generic_string();
+    return mapping;
+}
+
 model::FileRef PathResolver::resolve(const std::string& text, const std::filesystem::path& base_dir,
                                      const ErrorContext& where, Diagnostics& diagnostics) const {
     model::FileRef ref;
@@ -125,9 +170,16 @@ model::FileRef PathResolver::resolve(const std::string& text, const std::filesys
     if (!expanded) return ref;
 
     // Paths written on Windows use '\\'; glint writes '/' everywhere.
-    const bool windows = is_windows_absolute(*expanded);
+    bool windows = is_windows_absolute(*expanded);
     for (char& c : *expanded) {
         if (c == '\\') c = '/';
+    }
+    for (const PathMapping& mapping : path_map) {
+        if (const std::optional<std::string> mapped = mapped_path(mapping, *expanded)) {
+            *expanded = *mapped;
+            windows = is_windows_absolute(*expanded);
+            break;
+        }
     }
     if (windows) {
         ref.resolved = std::filesystem::path(*expanded);

@@ -20,6 +20,21 @@
 namespace glint::inputs {
 namespace {
 
+/// For a path written on Windows, what to do about it: " (a Windows path: --path-map
+/// C:/DIRSIG=DIR reads C:/DIRSIG/… from DIR)", FROM being its drive and first folder; ""
+/// for any other path.
+std::string windows_path_hint(const std::string& text) {
+    if (!dirsig::is_windows_absolute(text)) return "";
+    std::string path = text;
+    for (char& c : path) {
+        if (c == '\\') c = '/';
+    }
+    std::size_t end = path.find('/', path.rfind(':') == 1 ? 3 : 2);  // after "C:/" or "//server/"
+    if (path.rfind("//", 0) == 0) end = path.find('/', end + 1);
+    const std::string from = end == std::string::npos ? path : path.substr(0, end);
+    return " (a Windows path: --path-map " + from + "=DIR reads " + from + "/... from DIR)";
+}
+
 namespace fs = std::filesystem;
 
 /// Origins closer than this are the same (about 0.1 mm on the ground).
@@ -69,9 +84,8 @@ bool existing_file(const model::FileRef& ref, const std::string& role, Diagnosti
     std::error_code ec;
     const fs::file_status status = fs::status(ref.resolved, ec);
     if (!fs::exists(status)) {
-        diagnostics.error(ref.where,
-                          role + " file does not exist: " + ref.resolved.string() +
-                              (dirsig::is_windows_absolute(ref.text) ? " (a Windows path)" : ""));
+        diagnostics.error(ref.where, role + " file does not exist: " + ref.resolved.string() +
+                                         windows_path_hint(ref.text));
         return false;
     }
     if (fs::is_directory(status)) {

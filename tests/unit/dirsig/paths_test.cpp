@@ -48,6 +48,39 @@ TEST(PathResolver, RelativePathsAreAbsoluteAndNormal) {
     EXPECT_FALSE(diagnostics.has_errors());
 }
 
+TEST(PathResolver, PathMapReplacesWholeLeadingFolders) {
+    PathResolver resolver = resolver_with({{"HOME_DIR", "C:\\Sims"}});
+    resolver.path_map = {PathMapping::parse("C:\\DIRSIG\\=/data/dirsig"),
+                         PathMapping::parse("C:/Sims=relative/sims"),
+                         PathMapping::parse("/old/root=/new/root")};
+    Diagnostics diagnostics;
+    const auto resolved = [&](const std::string& text) {
+        return resolver.resolve(text, "/proj", kWhere, diagnostics).resolved.generic_string();
+    };
+    // Any case of a Windows FROM, backslashes as slashes, in whole folders only.
+    EXPECT_EQ(resolved("c:\\dirsig\\scenes\\a.scene"), "/data/dirsig/scenes/a.scene");
+    EXPECT_EQ(resolved("C:/DIRSIG"), "/data/dirsig");
+    EXPECT_EQ(resolved("C:/DIRSIGX/a.scene"), "C:/DIRSIGX/a.scene");
+    // After variable expansion; a relative TO is relative to where glint runs.
+    EXPECT_EQ(resolved("$HOME_DIR/b.ppd"),
+              (std::filesystem::current_path() / "relative/sims/b.ppd").generic_string());
+    // A POSIX FROM matches exactly.
+    EXPECT_EQ(resolved("/old/root/x.tasks"), "/new/root/x.tasks");
+    EXPECT_EQ(resolved("/OLD/root/x.tasks"), "/OLD/root/x.tasks");
+    EXPECT_FALSE(diagnostics.has_errors());
+
+    for (const std::string bad : {"C:/DIRSIG", "=/data", "C:/DIRSIG="}) {
+        try {
+            (void)PathMapping::parse(bad);
+            ADD_FAILURE() << bad;
+        } catch (const Error& e) {
+            EXPECT_EQ(e.category(), ErrorCategory::usage);
+            EXPECT_EQ(e.message(),
+                      "--path-map \"" + bad + "\": expected FROM=TO, e.g. C:/DIRSIG=/data/dirsig");
+        }
+    }
+}
+
 TEST(PathResolver, RelativeBaseFolderGivesAnAbsolutePath) {
     const PathResolver resolver = resolver_with({});
     Diagnostics diagnostics;

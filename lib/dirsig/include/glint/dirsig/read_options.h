@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "glint/core/diagnostics.h"
 #include "glint/io/input_files.h"
@@ -25,11 +26,27 @@ namespace glint::dirsig {
 ///     reports when it needs the file.
 ///   - Anything else relative is taken relative to `base_dir` (the folder of the file that
 ///     names it); the result is absolute and lexically normalised.
+///   - Before that, the first `path_map` entry whose `from` begins the expanded path (whole
+///     folders; case-insensitive for a Windows path) replaces it with its `to`: a simulation
+///     written on Windows (`C:/DIRSIG/scenes/a.scene`) runs here with
+///     `--path-map C:/DIRSIG=/data/dirsig`.
+struct PathMapping {
+    std::string from;  ///< '/' separators, no trailing '/'
+    std::string to;
+
+    /// "FROM=TO" (the tools' --path-map); a backslash in FROM is read as '/', a relative TO
+    /// is made absolute against the current folder. Throws glint::Error (usage) without '='
+    /// or with an empty FROM or TO.
+    static PathMapping parse(const std::string& text);
+};
+
 struct PathResolver {
     /// Variable lookup; defaults to the process environment.
     std::function<std::optional<std::string>(const std::string&)> environment;
     /// Value of $SCENE_DIR, when a scene file is being read.
     std::optional<std::filesystem::path> scene_dir;
+    /// Folder prefixes replaced before a path is resolved (PathMapping), first match wins.
+    std::vector<PathMapping> path_map;
 
     /// A FileRef for `text` named at `where` in a file whose folder is `base_dir`. Problems
     /// (unset variable, empty path) go to `diagnostics` and give an empty `resolved`.
