@@ -19,6 +19,10 @@
 namespace glint::app_envi {
 namespace {
 
+/// The order glint reads a pulse's pixels in (docs/lidar-bin.md, "Pixel order"): the
+/// published readers disagree, so every report says which one glint assumed.
+constexpr const char* kPixelOrder = "x fastest, then y; each pixel's values together";
+
 namespace fs = std::filesystem;
 
 std::string num(double v) { return format_shortest(v); }
@@ -71,6 +75,7 @@ nlohmann::ordered_json bin_json(const fs::path& path, const BinSummary& file) {
     j["receiver_mount"] = h.receiver_mount;
     j["x_count"] = h.x_count;
     j["y_count"] = h.y_count;
+    j["pixel_order"] = kPixelOrder;
     j["pitch_m"] = {h.x_pitch_m, h.y_pitch_m};
     j["array_offset_m"] = {h.x_offset_m, h.y_offset_m};
     j["distortion"] = {{"k1", h.k1}, {"k2", h.k2}};
@@ -124,6 +129,7 @@ void write_pulse_cube(const fs::path& out, const fs::path& input, io::BinReader&
     header.bands = p.values_per_pixel();
     header.data_type = io::EnviDataType::float64;
     header.interleave = io::Interleave::bip;
+    header.set_extra("glint bin pixel order", kPixelOrder);
     header.data_units = "photons";
     header.band_names.push_back("passive (photons/s)");
     for (std::size_t b = 0; b + 1 < header.bands; ++b) {
@@ -250,6 +256,7 @@ std::string format_bin_text(const fs::path& path, const BinSummary& file) {
     out << path.string() << ": DIRSIG BIN version " << int(h.version) << ", "
         << (h.little_endian ? "little" : "big") << " endian, " << h.x_count << " x " << h.y_count
         << " pixels, " << file.tasks.size() << " task(s), " << file.pulse_count() << " pulse(s)\n";
+    out << "  pixel order (assumed): " << kPixelOrder << "\n";
     out << "  created: " << h.created << "; written by: " << h.dirsig_version << "\n";
     if (!h.description.empty()) out << "  description: " << h.description << "\n";
     out << "  scene origin: " << num(h.origin_latitude_deg) << " deg, "
