@@ -14,6 +14,8 @@ import re
 import sys
 import tempfile
 
+import runner
+
 READERS = {"dirsig", "yaml", "inputs"}
 
 # The primitives of reading: what a component below the readers may not call.
@@ -130,15 +132,5 @@ def self_test():
     return 0 if ok else 1
 
 
-def main():
-    if sys.argv[1] == "--self-test":
-        return self_test()
-    count, problems = check(pathlib.Path(sys.argv[1]))
-    for problem in problems:
-        print(problem)
-    print(f"{count} components checked, {len(problems)} problems")
-    return 1 if problems else 0
-
-
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(runner.run(check, self_test, "components"))

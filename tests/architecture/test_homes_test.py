@@ -19,6 +19,8 @@ import re
 import sys
 import tempfile
 
+import runner
+
 DOC = "docs/testing.md"
 HEADING = "## Where each library source is tested"
 
@@ -181,18 +183,5 @@ def self_test():
     return 0 if ok else 1
 
 
-def main():
-    if len(sys.argv) != 2:
-        print("usage: test_homes_test.py SOURCE_DIR | --self-test", file=sys.stderr)
-        return 2
-    if sys.argv[1] == "--self-test":
-        return self_test()
-    count, problems = check(pathlib.Path(sys.argv[1]))
-    for problem in problems:
-        print(problem)
-    print(f"{count} sources checked, {len(problems)} problems")
-    return 1 if problems else 0
-
-
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(runner.run(check, self_test, "sources"))

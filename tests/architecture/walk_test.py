@@ -22,6 +22,8 @@ import re
 import sys
 import tempfile
 
+import runner
+
 DOC = "docs/architecture.md"
 HEADING = "## One render, from `main` to the pixel written"
 MOST_HOPS = 15
@@ -227,18 +229,5 @@ def self_test():
     return 0 if ok else 1
 
 
-def main():
-    if len(sys.argv) != 2:
-        print("usage: walk_test.py SOURCE_DIR | --self-test", file=sys.stderr)
-        return 2
-    if sys.argv[1] == "--self-test":
-        return self_test()
-    count, problems = check(pathlib.Path(sys.argv[1]))
-    for problem in problems:
-        print(problem)
-    print(f"{count} hops checked, {len(problems)} problems")
-    return 1 if problems else 0
-
-
 if __name__ == "__main__":
-    sys.exit(main())
+    sys.exit(runner.run(check, self_test, "hops"))
