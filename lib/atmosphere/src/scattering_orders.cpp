@@ -16,6 +16,7 @@
 #include <numbers>
 #include <string>
 
+#include "atmosphere_detail.h"
 #include "glint/core/error.h"
 
 namespace glint::atmosphere {
@@ -25,7 +26,7 @@ namespace {
 /// depth of 41).
 constexpr std::size_t kMaxSublayers = 2048;
 
-constexpr double kPi = std::numbers::pi;
+using detail::kPi;
 
 /// Σ_m terms[m] cos(mφ).
 double sum_modes(const std::vector<double>& terms, double phi) {
@@ -126,16 +127,18 @@ ScatteringSolution solve_scattering_orders(const ScatteringProblem& problem) {
         throw input_error("scattering problem: ground albedo must lie in [0, 1]");
     }
     if (problem.streams < 2 || problem.azimuth_modes < 1 || !(problem.max_sublayer_depth > 0.0)) {
-        throw input_error("scattering problem: streams >= 2, azimuth modes >= 1 and a sublayer "
-                          "depth > 0 are required");
+        throw input_error(
+            "scattering problem: streams >= 2, azimuth modes >= 1 and a sublayer "
+            "depth > 0 are required");
     }
     for (const ScatteringLayer& layer : problem.layers) {
         if (bad(layer.optical_depth) || layer.optical_depth < 0.0 ||
             bad(layer.single_scatter_albedo) || layer.single_scatter_albedo < 0.0 ||
             layer.single_scatter_albedo > 1.0 || layer.moments.empty() ||
             layer.moments.front() != 1.0) {
-            throw input_error("scattering layer needs an optical depth >= 0, a single-scatter "
-                              "albedo in [0, 1] and moments starting with 1");
+            throw input_error(
+                "scattering layer needs an optical depth >= 0, a single-scatter "
+                "albedo in [0, 1] and moments starting with 1");
         }
     }
 
@@ -159,9 +162,9 @@ ScatteringSolution solve_scattering_orders(const ScatteringProblem& problem) {
     for (std::size_t k = 0; k < problem.layers.size(); ++k) {
         const double depth = problem.layers[k].optical_depth;
         // At most kMaxSublayers + 1 per layer (rounding up), so the conversion is defined.
-        const int parts = std::max(1, static_cast<int>(std::min(
-                                          std::ceil(depth / sublayer_depth),
-                                          static_cast<double>(kMaxSublayers) + 1.0)));
+        const int parts =
+            std::max(1, static_cast<int>(std::min(std::ceil(depth / sublayer_depth),
+                                                  static_cast<double>(kMaxSublayers) + 1.0)));
         const double top = s.m_tau.back();
         for (int p = 1; p <= parts; ++p) {
             s.m_tau.push_back(top + depth * p / parts);
@@ -195,7 +198,8 @@ ScatteringSolution solve_scattering_orders(const ScatteringProblem& problem) {
             const double omega = layer.single_scatter_albedo;
             for (std::size_t a = 0; a < nd; ++a) {
                 for (std::size_t b = 0; b < nd; ++b) {
-                    kernel[k][a * nd + b] = 0.5 * omega * s.m_weight[b % static_cast<std::size_t>(n)] *
+                    kernel[k][a * nd + b] = 0.5 * omega *
+                                            s.m_weight[b % static_cast<std::size_t>(n)] *
                                             phase_mode(layer.moments, m, lambda[a], lambda[b]);
                 }
                 beam[k][a] = omega / (4.0 * kPi) * (m == 0 ? 1.0 : 2.0) *
@@ -206,9 +210,8 @@ ScatteringSolution solve_scattering_orders(const ScatteringProblem& problem) {
         // One order: sources J (per sublayer, at its top and bottom) → field.
         std::vector<double> order(boundaries * nd, 0.0);  // field of the current order
         std::vector<double> total(boundaries * nd, 0.0);
-        const auto at = [&](std::vector<double>& f, std::size_t boundary, std::size_t dir) -> double& {
-            return f[boundary * nd + dir];
-        };
+        const auto at = [&](std::vector<double>& f, std::size_t boundary,
+                            std::size_t dir) -> double& { return f[boundary * nd + dir]; };
         // Order 1: the direct beam scattered once, and (m = 0) the ground's reflection of it.
         {
             for (std::size_t i = 0; i < static_cast<std::size_t>(n); ++i) {
@@ -235,9 +238,9 @@ ScatteringSolution solve_scattering_orders(const ScatteringProblem& problem) {
                     const double t = s.m_tau[q];
                     const double d = s.m_tau[q + 1] - t;
                     const double e = std::exp(-d / mu);
-                    const double integral =
-                        std::exp(-t / mu0) * (-std::expm1(-d * (1.0 / mu0 + 1.0 / mu))) * mu0 /
-                        (mu0 + mu);
+                    const double integral = std::exp(-t / mu0) *
+                                            (-std::expm1(-d * (1.0 / mu0 + 1.0 / mu))) * mu0 /
+                                            (mu0 + mu);
                     at(order, q, i) = at(order, q + 1, i) * e + beam[s.m_layer_of[q]][i] * integral;
                 }
             }
@@ -334,7 +337,8 @@ double ScatteringSolution::diffuse_down_flux(std::size_t level) const noexcept {
     const std::size_t n = m_mu.size();
     const std::size_t b = m_level_boundary[level];
     double sum = 0.0;
-    for (std::size_t i = 0; i < n; ++i) sum += m_weight[i] * m_mu[i] * m_field[0][b * 2 * n + n + i];
+    for (std::size_t i = 0; i < n; ++i)
+        sum += m_weight[i] * m_mu[i] * m_field[0][b * 2 * n + n + i];
     return 2.0 * kPi * sum;
 }
 

@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <string>
 
+#include "glint/core/text.h"
+
 namespace glint {
 
 namespace {
@@ -18,13 +20,6 @@ constexpr double kJulianDateOfUnixEpoch = 2440587.5;
 constexpr std::int64_t floor_div(std::int64_t a, std::int64_t b) noexcept {
     const std::int64_t q = a / b;
     return (a % b != 0 && a < 0) ? q - 1 : q;
-}
-
-/// A number for a message: up to 10 significant digits.
-std::string num(double value) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.10g", value);
-    return buffer;
 }
 
 std::string two_digits(int value) {
@@ -59,7 +54,8 @@ std::string civil_problem(const CivilTime& c) {
         return "second " + std::to_string(c.second) + " is out of range, expected 00 to 59";
     }
     if (!(c.fraction_s >= 0.0 && c.fraction_s < 1.0)) {
-        return "fraction of a second " + num(c.fraction_s) + " is out of range, expected [0, 1)";
+        return "fraction of a second " + format_ten_digits(c.fraction_s) +
+               " is out of range, expected [0, 1)";
     }
     return {};
 }
@@ -278,7 +274,7 @@ double seconds_between(const DateTime& a, const DateTime& b) noexcept {
 
 DateTime add_seconds(DateTime time, double seconds) {
     if (!(std::fabs(seconds) < 1e17)) {
-        throw input_error("time step of " + num(seconds) +
+        throw input_error("time step of " + format_ten_digits(seconds) +
                           " s is invalid, expected a finite value below 1e17 s");
     }
     double whole = std::floor(seconds);

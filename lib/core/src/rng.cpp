@@ -5,11 +5,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 #include <string>
 
 #include "glint/core/error.h"
+#include "glint/core/text.h"
 
 namespace glint {
 
@@ -30,13 +30,6 @@ constexpr double kTwoPow52Inv = 1.0 / 4503599627370496.0;  // 2^-52
 
 constexpr double kPoissonInversionLimit = 10.0;
 constexpr double kPoissonMaxMean = 1e15;
-
-/// A number for a message: up to 10 significant digits.
-std::string num(double value) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.10g", value);
-    return buffer;
-}
 
 /// SplitMix64's output function (Steele, Lea, Flood 2014): a 64-bit bijection with full
 /// avalanche.
@@ -247,7 +240,7 @@ double RandomStream::uniform_open() {
 
 double RandomStream::uniform(double a, double b) {
     if (!std::isfinite(a) || !std::isfinite(b) || !(a <= b)) {
-        throw input_error("uniform range [" + num(a) + ", " + num(b) +
+        throw input_error("uniform range [" + format_ten_digits(a) + ", " + format_ten_digits(b) +
                           ") is invalid, expected finite a <= b");
     }
     const double value = a + (b - a) * uniform();
@@ -268,15 +261,16 @@ double RandomStream::normal() {
 
 double RandomStream::normal(double mean, double sigma) {
     if (!std::isfinite(mean) || !std::isfinite(sigma) || sigma < 0.0) {
-        throw input_error("normal distribution with mean " + num(mean) + " and sigma " +
-                          num(sigma) + " is invalid, expected finite values and sigma >= 0");
+        throw input_error("normal distribution with mean " + format_ten_digits(mean) +
+                          " and sigma " + format_ten_digits(sigma) +
+                          " is invalid, expected finite values and sigma >= 0");
     }
     return mean + sigma * normal();
 }
 
 std::uint64_t RandomStream::poisson(double mean) {
     if (!(mean >= 0.0) || !(mean <= kPoissonMaxMean)) {
-        throw input_error("Poisson mean " + num(mean) +
+        throw input_error("Poisson mean " + format_ten_digits(mean) +
                           " is invalid, expected a finite value in [0, 1e15]");
     }
     if (mean == 0.0) return 0;

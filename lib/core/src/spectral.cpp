@@ -6,22 +6,15 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 #include <string>
 
+#include "glint/core/text.h"
 #include "glint/core/units.h"
 
 namespace glint {
 
 namespace {
-
-/// A number for a message: up to 10 significant digits, no trailing zeros.
-std::string num(double value) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.10g", value);
-    return buffer;
-}
 
 void check_wavelengths(std::span<const double> wavelengths_um, const ErrorContext& context) {
     if (wavelengths_um.empty())
@@ -35,14 +28,14 @@ void check_wavelengths(std::span<const double> wavelengths_um, const ErrorContex
     for (std::size_t i = 0; i < wavelengths_um.size(); ++i) {
         const double wl = wavelengths_um[i];
         if (!std::isfinite(wl) || wl <= 0.0) {
-            throw input_error("wavelength " + std::to_string(i) + " is " + num(wl) +
+            throw input_error("wavelength " + std::to_string(i) + " is " + format_ten_digits(wl) +
                                   ", expected a finite value > 0 µm",
                               context);
         }
         if (i > 0 && !(wl > wavelengths_um[i - 1])) {
-            throw input_error("wavelength " + std::to_string(i) + " (" + num(wl) +
+            throw input_error("wavelength " + std::to_string(i) + " (" + format_ten_digits(wl) +
                                   ") is not greater than wavelength " + std::to_string(i - 1) +
-                                  " (" + num(wavelengths_um[i - 1]) +
+                                  " (" + format_ten_digits(wavelengths_um[i - 1]) +
                                   "), expected strictly increasing wavelengths",
                               context);
         }
@@ -59,7 +52,8 @@ void check_sizes(std::size_t grid_size, std::size_t values_size, const char* wha
 
 void check_wavelength(double wavelength_um) {
     if (!std::isfinite(wavelength_um) || wavelength_um <= 0.0) {
-        throw input_error("wavelength " + num(wavelength_um) + " µm is invalid, expected > 0");
+        throw input_error("wavelength " + format_ten_digits(wavelength_um) +
+                          " µm is invalid, expected > 0");
     }
 }
 
@@ -70,27 +64,32 @@ void check_wavelength(double wavelength_um) {
 SpectralGrid SpectralGrid::regular(double min_um, double max_um, double delta_um,
                                    const ErrorContext& context) {
     if (!std::isfinite(min_um) || !std::isfinite(max_um) || !std::isfinite(delta_um)) {
-        throw input_error("spectral range (" + num(min_um) + ", " + num(max_um) + ", " +
-                              num(delta_um) + ") is invalid, expected finite values",
+        throw input_error("spectral range (" + format_ten_digits(min_um) + ", " +
+                              format_ten_digits(max_um) + ", " + format_ten_digits(delta_um) +
+                              ") is invalid, expected finite values",
                           context);
     }
     if (min_um <= 0.0) {
-        throw input_error("minimum wavelength " + num(min_um) + " µm is invalid, expected > 0",
-                          context);
+        throw input_error(
+            "minimum wavelength " + format_ten_digits(min_um) + " µm is invalid, expected > 0",
+            context);
     }
     if (max_um < min_um) {
-        throw input_error("maximum wavelength " + num(max_um) + " µm is below the minimum " +
-                              num(min_um) + " µm, expected minimum <= maximum",
+        throw input_error("maximum wavelength " + format_ten_digits(max_um) +
+                              " µm is below the minimum " + format_ten_digits(min_um) +
+                              " µm, expected minimum <= maximum",
                           context);
     }
     if (delta_um <= 0.0) {
-        throw input_error("wavelength step " + num(delta_um) + " µm is invalid, expected > 0",
-                          context);
+        throw input_error(
+            "wavelength step " + format_ten_digits(delta_um) + " µm is invalid, expected > 0",
+            context);
     }
     const double steps = (max_um - min_um) / delta_um;
     if (!(steps < static_cast<double>(kMaxSize))) {
-        throw input_error("spectral range (" + num(min_um) + ", " + num(max_um) + ", " +
-                              num(delta_um) + ") has too many samples, expected at most " +
+        throw input_error("spectral range (" + format_ten_digits(min_um) + ", " +
+                              format_ten_digits(max_um) + ", " + format_ten_digits(delta_um) +
+                              ") has too many samples, expected at most " +
                               std::to_string(kMaxSize),
                           context);
     }
@@ -134,7 +133,7 @@ SpectralCurve::SpectralCurve(std::vector<double> wavelengths_um, std::vector<dou
     for (std::size_t i = 0; i < m_values.size(); ++i) {
         if (!std::isfinite(m_values[i])) {
             throw input_error("spectral curve value " + std::to_string(i) + " is " +
-                                  num(m_values[i]) + ", expected a finite number",
+                                  format_ten_digits(m_values[i]) + ", expected a finite number",
                               context);
         }
     }
@@ -208,7 +207,8 @@ double wavelength_unit_to_um(std::string_view unit_name, const ErrorContext& con
 double planck_radiance_w_per_m2_sr_um(double wavelength_um, double temperature_k) {
     check_wavelength(wavelength_um);
     if (!std::isfinite(temperature_k) || temperature_k < 0.0) {
-        throw input_error("temperature " + num(temperature_k) + " K is invalid, expected >= 0");
+        throw input_error("temperature " + format_ten_digits(temperature_k) +
+                          " K is invalid, expected >= 0");
     }
     if (temperature_k == 0.0) return 0.0;
     // With λ in µm: B = c1 · 1e24 / λ⁵ / (exp(c2 / (λ T)) − 1) in W/(m² sr µm), where
@@ -245,7 +245,8 @@ std::vector<double> watts_to_photons_per_s(const SpectralGrid& grid,
 
 double gaussian_fwhm(double wavelength_um, double center_um, double fwhm_um) {
     if (!std::isfinite(fwhm_um) || fwhm_um <= 0.0) {
-        throw input_error("Gaussian FWHM " + num(fwhm_um) + " µm is invalid, expected > 0");
+        throw input_error("Gaussian FWHM " + format_ten_digits(fwhm_um) +
+                          " µm is invalid, expected > 0");
     }
     const double d = (wavelength_um - center_um) / fwhm_um;
     return std::exp(-4.0 * std::numbers::ln2 * d * d);

@@ -3,11 +3,11 @@
 #include "glint/detect/noise.h"
 
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 #include <string>
 
 #include "glint/core/error.h"
+#include "glint/core/text.h"
 
 namespace glint::detect {
 namespace {
@@ -54,12 +54,6 @@ ZigguratTable make_ziggurat() {
     return t;
 }
 
-std::string num(double value) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.10g", value);
-    return buffer;
-}
-
 }  // namespace
 
 namespace detail {
@@ -92,7 +86,7 @@ const ZigguratTable& ziggurat_table() {
 
 std::uint64_t sample_poisson(RandomStream& stream, double mean) {
     if (!(mean >= 0.0) || !(mean <= kMaxPoissonMean)) {
-        throw input_error("Poisson mean " + num(mean) +
+        throw input_error("Poisson mean " + format_ten_digits(mean) +
                           " is invalid, expected a finite value in [0, 1e15]");
     }
     if (mean == 0.0) return 0;

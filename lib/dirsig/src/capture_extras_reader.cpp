@@ -16,7 +16,6 @@ namespace {
 using capture_io::non_empty_text;
 using capture_io::required_attribute;
 using capture_io::single_child;
-using capture_io::ten_digit_text;
 
 /// The most paths per pixel a convergence setting may ask for.
 constexpr std::int64_t kMaxPathsPerPixel = 1'000'000'000;
@@ -71,8 +70,8 @@ model::DetectorModel read_detector_model(const io::XmlNode& node, bool lidar,
     if (max_e) detector.max_electrons = *max_e;
     if (min_e && max_e && !(*min_e < *max_e)) {
         diagnostics.error(node.child("maxelectrons")->where(),
-                          "minelectrons (" + ten_digit_text(*min_e) +
-                              ") must be less than maxelectrons (" + ten_digit_text(*max_e) + ")");
+                          "minelectrons (" + format_ten_digits(*min_e) +
+                              ") must be less than maxelectrons (" + format_ten_digits(*max_e) + ")");
     }
     const auto bits = lidar ? node.optional_int("bitdepth", diagnostics, 1, 32)
                             : node.required_int("bitdepth", diagnostics, 1, 32);

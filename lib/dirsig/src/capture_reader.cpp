@@ -22,7 +22,6 @@ namespace {
 
 using capture_io::non_empty_text;
 using capture_io::single_child;
-using capture_io::ten_digit_text;
 using capture_io::trim;
 
 /// ENVI data types an image file may be written as.
@@ -35,7 +34,7 @@ std::optional<int> attribute_count(const io::XmlNode& node, std::string_view nam
     if (!value) return std::nullopt;
     if (*value != std::floor(*value)) {
         diagnostics.error(node.where_attribute(name), std::string(name) + " " +
-                                                          ten_digit_text(*value) +
+                                                          format_ten_digits(*value) +
                                                           " is invalid, expected an integer >= 1");
         return std::nullopt;
     }

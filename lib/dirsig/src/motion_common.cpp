@@ -21,8 +21,6 @@ namespace {
 
 constexpr double kMetresPerFoot = 0.3048;
 
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
-
 /// The 1-based file line on which the text content of `element` starts (after blanks,
 /// a CDATA opener and comments), found by scanning `source` from the element's start tag;
 /// 0 when it cannot be told (no source, or the tag is not where the parser said).

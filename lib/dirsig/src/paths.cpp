@@ -37,16 +37,6 @@ bool is_name_start(char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 
 
 bool is_name_char(char c) { return is_name_start(c) || (c >= '0' && c <= '9'); }
 
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }
-
-std::string trim(const std::string& text) {
-    std::size_t first = 0;
-    std::size_t last = text.size();
-    while (first < last && is_blank(text[first])) ++first;
-    while (last > first && is_blank(text[last - 1])) --last;
-    return text.substr(first, last - first);
-}
-
 }  // namespace
 
 bool is_windows_absolute(const std::string& path) {
@@ -59,7 +49,7 @@ bool is_windows_absolute(const std::string& path) {
 
 std::optional<std::string> PathResolver::expand(const std::string& text, const ErrorContext& where,
                                                 Diagnostics& diagnostics) const {
-    const std::string written = trim(text);
+    const std::string written(glint::trim(text));
     if (written.empty()) {
         diagnostics.error(where, "expected a file path, got an empty one");
         return std::nullopt;

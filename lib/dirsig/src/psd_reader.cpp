@@ -18,8 +18,6 @@
 namespace glint::dirsig {
 namespace {
 
-bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
-
 /// The fields of one line (comment already removed): separated by blanks, or by one comma
 /// with optional blanks around it. Returns nullopt for an empty field (",," or a leading or
 /// trailing comma).

@@ -49,8 +49,8 @@ double unit_factor(const Bandpass& bandpass) {
 /// "0.4–0.7 microns", in the units the bandpass was written in.
 std::string range_text(const Bandpass& bandpass) {
     const double factor = unit_factor(bandpass);
-    return ten_digit_text(bandpass.min_um / factor) + "–" +
-           ten_digit_text(bandpass.max_um / factor) + " " + bandpass.spectral_units;
+    return format_ten_digits(bandpass.min_um / factor) + "–" +
+           format_ten_digits(bandpass.max_um / factor) + " " + bandpass.spectral_units;
 }
 
 Bandpass read_bandpass(const io::XmlNode& node, Diagnostics& diagnostics) {
@@ -70,20 +70,22 @@ Bandpass read_bandpass(const io::XmlNode& node, Diagnostics& diagnostics) {
 
     const std::string unit = " " + bandpass.spectral_units;
     if (!(*maximum > *minimum)) {
-        diagnostics.error(node.child("maximum")->where(),
-                          "maximum " + ten_digit_text(*maximum) + unit + " is not above minimum " +
-                              ten_digit_text(*minimum) + unit + ", expected minimum < maximum");
+        diagnostics.error(node.child("maximum")->where(), "maximum " + format_ten_digits(*maximum) +
+                                                              unit + " is not above minimum " +
+                                                              format_ten_digits(*minimum) + unit +
+                                                              ", expected minimum < maximum");
         return bandpass;
     }
     // The sample count is checked on the step count before anything is sized by it.
-    const std::string range = ten_digit_text(*minimum) + "–" + ten_digit_text(*maximum) + unit;
+    const std::string range =
+        format_ten_digits(*minimum) + "–" + format_ten_digits(*maximum) + unit;
     const double steps = (*maximum - *minimum) / *delta;
     if (!(steps + 1.0 <= static_cast<double>(kMaxBandpassSamples) + 1e-6)) {
         char count[64] = "more than 10^18";
         if (steps < 1e18)
             std::snprintf(count, sizeof count, "%.0f", std::floor(steps + 1e-6) + 1.0);
         diagnostics.error(node.child("delta")->where(), "bandpass " + range + " at delta " +
-                                                            ten_digit_text(*delta) + " has " +
+                                                            format_ten_digits(*delta) + " has " +
                                                             count + " samples, expected at most " +
                                                             std::to_string(kMaxBandpassSamples));
         return bandpass;
@@ -91,10 +93,10 @@ Bandpass read_bandpass(const io::XmlNode& node, Diagnostics& diagnostics) {
     const double nearest = std::max(1.0, std::round(steps));
     if (std::fabs(steps - nearest) > 1e-6) {
         diagnostics.error(node.child("delta")->where(),
-                          "bandpass delta " + ten_digit_text(*delta) +
+                          "bandpass delta " + format_ten_digits(*delta) +
                               " does not divide the range " + range + " (" +
-                              ten_digit_text(nearest) + " steps would need delta " +
-                              ten_digit_text((*maximum - *minimum) / nearest) +
+                              format_ten_digits(nearest) + " steps would need delta " +
+                              format_ten_digits((*maximum - *minimum) / nearest) +
                               "), expected a delta that divides maximum − minimum");
         return bandpass;
     }
@@ -138,8 +140,8 @@ void read_table(const io::XmlNode& node, double factor, Channel& channel,
         }
         if (previous && !(*point > *previous)) {
             diagnostics.error(entry.child("spectralpoint")->where(),
-                              "spectralpoint " + ten_digit_text(*point) +
-                                  " does not increase (previous " + ten_digit_text(*previous) +
+                              "spectralpoint " + format_ten_digits(*point) +
+                                  " does not increase (previous " + format_ten_digits(*previous) +
                                   "), expected strictly increasing points");
             complete = false;
             continue;
@@ -243,8 +245,8 @@ void check_channel_in_bandpass(const Channel& channel, const Bandpass& bandpass,
         const double last = channel.table_wavelength_um.back();
         if (last < bandpass.min_um || first > bandpass.max_um) {
             diagnostics.error(channel.where,
-                              "tabulated response " + ten_digit_text(first / factor) + "–" +
-                                  ten_digit_text(last / factor) + unit +
+                              "tabulated response " + format_ten_digits(first / factor) + "–" +
+                                  format_ten_digits(last / factor) + unit +
                                   " lies outside the bandpass " + range_text(bandpass) +
                                   ", expected a response inside the bandpass");
         }
@@ -258,7 +260,7 @@ void check_channel_in_bandpass(const Channel& channel, const Bandpass& bandpass,
     // FWHM; a tophat or triangle is zero beyond half its full width.
     const double reach =
         channel.shape == ChannelShape::gaussian ? channel.width_um : channel.width_um / 2.0;
-    const std::string center = "center " + ten_digit_text(channel.center_um / factor) + unit +
+    const std::string center = "center " + format_ten_digits(channel.center_um / factor) + unit +
                                " lies outside the bandpass " + range_text(bandpass);
     if (outside >= reach) {
         diagnostics.error(channel.where, center +
@@ -311,12 +313,6 @@ void check_pattern(const ChannelPattern& pattern, const std::vector<Channel>& ch
 }
 
 }  // namespace
-
-std::string ten_digit_text(double value) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.10g", value);
-    return text;
-}
 
 std::optional<std::string> non_empty_text(const io::XmlNode& node, std::string_view name,
                                           std::string_view expected, Diagnostics& diagnostics) {

@@ -20,10 +20,6 @@ namespace glint::dirsig::detail::capture_io {
 /// The most samples a bandpass may have; checked before anything is sized by it.
 inline constexpr std::size_t kMaxBandpassSamples = 100'000;
 
-/// `value` with up to 10 significant digits ("0.04", "1e-09", "0.3" for 0.1 + 0.2): computed
-/// values without their float noise (detail::number_text gives the shortest round trip).
-std::string ten_digit_text(double value);
-
 /// `text` without leading and trailing blanks.
 std::string trim(const std::string& text);
 

@@ -15,7 +15,7 @@
 namespace glint::motion {
 namespace {
 
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
+constexpr double kFullTurn_rad = 2.0 * std::numbers::pi;
 
 std::string mount_label(const model::Mount& mount) {
     return mount.name.empty() ? std::string("mount") : "mount \"" + mount.name + "\"";
@@ -218,9 +218,9 @@ double whisk_angle_rad(const model::WhiskScan& scan, double t_s) noexcept {
     const double centre = 0.5 * (scan.min_angle_rad + scan.max_angle_rad);
     const double amplitude = 0.5 * (scan.max_angle_rad - scan.min_angle_rad);
     if (scan.sinusoidal) {
-        return centre + amplitude * std::sin(kTwoPi * scan.rate_hz * t_s + scan.phase_rad);
+        return centre + amplitude * std::sin(kFullTurn_rad * scan.rate_hz * t_s + scan.phase_rad);
     }
-    const double cycles = scan.rate_hz * t_s + scan.phase_rad / kTwoPi + 0.5;
+    const double cycles = scan.rate_hz * t_s + scan.phase_rad / kFullTurn_rad + 0.5;
     const double frac = cycles - std::floor(cycles);
     return centre + amplitude * (2.0 * frac - 1.0);
 }

@@ -4,13 +4,13 @@
 #include "glint/motion/teme.h"
 
 #include <cmath>
+#include <numbers>
 
 namespace glint::motion {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kTwoPi = 2.0 * kPi;
+constexpr double kTwoPi_rad = 2.0 * std::numbers::pi;
 constexpr double kJ2000 = 2451545.0;
 constexpr double kDaysPerCentury = 36525.0;
 constexpr double kSecondsPerDay = 86400.0;
@@ -26,15 +26,15 @@ double gmst_rad(double jd_ut1) noexcept {
     const double t = (jd_ut1 - kJ2000) / kDaysPerCentury;
     const double gmst_s = kGmst3_s * t * t * t + kGmst2_s * t * t + kGmst1_s * t + kGmst0_s;
     // 86400 s of time are 2π rad: 1 s = 2π / 86400 rad = (π / 180) / 240 rad.
-    double angle = std::fmod(gmst_s * (kPi / 180.0) / 240.0, kTwoPi);
-    if (angle < 0.0) angle += kTwoPi;
+    double angle = std::fmod(gmst_s * (std::numbers::pi / 180.0) / 240.0, kTwoPi_rad);
+    if (angle < 0.0) angle += kTwoPi_rad;
     return angle;
 }
 
 double gmst_rate_rad_s(double jd_ut1) noexcept {
     const double t = (jd_ut1 - kJ2000) / kDaysPerCentury;
     const double seconds_per_century = (3.0 * kGmst3_s * t + 2.0 * kGmst2_s) * t + kGmst1_s;
-    return seconds_per_century / (kDaysPerCentury * kSecondsPerDay) * kTwoPi / kSecondsPerDay;
+    return seconds_per_century / (kDaysPerCentury * kSecondsPerDay) * kTwoPi_rad / kSecondsPerDay;
 }
 
 PositionVelocity teme_to_ecef(const Vec3& position_km, const Vec3& velocity_km_s,

@@ -14,6 +14,7 @@
 
 #include "glint/core/atomic_file.h"
 #include "glint/core/error.h"
+#include "glint/core/text.h"
 #include "glint/process/process.h"
 
 namespace glint::process {
@@ -73,12 +74,6 @@ Pattern parse_pattern(const std::string& name, int& conversions) {
         }
     }
     return pattern;
-}
-
-std::string format_number(double value) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.10g", value);
-    return text;
 }
 
 bool uses_x264_by_default(const fs::path& output) {
@@ -204,7 +199,7 @@ VideoResult encode_video(const VideoOptions& options, const Context& ctx) {
     if (options.output.empty()) throw usage_error("no output video named");
     if (!(options.framerate > 0) || options.framerate > 1e6) {
         throw usage_error("frame rate must be a positive number, got " +
-                          format_number(options.framerate));
+                          format_ten_digits(options.framerate));
     }
     const auto ffmpeg = find_program(options.ffmpeg_program);
     if (!ffmpeg) {
@@ -257,7 +252,7 @@ VideoResult encode_video(const VideoOptions& options, const Context& ctx) {
 
     std::vector<std::string>& cmd = result.command;
     cmd = {ffmpeg->string(), "-nostdin", "-y",         "-hide_banner",
-           "-loglevel",      "error",    "-framerate", format_number(options.framerate)};
+           "-loglevel",      "error",    "-framerate", format_ten_digits(options.framerate)};
     cmd.insert(cmd.end(), input_args.begin(), input_args.end());
     const bool x264 =
         options.codec.empty() ? uses_x264_by_default(options.output) : options.codec == "libx264";
@@ -273,7 +268,7 @@ VideoResult encode_video(const VideoOptions& options, const Context& ctx) {
     cmd.push_back(video.temp_path().string());
 
     ctx.log.info("encoding " + std::to_string(result.frame_count) + " frames at " +
-                 format_number(options.framerate) + " fps into " + options.output.string());
+                 format_ten_digits(options.framerate) + " fps into " + options.output.string());
     ctx.log.debug("running: " + format_command_line(cmd));
 
     ProcessOptions process;

@@ -23,8 +23,6 @@ namespace {
 constexpr double kSigmaPerFwhm = 0.42466090014400953;
 /// A Gaussian pulse's extent, σ either side (C < 1e-9 beyond it).
 constexpr double kGaussianReachSigma = 6.0;
-/// The largest max_bounces accepted (as the passive tracer's).
-constexpr unsigned kMaxBouncesLimit = 10'000;
 
 }  // namespace
 

@@ -12,9 +12,6 @@
 namespace glint::radiometry {
 namespace {
 
-/// The largest max_bounces accepted (a guard against a typo turning into a hang).
-constexpr unsigned kMaxBouncesLimit = 10'000;
-
 /// The bands a path follows, as indices into the environment's grid: a contiguous range (the
 /// whole spectrum of the tracer) ...
 struct RangeBands {
@@ -374,8 +371,9 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
         ++scratch.rays;
         if (hit == nullptr) {
             if (wi.z > 0.0 && !env.sky_black()) {
-                const double* sky = at_height(bands, level, &Environment::sky_radiance_w_per_cm2_sr_um,
-                                              env, scratch.sky_at_height);
+                const double* sky =
+                    at_height(bands, level, &Environment::sky_radiance_w_per_cm2_sr_um, env,
+                              scratch.sky_at_height);
                 for (std::size_t j = 0; j < count; ++j) radiance[j] += beta[j] * sky[bands[j]];
             }
             break;

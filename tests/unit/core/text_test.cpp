@@ -1,12 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
-// Tests of the helpers in glint/core/text.h: quote, the UTF-8 checks, byte sizes and lines.
+// Tests of the helpers in glint/core/text.h: quote, the UTF-8 checks, byte sizes, lines, the
+// ten-digit number format and blanks.
+#include "glint/core/text.h"
+
 #include <gtest/gtest.h>
 
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include "glint/core/text.h"
 
 namespace glint::test {
 namespace {
@@ -28,8 +29,12 @@ TEST(Quote, EscapesWhatATerminalWouldMisread) {
 
 TEST(Quote, EscapesBidiAndC1Controls) {
     // U+202E RIGHT-TO-LEFT OVERRIDE ("Trojan Source") and U+0085 NEXT LINE, as UTF-8.
-    EXPECT_EQ(quote("a\xE2\x80\xAE" "gpj.exe"), "\"a\\u202Egpj.exe\"");
-    EXPECT_EQ(quote("a\xC2\x85" "b"), "\"a\\u0085b\"");
+    EXPECT_EQ(quote("a\xE2\x80\xAE"
+                    "gpj.exe"),
+              "\"a\\u202Egpj.exe\"");
+    EXPECT_EQ(quote("a\xC2\x85"
+                    "b"),
+              "\"a\\u0085b\"");
 }
 
 TEST(TerminalSafe, EscapesWhatATerminalActsOn) {
@@ -37,9 +42,9 @@ TEST(TerminalSafe, EscapesWhatATerminalActsOn) {
     EXPECT_EQ(terminal_safe("\x1B]0;title\x07\x1B[2J"), "\\x1B]0;title\\x07\\x1B[2J");
     EXPECT_EQ(terminal_safe("x\ry"), "x\\x0Dy");  // a carriage return would redraw the line
     EXPECT_EQ(terminal_safe("\x7F\xC2\x9B"), "\\x7F\\u009B");  // DEL, the C1 CSI
-    for (const char* bidi : {"\xD8\x9C", "\xE2\x80\x8E", "\xE2\x80\x8F", "\xE2\x80\xAA",
-                             "\xE2\x80\xAE", "\xE2\x81\xA6", "\xE2\x81\xA9", "\xE2\x80\xA8",
-                             "\xE2\x80\xA9"}) {
+    for (const char* bidi :
+         {"\xD8\x9C", "\xE2\x80\x8E", "\xE2\x80\x8F", "\xE2\x80\xAA", "\xE2\x80\xAE",
+          "\xE2\x81\xA6", "\xE2\x81\xA9", "\xE2\x80\xA8", "\xE2\x80\xA9"}) {
         const std::string shown = terminal_safe(bidi);
         EXPECT_EQ(shown.substr(0, 2), "\\u") << shown;
     }
@@ -113,6 +118,22 @@ TEST(ByteSize, FormatsThreeSignificantDigits) {
     EXPECT_EQ(format_byte_size(256.0 * 1024 * 1024), "256 MiB");
     EXPECT_EQ(format_byte_size(8e9), "7.45 GiB");
     EXPECT_EQ(format_byte_size(3.0 * 0x1p50), "3072 TiB");
+}
+
+TEST(FormatTenDigits, DropsFloatNoiseAndTrailingZeros) {
+    EXPECT_EQ(format_ten_digits(0.1 + 0.2),
+              "0.3");  // the shortest round trip is 0.30000000000000004
+    EXPECT_EQ(format_ten_digits(0.04), "0.04");
+    EXPECT_EQ(format_ten_digits(1e-9), "1e-09");
+    EXPECT_EQ(format_ten_digits(299792458.0), "299792458");
+    EXPECT_EQ(format_ten_digits(-2.5), "-2.5");
+    EXPECT_EQ(format_ten_digits(12345678901.0), "1.23456789e+10");  // 11 digits: rounded to 10
+}
+
+TEST(IsBlank, AsciiWhiteSpaceOnly) {
+    for (const char c : std::string_view(" \t\n\r\f\v")) EXPECT_TRUE(is_blank(c)) << int(c);
+    for (const char c : std::string_view("a0_,\x00\xA0")) EXPECT_FALSE(is_blank(c)) << int(c);
+    EXPECT_EQ(trim(" \t a b \r\n"), "a b");
 }
 
 TEST(SplitLines, LinesWithoutTheirEndings) {

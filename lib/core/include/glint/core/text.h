@@ -16,6 +16,13 @@ namespace glint {
 /// The shortest text that reads back as exactly `value` ("0.55", "1e-300", "inf").
 std::string format_shortest(double value);
 
+/// `value` for a message: up to 10 significant digits, no trailing zeros ("%.10g": "0.3",
+/// "1e-05", "299792458").
+std::string format_ten_digits(double value);
+
+/// ASCII white space: space, tab, newline, carriage return, form feed, vertical tab.
+bool is_blank(char c) noexcept;
+
 /// `text` with ASCII letters lowered (other bytes unchanged, whatever the locale).
 std::string to_lower(std::string_view text);
 

@@ -69,6 +69,10 @@ struct FirstSun {
     double cos_i = 0.0;    ///< its cosine with the facing normal
 };
 
+/// The largest `max_bounces` the path tracer and the lidar tracer accept (a guard against a
+/// typo turning into a hang).
+inline constexpr unsigned kMaxBouncesLimit = 10'000;
+
 /// Path tracer settings.
 struct TracerSettings {
     unsigned max_bounces = 8;            ///< surface scatterings after the first hit
