@@ -17,6 +17,7 @@
 #include "glint/core/error.h"
 #include "glint/motion/euler.h"
 #include "glint/motion/geometry.h"
+#include "measurements.h"
 
 namespace glint::bench {
 namespace {
@@ -25,10 +26,6 @@ using Clock = std::chrono::steady_clock;
 
 /// Rays per task of the parallel loops.
 constexpr std::size_t kGrain = 256;
-
-double seconds_since(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 /// The object → scene map of a static transform as Embree's column-major 3×4 floats, with
 /// the same conventions as the scene component (translation + R · (scale ∘ p), R the

@@ -6,6 +6,7 @@
 // bands. The result is one JSON document (docs/performance.md explains every figure).
 #pragma once
 
+#include <chrono>
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -14,6 +15,11 @@
 #include "procedural_scene.h"
 
 namespace glint::bench {
+
+/// Seconds of wall-clock time since `start` (the steady clock every timing here uses).
+inline double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 /// Options of glint-bench.
 struct BenchOptions {

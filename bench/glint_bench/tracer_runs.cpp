@@ -14,6 +14,8 @@
 #include <numbers>
 #include <vector>
 
+#include "measurements.h"
+
 namespace glint::bench {
 namespace {
 
@@ -88,10 +90,6 @@ TracerTiming time_tiles(const radiometry::RaySource& source, std::uint64_t count
         if (r == 0 || t.seconds < best.seconds) best = t;
     }
     return best;
-}
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace
