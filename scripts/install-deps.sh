@@ -1,28 +1,43 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
-# Installs every Debian 12 package that glint's build, tests and test oracles need.
+# Installs the Debian 12 packages glint needs.
+#   scripts/install-deps.sh          everything: the build, the tests and their oracles (make test)
+#   scripts/install-deps.sh --demo   only what building the tools and running the demo need
+#                                    (make demo): no test framework, oracle, fuzzer or cluster
 # Idempotent: asks dpkg what is missing and runs apt-get only for that, so a second run
 # on a prepared machine does nothing and needs no network.
 set -euo pipefail
 
-packages=(
+demo_packages=(
     # toolchain
-    build-essential cmake ninja-build pkg-config git
+    build-essential cmake ninja-build pkg-config
+    # libraries (pinned by Debian 12: Embree 3.13, OIIO 2.4, CLI11 2.1, yaml-cpp 0.7,
+    # tinyxml2 9, nlohmann_json 3.11)
+    libembree-dev libopenimageio-dev libcli11-dev libyaml-cpp-dev libtinyxml2-dev
+    nlohmann-json3-dev libtbb-dev libeigen3-dev libgeographiclib-dev zlib1g-dev
+    # the program glint runs (the demo's video)
+    ffmpeg
+)
+test_packages=(
+    git
+    # the test framework (GTest 1.12)
+    libgtest-dev libgmock-dev
     # the fuzz targets (scripts/fuzz.sh, docs/testing.md): clang 14 and libFuzzer's runtime
     clang libclang-rt-dev
-    # libraries (pinned by Debian 12: Embree 3.13, OIIO 2.4, CLI11 2.1, yaml-cpp 0.7,
-    # tinyxml2 9, nlohmann_json 3.11, GTest 1.12)
-    libembree-dev libopenimageio-dev libcli11-dev libyaml-cpp-dev libtinyxml2-dev
-    nlohmann-json3-dev libgtest-dev libgmock-dev libtbb-dev libeigen3-dev
-    libgeographiclib-dev zlib1g-dev
     # the tools' man pages (generated from --help; optional: skipped without it)
     help2man
-    # programs glint runs and test oracles
-    ffmpeg openimageio-tools gdal-bin python3 python3-gdal python3-numpy python3-spectral
+    # test oracles
+    openimageio-tools gdal-bin python3 python3-gdal python3-numpy python3-spectral
     python3-sgp4 python3-astropy python3-opencv jq
     # the one-node Slurm cluster of tests/cluster (examples/slurm): slurmctld, slurmd, sbatch, munged
     slurm-wlm munge
 )
+
+case "${1:-}" in
+    "") packages=("${demo_packages[@]}" "${test_packages[@]}") ;;
+    --demo) packages=("${demo_packages[@]}") ;;
+    *) echo "install-deps: unknown option '$1'; usage: scripts/install-deps.sh [--demo]" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do
