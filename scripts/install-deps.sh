@@ -15,6 +15,9 @@ demo_packages=(
     # tinyxml2 9, nlohmann_json 3.11)
     libembree-dev libopenimageio-dev libcli11-dev libyaml-cpp-dev libtinyxml2-dev
     nlohmann-json3-dev libtbb-dev libeigen3-dev libgeographiclib-dev zlib1g-dev
+    # Debian's OpenImageIO CMake package names its tools (iconvert, oiiotool), so
+    # find_package(OpenImageIO) fails without them
+    openimageio-tools
     # the program glint runs (the demo's video)
     ffmpeg
 )
@@ -27,7 +30,7 @@ test_packages=(
     # the tools' man pages (generated from --help; optional: skipped without it)
     help2man
     # test oracles
-    openimageio-tools gdal-bin python3 python3-gdal python3-numpy python3-spectral
+    gdal-bin python3 python3-gdal python3-numpy python3-spectral
     python3-sgp4 python3-astropy python3-opencv jq
     # the one-node Slurm cluster of tests/cluster (examples/slurm): slurmctld, slurmd, sbatch, munged
     slurm-wlm munge
