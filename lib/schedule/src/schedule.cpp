@@ -100,7 +100,9 @@ std::vector<std::filesystem::path> Schedule::truth_files(const Capture& capture)
 // ---------------------------------------------------------------------------------------
 // Generator
 
-namespace {
+// A named namespace, not an anonymous one: Generator::State, a member of a class with
+// external linkage, holds Cursors (GCC's -Wsubobject-linkage in a unity build).
+namespace generator_detail {
 
 /// The next capture of one (source, task).
 struct Cursor {
@@ -120,7 +122,10 @@ bool before(const Cursor& a, const Cursor& b) {
     return a.task < b.task;
 }
 
-}  // namespace
+}  // namespace generator_detail
+
+using generator_detail::before;
+using generator_detail::Cursor;
 
 struct Schedule::Generator::State {
     std::vector<Cursor> heap;  ///< binary min-heap under before()

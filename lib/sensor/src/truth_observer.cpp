@@ -12,6 +12,12 @@ namespace {
 using Q = model::TruthQuantity;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+}  // namespace
+
+// A named namespace, not an anonymous one: Recorder, a member of a class with external
+// linkage, holds Tallies (GCC's -Wsubobject-linkage in a unity build).
+namespace truth_detail {
+
 /// Σ w per index, the index with the most (ties: the lowest).
 class Tally {
 public:
@@ -38,7 +44,7 @@ private:
     std::vector<std::pair<std::uint32_t, double>> m_weights;
 };
 
-}  // namespace
+}  // namespace truth_detail
 
 class TruthObserver::Recorder final : public radiometry::SampleRecorder {
 public:
@@ -189,9 +195,9 @@ private:
     double m_shadow = 0.0;
     double m_temperature = 0.0;
     double m_reflectance = 0.0;
-    Tally m_materials;
-    Tally m_instances;
-    Tally m_objects;
+    truth_detail::Tally m_materials;
+    truth_detail::Tally m_instances;
+    truth_detail::Tally m_objects;
     std::vector<double> m_targets;  ///< Σ w per abundance target
     std::size_t m_channels;         ///< channels this state's standard errors cover
     std::vector<radiometry::WeightedMoments> m_moments;
