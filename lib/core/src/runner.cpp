@@ -46,8 +46,8 @@ volatile std::sig_atomic_t g_signal_seen[kMaxSignal] = {};
 /// and the exit status is 128 + the signal's number. (SIGKILL cannot be caught; SIGXFSZ is
 /// ignored instead, so that writing past the file-size limit fails with EFBIG and is
 /// reported like a full disk.)
-constexpr int kStopSignals[] = {SIGINT,    SIGTERM, SIGHUP,  SIGQUIT,   SIGPIPE, SIGALRM,
-                                SIGUSR1,   SIGUSR2, SIGXCPU, SIGVTALRM, SIGPROF};
+constexpr int kStopSignals[] = {SIGINT,  SIGTERM, SIGHUP,  SIGQUIT,   SIGPIPE, SIGALRM,
+                                SIGUSR1, SIGUSR2, SIGXCPU, SIGVTALRM, SIGPROF};
 constexpr std::size_t kStopSignalCount = std::size(kStopSignals);
 
 extern "C" void on_interrupt(int signal_number) {
@@ -105,12 +105,17 @@ private:
     struct sigaction m_old_xfsz {};
 };
 
-bool wants_colour(bool terminal) {
-    if (!terminal) return false;
-    const char* no_colour = std::getenv("NO_COLOR");
+/// Whether stderr is a terminal that understands ANSI escapes (TERM is not "dumb"): the
+/// progress line and its clearing need them.
+bool ansi_terminal(bool terminal) {
     const char* term = std::getenv("TERM");
-    return (no_colour == nullptr || *no_colour == '\0') &&
-           (term == nullptr || std::string(term) != "dumb");
+    return terminal && (term == nullptr || std::string(term) != "dumb");
+}
+
+/// Colour too, unless NO_COLOR is set (https://no-color.org).
+bool wants_colour(bool terminal) {
+    const char* no_colour = std::getenv("NO_COLOR");
+    return ansi_terminal(terminal) && (no_colour == nullptr || *no_colour == '\0');
 }
 
 std::string lowercase_first(std::string text) {
@@ -129,18 +134,30 @@ constexpr std::int64_t kLatestSourceDateEpoch_s = 253402300799;
 /// "SIGHUP" for SIGHUP, and so on for the stop signals.
 std::string signal_name(int signal_number) {
     switch (signal_number) {
-        case SIGINT: return "SIGINT";
-        case SIGTERM: return "SIGTERM";
-        case SIGHUP: return "SIGHUP";
-        case SIGQUIT: return "SIGQUIT";
-        case SIGPIPE: return "SIGPIPE";
-        case SIGALRM: return "SIGALRM";
-        case SIGUSR1: return "SIGUSR1";
-        case SIGUSR2: return "SIGUSR2";
-        case SIGXCPU: return "SIGXCPU";
-        case SIGVTALRM: return "SIGVTALRM";
-        case SIGPROF: return "SIGPROF";
-        default: return "signal " + std::to_string(signal_number);
+        case SIGINT:
+            return "SIGINT";
+        case SIGTERM:
+            return "SIGTERM";
+        case SIGHUP:
+            return "SIGHUP";
+        case SIGQUIT:
+            return "SIGQUIT";
+        case SIGPIPE:
+            return "SIGPIPE";
+        case SIGALRM:
+            return "SIGALRM";
+        case SIGUSR1:
+            return "SIGUSR1";
+        case SIGUSR2:
+            return "SIGUSR2";
+        case SIGXCPU:
+            return "SIGXCPU";
+        case SIGVTALRM:
+            return "SIGVTALRM";
+        case SIGPROF:
+            return "SIGPROF";
+        default:
+            return "signal " + std::to_string(signal_number);
     }
 }
 
@@ -318,7 +335,7 @@ int run_tool(const ToolSpec& spec, int argc, const char* const* argv, const Tool
                                : common.verbosity >= 2 ? LogLevel::debug
                                : common.verbosity == 1 ? LogLevel::info
                                                        : LogLevel::notice;
-    const bool terminal_progress = !common.quiet && streams.err_is_terminal;
+    const bool terminal_progress = !common.quiet && ansi_terminal(streams.err_is_terminal);
     context.log = Log(
         [&](LogLevel level, const std::string& message) {
             if (terminal_progress) err << "\r\033[K";
@@ -334,9 +351,10 @@ int run_tool(const ToolSpec& spec, int argc, const char* const* argv, const Tool
     // workers with a message of its own; say it once here and use the CPUs there are (the
     // bytes written never depend on the thread count).
     if (const unsigned cpus = available_cpus(); context.threads > cpus) {
-        context.log.warning("--threads " + std::to_string(context.threads) + ": this process may run on " +
-                            std::to_string(cpus) + (cpus == 1 ? " CPU" : " CPUs") + "; using " +
-                            std::to_string(cpus) + (cpus == 1 ? " thread" : " threads"));
+        context.log.warning("--threads " + std::to_string(context.threads) +
+                            ": this process may run on " + std::to_string(cpus) +
+                            (cpus == 1 ? " CPU" : " CPUs") + "; using " + std::to_string(cpus) +
+                            (cpus == 1 ? " thread" : " threads"));
         context.threads = cpus;
     }
 

@@ -10,10 +10,12 @@
 #include <csignal>
 #include <cstdlib>
 #include <filesystem>
-#include <string>
-#include <vector>
 #include <fstream>
+#include <optional>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "glint/core/atomic_file.h"
 #include "glint/core/error.h"
@@ -21,7 +23,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint {
-namespace {
+namespace runner_test {
 
 using ::testing::HasSubstr;
 using ::testing::Not;
@@ -182,10 +184,12 @@ TEST(Runner, SeedAndThreadsOutOfRangeAreUsageErrors) {
         EXPECT_FALSE(ran) << message;
     }
     Context seen;
-    EXPECT_EQ(run({"--seed", "18446744073709551615"}, [&](Context& c) {
-                  seen = c;
-                  return 0;
-              }).status,
+    EXPECT_EQ(run({"--seed", "18446744073709551615"},
+                  [&](Context& c) {
+                      seen = c;
+                      return 0;
+                  })
+                  .status,
               0);
     EXPECT_EQ(seen.seed, 18446744073709551615u);
 }
@@ -280,7 +284,36 @@ TEST(Runner, ProgressFileGetsKeyValueLines) {
     EXPECT_EQ(o.err, "");  // stderr is not a terminal here: no progress line
 }
 
+/// Sets an environment variable (or unsets it, for nullptr) for its lifetime, then restores it:
+/// tests of colour must not depend on the TERM and NO_COLOR they were started with.
+class ScopedEnvironment {
+public:
+    ScopedEnvironment(const char* name, const char* value) : m_name(name) {
+        if (const char* old = std::getenv(name)) m_old = old;
+        if (value) {
+            ::setenv(name, value, 1);
+        } else {
+            ::unsetenv(name);
+        }
+    }
+    ~ScopedEnvironment() {
+        if (m_old) {
+            ::setenv(m_name.c_str(), m_old->c_str(), 1);
+        } else {
+            ::unsetenv(m_name.c_str());
+        }
+    }
+    ScopedEnvironment(const ScopedEnvironment&) = delete;
+    ScopedEnvironment& operator=(const ScopedEnvironment&) = delete;
+
+private:
+    std::string m_name;
+    std::optional<std::string> m_old;
+};
+
 TEST(Runner, TerminalGetsAProgressLineAndColourUnlessQuiet) {
+    const ScopedEnvironment term("TERM", "xterm-256color");
+    const ScopedEnvironment no_colour("NO_COLOR", nullptr);
     auto work = [](Context& c) {
         c.progress.update("frames", 1, 2);
         c.progress.finish("frames", 2);
@@ -304,6 +337,33 @@ TEST(Runner, TerminalGetsAProgressLineAndColourUnlessQuiet) {
                   ToolStreams{out_q, err_q, true}, [](CLI::App&) {}, work),
               0);
     EXPECT_EQ(err_q.str(), "");
+}
+
+TEST(Runner, ADumbTerminalGetsNoEscapesAndNoColorNoColour) {
+    auto warn = [](Context& c) {
+        c.progress.update("frames", 1, 2);
+        c.progress.finish("frames", 2);
+        c.log.warning("careful");
+        return 0;
+    };
+    const char* argv[] = {"glint-demo"};
+    for (const auto& [term, no_colour] : {std::pair<const char*, const char*>{"dumb", nullptr},
+                                          std::pair<const char*, const char*>{"xterm", "1"}}) {
+        const ScopedEnvironment set_term("TERM", term);
+        const ScopedEnvironment set_no_colour("NO_COLOR", no_colour);
+        std::ostringstream out, err;
+        EXPECT_EQ(run_tool(
+                      ToolSpec{"demo", "d", kCommonBasic}, 1, argv, ToolStreams{out, err, true},
+                      [](CLI::App&) {}, warn),
+                  0);
+        EXPECT_THAT(err.str(), HasSubstr("glint-demo: warning: careful")) << term;
+        EXPECT_THAT(err.str(), Not(HasSubstr("\033[1;35m"))) << term;  // no colour either way
+        if (std::string(term) == "dumb") {
+            EXPECT_EQ(err.str(), "glint-demo: warning: careful\n");  // no progress line
+        } else {
+            EXPECT_THAT(err.str(), HasSubstr("\r\033[Kframes 100.0% (2/2)"));  // NO_COLOR only
+        }
+    }
 }
 
 TEST(Runner, InterruptCancelsAndExits130) {
@@ -380,12 +440,12 @@ TEST(Diagnostic, ColourOnlyWhenAsked) {
 TEST(Diagnostic, TextFromAFileCannotDrawOnTheTerminalNorPassForGlintsOwnLine) {
     // A <message> or a file name holding an escape sequence, a bidi override and a newline
     // followed by a forged diagnostic.
-    EXPECT_EQ(format_diagnostic("glint-x", "warning",
-                                "a.platform:3: \x1B[2Jdone\xE2\x80\xAE\nglint-x: error: forged",
-                                false),
-              "glint-x: warning: a.platform:3: \\x1B[2Jdone\\u202E\n  glint-x: error: forged");
+    EXPECT_EQ(
+        format_diagnostic("glint-x", "warning",
+                          "a.platform:3: \x1B[2Jdone\xE2\x80\xAE\nglint-x: error: forged", false),
+        "glint-x: warning: a.platform:3: \\x1B[2Jdone\\u202E\n  glint-x: error: forged");
     EXPECT_EQ(printable_message("one\ntwo\n"), "one\n  two\n  ");
 }
 
-}  // namespace
+}  // namespace runner_test
 }  // namespace glint
