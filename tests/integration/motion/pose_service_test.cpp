@@ -18,15 +18,16 @@
 #include "glint/dirsig/readers.h"
 #include "glint/inputs/load.h"
 #include "glint/motion/euler.h"
+#include "glint/test/angles.h"
 #include "glint/test/errors.h"
 #include "glint/test/platforms.h"
 #include "motion_expect.h"
 
 namespace glint::motion {
-namespace {
+namespace pose_service_test {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = kPi / 180.0;
+using glint::test::kDeg;
+using glint::test::kPi;
 const std::string kData = GLINT_TEST_DATA_DIR;
 
 double angle(const Vec3& a, const Vec3& b) { return std::atan2(norm(cross(a, b)), dot(a, b)); }
@@ -255,5 +256,5 @@ TEST(PoseService, JitterSpanCoversTheTasks) {
     EXPECT_EQ(jitter_span_of(tasks).end_s, 8.0);
 }
 
-}  // namespace
+}  // namespace pose_service_test
 }  // namespace glint::motion

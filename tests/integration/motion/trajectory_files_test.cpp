@@ -20,16 +20,17 @@
 #include "glint/motion/teme.h"
 #include "glint/motion/tle.h"
 #include "glint/motion/trajectory.h"
+#include "glint/test/angles.h"
 #include "glint/test/temp_dir.h"
 #include "motion_expect.h"
 
 namespace glint::motion {
-namespace {
+namespace trajectory_files_test {
 
 using glint::test::TempDir;
 using ::testing::HasSubstr;
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using glint::test::kDeg;
 const std::filesystem::path kData = std::filesystem::path(GLINT_TEST_DATA_DIR) / "motion";
 
 model::PlatformMotion read(const std::filesystem::path& file) {
@@ -212,5 +213,5 @@ TEST(TrajectoryErrors, ElementSetThatCannotReachTheReferenceTime) {
                           "reference time 2300-01-01T00:00:00.000Z"));
 }
 
-}  // namespace
+}  // namespace trajectory_files_test
 }  // namespace glint::motion

@@ -14,7 +14,7 @@
 #include "tracer_fixture.h"
 
 namespace glint::radiometry {
-namespace {
+namespace dirsig_material_plate_test {
 
 using test::batch_of;
 using test::direction_from;
@@ -83,5 +83,5 @@ TEST(DirsigMaterialPlate, EmissivityOnlyPlateUnderAUniformSkyEmitsAndReflects) {
     }
 }
 
-}  // namespace
+}  // namespace dirsig_material_plate_test
 }  // namespace glint::radiometry

@@ -24,7 +24,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::schedule {
-namespace {
+namespace schedule_test {
 
 using ::testing::DoubleNear;
 using ::testing::ElementsAre;
@@ -511,11 +511,11 @@ TEST(Schedule, MissingSimulationIsAnError) {
     EXPECT_THAT(load_error("no_such.jsim", diagnostics), HasSubstr("no_such.jsim"));
 }
 
-}  // namespace
+}  // namespace schedule_test
 }  // namespace glint::schedule
 
 namespace glint::schedule {
-namespace {
+namespace schedule_test {
 
 TEST(ScheduleScene, PosesUseTheSceneOriginAndTrackNamedInstances) {
     // A camera hovering 500 m over the origin tracks the instance truck_01, which drives east
@@ -553,5 +553,5 @@ TEST(ScheduleScene, AnUnknownTargetNameIsAnInputErrorAtTheMount) {
     }
 }
 
-}  // namespace
+}  // namespace schedule_test
 }  // namespace glint::schedule

@@ -19,7 +19,7 @@
 #include "glint/sensor/output_units.h"
 
 namespace glint::sensor {
-namespace {
+namespace output_units_fixture_test {
 
 TEST(OutputUnitsFixture, BayerFocalPlaneOfCaptureFull) {
     dirsig::ReadOptions options;
@@ -62,5 +62,5 @@ TEST(OutputUnitsFixture, BayerFocalPlaneOfCaptureFull) {
     EXPECT_EQ(units.fwhm_um()[1], 0.08);
 }
 
-}  // namespace
+}  // namespace output_units_fixture_test
 }  // namespace glint::sensor

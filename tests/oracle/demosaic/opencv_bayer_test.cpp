@@ -20,7 +20,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::demosaic::oracle {
-namespace {
+namespace opencv_bayer_test {
 
 using glint::test::CommandResult;
 using glint::test::python_command;
@@ -137,5 +137,5 @@ TEST(OpenCvOracle, BayerBilinearMatchesCvDemosaicingWithinOneDnAwayFromBorders) 
     }
 }
 
-}  // namespace
+}  // namespace opencv_bayer_test
 }  // namespace glint::demosaic::oracle

@@ -14,7 +14,7 @@
 #include "oracle_support.h"
 
 namespace glint::io::oracle {
-namespace {
+namespace envi_gdal_test {
 
 using nlohmann::json;
 using ::testing::HasSubstr;
@@ -209,5 +209,5 @@ TEST(GdalOracle, GlintReadsWhatGdalWrites) {
     }
 }
 
-}  // namespace
+}  // namespace envi_gdal_test
 }  // namespace glint::io::oracle

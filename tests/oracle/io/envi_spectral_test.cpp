@@ -12,7 +12,7 @@
 #include "oracle_support.h"
 
 namespace glint::io::oracle {
-namespace {
+namespace envi_spectral_test {
 
 using nlohmann::json;
 
@@ -168,5 +168,5 @@ TEST(SpectralOracle, GlintReadsWhatSpectralWrites) {
     }
 }
 
-}  // namespace
+}  // namespace envi_spectral_test
 }  // namespace glint::io::oracle

@@ -23,7 +23,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::motion {
-namespace {
+namespace sgp4_oracle_test {
 
 namespace fs = std::filesystem;
 using test::CommandResult;
@@ -388,5 +388,5 @@ TEST(Sgp4Oracle, GmstMatchesPythonGstime) {
     }
 }
 
-}  // namespace
+}  // namespace sgp4_oracle_test
 }  // namespace glint::motion

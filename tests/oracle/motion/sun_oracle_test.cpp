@@ -24,7 +24,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::motion {
-namespace {
+namespace sun_oracle_test {
 
 using nlohmann::json;
 
@@ -216,5 +216,5 @@ TEST(SunOracle, AgreesWithAstropy) {
     RecordProperty("worst_moon_phase", sci(worst_moon_phase));
 }
 
-}  // namespace
+}  // namespace sun_oracle_test
 }  // namespace glint::motion

@@ -25,7 +25,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::sensor::oracle {
-namespace {
+namespace opencv_distortion_test {
 
 using glint::test::CommandResult;
 using glint::test::python_command;
@@ -157,5 +157,5 @@ TEST(OpenCvOracle, DistortionMatchesProjectPointsAndUndistortPoints) {
     }
 }
 
-}  // namespace
+}  // namespace opencv_distortion_test
 }  // namespace glint::sensor::oracle

@@ -13,7 +13,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::app_demosaic {
-namespace {
+namespace demosaic_file_test {
 
 using glint::test::TempDir;
 namespace dm = glint::demosaic;
@@ -259,5 +259,5 @@ TEST(RunDemosaic, NamesAreParsedOrRefusedWithTheChoices) {
     }
 }
 
-}  // namespace
+}  // namespace demosaic_file_test
 }  // namespace glint::app_demosaic

@@ -15,7 +15,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::app_detect {
-namespace {
+namespace detect_tool_test {
 
 using ::testing::HasSubstr;
 
@@ -150,5 +150,5 @@ TEST_F(DetectToolTest, AFailingLineLeavesNothing) {
                 ::testing::UnorderedElementsAre("in.img", "in.img.hdr", "bad.img", "bad.img.hdr"));
 }
 
-}  // namespace
+}  // namespace detect_tool_test
 }  // namespace glint::app_detect

@@ -9,7 +9,7 @@
 #include "glint/core/error.h"
 
 namespace glint::app_detect {
-namespace {
+namespace options_test {
 
 /// The usage error's message, or "" when `f` does not throw one.
 template <typename F>
@@ -50,5 +50,5 @@ TEST(DetectOptions, MosaicPhaseAndTdiMode) {
               "--tdi-mode: expected charge or digital, got 'analog'");
 }
 
-}  // namespace
+}  // namespace options_test
 }  // namespace glint::app_detect

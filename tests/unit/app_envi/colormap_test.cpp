@@ -18,7 +18,7 @@
 #include "test_util.h"
 
 namespace glint::app_envi {
-namespace {
+namespace colormap_test {
 
 namespace fs = std::filesystem;
 using ColormapTest = testing::TempDirTest;
@@ -213,5 +213,5 @@ TEST_F(ColormapConvertTest, ContradictionsAreUsageErrors) {
     EXPECT_TRUE(temporaries().empty());
 }
 
-}  // namespace
+}  // namespace colormap_test
 }  // namespace glint::app_envi

@@ -14,7 +14,7 @@
 #include "test_util.h"
 
 namespace glint::app_envi {
-namespace {
+namespace convert_test {
 
 namespace fs = std::filesystem;
 using ConvertTest = testing::TempDirTest;
@@ -251,5 +251,5 @@ TEST_F(ConvertTest, CancelledRunLeavesNothing) {
     EXPECT_TRUE(temporaries().empty());
 }
 
-}  // namespace
+}  // namespace convert_test
 }  // namespace glint::app_envi

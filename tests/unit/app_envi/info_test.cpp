@@ -11,7 +11,7 @@
 #include "test_util.h"
 
 namespace glint::app_envi {
-namespace {
+namespace info_test {
 
 using InfoTest = testing::TempDirTest;
 
@@ -98,5 +98,5 @@ TEST_F(InfoTest, SeveralFilesCarryOnPastABadOne) {
     EXPECT_NE(errors[1].find("missing.img"), std::string::npos);
 }
 
-}  // namespace
+}  // namespace info_test
 }  // namespace glint::app_envi

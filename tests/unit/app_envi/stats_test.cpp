@@ -14,7 +14,7 @@
 #include "test_util.h"
 
 namespace glint::app_envi {
-namespace {
+namespace stats_test {
 
 using StatsTest = testing::TempDirTest;
 
@@ -157,5 +157,5 @@ TEST_F(StatsTest, MissingFileNamesIt) {
     }
 }
 
-}  // namespace
+}  // namespace stats_test
 }  // namespace glint::app_envi

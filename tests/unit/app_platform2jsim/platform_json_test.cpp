@@ -15,13 +15,14 @@
 #include <string>
 
 #include "glint/dirsig/readers.h"
+#include "glint/test/angles.h"
 
 namespace glint::app_platform2jsim {
-namespace {
+namespace platform_json_test {
 
 using Json = nlohmann::json;
-constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = kPi / 180.0;
+using glint::test::kDeg;
+using glint::test::kPi;
 
 std::filesystem::path platform_path(const std::string& name) {
     return std::filesystem::path(GLINT_TEST_DATA_DIR) / "platform" / (name + ".platform");
@@ -87,18 +88,17 @@ void expect_complete(const Json& d) {
             EXPECT_EQ(keys(fp), (std::set<std::string>{"index", "name", "enabled", "capture_method",
                                                        "spectral_response", "detector_array",
                                                        "truth_collections", "derived"}));
+            EXPECT_EQ(keys(fp["capture_method"]),
+                      (std::set<std::string>{"type", "name", "sample_strategy", "image_file",
+                                             "spatial_response", "temporal_integration",
+                                             "detector_model", "convergence", "psf",
+                                             "active_area_image", "processing", "signal_gate"}));
             EXPECT_EQ(
-                keys(fp["capture_method"]),
-                (std::set<std::string>{"type", "name", "sample_strategy", "image_file",
-                                       "spatial_response", "temporal_integration", "detector_model",
-                                       "convergence", "psf", "active_area_image", "processing",
-                                       "signal_gate"}));
-            EXPECT_EQ(keys(fp["detector_array"]),
-                      (std::set<std::string>{"spatial_units", "x_count", "y_count", "x_size_m",
-                                             "y_size_m", "x_spacing_m", "y_spacing_m", "x_offset_m",
-                                             "y_offset_m", "x_flip", "y_flip",
-                                             "rolling_line_time_s", "x_oversample",
-                                             "y_oversample", "clock"}));
+                keys(fp["detector_array"]),
+                (std::set<std::string>{"spatial_units", "x_count", "y_count", "x_size_m",
+                                       "y_size_m", "x_spacing_m", "y_spacing_m", "x_offset_m",
+                                       "y_offset_m", "x_flip", "y_flip", "rolling_line_time_s",
+                                       "x_oversample", "y_oversample", "clock"}));
             EXPECT_EQ(keys(fp["detector_array"]["clock"]),
                       (std::set<std::string>{"type", "temporal_units", "rate_hz", "offset_s",
                                              "master", "divider", "offset_count", "trigger_file"}));
@@ -625,5 +625,5 @@ TEST(PlatformJson, SuperDoveTabulatedChannelsIntegrateAsTheirTables) {
     }
 }
 
-}  // namespace
+}  // namespace platform_json_test
 }  // namespace glint::app_platform2jsim

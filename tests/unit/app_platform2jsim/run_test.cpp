@@ -19,7 +19,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::app_platform2jsim {
-namespace {
+namespace run_test {
 
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
@@ -425,5 +425,5 @@ TEST(Platform2JsimSummary, UsesSingularForOne) {
     EXPECT_EQ(summary_text(0, 0, 0), "0 errors, 0 warnings in 0 files");
 }
 
-}  // namespace
+}  // namespace run_test
 }  // namespace glint::app_platform2jsim

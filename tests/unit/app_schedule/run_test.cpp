@@ -25,7 +25,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::app_schedule {
-namespace {
+namespace run_test {
 
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
@@ -509,5 +509,5 @@ TEST(ParseOutputFormat, KnowsTheThreeFormats) {
     EXPECT_FALSE(parse_output_format("yaml"));
 }
 
-}  // namespace
+}  // namespace run_test
 }  // namespace glint::app_schedule

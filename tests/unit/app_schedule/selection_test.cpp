@@ -16,7 +16,7 @@
 #include "glint/test/schedules.h"
 
 namespace glint::app_schedule {
-namespace {
+namespace selection_test {
 
 namespace fs = std::filesystem;
 
@@ -236,5 +236,5 @@ TEST_F(SelectionTest, AnalyticTotalsEqualEnumeratedTotals) {
     EXPECT_EQ(all.problems, m_schedule.total_problems());
 }
 
-}  // namespace
+}  // namespace selection_test
 }  // namespace glint::app_schedule

@@ -11,7 +11,7 @@
 #include <vector>
 
 namespace glint::atmosphere {
-namespace {
+namespace atmosphere_test {
 
 const SpectralGrid kGrid = SpectralGrid::regular(0.4, 2.4, 0.1);
 
@@ -306,5 +306,5 @@ TEST(AtmosphereFactory, BuildsTheSelectedModel) {
     }
 }
 
-}  // namespace
+}  // namespace atmosphere_test
 }  // namespace glint::atmosphere

@@ -27,7 +27,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::atmosphere {
-namespace {
+namespace gas_absorption_test {
 
 using ::testing::HasSubstr;
 
@@ -311,5 +311,5 @@ TEST(ParametricAtmosphereGases, DirectNormalMatchesAstmG173AtAirMassOnePointFive
     EXPECT_LE(worst, 0.13) << worst_nm << " nm";
 }
 
-}  // namespace
+}  // namespace gas_absorption_test
 }  // namespace glint::atmosphere

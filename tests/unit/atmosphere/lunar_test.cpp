@@ -10,7 +10,7 @@
 #include "glint/core/error.h"
 
 namespace glint::atmosphere {
-namespace {
+namespace lunar_test {
 
 TEST(Moonlight, FullMoonIsMagnitudeMinus12Point7) {
     // V(sun) = −26.74, V(full moon at the mean distance) = −12.73 (Allen's Astrophysical
@@ -50,5 +50,5 @@ TEST(Moonlight, BadInputsAreRefused) {
     EXPECT_THROW((void)lunar_angular_radius_rad(1000.0), Error);
 }
 
-}  // namespace
+}  // namespace lunar_test
 }  // namespace glint::atmosphere

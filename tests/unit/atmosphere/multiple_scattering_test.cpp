@@ -16,11 +16,12 @@
 
 #include "glint/atmosphere/atmosphere.h"
 #include "glint/atmosphere/scattering_orders.h"
+#include "glint/test/angles.h"
 
 namespace glint::atmosphere {
-namespace {
+namespace multiple_scattering_test {
 
-constexpr double kPi = std::numbers::pi;
+using glint::test::kPi;
 constexpr double kMu0 = 0.080442;
 constexpr double kWavelengthUm = 0.40;
 
@@ -118,5 +119,5 @@ TEST(MultipleScattering, AddsToSingleScatteringAndGrowsWithGroundAlbedo) {
     }
 }
 
-}  // namespace
+}  // namespace multiple_scattering_test
 }  // namespace glint::atmosphere

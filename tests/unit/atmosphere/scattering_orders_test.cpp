@@ -18,11 +18,12 @@
 #include <vector>
 
 #include "glint/core/error.h"
+#include "glint/test/angles.h"
 
 namespace glint::atmosphere {
-namespace {
+namespace scattering_orders_test {
 
-constexpr double kPi = std::numbers::pi;
+using glint::test::kPi;
 
 ScatteringProblem one_layer(double tau, double omega, std::vector<double> moments, double mu0) {
     ScatteringProblem p;
@@ -38,8 +39,8 @@ ScatteringProblem one_layer(double tau, double omega, std::vector<double> moment
 const std::vector<double> kRayleigh{1.0, 0.0, 0.1};
 
 /// ThickAtmospheres…: the linear source within a sublayer errs as Δτ²; measured at Δτ 0.049:
-/// −0.19 % (ω 0.9) and −0.16 % (ω 0.99) of the reflected flux; asserted to 0.5 % — the tables' own bound, a quarter of the 2 %
-/// asked of the atmosphere model.
+/// −0.19 % (ω 0.9) and −0.16 % (ω 0.99) of the reflected flux; asserted to 0.5 % — the tables' own
+/// bound, a quarter of the 2 % asked of the atmosphere model.
 constexpr double kThickTolerance = 0.005;
 
 std::vector<double> henyey_greenstein(double g, int count) {
@@ -155,8 +156,8 @@ TEST(ScatteringOrders, FirstOrderMatchesTheSingleScatterFormula) {
             const double cos_theta =
                 -mu * mu0 + std::sqrt(1 - mu * mu) * std::sqrt(1 - mu0 * mu0) * std::cos(phi);
             const double phase = 0.75 * (1.0 + cos_theta * cos_theta);
-            const double expected = phase * mu0 * -std::expm1(-tau * (1 / mu0 + 1 / mu)) /
-                                    (4.0 * kPi * (mu0 + mu));
+            const double expected =
+                phase * mu0 * -std::expm1(-tau * (1 / mu0 + 1 / mu)) / (4.0 * kPi * (mu0 + mu));
             EXPECT_NEAR(s.single_scatter_up_radiance(0, mu, phi), expected, 1e-12);
             // Multiple scattering adds to it, less than single scattering at this depth.
             const double ms = s.multiple_scatter_up_radiance(0, mu, phi);
@@ -181,8 +182,9 @@ TEST(ScatteringOrders, BadProblemsAreRefused) {
     ScatteringProblem albedo = one_layer(0.1, 1.0, kRayleigh, 0.5);
     albedo.ground_albedo = 1.2;
     EXPECT_EQ(message(albedo), "scattering problem: ground albedo must lie in [0, 1]");
-    const std::string layer = "scattering layer needs an optical depth >= 0, a single-scatter "
-                              "albedo in [0, 1] and moments starting with 1";
+    const std::string layer =
+        "scattering layer needs an optical depth >= 0, a single-scatter "
+        "albedo in [0, 1] and moments starting with 1";
     EXPECT_EQ(message(one_layer(-0.1, 1.0, kRayleigh, 0.5)), layer);
     EXPECT_EQ(message(one_layer(0.1, 1.5, kRayleigh, 0.5)), layer);
     EXPECT_EQ(message(one_layer(0.1, 1.0, {0.5}, 0.5)), layer);
@@ -191,5 +193,5 @@ TEST(ScatteringOrders, BadProblemsAreRefused) {
     EXPECT_NE(message(streams).find("streams >= 2"), std::string::npos);
 }
 
-}  // namespace
+}  // namespace scattering_orders_test
 }  // namespace glint::atmosphere

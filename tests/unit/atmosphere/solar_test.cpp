@@ -13,7 +13,7 @@
 #include "glint/io/input_files.h"
 
 namespace glint::atmosphere {
-namespace {
+namespace solar_test {
 
 SolarSpectrum load() {
     return SolarSpectrum::from_astm_g173(
@@ -99,5 +99,5 @@ TEST(SolarSpectrum, BadFileHasFileAndLine) {
     }
 }
 
-}  // namespace
+}  // namespace solar_test
 }  // namespace glint::atmosphere

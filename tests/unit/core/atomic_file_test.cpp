@@ -16,7 +16,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint {
-namespace {
+namespace atomic_file_test {
 
 std::string slurp(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
@@ -180,5 +180,5 @@ TEST(AtomicFile, AFolderIsRefused) {
     EXPECT_TRUE(std::filesystem::is_directory(dir / "sub"));
 }
 
-}  // namespace
+}  // namespace atomic_file_test
 }  // namespace glint

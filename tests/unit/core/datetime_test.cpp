@@ -12,7 +12,7 @@
 #include "glint/core/error.h"
 
 namespace glint {
-namespace {
+namespace datetime_test {
 
 TEST(DateTime, EpochAndSimpleUtc) {
     const DateTime epoch = parse_iso8601("1970-01-01T00:00:00Z");
@@ -208,5 +208,5 @@ TEST(DateTime, MalformedInputsAreRejectedWithAMessage) {
     }
 }
 
-}  // namespace
+}  // namespace datetime_test
 }  // namespace glint

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 namespace glint {
-namespace {
+namespace diagnostics_test {
 
 using ::testing::HasSubstr;
 
@@ -153,5 +153,5 @@ TEST(Diagnostics, AppendCappedKeepsTwentyPerFileAndCountsTheRest) {
     EXPECT_EQ(capped.warning_count(), 22u);
 }
 
-}  // namespace
+}  // namespace diagnostics_test
 }  // namespace glint

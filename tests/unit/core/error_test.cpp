@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 namespace glint {
-namespace {
+namespace error_test {
 
 TEST(Error, FormatsFileLineElementAndMessage) {
     const Error e = input_error("matrix has 15 values, expected 16",
@@ -37,5 +37,5 @@ TEST(Error, CategoriesOfShorthands) {
     EXPECT_STREQ(internal_error("oops").what(), "internal error: oops");
 }
 
-}  // namespace
+}  // namespace error_test
 }  // namespace glint

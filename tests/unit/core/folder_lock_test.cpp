@@ -9,7 +9,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint {
-namespace {
+namespace folder_lock_test {
 
 using ::testing::HasSubstr;
 
@@ -40,5 +40,5 @@ TEST(FolderLock, MissingFolderIsAnIoError) {
     }
 }
 
-}  // namespace
+}  // namespace folder_lock_test
 }  // namespace glint

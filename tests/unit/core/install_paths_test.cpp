@@ -9,7 +9,7 @@
 #include <fstream>
 
 namespace glint {
-namespace {
+namespace install_paths_test {
 
 namespace fs = std::filesystem;
 
@@ -70,5 +70,5 @@ TEST_F(InstallPathsTest, BuiltInWhenNotInstalled) {
     EXPECT_EQ(data_dir_lookup(c), fs::path("/source/data"));
 }
 
-}  // namespace
+}  // namespace install_paths_test
 }  // namespace glint

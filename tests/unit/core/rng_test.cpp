@@ -16,7 +16,7 @@
 #include "glint/core/error.h"
 
 namespace glint {
-namespace {
+namespace rng_test {
 
 // ---- Helpers ---------------------------------------------------------------------------
 
@@ -457,5 +457,5 @@ TEST(RandomStream, BlocksAtMatchSkipToAndDraw) {
     EXPECT_THROW(stream.blocks_at(std::vector<std::uint64_t>{4, 8}, one), Error);
 }
 
-}  // namespace
+}  // namespace rng_test
 }  // namespace glint

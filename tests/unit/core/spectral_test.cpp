@@ -14,7 +14,7 @@
 #include "glint/core/units.h"
 
 namespace glint {
-namespace {
+namespace spectral_test {
 
 /// Runs `fn`, expects a glint input Error whose message contains `fragment`.
 template <typename Fn>
@@ -254,5 +254,5 @@ TEST(Photons, SpectrumConversion) {
                        "spectrum has 3 values");
 }
 
-}  // namespace
+}  // namespace spectral_test
 }  // namespace glint

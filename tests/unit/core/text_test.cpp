@@ -10,7 +10,7 @@
 #include <vector>
 
 namespace glint::test {
-namespace {
+namespace text_test {
 
 TEST(Quote, PlainTextIsQuotedAsIs) {
     EXPECT_EQ(quote("frame"), "\"frame\"");
@@ -145,5 +145,5 @@ TEST(SplitLines, LinesWithoutTheirEndings) {
     EXPECT_EQ(split_lines("\n\n"), (V{"", ""}));
 }
 
-}  // namespace
+}  // namespace text_test
 }  // namespace glint::test

@@ -9,7 +9,7 @@
 #include <numbers>
 
 namespace glint {
-namespace {
+namespace units_test {
 
 TEST(Constants, ExactSiValues) {
     EXPECT_EQ(kPlanckJS, 6.62607015e-34);
@@ -65,5 +65,5 @@ TEST(Conversions, Angle) {
     EXPECT_NEAR(rad_to_deg(deg_to_rad(37.25)), 37.25, 1e-13);
 }
 
-}  // namespace
+}  // namespace units_test
 }  // namespace glint

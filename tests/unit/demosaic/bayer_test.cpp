@@ -16,7 +16,7 @@
 #include "mosaic_support.h"
 
 namespace glint::demosaic {
-namespace {
+namespace bayer_test {
 
 using test::kPhases;
 
@@ -258,5 +258,5 @@ TEST(Bayer, PollsTheCancelToken) {
     }
 }
 
-}  // namespace
+}  // namespace bayer_test
 }  // namespace glint::demosaic

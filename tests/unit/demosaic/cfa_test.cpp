@@ -10,7 +10,7 @@
 #include "mosaic_support.h"
 
 namespace glint::demosaic {
-namespace {
+namespace cfa_test {
 
 char letter(CfaColor color) {
     switch (color) {
@@ -76,5 +76,5 @@ TEST(Cfa, Names) {
     EXPECT_STREQ(cfa_color_name(CfaColor::pan), "pan");
 }
 
-}  // namespace
+}  // namespace cfa_test
 }  // namespace glint::demosaic

@@ -13,7 +13,7 @@
 #include "mosaic_support.h"
 
 namespace glint::demosaic {
-namespace {
+namespace stream_test {
 
 constexpr std::array<DemosaicOptions, 3> kMethods = {
     {{CfaPattern::bayer, BayerPhase::grbg, DemosaicMethod::bilinear},
@@ -109,5 +109,5 @@ TEST(DemosaicStream, RefusesMisuse) {
     }
 }
 
-}  // namespace
+}  // namespace stream_test
 }  // namespace glint::demosaic

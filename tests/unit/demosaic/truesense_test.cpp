@@ -13,7 +13,7 @@
 #include "mosaic_support.h"
 
 namespace glint::demosaic {
-namespace {
+namespace truesense_test {
 
 constexpr std::array<std::array<std::size_t, 2>, 7> kSizes = {
     {{4, 4}, {5, 4}, {4, 7}, {5, 7}, {9, 13}, {16, 16}, {17, 6}}};
@@ -149,5 +149,5 @@ TEST(TrueSense, RefusesTheBayerMethods) {
     }
 }
 
-}  // namespace
+}  // namespace truesense_test
 }  // namespace glint::demosaic

@@ -10,7 +10,7 @@
 #include "detect_test_support.h"
 
 namespace glint::detect {
-namespace {
+namespace adc_test {
 
 TEST(Adc, LinearRoundedAndClippedAtBothEnds) {
     // [1000, 5095] e over 12 bits: 1 DN per electron.
@@ -67,5 +67,5 @@ TEST(Adc, TwelveBitCountsInUint16AndUint8) {
     }
 }
 
-}  // namespace
+}  // namespace adc_test
 }  // namespace glint::detect

@@ -12,7 +12,7 @@
 #include "detect_test_support.h"
 
 namespace glint::detect {
-namespace {
+namespace cfa_test {
 
 /// The layout as text, one row per line, filters as R, G, B, P.
 std::string drawing(CfaPattern pattern, BayerPhase phase, std::size_t size) {
@@ -130,5 +130,5 @@ TEST(Cfa, MosaicThroughTheDetectorModel) {
     check_mosaic(s, 6, 4, [&](double v) { return v * per_fluence + dark; });
 }
 
-}  // namespace
+}  // namespace cfa_test
 }  // namespace glint::detect

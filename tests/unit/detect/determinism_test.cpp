@@ -12,7 +12,7 @@
 #include "glint/core/error.h"
 
 namespace glint::detect {
-namespace {
+namespace determinism_test {
 
 using ::testing::HasSubstr;
 
@@ -141,5 +141,5 @@ TEST(Determinism, BadValuesNameTheirSampleAndBand) {
     EXPECT_THROW(chain.process_line({}, short_line, out), Error);
 }
 
-}  // namespace
+}  // namespace determinism_test
 }  // namespace glint::detect

@@ -14,7 +14,7 @@
 #include "glint/core/error.h"
 
 namespace glint::detect {
-namespace {
+namespace noise_test {
 
 double poisson_pmf(double mean, std::uint64_t k) {
     return std::exp(-mean + static_cast<double>(k) * std::log(mean) -
@@ -122,5 +122,5 @@ TEST(Noise, ZigguratNormalMatchesTheGaussian) {
     EXPECT_NEAR(beyond_3_5, tail, 5 * std::sqrt(tail));
 }
 
-}  // namespace
+}  // namespace noise_test
 }  // namespace glint::detect

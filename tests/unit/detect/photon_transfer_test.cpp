@@ -11,7 +11,7 @@
 #include "glint/detect/adc.h"
 
 namespace glint::detect {
-namespace {
+namespace photon_transfer_test {
 
 using test::fluence_for;
 using test::moments;
@@ -96,5 +96,5 @@ TEST(PhotonTransfer, NoNoiseGivesTheExactMeanCount) {
     }
 }
 
-}  // namespace
+}  // namespace photon_transfer_test
 }  // namespace glint::detect

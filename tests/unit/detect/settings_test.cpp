@@ -11,7 +11,7 @@
 #include "glint/core/error.h"
 
 namespace glint::detect {
-namespace {
+namespace settings_test {
 
 using ::testing::HasSubstr;
 
@@ -193,5 +193,5 @@ TEST(Settings, ImageDataTypeTakesRealEnviCodesOnly) {
     }
 }
 
-}  // namespace
+}  // namespace settings_test
 }  // namespace glint::detect

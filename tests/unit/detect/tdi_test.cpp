@@ -9,7 +9,7 @@
 #include "detect_test_support.h"
 
 namespace glint::detect {
-namespace {
+namespace tdi_test {
 
 using test::fluence_for;
 using test::moments;
@@ -75,5 +75,5 @@ TEST(Tdi, ResolvedFromATdiFocalPlane) {
               TdiMode::digital);
 }
 
-}  // namespace
+}  // namespace tdi_test
 }  // namespace glint::detect

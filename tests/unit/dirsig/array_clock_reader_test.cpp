@@ -12,7 +12,7 @@
 #include "platform_test_util.h"
 
 namespace glint::test::plat {
-namespace {
+namespace array_clock_reader_test {
 
 using ::testing::HasSubstr;
 using Severity = Diagnostic::Severity;
@@ -213,7 +213,9 @@ TEST(DetectorReader, ExtrasWarnAndUnknownsWarn) {
                       "capture only",
                       line_of(text, "<xoversample>"), std::string(kDetectorPath) + "/xoversample",
                       Severity::warning);
-    EXPECT_EQ(read.platform.attachments.at(0).instruments.at(0).focal_planes.at(0)
+    EXPECT_EQ(read.platform.attachments.at(0)
+                  .instruments.at(0)
+                  .focal_planes.at(0)
                   .detector_array.x_oversample,
               2u);
     expect_diagnostic(read, "unknown element <gain> ignored", line_of(text, "<gain>"),
@@ -430,5 +432,5 @@ TEST(DetectorReader, ExternalClockFiles) {
                       line_of(twice_text, "<detectorarray") + 1, clock_path);
 }
 
-}  // namespace
+}  // namespace array_clock_reader_test
 }  // namespace glint::test::plat

@@ -12,7 +12,7 @@
 #include "capture_test_util.h"
 
 namespace glint::test {
-namespace {
+namespace capture_reader_test {
 
 using model::AreaUnits;
 using model::CaptureMethodType;
@@ -855,5 +855,5 @@ TEST(CaptureFullPlatform, EveryChildFieldByField) {
     EXPECT_EQ(raw.image_file.datatype, 4);
 }
 
-}  // namespace
+}  // namespace capture_reader_test
 }  // namespace glint::test

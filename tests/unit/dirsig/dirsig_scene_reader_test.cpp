@@ -15,7 +15,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::dirsig {
-namespace {
+namespace dirsig_scene_reader_test {
 
 using glint::test::TempDir;
 using ::testing::HasSubstr;
@@ -364,5 +364,5 @@ TEST(DirsigSceneReaderErrors, BadOrigin) {
                                "not found"));
 }
 
-}  // namespace
+}  // namespace dirsig_scene_reader_test
 }  // namespace glint::dirsig

@@ -17,7 +17,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::dirsig {
-namespace {
+namespace jsim_test {
 
 using glint::test::TempDir;
 using ::testing::HasSubstr;
@@ -593,5 +593,5 @@ TEST(JsimReaderErrors, NumberTooLargeForADouble) {
     EXPECT_LT(only_error(long_number).message.size(), 300u);
 }
 
-}  // namespace
+}  // namespace jsim_test
 }  // namespace glint::dirsig

@@ -16,7 +16,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::dirsig {
-namespace {
+namespace mat_reader_test {
 
 using glint::test::diagnostics_text;
 using glint::test::only_error;
@@ -292,5 +292,5 @@ TEST(MatReader, AFilesDiagnosticsAreCappedAtTwenty) {
     EXPECT_EQ(diagnostics.error_count(), 50u);  // every error found, those not shown included
 }
 
-}  // namespace
+}  // namespace mat_reader_test
 }  // namespace glint::dirsig

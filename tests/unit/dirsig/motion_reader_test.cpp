@@ -15,16 +15,17 @@
 #include <string>
 #include <string_view>
 
+#include "glint/test/angles.h"
 #include "glint/test/temp_dir.h"
 
 namespace glint::dirsig {
-namespace {
+namespace motion_reader_test {
 
 using glint::test::TempDir;
 using ::testing::HasSubstr;
 using Severity = Diagnostic::Severity;
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using glint::test::kDeg;
 constexpr double kFoot = 0.3048;
 
 const std::filesystem::path kData = std::filesystem::path(GLINT_TEST_DATA_DIR) / "motion";
@@ -707,5 +708,5 @@ TEST(MotionReaderErrors, BadJitter) {
     expect_diagnostic(read, "<psd> has 1 entries, expected at least 2", 16, lj + "/yaxis/psd");
 }
 
-}  // namespace
+}  // namespace motion_reader_test
 }  // namespace glint::dirsig

@@ -9,15 +9,16 @@
 #include <string>
 #include <vector>
 
+#include "glint/test/angles.h"
 #include "platform_test_util.h"
 
 namespace glint::test::plat {
-namespace {
+namespace mount_reader_test {
 
 using ::testing::HasSubstr;
 using Severity = Diagnostic::Severity;
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using glint::test::kDeg;
 constexpr const char* kMountPath = "platform/attachment/mount[M]";
 
 TEST(MountReader, MountsFixtureFieldByField) {
@@ -435,5 +436,5 @@ TEST(MountReader, NestedMountsRecurse) {
               "attachment/instrument[R]");
 }
 
-}  // namespace
+}  // namespace mount_reader_test
 }  // namespace glint::test::plat

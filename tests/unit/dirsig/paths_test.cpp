@@ -12,7 +12,7 @@
 #include "glint/dirsig/read_options.h"
 
 namespace glint::dirsig {
-namespace {
+namespace paths_test {
 
 using ::testing::HasSubstr;
 
@@ -186,5 +186,5 @@ TEST(PathResolver, RecognisesWindowsAbsolutePaths) {
     EXPECT_FALSE(is_windows_absolute(""));
 }
 
-}  // namespace
+}  // namespace paths_test
 }  // namespace glint::dirsig

@@ -10,15 +10,16 @@
 #include <numbers>
 #include <string>
 
+#include "glint/test/angles.h"
 #include "platform_test_util.h"
 
 namespace glint::test::plat {
-namespace {
+namespace platform_reader_test {
 
 using ::testing::HasSubstr;
 using Severity = Diagnostic::Severity;
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using glint::test::kDeg;
 
 TEST(PlatformReader, MinimalFixtureFieldByField) {
     const Read read = read_fixture("minimal.platform");
@@ -390,7 +391,7 @@ TEST(PlatformReader, InstrumentTypesAndVariants) {
     EXPECT_EQ(list[2].transmitter->pulse_duration_s, 5e-9);
     EXPECT_EQ(list[2].transmitter->beam_divergence_rad, 1e-3);
     EXPECT_TRUE(list[2].transmitter->pulse_shape_file.empty());  // Gaussian
-    EXPECT_EQ(list[3].type, model::InstrumentType::generic);  // default
+    EXPECT_EQ(list[3].type, model::InstrumentType::generic);     // default
     EXPECT_EQ(list[3].type_text, "generic");
     // The lidar and the generic camera without focal planes capture nothing: warned.
     EXPECT_EQ(count(read.diagnostics, "instrument has no <focalplane>", Severity::warning), 2u);
@@ -537,5 +538,5 @@ TEST(PlatformReader, EveryErrorOfAFileIsReported) {
     EXPECT_EQ(read.diagnostics.error_count(), 3u) << dump(read.diagnostics);
 }
 
-}  // namespace
+}  // namespace platform_reader_test
 }  // namespace glint::test::plat

@@ -15,7 +15,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::dirsig {
-namespace {
+namespace point_source_reader_test {
 
 using glint::test::diagnostics_text;
 using glint::test::only_error;
@@ -113,7 +113,8 @@ const std::string kMaterials =
     "  REFLECTANCE_PROP { TXT_FILENAME = grey.txt }\n }\n}\n";
 
 std::string object(const std::string& body) {
-    return "<geometrylist>\n<object name=\"L\">\n" + body + "\n<staticinstance/>\n</object>\n"
+    return "<geometrylist>\n<object name=\"L\">\n" + body +
+           "\n<staticinstance/>\n</object>\n"
            "</geometrylist>\n";
 }
 
@@ -221,5 +222,5 @@ TEST(PointSourceReaderErrors, IntensityAboveOneIsAccepted) {
               (std::vector<double>{1500.0, 2500.0}));
 }
 
-}  // namespace
+}  // namespace point_source_reader_test
 }  // namespace glint::dirsig

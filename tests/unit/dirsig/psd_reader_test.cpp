@@ -13,7 +13,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::test {
-namespace {
+namespace psd_reader_test {
 
 /// A PSD file read from `text`, with what reading it reported.
 struct PsdRead {
@@ -267,5 +267,5 @@ TEST(PsdValidate, EveryBadTable) {
               "a.motion:12: psd: PSD row 2: phase nan is not a finite number");
 }
 
-}  // namespace
+}  // namespace psd_reader_test
 }  // namespace glint::test

@@ -14,7 +14,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::dirsig {
-namespace {
+namespace scene_tree_test {
 
 using glint::test::diagnostics_text;
 using glint::test::only_error;
@@ -337,5 +337,5 @@ TEST(DirsigSceneTreeErrors, UnknownSearchPathsValueWarns) {
     EXPECT_EQ(f.diagnostics.items().front().where.element, "geometrylist/object@search_paths");
 }
 
-}  // namespace
+}  // namespace scene_tree_test
 }  // namespace glint::dirsig

@@ -14,7 +14,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::dirsig {
-namespace {
+namespace sim_test {
 
 using glint::test::TempDir;
 using ::testing::HasSubstr;
@@ -236,5 +236,5 @@ TEST(ReadSimulation, TellsSimFromJsimByContent) {
     EXPECT_THAT(error.message, HasSubstr("cannot tell whether this is a .jsim (JSON) or a .sim"));
 }
 
-}  // namespace
+}  // namespace sim_test
 }  // namespace glint::dirsig

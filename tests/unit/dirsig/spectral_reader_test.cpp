@@ -15,7 +15,7 @@
 #include "glint/model/spectral_response.h"
 
 namespace glint::test {
-namespace {
+namespace spectral_reader_test {
 
 using model::ChannelPatternKind;
 using model::ChannelShape;
@@ -544,5 +544,5 @@ TEST(SpectralPlatforms, NanometerBandpassIsConvertedToMicrometres) {
     EXPECT_EQ(blue.table_value, (std::vector<double>{0.1, 0.9, 0.2}));
 }
 
-}  // namespace
+}  // namespace spectral_reader_test
 }  // namespace glint::test

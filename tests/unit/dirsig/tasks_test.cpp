@@ -15,7 +15,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::dirsig {
-namespace {
+namespace tasks_test {
 
 using glint::test::TempDir;
 using ::testing::HasSubstr;
@@ -236,5 +236,5 @@ TEST(TasksReaderErrors, UnknownElementsAreWarnings) {
     EXPECT_EQ(list.tasks.size(), 1u);
 }
 
-}  // namespace
+}  // namespace tasks_test
 }  // namespace glint::dirsig

@@ -11,7 +11,7 @@
 #include <vector>
 
 namespace glint::dirsig {
-namespace {
+namespace trigger_file_test {
 
 using ::testing::ElementsAre;
 
@@ -86,5 +86,5 @@ TEST(TriggerFile, MissingFileIsAnError) {
                                     "file or directory"));
 }
 
-}  // namespace
+}  // namespace trigger_file_test
 }  // namespace glint::dirsig

@@ -10,7 +10,7 @@
 #include "platform_test_util.h"
 
 namespace glint::test::plat {
-namespace {
+namespace truth_reader_test {
 
 using Severity = Diagnostic::Severity;
 
@@ -134,5 +134,5 @@ TEST(TruthReader, EnabledWithoutCollectorsWarns) {
                       line_of(text, "<truthcollection>"), kTruthPath, Severity::warning);
 }
 
-}  // namespace
+}  // namespace truth_reader_test
 }  // namespace glint::test::plat

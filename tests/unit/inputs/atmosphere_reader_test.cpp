@@ -14,7 +14,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::inputs {
-namespace {
+namespace atmosphere_reader_test {
 
 const std::filesystem::path kDir = std::filesystem::path(GLINT_TEST_DATA_DIR) / "atmosphere";
 
@@ -290,5 +290,5 @@ TEST(AtmosphereReader, UnreadableFileThrows) {
     EXPECT_THROW((void)read_atmosphere(kDir / "does-not-exist.yaml", {}, diagnostics), Error);
 }
 
-}  // namespace
+}  // namespace atmosphere_reader_test
 }  // namespace glint::inputs

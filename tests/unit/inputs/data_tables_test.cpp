@@ -14,7 +14,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::inputs {
-namespace {
+namespace data_tables_test {
 
 const std::filesystem::path kData = std::filesystem::path(GLINT_SOURCE_DIR) / "data";
 
@@ -51,5 +51,5 @@ TEST(DataTables, AMissingOrMalformedFileIsRefusedByName) {
     }
 }
 
-}  // namespace
+}  // namespace data_tables_test
 }  // namespace glint::inputs

@@ -21,7 +21,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::inputs {
-namespace {
+namespace load_test {
 
 namespace fs = std::filesystem;
 
@@ -172,5 +172,5 @@ TEST(InputsLoad, TriggerFilesAreReadOnceIntoTheClock) {
     EXPECT_TRUE(found);
 }
 
-}  // namespace
+}  // namespace load_test
 }  // namespace glint::inputs

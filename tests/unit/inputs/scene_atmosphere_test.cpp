@@ -19,7 +19,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::inputs {
-namespace {
+namespace scene_atmosphere_test {
 
 namespace fs = std::filesystem;
 using glint::test::diagnostics_text;
@@ -377,5 +377,5 @@ TEST(SimulationInputs, ReadFromAJsim) {
     EXPECT_TRUE(scene.origin);
 }
 
-}  // namespace
+}  // namespace scene_atmosphere_test
 }  // namespace glint::inputs

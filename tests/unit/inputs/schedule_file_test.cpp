@@ -13,7 +13,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::inputs {
-namespace {
+namespace schedule_file_test {
 
 std::filesystem::path write(const test::TempDir& dir, const std::string& name,
                             const std::string& text) {
@@ -98,5 +98,5 @@ TEST(ScheduleFile, RefusesWhatIsNotAGlintSchedule) {
         "needs \"index\" K and \"count\" N with 1 <= K <= N");
 }
 
-}  // namespace
+}  // namespace schedule_file_test
 }  // namespace glint::inputs

@@ -13,7 +13,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::inputs {
-namespace {
+namespace weight_images_test {
 
 /// Every diagnostic's text, one per line.
 std::string all_text(const Diagnostics& diagnostics) {
@@ -78,5 +78,5 @@ TEST(WeightImages, EveryEnabledFocalPlanesPsfAndMaskAreRead) {
     EXPECT_TRUE(disabled.active_area.empty());
 }
 
-}  // namespace
+}  // namespace weight_images_test
 }  // namespace glint::inputs

@@ -19,7 +19,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::io {
-namespace {
+namespace envi_header_test {
 
 using ::testing::HasSubstr;
 
@@ -485,5 +485,5 @@ TEST(EnviNaming, DataPathForHeader) {
     EXPECT_EQ(envi_data_path_for(dir.path() / "x.hdr"), dir.path() / "x");
 }
 
-}  // namespace
+}  // namespace envi_header_test
 }  // namespace glint::io

@@ -8,7 +8,7 @@
 #include <vector>
 
 namespace glint::io {
-namespace {
+namespace envi_part_test {
 
 using Indices = std::vector<std::uint64_t>;
 
@@ -43,5 +43,5 @@ TEST(IndexRuns, CountsWithoutListing) {
     EXPECT_FALSE(count_index_runs("{5, 2}"));
 }
 
-}  // namespace
+}  // namespace envi_part_test
 }  // namespace glint::io

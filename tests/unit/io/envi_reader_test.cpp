@@ -20,7 +20,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::io {
-namespace {
+namespace envi_reader_test {
 
 using ::testing::HasSubstr;
 
@@ -292,5 +292,5 @@ TEST(EnviReaderErrors, MissingHeaderOrData) {
                 HasSubstr("absent.img.hdr: cannot open header: No such file or directory"));
 }
 
-}  // namespace
+}  // namespace envi_reader_test
 }  // namespace glint::io

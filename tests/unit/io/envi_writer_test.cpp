@@ -20,7 +20,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::io {
-namespace {
+namespace envi_writer_test {
 
 using ::testing::HasSubstr;
 
@@ -376,5 +376,5 @@ TEST(EnviWriterAtomic, MissingFolderIsAnIoError) {
     }
 }
 
-}  // namespace
+}  // namespace envi_writer_test
 }  // namespace glint::io

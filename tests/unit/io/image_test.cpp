@@ -15,7 +15,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::io {
-namespace {
+namespace image_test {
 
 namespace fs = std::filesystem;
 /// A fresh folder per test, removed after it.
@@ -158,5 +158,5 @@ TEST_F(ImageTest, UncommittedWriterLeavesNothing) {
     EXPECT_TRUE(temporaries().empty());
 }
 
-}  // namespace
+}  // namespace image_test
 }  // namespace glint::io

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // Tests of the whole-file input read (io::read_input_file) and io::InputFiles: regular files
 // are read; FIFOs, devices (/dev/zero) and folders are refused at once, unopened; the byte cap
-// counts the bytes actually read (a /proc file reports no size); ENVI headers have their own, smaller cap;
-// InputFiles reads through a source handed in.
+// counts the bytes actually read (a /proc file reports no size); ENVI headers have their own,
+// smaller cap; InputFiles reads through a source handed in.
 #include "glint/io/input_files.h"
 
 #include <fcntl.h>
@@ -19,7 +19,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::io {
-namespace {
+namespace input_files_test {
 
 using test::TempDir;
 using ::testing::HasSubstr;
@@ -117,5 +117,5 @@ TEST(EnviHeaderRead, DeviceAndOversizedHeadersAreRefused) {
                   ": larger than 16777216 bytes (a device or not a text file?)");
 }
 
-}  // namespace
+}  // namespace input_files_test
 }  // namespace glint::io

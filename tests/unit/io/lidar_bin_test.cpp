@@ -19,7 +19,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::io {
-namespace {
+namespace lidar_bin_test {
 
 BinFile sample() {
     BinFile f;
@@ -136,7 +136,8 @@ TEST(LidarBin, NotABinFileAndACutFileAreInputErrorsAtTheByte) {
     } catch (const Error& e) {
         EXPECT_EQ(e.category(), ErrorCategory::input);
         EXPECT_EQ(e.context().file, (dir / "x.bin").string());
-        EXPECT_EQ(e.message(), "not a DIRSIG BIN file (it does not start with DIRSIGPROTO) (at byte 0)");
+        EXPECT_EQ(e.message(),
+                  "not a DIRSIG BIN file (it does not start with DIRSIGPROTO) (at byte 0)");
     }
     write_bin(dir / "a.bin", sample());
     std::filesystem::resize_file(dir / "a.bin", std::filesystem::file_size(dir / "a.bin") - 3);
@@ -242,5 +243,5 @@ TEST(BinReader, DataThatDoesNotInflateToItsValuesIsRefused) {
         << message_of(bytes + "xyz");
 }
 
-}  // namespace
+}  // namespace lidar_bin_test
 }  // namespace glint::io

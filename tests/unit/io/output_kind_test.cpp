@@ -10,7 +10,7 @@
 #include "glint/core/error.h"
 
 namespace glint::io {
-namespace {
+namespace output_kind_test {
 
 TEST(OutputKind, FromNameAcceptsImageSpellingsAndEnvi) {
     EXPECT_EQ(output_kind_from_name("ENVI"), OutputKind::envi);
@@ -79,5 +79,5 @@ TEST(OutputKind, PixelTypeByDefaultOrBitDepth) {
     }
 }
 
-}  // namespace
+}  // namespace output_kind_test
 }  // namespace glint::io

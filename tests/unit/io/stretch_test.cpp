@@ -13,7 +13,7 @@
 #include "glint/core/error.h"
 
 namespace glint::io {
-namespace {
+namespace stretch_test {
 
 PercentileHistogram histogram_of(const std::vector<double>& values) {
     PercentileHistogram h;
@@ -132,5 +132,5 @@ TEST(StretchRequest, ChecksEveryValueWithTheOptionName) {
               "give --percent or --min/--max, not both");
 }
 
-}  // namespace
+}  // namespace stretch_test
 }  // namespace glint::io

@@ -19,7 +19,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::io {
-namespace {
+namespace xml_test {
 
 using glint::test::TempDir;
 using ::testing::HasSubstr;
@@ -425,5 +425,5 @@ TEST(XmlDocument, ASingularElementGivenAgainIsWarnedAtTheRepeat) {
     EXPECT_EQ(item.message, "<rate> given again (first at line 2): this one is ignored");
 }
 
-}  // namespace
+}  // namespace xml_test
 }  // namespace glint::io

@@ -15,7 +15,7 @@
 #include "glint/test/mesh_checks.h"
 
 namespace glint::mesh {
-namespace {
+namespace mesh_test {
 
 using test::Bounds;
 using test::bounds_of;
@@ -169,5 +169,5 @@ TEST(MeshValidate, EmptyMesh) {
     EXPECT_FALSE(validate_mesh(mesh, 1, {"m", 0, "x"}, diagnostics));
     EXPECT_THAT(dump(diagnostics), HasSubstr("error: m: x: mesh has no triangles"));
 }
-}  // namespace
+}  // namespace mesh_test
 }  // namespace glint::mesh

@@ -15,7 +15,7 @@
 #include "glint/test/diagnostics.h"
 
 namespace glint::mesh {
-namespace {
+namespace obj_reading_test {
 
 using namespace std::string_literals;
 using test::diagnostics_text;
@@ -183,5 +183,5 @@ TEST(ObjReading, PlusMinusIndexIsZero) {
               "m.obj:5: f: vertex index 0 is out of range (3 vertices so far)");
 }
 
-}  // namespace
+}  // namespace obj_reading_test
 }  // namespace glint::mesh

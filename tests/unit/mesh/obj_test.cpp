@@ -12,7 +12,7 @@
 #include "glint/test/diagnostics.h"
 
 namespace glint::mesh {
-namespace {
+namespace obj_test {
 
 using test::diagnostics_text;
 using test::only_error;
@@ -113,5 +113,5 @@ TEST(ObjParser, EachBadFaceOnce) {
     EXPECT_TRUE(mesh.triangles.empty());  // an empty mesh on error
 }
 
-}  // namespace
+}  // namespace obj_test
 }  // namespace glint::mesh

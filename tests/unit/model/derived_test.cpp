@@ -10,7 +10,7 @@
 #include <numbers>
 
 namespace glint::model {
-namespace {
+namespace derived_test {
 
 InstrumentProperties manual_example(double throughput = 1.0) {
     InstrumentProperties p;
@@ -209,11 +209,11 @@ TEST(ChannelResponse, InvalidWidthOrTableThrowsAtTheChannel) {
     EXPECT_THROW((void)channel_response(t, grid), Error);
 }
 
-}  // namespace
+}  // namespace derived_test
 }  // namespace glint::model
 
 namespace glint::model {
-namespace {
+namespace derived_test {
 
 // The ENVI wavelength and fwhm of each channel shape: a gaussian's width is its FWHM, a box's
 // its full width, a triangle's half its base; a table's centroid and half-peak width are
@@ -241,5 +241,5 @@ TEST(ChannelCenterAndFwhm, FollowEachShape) {
     EXPECT_NEAR(channel_fwhm_um(c), 0.05, 1e-15);
 }
 
-}  // namespace
+}  // namespace derived_test
 }  // namespace glint::model

@@ -9,7 +9,7 @@
 #include "glint/model/scene.h"
 
 namespace glint::model {
-namespace {
+namespace material_check_test {
 
 SpectralTable table(std::vector<double> wavelengths_um, std::vector<double> values) {
     SpectralTable t;
@@ -97,5 +97,5 @@ TEST(CheckMaterial, RangesAndTemperature) {
               "s.yaml:7: materials[0]: material 'm' has no reflectance");
 }
 
-}  // namespace
+}  // namespace material_check_test
 }  // namespace glint::model

@@ -8,7 +8,7 @@
 #include <utility>
 
 namespace glint::test {
-namespace {
+namespace output_name_test {
 
 TEST(OutputName, PlainNamesPass) {
     for (const char* name : {"", "frame", "run1_", "img", "a.b", "caf\xC3\xA9", "x-1 (copy)"}) {
@@ -35,5 +35,5 @@ TEST(OutputName, SeparatorsParentsAndControlCharactersAreRefused) {
     }
 }
 
-}  // namespace
+}  // namespace output_name_test
 }  // namespace glint::test

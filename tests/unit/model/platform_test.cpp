@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 namespace glint::model {
-namespace {
+namespace platform_test {
 
 TEST(AffineTransform, DefaultAndIdentityMatrixAreIdentity) {
     AffineTransform t;
@@ -91,5 +91,5 @@ TEST(ListInstruments, DocumentOrderWithMountChains) {
     EXPECT_EQ(list[4].instrument, &d.instruments[1]);
 }
 
-}  // namespace
+}  // namespace platform_test
 }  // namespace glint::model

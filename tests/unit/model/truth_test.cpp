@@ -14,7 +14,7 @@
 #include "glint/core/error.h"
 
 namespace glint::model {
-namespace {
+namespace truth_test {
 
 using Q = TruthQuantity;
 using ::testing::ElementsAre;
@@ -24,9 +24,9 @@ TEST(TruthCatalogue, SetAndIndividualNamesInAnyCase) {
     EXPECT_THAT(*expand_truth_collector("Material"), ElementsAre(Q::material_index));
     EXPECT_THAT(*expand_truth_collector("materialindex"), ElementsAre(Q::material_index));
     EXPECT_THAT(*expand_truth_collector(" MATERIALINDEX "), ElementsAre(Q::material_index));
-    EXPECT_THAT(*expand_truth_collector("geolocation"),
-                ElementsAre(Q::scene_x, Q::scene_y, Q::scene_z, Q::latitude, Q::longitude,
-                            Q::altitude));
+    EXPECT_THAT(
+        *expand_truth_collector("geolocation"),
+        ElementsAre(Q::scene_x, Q::scene_y, Q::scene_z, Q::latitude, Q::longitude, Q::altitude));
     EXPECT_THAT(*expand_truth_collector("Intersection"),
                 ElementsAre(Q::scene_x, Q::scene_y, Q::scene_z, Q::normal_x, Q::normal_y,
                             Q::normal_z, Q::distance));
@@ -113,5 +113,5 @@ TEST(TruthCatalogue, WritesTruthOnlyWhenEnabledWithCollectorsAndAFile) {
     EXPECT_FALSE(writes_truth(truth));
 }
 
-}  // namespace
+}  // namespace truth_test
 }  // namespace glint::model

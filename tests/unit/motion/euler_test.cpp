@@ -12,12 +12,13 @@
 #include <random>
 
 #include "glint/motion/frames.h"
+#include "glint/test/angles.h"
 #include "motion_expect.h"
 
 namespace glint::motion {
-namespace {
+namespace euler_test {
 
-constexpr double kPi = std::numbers::pi;
+using glint::test::kPi;
 
 /// The rotation of order `order` built by hand: the first-applied matrix on the right.
 Mat3 by_hand(const Vec3& a, EulerOrder order) {
@@ -153,5 +154,5 @@ TEST(VehicleFrame, SignConventions) {
                 euler_to_matrix({0.2, 0.1, 0.3}, EulerOrder::zyx), 0.0);
 }
 
-}  // namespace
+}  // namespace euler_test
 }  // namespace glint::motion

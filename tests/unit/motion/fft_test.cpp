@@ -16,7 +16,7 @@
 #include "glint/core/rng.h"
 
 namespace glint::motion {
-namespace {
+namespace fft_test {
 
 using Complex = std::complex<double>;
 
@@ -179,5 +179,5 @@ TEST(Fft, BadSizesAreInputErrors) {
     EXPECT_THROW(fft(empty), Error);  // 0 is not a power of two
 }
 
-}  // namespace
+}  // namespace fft_test
 }  // namespace glint::motion

@@ -16,7 +16,7 @@
 #include "motion_expect.h"
 
 namespace glint::motion {
-namespace {
+namespace frames_test {
 
 constexpr double kLeoM = 700e3;
 constexpr double kGeoM = 35786e3;
@@ -174,5 +174,5 @@ TEST(Frames, RejectsBadInput) {
     }
 }
 
-}  // namespace
+}  // namespace frames_test
 }  // namespace glint::motion

@@ -9,12 +9,13 @@
 #include <numbers>
 #include <random>
 
+#include "glint/test/angles.h"
 #include "motion_expect.h"
 
 namespace glint::motion {
-namespace {
+namespace geometry_test {
 
-constexpr double kPi = std::numbers::pi;
+using glint::test::kPi;
 
 Quaternion random_rotation(std::mt19937_64& rng) {
     std::normal_distribution<double> n(0.0, 1.0);
@@ -146,5 +147,5 @@ TEST(Quaternion, AngleBetween) {
                 kPi, 1e-15);
 }
 
-}  // namespace
+}  // namespace geometry_test
 }  // namespace glint::motion

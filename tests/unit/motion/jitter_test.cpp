@@ -22,7 +22,7 @@
 #include "glint/motion/fft.h"
 
 namespace glint::motion {
-namespace {
+namespace jitter_test {
 
 model::PsdTable table(std::vector<double> f, std::vector<double> s, std::vector<double> p = {}) {
     model::PsdTable t;
@@ -462,5 +462,5 @@ TEST(JitterSamplers, MountUsesItsPsdTable) {
               "a.platform:41: mount[M]/rotationdeviates/yrotation: psd jitter names no PSD file");
 }
 
-}  // namespace
+}  // namespace jitter_test
 }  // namespace glint::motion

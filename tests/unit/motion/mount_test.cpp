@@ -15,14 +15,15 @@
 #include "glint/core/error.h"
 #include "glint/motion/euler.h"
 #include "glint/motion/frames.h"
+#include "glint/test/angles.h"
 #include "glint/test/errors.h"
 #include "motion_expect.h"
 
 namespace glint::motion {
-namespace {
+namespace mount_test {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kDeg = kPi / 180.0;
+using glint::test::kDeg;
+using glint::test::kPi;
 
 Vec3 boresight(const Rigid& r) { return apply_direction(r, kInstrumentBoresight); }
 
@@ -368,5 +369,5 @@ TEST(Mount, ValidateRejectsBadTables) {
                 testing::HasSubstr("rate must be > 0"));
 }
 
-}  // namespace
+}  // namespace mount_test
 }  // namespace glint::motion

@@ -8,12 +8,13 @@
 #include <numbers>
 #include <random>
 
+#include "glint/test/angles.h"
 #include "motion_expect.h"
 
 namespace glint::motion {
-namespace {
+namespace rigid_test {
 
-constexpr double kPi = std::numbers::pi;
+using glint::test::kPi;
 
 Rigid random_rigid(std::mt19937_64& rng) {
     std::normal_distribution<double> n(0.0, 1.0);
@@ -73,5 +74,5 @@ TEST(Rigid, CompositionStaysUnitQuaternion) {
     EXPECT_NEAR(norm(chain.rotation), 1.0, 1e-14);
 }
 
-}  // namespace
+}  // namespace rigid_test
 }  // namespace glint::motion

@@ -8,7 +8,7 @@
 #include "glint/test/motions.h"
 
 namespace glint::motion {
-namespace {
+namespace scene_instances_test {
 
 model::Instance named(const std::string& name) {
     model::Instance instance;
@@ -49,5 +49,5 @@ TEST(SceneTargets, TrajectoriesAreIndexedLikeTheInstances) {
     EXPECT_NEAR(trajectories[1]->pose_at(2.0).position_m.x, 30.0, 1e-12);
 }
 
-}  // namespace
+}  // namespace scene_instances_test
 }  // namespace glint::motion

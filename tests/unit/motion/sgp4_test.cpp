@@ -17,13 +17,14 @@
 
 #include "glint/motion/teme.h"
 #include "glint/motion/tle.h"
+#include "glint/test/angles.h"
 
 namespace glint::motion {
-namespace {
+namespace sgp4_test {
 
 using ::testing::HasSubstr;
 
-constexpr double kPi = 3.14159265358979323846;
+using glint::test::kPi;
 constexpr double kMetre_km = 1.0e-3;
 constexpr double kMmPerS_km_s = 1.0e-6;
 
@@ -231,5 +232,5 @@ TEST(Sgp4, CopiesShareTheModelAndAgree) {
     EXPECT_NEAR(sat.mean_motion_rad_min(), 2.00491383 * 2.0 * kPi / 1440.0, 1e-5);
 }
 
-}  // namespace
+}  // namespace sgp4_test
 }  // namespace glint::motion

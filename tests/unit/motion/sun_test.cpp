@@ -17,7 +17,7 @@
 #include "glint/motion/moon.h"
 
 namespace glint::motion {
-namespace {
+namespace sun_test {
 
 /// The SPA paper's example (§A5): 2003-10-17 12:30:30 local time, zone −7 h, ΔUT1 = 0,
 /// ΔT = 67 s, 39.742476° N, 105.1786° W, 1830.14 m, 820 mbar, 11 °C, refraction applied.
@@ -159,5 +159,5 @@ TEST(Moon, FullAndNewMoon) {
     EXPECT_LT(fresh.phase_fraction, 0.01);
 }
 
-}  // namespace
+}  // namespace sun_test
 }  // namespace glint::motion

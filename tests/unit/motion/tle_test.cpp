@@ -10,7 +10,7 @@
 #include <string>
 
 namespace glint::motion {
-namespace {
+namespace tle_test {
 
 using ::testing::HasSubstr;
 
@@ -203,5 +203,5 @@ TEST(Tle, ChecksumCountsDigitsAndMinusSigns) {
     EXPECT_EQ(tle_checksum("1 -- 9"), (1 + 1 + 1 + 9) % 10);
 }
 
-}  // namespace
+}  // namespace tle_test
 }  // namespace glint::motion

@@ -15,14 +15,15 @@
 #include <vector>
 
 #include "glint/motion/euler.h"
+#include "glint/test/angles.h"
 #include "motion_expect.h"
 
 namespace glint::motion {
-namespace {
+namespace trajectory_test {
 
 using ::testing::HasSubstr;
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using glint::test::kDeg;
 
 /// A FlexMotion with the given engines.
 model::FlexMotion flex(model::LocationEngine location, model::OrientationEngine orientation) {
@@ -315,5 +316,5 @@ TEST(TrajectoryErrors, UnusableModels) {
     EXPECT_EQ(empty_table.context().line, 3);
 }
 
-}  // namespace
+}  // namespace trajectory_test
 }  // namespace glint::motion

@@ -11,7 +11,7 @@
 #include "glint/core/error.h"
 
 namespace glint::process {
-namespace {
+namespace process_test {
 
 using namespace std::chrono_literals;
 
@@ -166,5 +166,5 @@ TEST(Process, FormatCommandLineQuotes) {
               "ffmpeg -i 'a b.png' 'it'\\''s'");
 }
 
-}  // namespace
+}  // namespace process_test
 }  // namespace glint::process

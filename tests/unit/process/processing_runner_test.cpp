@@ -16,7 +16,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::process {
-namespace {
+namespace processing_runner_test {
 
 namespace fs = std::filesystem;
 using model::ProcessingSchedule;
@@ -304,5 +304,5 @@ TEST(Processing, AFailingTaskKeepsTheImage) {
     EXPECT_TRUE(fs::exists(out / "f.img"));
 }
 
-}  // namespace
+}  // namespace processing_runner_test
 }  // namespace glint::process

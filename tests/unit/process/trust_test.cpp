@@ -16,7 +16,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::process {
-namespace {
+namespace trust_test {
 
 namespace fs = std::filesystem;
 
@@ -272,5 +272,5 @@ TEST(ProcessingTrust, TheRunnerRefusesBeforeAnythingRunsEvenWithKeepGoing) {
     EXPECT_EQ(shown.refusal, std::nullopt);
 }
 
-}  // namespace
+}  // namespace trust_test
 }  // namespace glint::process

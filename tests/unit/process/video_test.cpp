@@ -13,7 +13,7 @@
 #include "glint/process/process.h"
 
 namespace glint::process {
-namespace {
+namespace video_test {
 
 namespace fs = std::filesystem;
 
@@ -184,5 +184,5 @@ TEST(FramePattern, Detection) {
     EXPECT_THROW(list_pattern_indices("a%d-%d.png"), Error);
 }
 
-}  // namespace
+}  // namespace video_test
 }  // namespace glint::process

@@ -15,10 +15,11 @@
 #include "glint/core/error.h"
 #include "glint/core/spectral.h"
 #include "glint/radiometry/environment.h"
+#include "glint/radiometry/sampling.h"
 #include "tracer_fixture.h"
 
 namespace glint::radiometry {
-namespace {
+namespace altitude_test {
 
 using test::batch_of;
 using test::direction_from;
@@ -26,9 +27,8 @@ using test::FixedRay;
 using test::flat_material;
 using test::Rig;
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kOriginAltitude_m = 150.0;
-constexpr double kSensorHeight_m = 700'000.0;  // above the scene origin
+constexpr double kSensorHeight_m = 700'000.0;        // above the scene origin
 const SpectralGrid kGrid({0.45, 0.55, 0.76, 0.94});  // 0.76: O₂ A band; 0.94: water
 
 /// The parametric model with its default aerosol and multiple scattering (gases off: the
@@ -146,8 +146,7 @@ TEST(AltitudeLevels, EachPlateIsLitAndSeenThroughTheAtmosphereAtItsAltitude) {
         std::vector<double> env_t(kGrid.size()), env_p(kGrid.size());
         env.sensor_path({0.0, 0.0, 1.0}, 0.0, h, env_t, env_p);
         for (std::size_t b = 0; b < kGrid.size(); ++b) {
-            EXPECT_NEAR(env.sun_irradiance_w_per_cm2_um(i)[b], toa[b] * t_sun[b],
-                        1e-12 * toa[b]);
+            EXPECT_NEAR(env.sun_irradiance_w_per_cm2_um(i)[b], toa[b] * t_sun[b], 1e-12 * toa[b]);
             EXPECT_NEAR(env.sky_radiance_w_per_cm2_sr_um(i)[b], sky[b], 1e-12 * toa[b]);
             EXPECT_NEAR(env_t[b], t_v[b], 1e-12);
             EXPECT_NEAR(env_p[b], l_p[b], 1e-12 * toa[b]);
@@ -181,7 +180,8 @@ TEST(AltitudeLevels, EachPlateIsLitAndSeenThroughTheAtmosphereAtItsAltitude) {
     const std::size_t water = 3;
     EXPECT_GT(env.sun_irradiance_w_per_cm2_um(1)[water],
               1.02 * env.sun_irradiance_w_per_cm2_um(0)[water]);
-    EXPECT_LT(env.sky_radiance_w_per_cm2_sr_um(6)[0], 0.05 * env.sky_radiance_w_per_cm2_sr_um(0)[0]);
+    EXPECT_LT(env.sky_radiance_w_per_cm2_sr_um(6)[0],
+              0.05 * env.sky_radiance_w_per_cm2_sr_um(0)[0]);
 }
 
 TEST(AltitudeLevels, BetweenLevelsTheTermsAreInterpolatedLinearly) {
@@ -207,8 +207,7 @@ TEST(AltitudeLevels, BetweenLevelsTheTermsAreInterpolatedLinearly) {
     // Linear interpolation over 250 m (the widest spacing altitude_levels leaves) against the
     // model at the midpoint: the sun's transmittance within 0.1 %.
     const Environment fine = environment_for(model, {0.0, 250.0}, kSensorHeight_m);
-    const std::vector<double> mid =
-        model.sun_transmittance(kGrid, at_height(125.0));
+    const std::vector<double> mid = model.sun_transmittance(kGrid, at_height(125.0));
     const std::vector<double> toa = solar().resample(kGrid, 1.0);
     for (std::size_t b = 0; b < kGrid.size(); ++b) {
         const double interpolated =
@@ -239,5 +238,5 @@ TEST(AltitudeLevels, ALevelAboveTheSensorSeesItThroughTheAirBetween) {
     }
 }
 
-}  // namespace
+}  // namespace altitude_test
 }  // namespace glint::radiometry

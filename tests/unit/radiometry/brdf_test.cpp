@@ -23,7 +23,7 @@
 #include "glint/core/rng.h"
 
 namespace glint::radiometry {
-namespace {
+namespace brdf_test {
 
 using testing::chi_square_direction_test;
 using testing::DirectionHistogram;
@@ -319,5 +319,5 @@ TEST(SurfaceBrdf, Deterministic) {
     }
 }
 
-}  // namespace
+}  // namespace brdf_test
 }  // namespace glint::radiometry

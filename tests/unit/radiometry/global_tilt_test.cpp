@@ -21,10 +21,11 @@
 #include "glint/atmosphere/solar.h"
 #include "glint/core/spectral.h"
 #include "glint/io/input_files.h"
+#include "glint/radiometry/sampling.h"
 #include "tracer_fixture.h"
 
 namespace glint::radiometry {
-namespace {
+namespace global_tilt_test {
 
 using test::batch_of;
 using test::direction_from;
@@ -32,7 +33,6 @@ using test::FixedRay;
 using test::ground_plane;
 using test::Rig;
 
-constexpr double kPi = 3.14159265358979323846;
 const std::filesystem::path kData = std::filesystem::path(GLINT_SOURCE_DIR) / "data";
 
 /// ASTM G173-03: wavelength nm, the extraterrestrial and the global-tilt columns, W m-2 nm-1.
@@ -189,5 +189,5 @@ TEST(GlobalTilt, WhitePlateTiltedTowardsTheSunMatchesAstmG173) {
     std::printf("50 nm bands, glint/ASTM - 1 in %%:%s\n", bands.c_str());
 }
 
-}  // namespace
+}  // namespace global_tilt_test
 }  // namespace glint::radiometry

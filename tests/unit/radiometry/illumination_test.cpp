@@ -21,7 +21,7 @@
 #include "tracer_fixture.h"
 
 namespace glint::radiometry {
-namespace {
+namespace illumination_test {
 
 using ::testing::HasSubstr;
 
@@ -171,5 +171,5 @@ TEST(Illumination, RefusesToMakeLightWithoutTheSolarSpectrum) {
                           "(inputs::read_data_tables)"));
 }
 
-}  // namespace
+}  // namespace illumination_test
 }  // namespace glint::radiometry

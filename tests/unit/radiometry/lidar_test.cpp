@@ -16,7 +16,7 @@
 #include "tracer_fixture.h"
 
 namespace glint::radiometry {
-namespace {
+namespace lidar_test {
 
 using test::add_primitive;
 using test::FixedRay;
@@ -198,5 +198,5 @@ TEST(LidarTracer, ReturnsAreTheSameForAnyThreadCount) {
               0.0);
 }
 
-}  // namespace
+}  // namespace lidar_test
 }  // namespace glint::radiometry

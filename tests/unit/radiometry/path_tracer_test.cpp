@@ -17,7 +17,7 @@
 #include "tracer_fixture.h"
 
 namespace glint::radiometry {
-namespace {
+namespace path_tracer_test {
 
 using test::batch_of;
 using test::box;
@@ -315,5 +315,5 @@ TEST(PathTracer, ABandRangeTracesExactlyThoseBandsOfTheWholeGrid) {
     }
 }
 
-}  // namespace
+}  // namespace path_tracer_test
 }  // namespace glint::radiometry

@@ -17,7 +17,7 @@
 #include "tracer_fixture.h"
 
 namespace glint::radiometry {
-namespace {
+namespace point_lights_test {
 
 using test::batch_of;
 using test::box;
@@ -120,5 +120,5 @@ TEST(PointLights, BadSourcesAreRefusedNamingThem) {
     EXPECT_EQ(lights.size(), 0u);
 }
 
-}  // namespace
+}  // namespace point_lights_test
 }  // namespace glint::radiometry

@@ -21,7 +21,7 @@
 #include "tracer_fixture.h"
 
 namespace glint::radiometry {
-namespace {
+namespace problem_test {
 
 using test::batch_of;
 using test::direction_from;
@@ -519,5 +519,5 @@ TEST(Environment, SunDirectionFollowsTheWindow) {
     EXPECT_NEAR(env.sun_direction(0.0).y, 0.0, 1e-15);  // clamped to the begin
 }
 
-}  // namespace
+}  // namespace problem_test
 }  // namespace glint::radiometry

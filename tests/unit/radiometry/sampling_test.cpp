@@ -16,7 +16,7 @@
 #include "glint/core/rng.h"
 
 namespace glint::radiometry {
-namespace {
+namespace sampling_test {
 
 using testing::chi_square_direction_test;
 using testing::DirectionHistogram;
@@ -237,5 +237,5 @@ TEST(Determinism, SameUniformsSameDirections) {
     }
 }
 
-}  // namespace
+}  // namespace sampling_test
 }  // namespace glint::radiometry

@@ -19,7 +19,7 @@
 #include "tracer_fixture.h"
 
 namespace glint::radiometry {
-namespace {
+namespace spectral_sampling_test {
 
 using test::batch_of;
 using test::direction_from;
@@ -351,5 +351,5 @@ TEST(SpectralSampling, SameBytesForOneAndTwoThreads) {
               0);
 }
 
-}  // namespace
+}  // namespace spectral_sampling_test
 }  // namespace glint::radiometry

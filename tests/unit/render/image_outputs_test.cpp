@@ -18,7 +18,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::render {
-namespace {
+namespace image_outputs_test {
 
 namespace fs = std::filesystem;
 
@@ -151,5 +151,5 @@ TEST(ImageOutputs, WrongWritesAreInternalErrors) {
               ErrorCategory::internal);
 }
 
-}  // namespace
+}  // namespace image_outputs_test
 }  // namespace glint::render

@@ -24,7 +24,7 @@
 #include "render_fixture.h"
 
 namespace glint::render {
-namespace {
+namespace lidar_render_test {
 
 namespace fs = std::filesystem;
 using test_render::load;
@@ -233,5 +233,5 @@ TEST(LidarRender, ATabulatedPulseShapeIsUsedAsWritten) {
     EXPECT_EQ(s.histogram[676], 0.0);
 }
 
-}  // namespace
+}  // namespace lidar_render_test
 }  // namespace glint::render

@@ -29,7 +29,7 @@
 #include "render_fixture.h"
 
 namespace glint::render {
-namespace {
+namespace point_source_render_test {
 
 namespace fs = std::filesystem;
 using test_render::kRenderData;
@@ -376,5 +376,5 @@ TEST(PointSources, ANonFinitePositionIsAnInputErrorAtTheSource) {
     }
 }
 
-}  // namespace
+}  // namespace point_source_render_test
 }  // namespace glint::render

@@ -17,7 +17,7 @@
 #include "render_fixture.h"
 
 namespace glint::render {
-namespace {
+namespace render_events_test {
 
 namespace fs = std::filesystem;
 using test_render::load;
@@ -93,5 +93,5 @@ TEST(RenderEvents, EveryKindWithTheImageCompleteWhenPublished) {
               }));
 }
 
-}  // namespace
+}  // namespace render_events_test
 }  // namespace glint::render

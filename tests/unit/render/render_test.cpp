@@ -32,7 +32,7 @@
 #include "render_fixture.h"
 
 namespace glint::render {
-namespace {
+namespace render_test {
 
 namespace fs = std::filesystem;
 using test_render::kRenderData;
@@ -482,5 +482,5 @@ TEST(Render, HypersampledPixelsTakeTheMultipliedSampleCount) {
     EXPECT_DOUBLE_EQ(report.captures[0].mean_samples, 12.5);
 }
 
-}  // namespace
+}  // namespace render_test
 }  // namespace glint::render

@@ -22,7 +22,7 @@
 #include "render_fixture.h"
 
 namespace glint::render {
-namespace {
+namespace split_channels_test {
 
 namespace fs = std::filesystem;
 using test_render::kRenderData;
@@ -175,5 +175,5 @@ TEST(SplitChannels, ASplitRenderIsTheSameForAnyThreadCount) {
     EXPECT_EQ(images[0], images[1]);
 }
 
-}  // namespace
+}  // namespace split_channels_test
 }  // namespace glint::render

@@ -17,18 +17,19 @@
 #include "../../../lib/render/src/render_parts.h"
 #include "glint/core/error.h"
 #include "glint/motion/euler.h"
+#include "glint/test/angles.h"
 #include "glint/test/temp_dir.h"
 #include "render_fixture.h"
 
 namespace glint::render {
-namespace {
+namespace telemetry_test {
 
 namespace fs = std::filesystem;
 using test_render::load;
 using test_render::options_into;
 
 const fs::path kTelemetry = fs::path(GLINT_TEST_DATA_DIR) / "telemetry";
-constexpr double kDeg = std::numbers::pi / 180.0;
+using glint::test::kDeg;
 
 TEST(Telemetry, RecordsThePoseServicesInstrumentPoseAtTheClockTicks) {
     test::TempDir dir;
@@ -130,5 +131,5 @@ TEST(Telemetry, ExternalTriggerClockOfTheRecorderItselfIsRefused) {
                  Error);
 }
 
-}  // namespace
+}  // namespace telemetry_test
 }  // namespace glint::render

@@ -14,7 +14,7 @@
 #include "truth_fixture.h"
 
 namespace glint::render {
-namespace {
+namespace truth_convergence_test {
 
 using namespace test_truth;
 
@@ -285,5 +285,5 @@ TEST(Truth, CollectingTruthChangesNoRadianceAndIsTheSameForAnyThreadCount) {
     EXPECT_LT(one.report.captures[0].min_samples, one.report.captures[0].max_samples);
 }
 
-}  // namespace
+}  // namespace truth_convergence_test
 }  // namespace glint::render

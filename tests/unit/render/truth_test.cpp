@@ -15,7 +15,7 @@
 #include "truth_fixture.h"
 
 namespace glint::render {
-namespace {
+namespace truth_test {
 
 using namespace test_truth;
 
@@ -302,5 +302,5 @@ objects:
     // the edge (a shifted or lopsided penumbra) larger than 4 of those would show here.
     EXPECT_NEAR(row_sum / kSide, 0.5, 4.0 * 0.5 / std::sqrt(kSide * kSamples));
 }
-}  // namespace
+}  // namespace truth_test
 }  // namespace glint::render

@@ -15,7 +15,7 @@
 #include "glint/scene/geometry_scene.h"
 
 namespace glint::scene {
-namespace {
+namespace geometry_scene_motion_test {
 
 using namespace glint::scene::test;
 using ::testing::HasSubstr;
@@ -92,7 +92,8 @@ TEST(GeometrySceneMotion, DynamicBoundsCoverTheWholePath) {
     motion.location = straight_motion({5, 0, 0}, 0.0, 20.0).location;  // north at 20 m/s
     add_dynamic(scene, blade, motion, "flying rotor");
     const GeometryScene geometry = build(scene, options_over(0.0, 2.0));
-    const auto trajectories = motion::make_instance_trajectories(scene, motion::SceneFrame(), DateTime{});
+    const auto trajectories =
+        motion::make_instance_trajectories(scene, motion::SceneFrame(), DateTime{});
     ASSERT_TRUE(trajectories[0]);
     const Bounds& b = geometry.bounds();
     for (int k = 0; k <= 2000; ++k) {
@@ -125,5 +126,5 @@ TEST(GeometrySceneMotion, InstantWindowGivesOnePoseAtItsTime) {
     }
 }
 
-}  // namespace
+}  // namespace geometry_scene_motion_test
 }  // namespace glint::scene

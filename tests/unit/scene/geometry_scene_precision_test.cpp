@@ -19,7 +19,7 @@
 #include "glint/scene/geometry_scene.h"
 
 namespace glint::scene {
-namespace {
+namespace geometry_scene_precision_test {
 
 using namespace glint::scene::test;
 
@@ -57,7 +57,7 @@ std::vector<Vec3> ground_grid() {
 }
 
 struct ShadowCount {
-    int missed = 0;       ///< camera rays that did not hit the plate where they aimed
+    int missed = 0;  ///< camera rays that did not hit the plate where they aimed
     int false_shadows = 0;
     double worst_position_m = 0.0;
 };
@@ -77,8 +77,7 @@ ShadowCount look_from(const GeometryScene& geometry, const Vec3& camera) {
             ++count.missed;
             continue;
         }
-        count.worst_position_m =
-            std::max(count.worst_position_m, norm(hit->position_m - target));
+        count.worst_position_m = std::max(count.worst_position_m, norm(hit->position_m - target));
         const Vec3 origin = geometry.spawn_origin(*hit, kSun);
         const bool blocked = geometry.occluded(origin, kSun, 0.0);
         if (blocked || geometry.intersect(origin, kSun, 0.0)) ++count.false_shadows;
@@ -160,12 +159,12 @@ TEST(GeometryScenePrecision, UtmSizedCoordinatesWorkAsAtTheOrigin) {
         const model::StaticTransform placed =
             cases[c].by_instance ? translated(cases[c].shift) : model::StaticTransform{};
         add_static(scene, add_object(scene, plate_at(vertex_shift, 2000.0), "plate"), placed);
-        add_static(scene,
-                   add_object(scene,
-                              box_mesh(vertex_shift + Vec3{10, 20, 0},
-                                       vertex_shift + Vec3{12, 22, 8}, 0),
-                              "box"),
-                   placed);
+        add_static(
+            scene,
+            add_object(scene,
+                       box_mesh(vertex_shift + Vec3{10, 20, 0}, vertex_shift + Vec3{12, 22, 8}, 0),
+                       "box"),
+            placed);
         const GeometryScene geometry = build(scene);
         const Vec3 camera = cases[c].shift + Vec3{50.0, -30.0, 700'000.0};
         for (int i = 0; i < 60; ++i) {
@@ -175,8 +174,7 @@ TEST(GeometryScenePrecision, UtmSizedCoordinatesWorkAsAtTheOrigin) {
                 ASSERT_TRUE(hit) << cases[c].name;
                 // The box or the plate: either way on the line of sight.
                 const Vec3 along = hit->position_m - camera;
-                EXPECT_LT(norm(cross(normalized(along), normalized(target - camera))) *
-                              norm(along),
+                EXPECT_LT(norm(cross(normalized(along), normalized(target - camera))) * norm(along),
                           kPosition_m)
                     << cases[c].name;
                 largest_offset_m[c] = std::max(largest_offset_m[c], hit->spawn_offset_m);
@@ -219,10 +217,12 @@ TEST(GeometryScenePrecision, AMeshInUtmCoordinatesKeepsItsEdgesToTheMillimetre) 
     ASSERT_NE(scene.objects[0].mesh.origin_m[0], 0.0);
     const GeometryScene geometry = build(scene);
     for (const double inset_m : {0.002, -0.002}) {
-        for (const Vec3& edge : {Vec3{1000.0 - inset_m, 3.0, 0.0}, Vec3{-1000.0 + inset_m, 3.0, 0.0},
-                                 Vec3{3.0, 1000.0 - inset_m, 0.0}, Vec3{3.0, -1000.0 + inset_m, 0.0}}) {
+        for (const Vec3& edge :
+             {Vec3{1000.0 - inset_m, 3.0, 0.0}, Vec3{-1000.0 + inset_m, 3.0, 0.0},
+              Vec3{3.0, 1000.0 - inset_m, 0.0}, Vec3{3.0, -1000.0 + inset_m, 0.0}}) {
             const Vec3 target = center + edge;
-            const auto hit = geometry.intersect(target + Vec3{0.0, 0.0, 500.0}, {0.0, 0.0, -1.0}, 0.0);
+            const auto hit =
+                geometry.intersect(target + Vec3{0.0, 0.0, 500.0}, {0.0, 0.0, -1.0}, 0.0);
             EXPECT_EQ(hit.has_value(), inset_m > 0.0) << edge.x << ", " << edge.y;
             if (hit) {
                 EXPECT_LT(norm(hit->position_m - target), kPosition_m);
@@ -243,9 +243,9 @@ std::vector<Vec3> leaving_directions(const Vec3& n, double min_deg, int count) {
         const double f = (i + 0.5) / count;
         const double elevation = min_deg * std::pow(89.0 / min_deg, f) * kDeg;
         const double azimuth = 2.399963 * i;  // golden angle
-        out.push_back(normalized(n * std::sin(elevation) +
-                                 (t * std::cos(azimuth) + b * std::sin(azimuth)) *
-                                     std::cos(elevation)));
+        out.push_back(
+            normalized(n * std::sin(elevation) +
+                       (t * std::cos(azimuth) + b * std::sin(azimuth)) * std::cos(elevation)));
     }
     return out;
 }
@@ -301,8 +301,8 @@ TEST(GeometryScenePrecision, GrazingRaysNeverHitTheSurfaceTheyLeave) {
         int self = 0;
         for (int i = 0; i < 40; ++i) {
             const Vec3 n = r * Vec3{0, 0, 1};
-            const Vec3 target = place.translation +
-                                r * Vec3{(i % 7) * 140.0 - 421.3, (i % 5) * 190.0 - 377.7, 0.0};
+            const Vec3 target =
+                place.translation + r * Vec3{(i % 7) * 140.0 - 421.3, (i % 5) * 190.0 - 377.7, 0.0};
             const Vec3 d = normalized(Vec3{0.3 * std::cos(i), 0.3 * std::sin(i), -1.0});
             const Vec3 from = dot(d, n) < 0 ? target - d * 3000.0 : target + d * 3000.0;
             const auto hit = geometry.intersect(from, dot(d, n) < 0 ? d : d * -1.0, 0.0);
@@ -335,8 +335,8 @@ TEST(GeometryScenePrecision, ThinSlabsAndFarInstancesKeepTheirFaces) {
         int wrong_inside = 0;
         for (int i = 0; i < 60; ++i) {
             // Into the slab from above, at up to 80° from its normal.
-            const motion::Mat3 r = motion::euler_to_matrix(
-                motion::to_vec3(slab_at.rotation_rad), motion::EulerOrder::xyz);
+            const motion::Mat3 r = motion::euler_to_matrix(motion::to_vec3(slab_at.rotation_rad),
+                                                           motion::EulerOrder::xyz);
             const Vec3 n = r * Vec3{0, 0, 1};
             const Vec3 target = far + r * Vec3{(i % 6) * 1.3 - 3.1, (i % 5) * 1.7 - 3.3, 0.001};
             const double tilt = (i * 1.33) * kDeg;
@@ -362,8 +362,10 @@ TEST(GeometryScenePrecision, ThinSlabsAndFarInstancesKeepTheirFaces) {
             const Vec3 in = normalized(centre - from);
             const auto near_side = geometry.intersect(from, in, 0.0);
             ASSERT_TRUE(near_side);
-            self += self_hits(geometry, *near_side, leaving_directions(near_side->normal, 0.01, 20));
-            const auto far_side = geometry.intersect(geometry.spawn_origin(*near_side, in), in, 0.0);
+            self +=
+                self_hits(geometry, *near_side, leaving_directions(near_side->normal, 0.01, 20));
+            const auto far_side =
+                geometry.intersect(geometry.spawn_origin(*near_side, in), in, 0.0);
             if (!far_side || far_side->distance_m < 1.5) ++wrong_inside;
         }
         EXPECT_EQ(self, 0) << far.x;
@@ -398,5 +400,5 @@ TEST(GeometryScenePrecision, AMovingObjectFarFromTheOriginDoesNotShadeItself) {
     EXPECT_EQ(self, 0);
 }
 
-}  // namespace
+}  // namespace geometry_scene_precision_test
 }  // namespace glint::scene

@@ -25,7 +25,7 @@
 #include "glint/motion/euler.h"
 
 namespace glint::scene {
-namespace {
+namespace geometry_scene_test {
 
 using namespace glint::scene::test;
 using ::testing::HasSubstr;
@@ -561,5 +561,5 @@ TEST(GeometryScene, InstanceTrajectoriesFollowTheInstances) {
     EXPECT_EQ(e.context().line, 101);
 }
 
-}  // namespace
+}  // namespace geometry_scene_test
 }  // namespace glint::scene

@@ -13,7 +13,7 @@
 #include "glint/test/errors.h"
 
 namespace glint::scene {
-namespace {
+namespace scene_motion_test {
 
 using namespace glint::scene::test;
 
@@ -54,5 +54,5 @@ TEST(SceneMotion, RefusesAnotherScene) {
               "internal error: the scene has 2 instances, its motion was made for 1");
 }
 
-}  // namespace
+}  // namespace scene_motion_test
 }  // namespace glint::scene

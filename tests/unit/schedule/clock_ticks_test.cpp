@@ -16,7 +16,7 @@
 #include "glint/schedule/schedule.h"
 
 namespace glint::schedule {
-namespace {
+namespace clock_ticks_test {
 
 using ::testing::DoubleNear;
 using ::testing::ElementsAre;
@@ -228,5 +228,5 @@ TEST(TriggerPeriod, IsSpanPlusMeanSpacing) {
     EXPECT_FALSE(trigger_period_s(std::vector<double>{}).has_value());
 }
 
-}  // namespace
+}  // namespace clock_ticks_test
 }  // namespace glint::schedule

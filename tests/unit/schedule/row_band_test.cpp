@@ -10,7 +10,7 @@
 #include "glint/core/error.h"
 
 namespace glint::schedule {
-namespace {
+namespace row_band_test {
 
 using Lines = std::pair<std::uint64_t, std::uint64_t>;
 
@@ -67,5 +67,5 @@ TEST(RowBand, ShardsOfHugeCapturesDoNotOverflow) {
     EXPECT_EQ(band.of(lines), Lines(lines / 2, lines / 4 * 3));
 }
 
-}  // namespace
+}  // namespace row_band_test
 }  // namespace glint::schedule

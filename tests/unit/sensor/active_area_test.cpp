@@ -24,7 +24,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::sensor {
-namespace {
+namespace active_area_test {
 
 RandomStream stream(std::uint64_t problem, std::uint64_t sample) {
     return RandomStream(23, {0, 0, 0, problem, sample});
@@ -146,5 +146,5 @@ TEST(ActiveArea, RefusesBadMasks) {
     EXPECT_EQ(half.description(), "mask.png 2 x 1, mean sensitivity 0.5");
 }
 
-}  // namespace
+}  // namespace active_area_test
 }  // namespace glint::sensor

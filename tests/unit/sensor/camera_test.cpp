@@ -18,7 +18,7 @@
 #include "glint/core/error.h"
 
 namespace glint::sensor {
-namespace {
+namespace camera_test {
 
 /// An instrument with focal length `f_m` and optional distortion, located in a fake file.
 model::InstrumentProperties properties(double f_m,
@@ -436,5 +436,5 @@ TEST(CameraModel, InputErrorsNameTheElement) {
               "no larger than its pitch");
 }
 
-}  // namespace
+}  // namespace camera_test
 }  // namespace glint::sensor

@@ -24,7 +24,7 @@
 #include "glint/sensor/output_units.h"
 
 namespace glint::sensor {
-namespace {
+namespace output_units_docs_test {
 
 using model::AreaUnits;
 using model::FluxUnits;
@@ -106,5 +106,5 @@ TEST(OutputUnitsDocs, UnitsMdHoldsTheGeneratedTable) {
     EXPECT_EQ(marked, 10u);
 }
 
-}  // namespace
+}  // namespace output_units_docs_test
 }  // namespace glint::sensor

@@ -19,7 +19,7 @@
 #include "glint/core/error.h"
 
 namespace glint::sensor {
-namespace {
+namespace output_units_test {
 
 using model::AreaUnits;
 using model::FluxUnits;
@@ -563,5 +563,5 @@ TEST(OutputUnitsErrors, NoChannelsIsAnEmptyMap) {
     units.apply(flat(fine_grid()), out);
 }
 
-}  // namespace
+}  // namespace output_units_test
 }  // namespace glint::sensor

@@ -5,6 +5,8 @@
 // roll, a pitched mount), with flips and array offsets; the sample rays' ground hits, times
 // and origins are checked against the same arithmetic replayed from the documented draw
 // order (u, v, τ), for a hovering and a moving platform with a rolling shutter.
+#include "glint/sensor/pixel_ray_source.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -20,15 +22,15 @@
 #include "glint/motion/euler.h"
 #include "glint/motion/rigid.h"
 #include "glint/sensor/camera.h"
-#include "glint/sensor/pixel_ray_source.h"
+#include "glint/test/angles.h"
 #include "glint/test/platforms.h"
 
 namespace glint::sensor {
-namespace {
+namespace pixel_ray_source_test {
 
 using motion::Rigid;
 
-constexpr double kDeg = std::numbers::pi / 180.0;
+using glint::test::kDeg;
 constexpr double kHeight_m = 1000.0;
 constexpr double kFocal_m = 0.1;
 constexpr double kPitch_m = 10e-6;
@@ -419,5 +421,5 @@ TEST(PixelRaySource, BadArgumentsAreInternalErrors) {
     EXPECT_NO_THROW(source.generate(kColumns * kRows - 1, 0, rng));
 }
 
-}  // namespace
+}  // namespace pixel_ray_source_test
 }  // namespace glint::sensor

@@ -28,13 +28,14 @@
 #include "glint/motion/rigid.h"
 #include "glint/sensor/camera.h"
 #include "glint/sensor/pixel_ray_source.h"
+#include "glint/test/angles.h"
 #include "glint/test/platforms.h"
 #include "glint/test/temp_dir.h"
 
 namespace glint::sensor {
-namespace {
+namespace psf_test {
 
-constexpr double kPi = std::numbers::pi;
+using glint::test::kPi;
 
 RandomStream stream(std::uint64_t problem, std::uint64_t sample) {
     return RandomStream(11, {0, 0, 0, problem, sample});
@@ -289,5 +290,5 @@ TEST(PsfEdgeMtf, ImagePsfOfTheGaussianFormulaGivesTheGaussiansMtf) {
     }
 }
 
-}  // namespace
+}  // namespace psf_test
 }  // namespace glint::sensor

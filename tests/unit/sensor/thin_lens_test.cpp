@@ -20,13 +20,12 @@
 #include "glint/test/platforms.h"
 
 namespace glint::sensor {
-namespace {
+namespace thin_lens_test {
 
 constexpr double kHeight_m = 1000.0;
 constexpr double kFocal_m = 0.1;
 constexpr double kPitch_m = 10e-6;
 constexpr double kAperture_m = 0.2;
-
 
 struct Spread {
     double max_radius_px = 0.0;
@@ -46,7 +45,8 @@ Spread ground_spread(double focus_m) {
     p.aperture_diameter_m = kAperture_m;
     p.focus_distance_m = focus_m;
     const CameraModel camera(p, a, 24, 16);
-    const motion::PoseService poses(test::one_mount_platform(), std::make_unique<test::HoverTrajectory>(kHeight_m), {}, {});
+    const motion::PoseService poses(test::one_mount_platform(),
+                                    std::make_unique<test::HoverTrajectory>(kHeight_m), {}, {});
     const PixelRaySource source(camera, poses, 0, {0.0, 0.0, 0.0});
     const motion::Rigid pose = poses.instrument_to_scene(0, 0.0);
     const motion::Rigid to_instrument = motion::inverse(pose);
@@ -92,5 +92,5 @@ TEST(ThinLens, OutOfFocusGroundBlursToTheCircleOfConfusion) {
     }
 }
 
-}  // namespace
+}  // namespace thin_lens_test
 }  // namespace glint::sensor

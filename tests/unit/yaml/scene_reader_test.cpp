@@ -20,7 +20,7 @@
 #include "glint/test/temp_dir.h"
 
 namespace glint::yaml {
-namespace {
+namespace scene_reader_test {
 
 using dirsig::ReadOptions;
 
@@ -434,5 +434,5 @@ TEST(SceneObj, DefaultMaterialAndDegenerate) {
     EXPECT_EQ(read.diagnostics.warning_count(), 1u);
 }
 
-}  // namespace
+}  // namespace scene_reader_test
 }  // namespace glint::yaml

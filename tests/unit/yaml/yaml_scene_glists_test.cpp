@@ -15,7 +15,7 @@
 #include "glint/yaml/scene_reader.h"
 
 namespace glint::yaml {
-namespace {
+namespace yaml_scene_glists_test {
 
 using glint::test::diagnostics_text;
 using glint::test::only_error;
@@ -172,5 +172,5 @@ TEST(YamlSceneGlists, MalformedGlistsKey) {
     EXPECT_EQ(only_error(d4).message, "missing required key \"objects\" (or \"glists\")");
 }
 
-}  // namespace
+}  // namespace yaml_scene_glists_test
 }  // namespace glint::yaml
