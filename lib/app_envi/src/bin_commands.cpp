@@ -21,7 +21,8 @@ namespace {
 
 /// The order glint reads a pulse's pixels in (docs/lidar-bin.md, "Pixel order"): the
 /// published readers disagree, so every report says which one glint assumed.
-constexpr const char* kPixelOrder = "x fastest, then y; each pixel's values together";
+constexpr const char* kPixelOrder =
+    "x slowest, then y ([x][y][value]); each pixel's values together";
 
 namespace fs = std::filesystem;
 
@@ -103,21 +104,23 @@ nlohmann::ordered_json bin_json(const fs::path& path, const BinSummary& file) {
     return j;
 }
 
-/// One line of a pulse's values (x_count pixels), refused beyond `max_memory_bytes`.
-std::vector<double> line_buffer(const io::BinFileHeader& h, const io::BinPulse& p,
-                                std::size_t max_memory_bytes) {
-    const std::uint64_t values = static_cast<std::uint64_t>(h.x_count) * p.values_per_pixel();
+/// A buffer of `pixels` pixels of `per_pixel` values each for `what` of pulse `p`, refused
+/// beyond `max_memory_bytes`.
+std::vector<double> pixel_buffer(const io::BinPulse& p, std::uint64_t pixels,
+                                 std::uint64_t per_pixel, const char* what,
+                                 std::size_t max_memory_bytes) {
+    const std::uint64_t values = pixels * per_pixel;  // the reader bounds a pulse to 4 GiB
     if (values * sizeof(double) > max_memory_bytes) {
         throw usage_error(
-            "a line of BIN pulse " + std::to_string(p.pulse_index) + " (" +
-            std::to_string(h.x_count) + " pixels of " + std::to_string(p.values_per_pixel()) +
-            " values) needs " + format_byte_size(static_cast<double>(values * sizeof(double))) +
+            std::string(what) + " of BIN pulse " + std::to_string(p.pulse_index) + " (" +
+            std::to_string(pixels) + " pixels of " + std::to_string(per_pixel) + " values) needs " +
+            format_byte_size(static_cast<double>(values * sizeof(double))) +
             ", more than --max-memory " + format_byte_size(static_cast<double>(max_memory_bytes)));
     }
     return std::vector<double>(static_cast<std::size_t>(values));
 }
 
-/// The ENVI cube of one pulse, its values read line by line.
+/// The ENVI cube of one pulse (y lines of x samples of its values per pixel, BIP).
 void write_pulse_cube(const fs::path& out, const fs::path& input, io::BinReader& reader,
                       std::size_t task, const io::BinPulse& p, const Context& ctx) {
     const io::BinFileHeader& h = reader.header();
@@ -149,11 +152,20 @@ void write_pulse_cube(const fs::path& out, const fs::path& input, io::BinReader&
     header.set_extra("glint bin pulse time", num(p.time_s));
     header.set_extra("glint bin gate", "{" + num(p.gate_start_s) + ", " + num(p.gate_stop_s) + "}");
     header.set_extra("glint bin samples per bin", std::to_string(p.samples_per_bin));
-    std::vector<double> line = line_buffer(h, p, ctx.max_memory_bytes);
+    // The file holds x slowest and an ENVI cube y slowest: the whole pulse is read, then
+    // written line by line.
+    const std::size_t values = p.values_per_pixel();
+    std::vector<double> pulse = pixel_buffer(p, std::uint64_t{h.x_count} * h.y_count, values,
+                                             "the cube", ctx.max_memory_bytes);
+    reader.read_values(pulse);
+    std::vector<double> line(static_cast<std::size_t>(h.x_count) * values);
     io::EnviWriter writer(out, header);
     for (std::size_t y = 0; y < h.y_count; ++y) {
         ctx.cancel.throw_if_cancelled();
-        reader.read_values(line);
+        for (std::size_t x = 0; x < h.x_count; ++x) {
+            const double* from = pulse.data() + io::bin_pixel_index(x, y, h.y_count) * values;
+            std::copy(from, from + values, line.begin() + static_cast<std::ptrdiff_t>(x * values));
+        }
         writer.write_line(line);
     }
     writer.commit();
@@ -183,21 +195,29 @@ void write_range_image(const fs::path& out, const fs::path& input, io::BinReader
     const std::size_t values = p.values_per_pixel();
     const double sample_s =
         (p.gate_stop_s - p.gate_start_s) / (static_cast<double>(p.bin_count) * p.samples_per_bin);
-    std::vector<double> pulse_line = line_buffer(h, p, ctx.max_memory_bytes);
-    io::EnviWriter writer(out, header);
-    std::vector<double> line(static_cast<std::size_t>(h.x_count) * 2);
-    for (std::size_t y = 0; y < h.y_count; ++y) {
+    // The file holds x slowest: each column of y pixels is read in turn and reduced into the
+    // image (2 values per pixel), which is then written line by line.
+    std::vector<double> column =
+        pixel_buffer(p, h.y_count, values, "a column", ctx.max_memory_bytes);
+    std::vector<double> image = pixel_buffer(p, std::uint64_t{h.x_count} * h.y_count, 2,
+                                             "the range image", ctx.max_memory_bytes);
+    for (std::size_t x = 0; x < h.x_count; ++x) {
         ctx.cancel.throw_if_cancelled();
-        reader.read_values(pulse_line);
-        for (std::size_t x = 0; x < h.x_count; ++x) {
-            const double* v = pulse_line.data() + x * values + 1;
+        reader.read_values(column);
+        for (std::size_t y = 0; y < h.y_count; ++y) {
+            const double* v = column.data() + y * values + 1;
             const double* peak = std::max_element(v, v + values - 1);
             const bool returned = values > 1 && *peak > 0.0;
             const double t = bin_start_s(p, static_cast<std::size_t>(peak - v)) + 0.5 * sample_s;
-            line[2 * x] = returned ? kHalfLightSpeedMPerS * t : 0.0;
-            line[2 * x + 1] = returned ? *peak : 0.0;
+            double* pixel = image.data() + 2 * (y * h.x_count + x);
+            pixel[0] = returned ? kHalfLightSpeedMPerS * t : 0.0;
+            pixel[1] = returned ? *peak : 0.0;
         }
-        writer.write_line(line);
+    }
+    io::EnviWriter writer(out, header);
+    const std::size_t line_values = static_cast<std::size_t>(h.x_count) * 2;
+    for (std::size_t y = 0; y < h.y_count; ++y) {
+        writer.write_line(std::span<const double>(image.data() + y * line_values, line_values));
     }
     writer.commit();
 }

@@ -2,7 +2,8 @@
 // Lidar receivers (docs/lidar.md): the state built once per receiver, the BIN file planned
 // with its headers, and one pulse per clock tick — the passive photon rate through the path
 // tracer on the receiver's band, the time-resolved returns through the lidar tracer — written
-// pixel after pixel (x fastest), each pixel's passive rate then its time samples.
+// pixel after pixel in DIRSIG's order (x slowest: io::bin_pixel_index), each pixel's passive
+// rate then its time samples.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -196,6 +197,10 @@ CaptureReport render_pulse(const RenderPlan& plan, ImageOutputs& outputs, const 
     }
     const std::size_t pixels = source.problems_per_capture;
     const std::size_t values = 1 + lidar.gate.samples;
+    // Problem i is pixel (i mod x_count, i div x_count), row after row; the file holds x slowest.
+    const auto offset = [&](std::size_t i) {
+        return io::bin_pixel_index(i % source.x_count, i / source.x_count, source.y_count) * values;
+    };
     io::BinPulse pulse;
     pulse.data.assign(pixels * values, 0.0);
     CaptureReport stats;
@@ -233,7 +238,7 @@ CaptureReport render_pulse(const RenderPlan& plan, ImageOutputs& outputs, const 
             radiance.assign(solved.begin(), solved.end());
             seen.add_to(i, 0, radiance);  // the sources the pixel sees, as in an image
             state.units.apply(radiance, rate);
-            pulse.data[i * values] = rate.front() * share * lidar.passive_per_focal_plane_rate;
+            pulse.data[offset(i)] = rate.front() * share * lidar.passive_per_focal_plane_rate;
         }
         stats.rays += solutions.rays;
     }
@@ -268,7 +273,7 @@ CaptureReport render_pulse(const RenderPlan& plan, ImageOutputs& outputs, const 
     const double factor = lidar.photons_per_energy_radiance * two_way * share;
     for (std::size_t i = 0; i < pixels; ++i) {
         for (std::size_t j = 0; j < lidar.gate.samples; ++j) {
-            pulse.data[i * values + 1 + j] =
+            pulse.data[offset(i) + 1 + j] =
                 returns.energy_j_per_cm2_sr[i * lidar.gate.samples + j] * factor;
         }
     }

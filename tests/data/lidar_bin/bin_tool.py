@@ -12,7 +12,8 @@ docs/lidar-bin.md with the standard library only (struct, zlib), for glint's tes
       N when --claim is given (data claimed beyond the end of the file)
 
 The sample: 3 x 2 pixels, 2 tasks (2 pulses, then 1), 4 bins x 2 samples per bin (version 0:
-1 sample), values v = 1000 * pulse + 10 * pixel + value index (the passive rate first)."""
+1 sample), values v = 1000 * pulse + 10 * pixel + value index (the passive rate first), the
+pixels in file order: pixel p is (x, y) = (p // 2, p % 2), x slowest (docs/lidar-bin.md)."""
 import json
 import struct
 import sys

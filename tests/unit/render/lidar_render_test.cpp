@@ -3,7 +3,8 @@
 // 1000 m above a Lambertian plate collects, summed over its pixels and time bins, the photons
 // of the lidar equation E ρ A / (π R²) · QE · λ/(h c), peaking in the bin of 2R/c; its passive
 // term equals a simple capture's photon rate in the same band through the same optics; the
-// detector model's QE scales both; the BIN file's headers say what was simulated.
+// detector model's QE scales both; its pixels are in DIRSIG's order (x slowest); the BIN
+// file's headers say what was simulated.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -34,13 +35,13 @@ using test_render::read_text;
 const fs::path kLidarData = fs::path(GLINT_TEST_DATA_DIR) / "lidar";
 const fs::path kRenderData = fs::path(GLINT_TEST_DATA_DIR) / "render";
 
-/// The fixture's simulation in `dir` with its platform edited by `edit`.
-fs::path write_simulation(const fs::path& dir,
-                          const std::function<std::string(std::string)>& edit) {
+/// The fixture's simulation in `dir` with its platform edited by `edit` (and another scene
+/// when `scene` is given).
+fs::path write_simulation(const fs::path& dir, const std::function<std::string(std::string)>& edit,
+                          const fs::path& scene = kLidarData / "plate.yaml") {
     std::ofstream(dir / "lidar.platform") << edit(read_text(kLidarData / "lidar.platform"));
     std::ofstream(dir / "lidar.jsim")
-        << "[{\"scene_list\": [{\"inputs\": \"" << (kLidarData / "plate.yaml").string()
-        << "\"}], \"plugin_list\": [\n"
+        << "[{\"scene_list\": [{\"inputs\": \"" << scene.string() << "\"}], \"plugin_list\": [\n"
         << " {\"name\": \"BasicAtmosphere\", \"inputs\": {\"atmosphere_filename\": \""
         << (kRenderData / "none.atm.yaml").string() << "\"}},\n"
         << " {\"name\": \"BasicPlatform\", \"inputs\": {\"platform_filename\": \"lidar.platform\", "
@@ -159,13 +160,86 @@ TEST(LidarRender, PassiveTermEqualsASimpleCapturesPhotonRateInTheSameBand) {
     const std::vector<double> camera = io::read_envi_bip(dir / "out" / "cam.img", nullptr);
     ASSERT_EQ(camera.size(), s.passive.size());
     const double element_cm2 = 20e-4 * 20e-4;
-    for (std::size_t i = 0; i < camera.size(); ++i) {
-        // 0.5 %: a sunlit Lambertian plate is nearly uniform over a pixel, so the two
-        // captures' independent samples differ by far less (the sun disc's sampling).
-        EXPECT_NEAR(s.passive[i], camera[i] * element_cm2, 0.005 * camera[i] * element_cm2)
-            << "pixel " << i;
+    for (std::size_t y = 0; y < 16; ++y) {
+        for (std::size_t x = 0; x < 16; ++x) {
+            // 0.5 %: a sunlit Lambertian plate is nearly uniform over a pixel, so the two
+            // captures' independent samples differ by far less (the sun disc's sampling).
+            const double expected = camera[y * 16 + x] * element_cm2;
+            EXPECT_NEAR(s.passive[io::bin_pixel_index(x, y, 16)], expected, 0.005 * expected)
+                << "pixel (" << x << ", " << y << ")";
+        }
     }
     EXPECT_GT(s.passive[0], 1e6);  // photons/s: the sun at noon on a ρ = 0.3 plate
+}
+
+TEST(LidarRender, PixelsAreInDirsigsOrderXSlowest) {
+    // A 16 × 8 array (x and y orders differ) over the grey plate with a white box covering one
+    // corner of the view: the BIN file's pixel (x, y), read at bin_pixel_index(x, y, 8), is
+    // the camera's pixel (x, y) of the same optics, so the box appears in the same corner.
+    test::TempDir dir;
+    std::ofstream(dir / "corner.yaml")
+        << "origin: {latitude: 43.0, longitude: -77.6, altitude: 150}\n"
+           "materials:\n"
+           "  - {id: grey, reflectance: {wavelengths: [0.3, 2.0], values: [0.3, 0.3]}}\n"
+           "  - {id: white, reflectance: {wavelengths: [0.3, 2.0], values: [0.9, 0.9]}}\n"
+           "objects:\n"
+           "  - {name: ground, primitive: ground_plane, material: grey}\n"
+           "  - {name: panel, primitive: box, material: white, lower: [0.05, 0.03, 0],\n"
+           "     upper: [2, 2, 0.001]}\n";
+    const fs::path jsim = write_simulation(
+        dir.path(),
+        [](std::string text) {
+            text = replace(text, "<yelementcount>16</yelementcount>",
+                           "<yelementcount>8</yelementcount>");
+            const std::string camera =
+                "    <instrument name=\"Cam\" type=\"generic\">\n"
+                "      <properties><focallength>500</focallength>"
+                "<aperturediameter>0.05</aperturediameter></properties>\n"
+                "      <focalplane name=\"Frame\"><capturemethod type=\"simple\">\n"
+                "        <imagefile fluxunits=\"photonspersecond\"><basename>cam</basename>"
+                "</imagefile>\n"
+                "        <spectralresponse><bandpass spectralunits=\"microns\"><minimum>1.060"
+                "</minimum><maximum>1.068</maximum><delta>0.002</delta></bandpass>\n"
+                "          <channellist><channel name=\"band\" shape=\"tophat\">"
+                "<center>1.064</center><width>0.02</width></channel></channellist>"
+                "</spectralresponse>\n"
+                "      </capturemethod>\n"
+                "      <detectorarray spatialunits=\"microns\">\n"
+                "        <clock type=\"independent\" temporalunits=\"hertz\"><rate>10</rate>"
+                "<offset>0</offset></clock>\n"
+                "        <xelementcount>16</xelementcount><yelementcount>8</yelementcount>\n"
+                "        <xelementsize>20</xelementsize><yelementsize>20</yelementsize>\n"
+                "        <xelementspacing>20</xelementspacing>"
+                "<yelementspacing>20</yelementspacing>\n"
+                "      </detectorarray></focalplane>\n"
+                "    </instrument>\n";
+            return replace(text, "  </attachment>", camera + "  </attachment>");
+        },
+        dir / "corner.yaml");
+    RenderOptions options = options_into(dir / "out");
+    options.convergence = radiometry::Convergence{256, 256, 0.0};
+    render(load(jsim), options, Context{});
+    const io::BinFile file = io::read_bin(dir / "out" / "lidar.bin");
+    ASSERT_EQ(file.header.x_count, 16u);
+    ASSERT_EQ(file.header.y_count, 8u);
+    const io::BinPulse& pulse = file.tasks.at(0).pulses.at(0);
+    const std::vector<double> camera = io::read_envi_bip(dir / "out" / "cam.img", nullptr);
+    ASSERT_EQ(camera.size(), 16u * 8u);
+    const double element_cm2 = 20e-4 * 20e-4;
+    const auto [darkest, brightest] = std::minmax_element(camera.begin(), camera.end());
+    ASSERT_GT(*brightest, 2.5 * *darkest) << "test design: the box must be in view, not all of it";
+    const double reference = *brightest * element_cm2;
+    for (std::size_t y = 0; y < 8; ++y) {
+        for (std::size_t x = 0; x < 16; ++x) {
+            const double passive =
+                pulse.data[io::bin_pixel_index(x, y, 8) * pulse.values_per_pixel()];
+            // 20 % of the brightest: 256 samples leave a partly covered edge pixel about 3 %
+            // of it apart between the two captures (white 0.9 against grey 0.3); a pixel from
+            // the wrong place is up to 67 % apart.
+            EXPECT_NEAR(passive, camera[y * 16 + x] * element_cm2, 0.2 * reference)
+                << "pixel (" << x << ", " << y << ")";
+        }
+    }
 }
 
 TEST(LidarRender, TheDetectorModelsQuantumEfficiencyScalesPassiveAndActiveAlike) {

@@ -4,9 +4,10 @@
 // per-pixel passive photon rate followed by the time-bin photon counts, float64, zlib
 // compressed. Every multi-byte value uses the byte order the file header names; strings are
 // fixed-length and NUL padded. The reader takes format versions 0, 1 and 2; the writer writes
-// version 2, little endian. Pixel order of pulse data (glint's reading, which the writer
-// follows): pixel after pixel with x (column) fastest and y (row) slowest, each pixel's
-// 1 + bins × samples_per_bin values together, the passive rate first.
+// version 2, little endian. Pixel order of pulse data (the reading of the two published
+// readers that index x and y separately, which the writer follows; docs/lidar-bin.md):
+// pixel after pixel with x (column) slowest and y (row) fastest — a C array [x][y][value] —
+// each pixel's 1 + bins × samples_per_bin values together, the passive rate first.
 #pragma once
 
 #include <array>
@@ -64,6 +65,12 @@ struct BinTaskHeader {
 using Affine16 = std::array<double, 16>;  ///< row-major 4 × 4
 inline constexpr Affine16 kIdentity16{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
 
+/// Where pixel (x, y) of an array of `y_count` rows sits in a pulse's data, in pixels: x
+/// slowest, y fastest (the pixel order above).
+constexpr std::size_t bin_pixel_index(std::size_t x, std::size_t y, std::size_t y_count) {
+    return x * y_count + y;
+}
+
 /// A pulse: its header and, decompressed, its data.
 struct BinPulse {
     double time_s = 0.0;
@@ -86,7 +93,8 @@ struct BinPulse {
     std::uint64_t data_bytes = 0;             ///< as stored
     Affine16 transmit_mueller = kIdentity16;  ///< version 2
     Affine16 receive_mueller = kIdentity16;
-    /// x_count · y_count · (1 + bin_count · samples_per_bin) values.
+    /// x_count · y_count · (1 + bin_count · samples_per_bin) values, pixel (x, y) from
+    /// bin_pixel_index(x, y, y_count) · values_per_pixel() on.
     std::vector<double> data;
 
     /// Values per pixel.
