@@ -191,6 +191,16 @@ static model::SignalGate read_signal_gate(const io::XmlNode& node, Diagnostics& 
     const auto width = node.required_double("binwidth", diagnostics, io::NumberRule::positive());
     gate.samples_per_bin = static_cast<std::uint32_t>(
         node.optional_int("samplespertimebin", diagnostics, 1, 1024).value_or(1));
+    if (gate.samples_per_bin > 1) {
+        // The published BIN readers size a pixel differently when a bin has several samples
+        // (docs/lidar-bin.md): glint writes one reading, and says so.
+        diagnostics.warning(node.child("samplespertimebin")->where(),
+                            "samplespertimebin " + std::to_string(gate.samples_per_bin) +
+                                ": the BIN file holds 1 + bins x " +
+                                std::to_string(gate.samples_per_bin) +
+                                " values per pixel; published BIN readers disagree on this "
+                                "layout (docs/lidar-bin.md, \"Pixel order\")");
+    }
     if (diagnostics.error_count() != errors || !start || !stop || !width) return gate;
     gate.start_s = *start;
     gate.stop_s = *stop;
