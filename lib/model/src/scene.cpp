@@ -11,13 +11,18 @@
 namespace glint::model {
 
 Material flat_material(const std::string& id, double reflectance, double temperature_k,
-                       std::optional<double> emissivity, SpecularLobe specular) {
+                       std::optional<double> emissivity, SpecularLobe specular,
+                       double transmittance) {
     Material m;
     m.id = id;
     m.name = id;
     m.reflectance.wavelengths_um = {0.1, 100.0};
     m.reflectance.values = {reflectance, reflectance};
-    const double e = emissivity.value_or(1.0 - reflectance);
+    if (transmittance > 0.0) {
+        m.transmittance.wavelengths_um = {0.1, 100.0};
+        m.transmittance.values = {transmittance, transmittance};
+    }
+    const double e = emissivity.value_or(1.0 - reflectance - transmittance);
     m.emissivity.wavelengths_um = {0.1, 100.0};
     m.emissivity.values = {e, e};
     m.emissivity_is_default = !emissivity.has_value();
@@ -41,9 +46,10 @@ double sample_held(const SpectralTable& table, double wavelength_um) {
 std::pair<double, double> measured_range_um(const Material& material) {
     double lo = material.reflectance.wavelengths_um.front();
     double hi = material.reflectance.wavelengths_um.back();
-    if (!material.emissivity.empty()) {
-        lo = std::max(lo, material.emissivity.wavelengths_um.front());
-        hi = std::min(hi, material.emissivity.wavelengths_um.back());
+    for (const SpectralTable* table : {&material.transmittance, &material.emissivity}) {
+        if (table->empty()) continue;
+        lo = std::max(lo, table->wavelengths_um.front());
+        hi = std::min(hi, table->wavelengths_um.back());
     }
     return {lo, hi};
 }
@@ -63,19 +69,33 @@ void check_material(const Material& material, Diagnostics& diagnostics) {
     }
     std::set<double> wavelengths(material.reflectance.wavelengths_um.begin(),
                                  material.reflectance.wavelengths_um.end());
-    if (!material.emissivity.empty()) {
-        wavelengths.insert(material.emissivity.wavelengths_um.begin(),
-                           material.emissivity.wavelengths_um.end());
+    for (const SpectralTable* table : {&material.transmittance, &material.emissivity}) {
+        wavelengths.insert(table->wavelengths_um.begin(), table->wavelengths_um.end());
     }
     const std::pair<double, double> measured = measured_range_um(material);
+    const bool thin = !material.transmittance.empty();
     for (const double w : wavelengths) {
         const double rho = sample_held(material.reflectance, w);
+        const double tau = thin ? sample_held(material.transmittance, w) : 0.0;
         const double eps =
-            material.emissivity.empty() ? 1.0 - rho : sample_held(material.emissivity, w);
+            material.emissivity.empty() ? 1.0 - rho - tau : sample_held(material.emissivity, w);
         const std::string at = " at " + format_shortest(w) + " um";
         if (!(rho >= -kSlack && rho <= 1.0 + kSlack)) {
             diagnostics.error(material.where, name + ": reflectance " + format_shortest(rho) + at +
                                                   " lies outside [0, 1]");
+            return;
+        }
+        if (!(tau >= -kSlack && tau <= 1.0 + kSlack)) {
+            diagnostics.error(material.where, name + ": transmittance " + format_shortest(tau) +
+                                                  at + " lies outside [0, 1]");
+            return;
+        }
+        if (thin && rho + tau > 1.0 + kEmissivityReflectanceSlack && w >= measured.first &&
+            w <= measured.second) {
+            diagnostics.error(material.where,
+                              name + ": reflectance " + format_shortest(rho) + " + transmittance " +
+                                  format_shortest(tau) + " exceed 1" + at +
+                                  " (a sheet cannot scatter more than it receives)");
             return;
         }
         if (!(eps >= -kSlack && eps <= 1.0 + kSlack)) {
@@ -83,13 +103,17 @@ void check_material(const Material& material, Diagnostics& diagnostics) {
                                                   " lies outside [0, 1]");
             return;
         }
-        if (eps + rho > 1.0 + kEmissivityReflectanceSlack && w >= measured.first &&
+        if (eps + rho + tau > 1.0 + kEmissivityReflectanceSlack && w >= measured.first &&
             w <= measured.second) {
-            diagnostics.error(material.where,
-                              name + ": emissivity " + format_shortest(eps) + " + reflectance " +
-                                  format_shortest(rho) + " exceed 1" + at +
-                                  " (an opaque surface cannot emit and reflect more than a "
-                                  "blackbody)");
+            diagnostics.error(
+                material.where,
+                name + ": emissivity " + format_shortest(eps) + " + reflectance " +
+                    format_shortest(rho) +
+                    (thin ? " + transmittance " + format_shortest(tau) : "") + " exceed 1" + at +
+                    (thin ? " (Kirchhoff: a sheet absorbs, so emits, only 1 - reflectance - "
+                            "transmittance)"
+                          : " (an opaque surface cannot emit and reflect more than a "
+                            "blackbody)"));
             return;
         }
     }

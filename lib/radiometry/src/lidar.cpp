@@ -134,48 +134,67 @@ void LidarTracer::trace(const SampleRay& ray, const LaserPulse& laser, RandomStr
     Vec3 direction = ray.direction;
     for (unsigned bounce = 0; hit; ++bounce) {
         const std::size_t m = hit->material;
-        if (!m_materials.reflects(m)) break;
+        if (!m_materials.scatters(m)) break;
         travelled_m += hit->distance_m;
         const Vec3 wo = -direction;
         const Vec3 normal = dot(hit->normal, wo) < 0.0 ? -hit->normal : hit->normal;
         const Frame frame = Frame::from_normal(normal);
         const Vec3 wo_local = frame.to_local(wo);
         const double rho = m_materials.reflectance(m)[0];
+        const double tau = m_materials.transmittance(m)[0];
+        const bool reflects = m_materials.reflects(m);
+        const bool transmits = m_materials.transmits(m);
         // The laser by next-event estimation: one shadow ray.
         const Vec3 to_laser = laser.position_m - hit->position_m;
         const double r_m = norm(to_laser);
         if (r_m > 0.0 && wo_local.z > 0.0) {
             const Vec3 wi = (1.0 / r_m) * to_laser;
             const double cos_i = dot(normal, wi);
-            if (cos_i > 0.0) {
+            // In front: reflected (ρ · shape); behind a thin sheet: transmitted (τ/π).
+            if (cos_i > 0.0 ? reflects : (cos_i < 0.0 && transmits)) {
                 const Vec3 origin = m_scene.spawn_origin(*hit, wi);
                 ++rays;
                 if (!m_scene.occluded(origin, wi, time, 0.0, norm(laser.position_m - origin))) {
-                    // I cos θ / r², m² → cm² (10⁴), times the BRDF ρ · shape.
+                    // I |cos θ| / r², m² → cm² (10⁴), times the BRDF or BTDF.
                     const double fluence =
-                        laser.intensity_j_per_sr(-wi) * cos_i / (r_m * r_m * 1e4);
-                    const double value = beta * rho *
-                                         m_materials.shape(m).eval(wo_local, frame.to_local(wi)) *
-                                         fluence;
+                        laser.intensity_j_per_sr(-wi) * std::abs(cos_i) / (r_m * r_m * 1e4);
+                    const double value =
+                        cos_i > 0.0
+                            ? beta * rho * m_materials.shape(m).eval(wo_local, frame.to_local(wi)) *
+                                  fluence
+                            : beta * (tau / kPi) * fluence;
                     deposit(m_shape, m_gate, (travelled_m + r_m) / kSpeedOfLightMPerS, value,
                             histogram);
                 }
             }
         }
         if (bounce >= m_settings.max_bounces) break;
+        // As the path tracer: through the sheet with probability P_t, else reflected; an
+        // opaque material draws no number for the choice.
+        const double p_transmit = m_materials.transmission_probability(m);
+        const bool through = p_transmit > 0.0 && rng.uniform() < p_transmit;
         const double u_lobe = rng.uniform();
         const double u1 = rng.uniform();
         const double u2 = rng.uniform();
-        const auto sample = m_materials.shape(m).sample(wo_local, u_lobe, u1, u2);
-        if (!sample || !(sample->weight > 0.0)) break;
-        beta *= rho * sample->weight;
+        Vec3 next;
+        if (through) {
+            const Vec3 local = sample_cosine_hemisphere(u1, u2);
+            next = {local.x, local.y, -local.z};
+            beta *= tau / p_transmit;
+        } else {
+            const auto sample = m_materials.shape(m).sample(wo_local, u_lobe, u1, u2);
+            if (!sample || !(sample->weight > 0.0)) break;
+            next = sample->wi;
+            beta *=
+                p_transmit > 0.0 ? rho * sample->weight / (1.0 - p_transmit) : rho * sample->weight;
+        }
         if (!(beta > 0.0)) break;
         if (bounce + 1 >= m_settings.roulette_start_bounce) {
             const double survive = std::min(1.0, beta / ray.weight);
             if (rng.uniform() >= survive) break;
             beta /= survive;
         }
-        const Vec3 wi = normalized(frame.to_world(sample->wi));
+        const Vec3 wi = normalized(frame.to_world(next));
         hit = m_scene.intersect(m_scene.spawn_origin(*hit, wi), wi, time);
         ++rays;
         direction = wi;

@@ -48,6 +48,7 @@ MaterialTable::MaterialTable(std::span<const model::Material> materials, const S
                              Log log)
     : m_bands(grid.size()) {
     m_reflectance.reserve(materials.size() * m_bands);
+    m_transmittance.reserve(materials.size() * m_bands);
     m_emission.reserve(materials.size() * m_bands);
     m_shapes.reserve(materials.size());
     for (const model::Material& material : materials) {
@@ -62,17 +63,24 @@ MaterialTable::MaterialTable(std::span<const model::Material> materials, const S
         }
         bool covered = true;
         std::vector<double> rho = sample_held(material.reflectance, grid, covered);
+        const bool thin = !material.transmittance.empty();
+        std::vector<double> tau(rho.size(), 0.0);
+        if (thin) tau = sample_held(material.transmittance, grid, covered);
         std::vector<double> eps;
         if (material.emissivity.empty()) {
             eps.resize(rho.size());
-            for (std::size_t i = 0; i < rho.size(); ++i) eps[i] = 1.0 - rho[i];
+            for (std::size_t i = 0; i < rho.size(); ++i) eps[i] = 1.0 - rho[i] - tau[i];
         } else {
             eps = sample_held(material.emissivity, grid, covered);
         }
         check_unit_range(rho, material, "reflectance", grid);
+        check_unit_range(tau, material, "transmittance", grid);
         check_unit_range(eps, material, "emissivity", grid);
         bool emits = false;
         bool reflects = false;
+        bool transmits = false;
+        double rho_sum = 0.0;
+        double tau_sum = 0.0;
         // Where both curves are measured, model::check_material (every loader) has refused
         // ε + ρ > 1 + kEmissivityReflectanceSlack, and a sum within that slack (rounding) lowers
         // ρ to 1 − ε silently; beyond that, both are held end values — a guess — and ε is
@@ -80,25 +88,38 @@ MaterialTable::MaterialTable(std::span<const model::Material> materials, const S
         const auto [measured_lo_um, measured_hi_um] = model::measured_range_um(material);
         std::optional<double> lowered_at_um;
         for (std::size_t i = 0; i < m_bands; ++i) {
-            if (eps[i] + rho[i] > 1.0) {
-                const double w = grid.wavelength_um(i);
-                if (w >= measured_lo_um && w <= measured_hi_um) {
-                    if (eps[i] + rho[i] > 1.0 + model::kEmissivityReflectanceSlack) {
-                        throw input_error("material '" + material.id + "': emissivity " +
-                                              format_shortest(eps[i]) + " + reflectance " +
-                                              format_shortest(rho[i]) + " exceed 1 at " +
-                                              format_shortest(w) +
-                                              " um (an opaque surface cannot emit and reflect "
-                                              "more than a blackbody)",
-                                          material.where);
+            const double w = grid.wavelength_um(i);
+            const bool measured = w >= measured_lo_um && w <= measured_hi_um;
+            if (thin && rho[i] + tau[i] > 1.0 && !measured) {
+                // Held end values beyond the measured curves: τ gives way, as ε does below.
+                tau[i] = std::max(0.0, 1.0 - rho[i]);
+                if (!lowered_at_um) lowered_at_um = w;
+            }
+            if (eps[i] + rho[i] + tau[i] > 1.0) {
+                if (measured) {
+                    if (eps[i] + rho[i] + tau[i] > 1.0 + model::kEmissivityReflectanceSlack) {
+                        throw input_error(
+                            "material '" + material.id + "': emissivity " +
+                                format_shortest(eps[i]) + " + reflectance " +
+                                format_shortest(rho[i]) +
+                                (thin ? " + transmittance " + format_shortest(tau[i]) : "") +
+                                " exceed 1 at " + format_shortest(w) +
+                                " um (an opaque surface cannot emit and reflect more than a "
+                                "blackbody)",
+                            material.where);
                     }
-                    rho[i] = 1.0 - eps[i];
-                } else if (eps[i] + rho[i] > 1.0 + kRangeSlack) {
-                    eps[i] = 1.0 - rho[i];
+                    rho[i] = std::max(0.0, 1.0 - eps[i] - tau[i]);
+                } else if (eps[i] + rho[i] + tau[i] > 1.0 + kRangeSlack) {
+                    eps[i] = 1.0 - rho[i] - tau[i];
                     if (!lowered_at_um) lowered_at_um = w;
                 }
             }
             rho[i] = std::clamp(rho[i], 0.0, 1.0);
+            tau[i] = std::clamp(tau[i], 0.0, 1.0);
+            transmits = transmits || tau[i] > 0.0;
+            rho_sum += rho[i];
+            tau_sum += tau[i];
+            m_transmittance.push_back(tau[i]);
             const double e =
                 std::clamp(eps[i], 0.0, 1.0) *
                 planck_radiance_w_per_cm2_sr_um(grid.wavelength_um(i), material.temperature_k);
@@ -113,8 +134,9 @@ MaterialTable::MaterialTable(std::span<const model::Material> materials, const S
                                                    "': beyond its measured curves (from " +
                                                    format_shortest(*lowered_at_um) +
                                                    " um) the held end values give emissivity + "
-                                                   "reflectance > 1; emissivity lowered to 1 - "
-                                                   "reflectance there"));
+                                                   "reflectance (+ transmittance) > 1; "
+                                                   "emissivity (and transmittance) lowered "
+                                                   "there"));
         }
         if (!covered) {
             const std::string where =
@@ -125,6 +147,10 @@ MaterialTable::MaterialTable(std::span<const model::Material> materials, const S
         }
         m_emits.push_back(emits ? 1 : 0);
         m_reflects.push_back(reflects ? 1 : 0);
+        m_transmits.push_back(transmits ? 1 : 0);
+        // Transmission is drawn in proportion to the band-mean τ against ρ + τ (0 for an
+        // opaque material: its paths draw exactly what they drew before transmission existed).
+        m_transmission_probability.push_back(transmits ? tau_sum / (rho_sum + tau_sum) : 0.0);
         m_shapes.emplace_back(1.0, material.specular.fraction, material.specular.roughness);
     }
 }

@@ -190,31 +190,38 @@ void PathTracer::add_point_lights(const Bands& bands, const scene::RayHit& hit, 
                                   double time_s, std::span<const double> beta,
                                   std::span<double> radiance, PathScratch& scratch) const {
     const double* rho = m_materials.reflectance(material).data();
+    const double* tau = m_materials.transmittance(material).data();
+    const bool reflects = m_materials.reflects(material);
+    const bool transmits = m_materials.transmits(material);
     for (std::size_t l = 0; l < m_lights->size(); ++l) {
         const Vec3 to_light = m_lights->position_m(l) - hit.position_m;
         const double r2_m2 = dot(to_light, to_light);
         if (!(r2_m2 > 0.0)) continue;
         const Vec3 wi = (1.0 / std::sqrt(r2_m2)) * to_light;
         const double cos_i = dot(normal, wi);
-        if (cos_i <= 0.0) continue;
+        // In front: reflected; behind a thin sheet: transmitted (f = τ/π).
+        if (cos_i > 0.0 ? !reflects : !(cos_i < 0.0 && transmits)) continue;
         const Vec3 origin = m_scene.spawn_origin(hit, wi);
         ++scratch.rays;
         if (m_scene.occluded(origin, wi, time_s, 0.0, norm(m_lights->position_m(l) - origin))) {
             continue;
         }
-        // I cos θ / r², m² → cm² (10⁴), times the lobe's BRDF.
-        const double factor =
-            m_materials.shape(material).eval(wo_local, frame.to_local(wi)) * cos_i / (r2_m2 * 1e4);
+        // I |cos θ| / r², m² → cm² (10⁴), times the lobe's BRDF or 1/π through the sheet.
+        const double factor = cos_i > 0.0
+                                  ? m_materials.shape(material).eval(wo_local, frame.to_local(wi)) *
+                                        cos_i / (r2_m2 * 1e4)
+                                  : -cos_i / kPi / (r2_m2 * 1e4);
+        const double* spectrum = cos_i > 0.0 ? rho : tau;
         const double* intensity = m_lights->intensity_w_per_sr_um(l).data();
         for (std::size_t j = 0; j < radiance.size(); ++j) {
             const std::size_t b = bands[j];
-            radiance[j] += beta[j] * rho[b] * intensity[b] * factor;
+            radiance[j] += beta[j] * spectrum[b] * intensity[b] * factor;
         }
     }
 }
 
 FirstSun PathTracer::draw_sun(const scene::RayHit& hit, const Vec3& normal, double wo_z,
-                              double time_s, RandomStream& rng) const {
+                              double time_s, bool transmits, RandomStream& rng) const {
     const Environment& env = m_environment;
     const Vec3 sun = env.sun_direction(time_s);
     const Vec3 local =
@@ -222,7 +229,7 @@ FirstSun PathTracer::draw_sun(const scene::RayHit& hit, const Vec3& normal, doub
     FirstSun drawn;
     drawn.wi = Frame::from_normal(sun).to_world(local);
     drawn.cos_i = dot(normal, drawn.wi);
-    if (drawn.cos_i > 0.0 && wo_z > 0.0) {
+    if ((drawn.cos_i > 0.0 || (transmits && drawn.cos_i < 0.0)) && wo_z > 0.0) {
         drawn.query = true;
         drawn.ray = scene::PacketRay{m_scene.spawn_origin(hit, drawn.wi), drawn.wi, time_s};
     }
@@ -234,12 +241,12 @@ FirstSun PathTracer::first_sun(const SampleRay& ray,
                                bool records_first_hit) const {
     if (!primary_hit || !m_environment.sun_visible()) return {};
     const scene::RayHit& hit = *primary_hit;
-    if (!m_materials.reflects(hit.material) && !records_first_hit) return {};
+    if (!m_materials.scatters(hit.material) && !records_first_hit) return {};
     // As trace_path's first vertex: the normal facing the ray, the outgoing direction's z.
     const Vec3 wo = -ray.direction;
     const Vec3 normal = dot(hit.normal, wo) < 0.0 ? -hit.normal : hit.normal;
     const double wo_z = Frame::from_normal(normal).to_local(wo).z;
-    return draw_sun(hit, normal, wo_z, ray.time_s, rng);
+    return draw_sun(hit, normal, wo_z, ray.time_s, m_materials.transmits(hit.material), rng);
 }
 
 template <typename Bands>
@@ -287,7 +294,12 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
         const Vec3 wo = -direction;
         const Vec3 normal = dot(hit->normal, wo) < 0.0 ? -hit->normal : hit->normal;
         const bool reflects = m_materials.reflects(m);
+        const bool transmits = m_materials.transmits(m);
+        const bool scatters = reflects || transmits;
         const double* rho = m_materials.reflectance(m).data();
+        const double* tau = m_materials.transmittance(m).data();
+        // The spectrum the sun's next-event term scales: ρ in front, τ from behind a sheet.
+        const double* sun_spectrum = rho;
 
         // Emission and the sun by next-event estimation.
         const double* emission =
@@ -304,16 +316,22 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
             if (!drawn.query) return;
             ++scratch.rays;
             sun_blocked = drawn.blocked;
-            if (!sun_blocked && reflects) {
-                sun_factor =
-                    m_materials.shape(m).eval(wo_local, frame.to_local(drawn.wi)) * drawn.cos_i;
+            if (sun_blocked) return;
+            if (drawn.cos_i > 0.0) {
+                if (reflects) {
+                    sun_factor =
+                        m_materials.shape(m).eval(wo_local, frame.to_local(drawn.wi)) * drawn.cos_i;
+                }
+            } else if (transmits) {
+                sun_factor = -drawn.cos_i / kPi;  // through the sheet: f = τ/π
+                sun_spectrum = tau;
             }
         };
-        if ((reflects || record != nullptr) && env.sun_visible()) {
+        if ((scatters || record != nullptr) && env.sun_visible()) {
             if (bounce == 0 && sun != nullptr) {
                 take_sun(*sun);  // drawn, and its shadow ray answered, before the path
             } else {
-                FirstSun drawn = draw_sun(*hit, normal, wo_local.z, time, rng);
+                FirstSun drawn = draw_sun(*hit, normal, wo_local.z, time, transmits, rng);
                 if (drawn.query) {
                     const scene::PacketRay& q = drawn.ray;
                     drawn.blocked = m_scene.occluded(q.origin_m, q.direction, q.time_s);
@@ -334,11 +352,12 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
                                          env, scratch.sun_at_height)
                              : nullptr;
         if (bounce == 0) {
-            first_vertex_light(bands, radiance, emission, rho, sun_irradiance, sun_factor);
+            first_vertex_light(bands, radiance, emission, sun_spectrum, sun_irradiance, sun_factor);
         } else {
-            add_vertex_light(bands, radiance, beta, emission, rho, sun_irradiance, sun_factor);
+            add_vertex_light(bands, radiance, beta, emission, sun_spectrum, sun_irradiance,
+                             sun_factor);
         }
-        if (m_lights != nullptr && reflects && wo_local.z > 0.0) {
+        if (m_lights != nullptr && scatters && wo_local.z > 0.0) {
             if (beta_is_one) {
                 std::fill(beta.begin(), beta.end(), 1.0);
                 beta_is_one = false;
@@ -347,16 +366,31 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
                              scratch);
         }
 
-        // Continue the path.
-        if (!reflects || bounce >= m_settings.max_bounces) break;
+        // Continue the path: through a thin sheet with probability P_t (cosine-weighted on
+        // the far side, weight τ / P_t), else reflected by the lobe (weight ρ · w / (1 − P_t)).
+        // An opaque material has P_t = 0 and draws no number for the choice.
+        if (!scatters || bounce >= m_settings.max_bounces) break;
+        const double p_transmit = m_materials.transmission_probability(m);
+        const bool through = p_transmit > 0.0 && rng.uniform() < p_transmit;
         const double u_lobe = rng.uniform();
         const double u1 = rng.uniform();
         const double u2 = rng.uniform();
-        const auto sample = m_materials.shape(m).sample(wo_local, u_lobe, u1, u2);
-        if (!sample || !(sample->weight > 0.0)) break;
-        const Vec3 wi = normalized(frame.to_world(sample->wi));
-        const double largest = beta_is_one ? first_throughput(bands, beta, rho, sample->weight)
-                                           : scale_throughput(bands, beta, rho, sample->weight);
+        Vec3 wi;
+        double weight = 0.0;
+        const double* spectrum = rho;
+        if (through) {
+            const Vec3 local = sample_cosine_hemisphere(u1, u2);
+            wi = normalized(frame.to_world({local.x, local.y, -local.z}));
+            weight = 1.0 / p_transmit;
+            spectrum = tau;
+        } else {
+            const auto sample = m_materials.shape(m).sample(wo_local, u_lobe, u1, u2);
+            if (!sample || !(sample->weight > 0.0)) break;
+            wi = normalized(frame.to_world(sample->wi));
+            weight = p_transmit > 0.0 ? sample->weight / (1.0 - p_transmit) : sample->weight;
+        }
+        const double largest = beta_is_one ? first_throughput(bands, beta, spectrum, weight)
+                                           : scale_throughput(bands, beta, spectrum, weight);
         beta_is_one = false;
         if (!(largest > 0.0)) break;
         if (bounce + 1 >= m_settings.roulette_start_bounce) {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// The glint YAML scene's materials: reflectance and emissivity spectra (inline or from a
-// two-column file in µm or nm), the specular lobe and the temperature.
+// The glint YAML scene's materials: reflectance, transmittance and emissivity spectra (inline or
+// from a two-column file in µm or nm), the specular lobe and the temperature.
+#include <algorithm>
+
 #include "glint/core/text.h"
 #include "scene_parts.h"
 
@@ -83,8 +85,8 @@ void read_table_file(model::SpectralTable& table, std::optional<double> yaml_sca
     for (double& w : table.wavelengths_um) w *= scale;
 }
 
-/// Reads a spectrum key (`reflectance`, `emissivity`): inline lists or a file; checks
-/// wavelengths (positive, strictly increasing) and values (in [0, 1]).
+/// Reads a spectrum key (`reflectance`, `transmittance`, `emissivity`): inline lists or a file;
+/// checks wavelengths (positive, strictly increasing) and values (in [0, 1]).
 model::SpectralTable read_spectrum(Reader& r, const YAML::Node& node, const std::string& path,
                                    const std::string& quantity) {
     model::SpectralTable table;
@@ -164,8 +166,9 @@ model::Material read_material(Reader& r, const YAML::Node& node, const std::stri
     model::Material m;
     m.where = r.where(node, path);
     if (!r.expect_map(node, path)) return m;
-    r.warn_unknown(node, path,
-                   {"id", "name", "reflectance", "specular", "emissivity", "temperature"});
+    r.warn_unknown(
+        node, path,
+        {"id", "name", "reflectance", "transmittance", "specular", "emissivity", "temperature"});
     m.id = r.text_key(node, path, "id", true).value_or("");
     m.name = r.text_key(node, path, "name", false).value_or(m.id);
     if (node["reflectance"]) {
@@ -192,13 +195,33 @@ model::Material read_material(Reader& r, const YAML::Node& node, const std::stri
             }
         }
     }
+    if (node["transmittance"]) {
+        // A thin two-sided sheet (a leaf): diffuse transmittance, the same from either side.
+        m.transmittance = read_spectrum(r, node["transmittance"],
+                                        Reader::join(path, "transmittance"), "transmittance");
+    }
     if (node["emissivity"]) {
         m.emissivity =
             read_spectrum(r, node["emissivity"], Reader::join(path, "emissivity"), "emissivity");
         m.emissivity_is_default = false;
-    } else {
+    } else if (m.transmittance.empty()) {
         m.emissivity.wavelengths_um = m.reflectance.wavelengths_um;
         for (const double rho : m.reflectance.values) m.emissivity.values.push_back(1.0 - rho);
+        m.emissivity.where = m.reflectance.where;
+    } else if (!m.reflectance.empty()) {
+        // Kirchhoff for a sheet, ε = 1 − ρ − τ, at every wavelength of either curve (so that it
+        // is exact between them too).
+        std::vector<double> at = m.reflectance.wavelengths_um;
+        at.insert(at.end(), m.transmittance.wavelengths_um.begin(),
+                  m.transmittance.wavelengths_um.end());
+        std::sort(at.begin(), at.end());
+        at.erase(std::unique(at.begin(), at.end()), at.end());
+        for (const double w : at) {
+            m.emissivity.wavelengths_um.push_back(w);
+            m.emissivity.values.push_back(
+                std::max(0.0, 1.0 - model::sample_held(m.reflectance, w) -
+                                  model::sample_held(m.transmittance, w)));
+        }
         m.emissivity.where = m.reflectance.where;
     }
     if (const auto t = r.number_key(node, path, "temperature", false)) {

@@ -97,5 +97,39 @@ TEST(CheckMaterial, RangesAndTemperature) {
               "s.yaml:7: materials[0]: material 'm' has no reflectance");
 }
 
+Material sheet(SpectralTable reflectance, SpectralTable transmittance,
+               SpectralTable emissivity = {}) {
+    Material m = material(std::move(reflectance), std::move(emissivity));
+    m.transmittance = std::move(transmittance);
+    return m;
+}
+
+TEST(CheckMaterial, ALeafPassesWithKirchhoffsEmissivity) {
+    // ρ + τ = 0.9 with no emissivity given: ε = 1 − ρ − τ = 0.1, the sum exactly 1.
+    Diagnostics diagnostics;
+    check_material(sheet(table({0.4, 2.5}, {0.45, 0.45}), table({0.4, 2.5}, {0.45, 0.45})),
+                   diagnostics);
+    EXPECT_EQ(diagnostics.items().size(), 0u)
+        << (diagnostics.items().empty() ? "" : diagnostics.items()[0].text());
+}
+
+TEST(CheckMaterial, ALeafScatteringMoreThanItReceivesIsRefused) {
+    EXPECT_EQ(only_error(sheet(table({0.4, 2.5}, {0.5, 0.5}), table({0.4, 2.5}, {0.4, 0.6}))),
+              "s.yaml:7: materials[0]: material 'm': reflectance 0.5 + transmittance 0.6 "
+              "exceed 1 at 2.5 um (a sheet cannot scatter more than it receives)");
+    EXPECT_EQ(only_error(sheet(table({0.4, 2.5}, {0.5, 0.5}), table({0.4, 2.5}, {0.4, 1.5}))),
+              "s.yaml:7: materials[0]: material 'm': transmittance 1.5 at 2.5 um lies outside "
+              "[0, 1]");
+}
+
+TEST(CheckMaterial, ALeafsEmissivityCountsItsTransmittance) {
+    // ε 0.2 given, ρ 0.45, τ 0.45: 1.1 > 1.
+    EXPECT_EQ(only_error(sheet(table({0.4, 2.5}, {0.45, 0.45}), table({0.4, 2.5}, {0.45, 0.45}),
+                               table({0.4, 2.5}, {0.2, 0.2}))),
+              "s.yaml:7: materials[0]: material 'm': emissivity 0.2 + reflectance 0.45 + "
+              "transmittance 0.45 exceed 1 at 0.4 um (Kirchhoff: a sheet absorbs, so emits, "
+              "only 1 - reflectance - transmittance)");
+}
+
 }  // namespace material_check_test
 }  // namespace glint::model

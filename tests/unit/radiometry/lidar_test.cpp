@@ -174,6 +174,65 @@ TEST(LidarTracer, AStepGivesTwoPeaksAtTheTwoRanges) {
     EXPECT_EQ(h[621], 0.0);
 }
 
+TEST(LidarTracer, ALeafLayerReturnsItsReflectionFirstAndTheGroundThroughIt) {
+    // A thin sheet (ρ = 0.3, τ = 0.5) 5 m above a ρ = 0.4 ground, the laser 1000 m up: the
+    // sheet's return at 995 m is the opaque plate's ρ/π · I/R², and light transmitted down,
+    // reflected by the ground and lit through the sheet's underside returns later (at 1000 m:
+    // 1005 m travelled to the underside, 995 m back); an opaque sheet of the same ρ returns
+    // nothing there.
+    for (const double tau : {0.5, 0.0}) {
+        model::Scene scene;
+        scene.materials.push_back(
+            model::flat_material("leaf", 0.3, 300.0, std::nullopt, model::SpecularLobe{}, tau));
+        scene.materials.push_back(model::flat_material("ground", 0.4, 300.0));
+        model::Primitive sheet = ground_plane();
+        sheet.center_m = {0.0, 0.0, 5.0};
+        add_primitive(scene, sheet, 0);
+        add_primitive(scene, ground_plane(), 1);
+        const auto trajectories =
+            motion::make_instance_trajectories(scene, motion::SceneFrame(), DateTime{});
+        const scene::GeometryScene geometry =
+            scene::GeometryScene::build(scene, trajectories, scene::BuildOptions{});
+        const MaterialTable materials(scene.materials, SpectralGrid({1.064}));
+        TracerSettings settings;
+        settings.max_bounces = 16;
+        const PulseShape shape = PulseShape::gaussian(2e-9);  // the tracer keeps a reference
+        const LidarTracer tracer(geometry, materials, settings, shape, kGate);
+        const LaserPulse laser = nadir_laser(1000.0, 1e-3);
+        std::vector<double> h(kGate.samples, 0.0);
+        std::uint64_t rays = 0;
+        constexpr int kRays = 4000;
+        for (int i = 0; i < kRays; ++i) {
+            RandomStream rng(5, {static_cast<std::uint64_t>(i)});
+            tracer.trace({laser.position_m, {0.0, 0.0, -1.0}, 0.0, 1.0 / kRays}, laser, rng, h,
+                         rays);
+        }
+        auto bin_of = [](double range_m) {
+            return static_cast<std::size_t>(
+                std::floor((2.0 * range_m / kSpeedOfLightMPerS - 6e-6) / 1e-9));
+        };
+        // The sheet's own return: ±10 ns around 995 m holds the first vertex's whole pulse.
+        const std::size_t sheet_bin = bin_of(995.0);
+        const double first = std::accumulate(h.begin() + static_cast<long>(sheet_bin - 10),
+                                             h.begin() + static_cast<long>(sheet_bin + 10), 0.0);
+        const double expected = 0.3 / std::numbers::pi *
+                                laser.intensity_j_per_sr({0.0, 0.0, -1.0}) / (995.0 * 995.0 * 1e4);
+        EXPECT_NEAR(first, expected, 1e-6 * expected) << "tau " << tau;
+        // Beyond 997 m (the sheet's pulse ends within 1 m of 995): only light that went
+        // through the sheet and came back.
+        const double later =
+            std::accumulate(h.begin() + static_cast<long>(bin_of(997.0)), h.end(), 0.0);
+        if (tau > 0.0) {
+            // Weaker than the sheet's own return: only the ground's light that comes back up
+            // within the beam's metre-wide spot meets laser light through the sheet.
+            EXPECT_GT(later, 0.0);
+            EXPECT_LT(later, 0.1 * expected);
+        } else {
+            EXPECT_EQ(later, 0.0);
+        }
+    }
+}
+
 TEST(LidarTracer, ReturnsAreTheSameForAnyThreadCount) {
     PlateRig rig(0.4, 15.0);
     const PulseShape shape = PulseShape::gaussian(5e-9);

@@ -2,9 +2,11 @@
 // Analytic tests of the path tracer (docs/validation.md): a Lambertian plate under an exo-
 // atmospheric sun (L = ρ E cos θ / π), a blackbody plate (L = ε B), furnaces (a plate under a
 // uniform sky: L = ρ L_sky; a closed isothermal enclosure: L = B(T) whatever its reflectance),
-// a shadowed plate, the GGX lobe's albedo, a moving box's motion blur, and the atmosphere's
-// sensor path. Each is checked within k standard errors at a low sample count and within
-// 0.5 % at a high one.
+// a shadowed plate, the GGX lobe's albedo, a moving box's motion blur, the atmosphere's
+// sensor path, and thin transmitting sheets (a leaf seen from below: L = τ E cos θ / π; a
+// leaf layer over soil: ρ + τ² ρ_s / (1 − ρ ρ_s); a leaf in an isothermal enclosure: B(T)).
+// Each is checked within k standard errors at a low sample count and within 0.5 % at a high
+// one.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -72,6 +74,68 @@ TEST(PathTracer, LambertianPlateUnderTheSunAtSeveralZenithAngles) {
     }
 }
 
+/// A horizontal square sheet at height `height_m` (a ground plane lifted; two-sided).
+model::Primitive sheet_at(double height_m, double size_m = model::kDefaultGroundPlaneSize_m) {
+    model::Primitive p = ground_plane(size_m);
+    p.center_m = {0.0, 0.0, height_m};
+    return p;
+}
+
+TEST(PathTracer, ALeafSeenFromBelowTransmitsTheSun) {
+    // A sheet (ρ = 0.4, τ = 0.35) and nothing else, seen from below with the sun above: its
+    // underside sends τ E cos θ / π down (the sun's next-event estimate through the sheet).
+    for (double zenith : {0.0, 50.0}) {
+        model::Scene scene;
+        scene.materials.push_back(
+            flat_material("leaf", 0.4, 300.0, std::nullopt, model::SpecularLobe{}, 0.35));
+        test::add_primitive(scene, sheet_at(0.0), 0);
+        Rig rig(std::move(scene), kVisible,
+                Environment::uniform(kVisible, direction_from(zenith, 20.0), kSun, kBlack));
+        const FixedRay source({{0.0, 0.0, -1000.0}, {0.0, 0.0, 1.0}, 0.0, 1.0});
+        const Solution s = solve(rig.tracer, batch_of(source, 2000), 0);
+        for (std::size_t b = 0; b < 3; ++b) {
+            const double expected = 0.35 * kSun[b] * std::cos(zenith * kPi / 180.0) / kPi;
+            EXPECT_NEAR(s.radiance_w_per_cm2_sr_um[b], expected, kHighCountRelative * expected)
+                << "zenith " << zenith << " band " << b;
+        }
+    }
+}
+
+TEST(PathTracer, ALeafLayerOverSoilReflectsTheTwoStreamSum) {
+    // A horizontal leaf layer (Lambertian ρ, τ) fully covering a Lambertian soil ρ_s: the
+    // fluxes between them sum to a reflectance ρ + τ² ρ_s / (1 − ρ ρ_s), so L = that · E cos θ
+    // / π above the layer. The soil sees the sun only through the leaf's transmitted
+    // next-event estimate at the layer's underside.
+    const double rho = 0.45;
+    const double tau = 0.45;
+    const double soil = 0.3;
+    const double zenith = 30.0;
+    model::Scene scene;
+    scene.materials.push_back(
+        flat_material("leaf", rho, 300.0, std::nullopt, model::SpecularLobe{}, tau));
+    scene.materials.push_back(flat_material("soil", soil));
+    test::add_primitive(scene, sheet_at(1.0), 0);
+    test::add_primitive(scene, ground_plane(), 1);
+    TracerSettings settings;
+    settings.max_bounces = 64;  // the series ρ ρ_s per round trip: 0.135^32 is nothing
+    Rig rig(std::move(scene), kVisible,
+            Environment::uniform(kVisible, direction_from(zenith, 135.0), kSun, kBlack), settings);
+    const FixedRay source(nadir_ray());
+    const double system = rho + tau * tau * soil / (1.0 - rho * soil);
+
+    const Solution few = solve(rig.tracer, batch_of(source, 2000), 0);
+    const double expected_1 = system * kSun[1] * std::cos(zenith * kPi / 180.0) / kPi;
+    EXPECT_NEAR(few.radiance_w_per_cm2_sr_um[1], expected_1,
+                kSigmas * few.standard_error_w_per_cm2_sr_um);
+    EXPECT_GT(few.standard_error_w_per_cm2_sr_um, 0.0);
+
+    const Solution many = solve(rig.tracer, batch_of(source, 200'000), 0);
+    for (std::size_t b = 0; b < 3; ++b) {
+        const double expected = system * kSun[b] * std::cos(zenith * kPi / 180.0) / kPi;
+        EXPECT_NEAR(many.radiance_w_per_cm2_sr_um[b], expected, kHighCountRelative * expected) << b;
+    }
+}
+
 TEST(PathTracer, BlackbodyPlate) {
     const SpectralGrid thermal({8.0, 10.0, 12.0});
     model::Scene scene;
@@ -127,6 +191,31 @@ TEST(PathTracer, FurnaceIsothermalEnclosureRadiatesAsABlackbody) {
     Context context;
     ProblemBatch high = batch_of(source, 100'000);
     const Solutions many = solve(rig.tracer, high, context);
+    for (std::size_t b = 0; b < 3; ++b) {
+        const double expected = planck_radiance_w_per_cm2_sr_um(thermal.wavelength_um(b), t_k);
+        EXPECT_NEAR(many.radiance(0)[b], expected, kHighCountRelative * expected) << b;
+    }
+}
+
+TEST(PathTracer, AnIsothermalEnclosureWithALeafInsideRadiatesAsABlackbody) {
+    // Kirchhoff for a sheet: a leaf (ρ = 0.3, τ = 0.5, so ε = 0.2) hung inside a closed
+    // enclosure at its temperature leaves the radiance B(T) everywhere, seen through the leaf
+    // or off it.
+    const SpectralGrid thermal({8.0, 10.0, 12.0});
+    const double t_k = 300.0;
+    model::Scene scene;
+    scene.materials.push_back(flat_material("wall", 0.6, t_k));
+    scene.materials.push_back(
+        flat_material("leaf", 0.3, t_k, std::nullopt, model::SpecularLobe{}, 0.5));
+    test::add_primitive(scene, box({-5.0, -4.0, -3.0}, {5.0, 4.0, 3.0}), 0);
+    test::add_primitive(scene, sheet_at(0.0, 4.0), 1);
+    TracerSettings settings;
+    settings.max_bounces = 10'000;
+    Rig rig(std::move(scene), thermal,
+            Environment::uniform(thermal, {0.0, 0.0, 1.0}, {0, 0, 0}, {0, 0, 0}), settings);
+    const test::SphereRays source({0.5, -0.3, 1.0});
+    Context context;
+    const Solutions many = solve(rig.tracer, batch_of(source, 100'000), context);
     for (std::size_t b = 0; b < 3; ++b) {
         const double expected = planck_radiance_w_per_cm2_sr_um(thermal.wavelength_um(b), t_k);
         EXPECT_NEAR(many.radiance(0)[b], expected, kHighCountRelative * expected) << b;

@@ -312,6 +312,38 @@ objects: []
                       "materials[0].reflectance.values[1]");
 }
 
+TEST(SceneReaderMaterials, ALeafsTransmittanceAndKirchhoffsEmissivity) {
+    // A thin sheet: `transmittance` beside `reflectance`; the default emissivity is
+    // 1 − ρ − τ at every wavelength of either curve.
+    TempDir dir;
+    const Read read = read_text(dir, R"(materials:
+  - id: leaf
+    reflectance: {wavelengths: [0.4, 0.7, 0.8], values: [0.1, 0.1, 0.5]}
+    transmittance: {wavelengths: [0.4, 0.75, 0.8], values: [0.05, 0.1, 0.45]}
+objects: []
+)");
+    EXPECT_EQ(read.diagnostics.items().size(), 0u) << dump(read.diagnostics);
+    ASSERT_EQ(read.scene.materials.size(), 1u);
+    const model::Material& leaf = read.scene.materials[0];
+    EXPECT_EQ(leaf.transmittance.wavelengths_um, (std::vector<double>{0.4, 0.75, 0.8}));
+    EXPECT_EQ(leaf.transmittance.values, (std::vector<double>{0.05, 0.1, 0.45}));
+    EXPECT_TRUE(leaf.emissivity_is_default);
+    EXPECT_EQ(leaf.emissivity.wavelengths_um, (std::vector<double>{0.4, 0.7, 0.75, 0.8}));
+    ASSERT_EQ(leaf.emissivity.values.size(), 4u);
+    EXPECT_DOUBLE_EQ(leaf.emissivity.values[0], 0.85);
+    EXPECT_NEAR(leaf.emissivity.values[2], 1.0 - 0.3 - 0.1, 1e-12);  // ρ(0.75) = 0.3
+    EXPECT_NEAR(leaf.emissivity.values[3], 0.05, 1e-12);
+
+    const Read bad = read_text(dir, R"(materials:
+  - id: leaf
+    reflectance: {wavelengths: [0.4, 0.7], values: [0.1, 0.1]}
+    transmittance: {wavelengths: [0.4, 0.7], values: [0.05, 1.3]}
+objects: []
+)");
+    expect_diagnostic(bad, "transmittance 1.3 is outside [0, 1]", 4,
+                      "materials[0].transmittance.values[1]");
+}
+
 TEST(SceneReaderErrors, ReflectanceFileErrors) {
     TempDir dir;
     write(dir, "r.txt", "# units: um\n0.4 0.1\n0.5 x\n0.6 1.5\n");

@@ -105,14 +105,18 @@ struct SpecularLobe {
     double roughness = 0.0;
 };
 
-/// An opaque surface material.
+/// A surface material: opaque, or a thin two-sided sheet (a leaf) when it has a transmittance.
 struct Material {
     std::string id;    ///< as written (a number is kept as its text)
     std::string name;  ///< OBJ `usemtl` names bind to it; defaults to the id
     SpectralTable reflectance;
     SpecularLobe specular;
-    /// Emissivity; when not given it is 1 − reflectance at the reflectance wavelengths and
-    /// `emissivity_is_default` is true.
+    /// Diffuse (Lambertian) transmittance τ of a thin sheet, the same from either side: the
+    /// share of the irradiance on one face that leaves the other, spread as f = τ/π. Empty:
+    /// opaque (τ = 0).
+    SpectralTable transmittance;
+    /// Emissivity; when not given it is 1 − reflectance − transmittance (Kirchhoff) at the
+    /// curves' wavelengths and `emissivity_is_default` is true.
     SpectralTable emissivity;
     bool emissivity_is_default = true;
     double temperature_k = kDefaultTemperature_k;
@@ -235,28 +239,30 @@ struct Scene {
 };
 
 /// A grey material of constant `reflectance` over 0.1–100 µm, at `temperature_k`, with
-/// emissivity `emissivity` when given (else 1 − reflectance, emissivity_is_default) and the
-/// `specular` lobe: scenes built in code (tests, benchmarks, plugins).
+/// emissivity `emissivity` when given (else 1 − reflectance − transmittance,
+/// emissivity_is_default), the `specular` lobe and, when `transmittance` > 0, that constant
+/// diffuse transmittance: scenes built in code (tests, benchmarks, plugins).
 Material flat_material(const std::string& id, double reflectance,
                        double temperature_k = kDefaultTemperature_k,
-                       std::optional<double> emissivity = std::nullopt, SpecularLobe specular = {});
+                       std::optional<double> emissivity = std::nullopt, SpecularLobe specular = {},
+                       double transmittance = 0.0);
 
 /// `table` at `wavelength_um`: linear between its points, held constant beyond its ends
 /// (how the renderer samples material curves on its spectral grid). `table` is not empty.
 double sample_held(const SpectralTable& table, double wavelength_um);
 
 /// The wavelengths where all of a material's given curves are measured: the overlap of
-/// the reflectance's and (when given) the emissivity's ranges, µm; empty (lo > hi) when
-/// they do not overlap.
+/// the reflectance's and (when given) the transmittance's and the emissivity's ranges, µm;
+/// empty (lo > hi) when they do not overlap.
 std::pair<double, double> measured_range_um(const Material& material);
 
 /// The physical checks of a material every tool applies alike (glint-platform2jsim --check
-/// as glint-render): reflectance given, temperature finite and > 0, reflectance and
-/// emissivity within [0, 1] at every point of either curve, and emissivity + reflectance ≤ 1
-/// + kEmissivityReflectanceSlack at every such point inside measured_range_um (both are linear
-/// between their points, so a sum within 1 there is within 1 on any grid; beyond it the renderer
-/// lowers the held emissivity, see physics.md). Problems go to `diagnostics` at the material's
-/// `where`.
+/// as glint-render): reflectance given, temperature finite and > 0, reflectance,
+/// transmittance and emissivity within [0, 1] at every point of any curve, and emissivity +
+/// reflectance + transmittance ≤ 1 + kEmissivityReflectanceSlack at every such point inside
+/// measured_range_um (all are linear between their points, so a sum within 1 there is within
+/// 1 on any grid; beyond it the renderer lowers the held emissivity, see physics.md).
+/// Problems go to `diagnostics` at the material's `where`.
 void check_material(const Material& material, Diagnostics& diagnostics);
 
 }  // namespace glint::model

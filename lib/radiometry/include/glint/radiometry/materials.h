@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // A scene's materials sampled on one spectral grid, as the path tracer uses them: per band
-// the reflectance ρ(λ) and the emitted radiance ε(λ) B(λ, T); per material the wavelength-
-// independent lobe shape (SurfaceBrdf with ρ = 1, so f_λ = ρ(λ) · shape). Tables are held
-// flat ([material][band]) so a path touches no allocation. Curves are linearly interpolated
+// the reflectance ρ(λ), the diffuse transmittance τ(λ) of a thin sheet (0 when opaque) and
+// the emitted radiance ε(λ) B(λ, T); per material the wavelength-independent lobe shape
+// (SurfaceBrdf with ρ = 1, so f_λ = ρ(λ) · shape) and the transmission f_λ = τ(λ)/π. Tables are
+// held flat ([material][band]) so a path touches no allocation. Curves are linearly interpolated
 // and held constant beyond their first and last wavelength (a warning names each material
 // whose curve does not cover the grid). Units: emitted radiance W/(cm² sr µm).
 #pragma once
@@ -44,6 +45,19 @@ public:
     bool emits(std::size_t m) const noexcept { return m_emits[m] != 0; }
     /// Whether material `m` reflects anything on the grid.
     bool reflects(std::size_t m) const noexcept { return m_reflects[m] != 0; }
+    /// τ(λ) of material `m`, one value per band: 0 for an opaque material.
+    std::span<const double> transmittance(std::size_t m) const noexcept {
+        return {m_transmittance.data() + m * m_bands, m_bands};
+    }
+    /// Whether material `m` (a thin sheet) transmits anything on the grid.
+    bool transmits(std::size_t m) const noexcept { return m_transmits[m] != 0; }
+    /// Whether a path goes on from material `m`: it reflects or transmits.
+    bool scatters(std::size_t m) const noexcept { return reflects(m) || transmits(m); }
+    /// The probability with which a path leaving material `m` is transmitted rather than
+    /// reflected: Σ τ / Σ (ρ + τ) over the bands; 0 for an opaque material.
+    double transmission_probability(std::size_t m) const noexcept {
+        return m_transmission_probability[m];
+    }
     /// The lobe shape of material `m`: SurfaceBrdf(1, s, roughness).
     const SurfaceBrdf& shape(std::size_t m) const noexcept { return m_shapes[m]; }
 
@@ -53,6 +67,9 @@ private:
     std::vector<double> m_emission;
     std::vector<unsigned char> m_emits;
     std::vector<unsigned char> m_reflects;
+    std::vector<double> m_transmittance;
+    std::vector<unsigned char> m_transmits;
+    std::vector<double> m_transmission_probability;
     std::vector<SurfaceBrdf> m_shapes;
 };
 

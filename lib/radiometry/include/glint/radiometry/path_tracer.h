@@ -175,10 +175,12 @@ private:
                     PathScratch& scratch, std::span<double> radiance, FirstHit* first_hit,
                     const std::optional<scene::RayHit>* primary_hit, const FirstSun* sun) const;
     /// The sun's direction drawn at a vertex (two draws) and, when it lights the surface from
-    /// the side the path came from, the shadow ray to ask.
+    /// the side the path came from (or from behind, through a material that `transmits`), the
+    /// shadow ray to ask.
     FirstSun draw_sun(const scene::RayHit& hit, const Vec3& normal, double wo_z, double time_s,
-                      RandomStream& rng) const;
-    /// Adds the point sources' light reflected at a vertex (next-event estimation).
+                      bool transmits, RandomStream& rng) const;
+    /// Adds the point sources' light reflected (or, from behind a thin sheet, transmitted) at
+    /// a vertex (next-event estimation).
     template <typename Bands>
     void add_point_lights(const Bands& bands, const scene::RayHit& hit, const Vec3& normal,
                           const Vec3& wo_local, const Frame& frame, std::size_t material,
