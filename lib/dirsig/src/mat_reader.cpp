@@ -356,11 +356,17 @@ struct MatReader {
                                         m.name + "\" is not supported; treated as Lambertian");
             }
         }
-        if (const MatEntry* sides = block.find("DOUBLE_SIDED");
-            sides && to_upper(sides->value) == "FALSE") {
-            diagnostics.warning(at(sides->line, path + "/DOUBLE_SIDED"),
-                                "DOUBLE_SIDED FALSE is read, not applied: glint's surfaces are "
-                                "two-sided");
+        if (const MatEntry* sides = block.find("DOUBLE_SIDED")) {
+            // FALSE: the back face is black (docs/materials.md).
+            const std::string value = to_upper(sides->value);
+            if (value == "FALSE") {
+                m.double_sided = false;
+            } else if (value != "TRUE") {
+                diagnostics.warning(at(sides->line, path + "/DOUBLE_SIDED"),
+                                    "DOUBLE_SIDED \"" + sides->value +
+                                        "\" is neither TRUE nor FALSE; the material is "
+                                        "two-sided");
+            }
         }
         // Temperature: TEMPERATURE in the entry or in its TEMP_SOLVER block.
         const MatEntry* temperature = block.find("TEMPERATURE");

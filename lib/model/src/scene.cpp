@@ -67,6 +67,13 @@ void check_material(const Material& material, Diagnostics& diagnostics) {
                                               format_shortest(material.temperature_k) +
                                               " K must be a finite number > 0");
     }
+    if (!material.double_sided && !material.transmittance.empty()) {
+        diagnostics.error(material.where,
+                          name +
+                              " is single-sided and has a transmittance: light cannot pass "
+                              "a surface whose back face is black");
+        return;
+    }
     std::set<double> wavelengths(material.reflectance.wavelengths_um.begin(),
                                  material.reflectance.wavelengths_um.end());
     for (const SpectralTable* table : {&material.transmittance, &material.emissivity}) {

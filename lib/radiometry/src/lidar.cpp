@@ -135,6 +135,8 @@ void LidarTracer::trace(const SampleRay& ray, const LaserPulse& laser, RandomStr
     for (unsigned bounce = 0; hit; ++bounce) {
         const std::size_t m = hit->material;
         if (!m_materials.scatters(m)) break;
+        // The black back face of a single-sided material.
+        if (!m_materials.double_sided(m) && dot(hit->normal, direction) > 0.0) break;
         travelled_m += hit->distance_m;
         const Vec3 wo = -direction;
         const Vec3 normal = dot(hit->normal, wo) < 0.0 ? -hit->normal : hit->normal;

@@ -148,6 +148,7 @@ MaterialTable::MaterialTable(std::span<const model::Material> materials, const S
         m_emits.push_back(emits ? 1 : 0);
         m_reflects.push_back(reflects ? 1 : 0);
         m_transmits.push_back(transmits ? 1 : 0);
+        m_double_sided.push_back(material.double_sided ? 1 : 0);
         // Transmission is drawn in proportion to the band-mean τ against ρ + τ (0 for an
         // opaque material: its paths draw exactly what they drew before transmission existed).
         m_transmission_probability.push_back(transmits ? tau_sum / (rho_sum + tau_sum) : 0.0);

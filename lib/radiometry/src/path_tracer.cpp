@@ -241,12 +241,16 @@ FirstSun PathTracer::first_sun(const SampleRay& ray,
                                bool records_first_hit) const {
     if (!primary_hit || !m_environment.sun_visible()) return {};
     const scene::RayHit& hit = *primary_hit;
-    if (!m_materials.scatters(hit.material) && !records_first_hit) return {};
-    // As trace_path's first vertex: the normal facing the ray, the outgoing direction's z.
+    // As trace_path's first vertex: the normal facing the ray, the outgoing direction's z, and
+    // the black back face of a single-sided material.
     const Vec3 wo = -ray.direction;
-    const Vec3 normal = dot(hit.normal, wo) < 0.0 ? -hit.normal : hit.normal;
+    const bool back_face = dot(hit.normal, wo) < 0.0;
+    const bool dark = back_face && !m_materials.double_sided(hit.material);
+    if ((dark || !m_materials.scatters(hit.material)) && !records_first_hit) return {};
+    const Vec3 normal = back_face ? -hit.normal : hit.normal;
     const double wo_z = Frame::from_normal(normal).to_local(wo).z;
-    return draw_sun(hit, normal, wo_z, ray.time_s, m_materials.transmits(hit.material), rng);
+    return draw_sun(hit, normal, wo_z, ray.time_s, !dark && m_materials.transmits(hit.material),
+                    rng);
 }
 
 template <typename Bands>
@@ -292,9 +296,12 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
         // The sun and sky at this vertex's height (docs/scene.md).
         const AltitudeLevel level = env.level_at(hit->position_m.z);
         const Vec3 wo = -direction;
-        const Vec3 normal = dot(hit->normal, wo) < 0.0 ? -hit->normal : hit->normal;
-        const bool reflects = m_materials.reflects(m);
-        const bool transmits = m_materials.transmits(m);
+        const bool back_face = dot(hit->normal, wo) < 0.0;
+        const Vec3 normal = back_face ? -hit->normal : hit->normal;
+        // The back face of a single-sided material is black: no light, and the path ends.
+        const bool dark = back_face && !m_materials.double_sided(m);
+        const bool reflects = !dark && m_materials.reflects(m);
+        const bool transmits = !dark && m_materials.transmits(m);
         const bool scatters = reflects || transmits;
         const double* rho = m_materials.reflectance(m).data();
         const double* tau = m_materials.transmittance(m).data();
@@ -302,8 +309,9 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
         const double* sun_spectrum = rho;
 
         // Emission and the sun by next-event estimation.
-        const double* emission =
-            m_materials.emits(m) ? m_materials.emission_w_per_cm2_sr_um(m).data() : nullptr;
+        const double* emission = !dark && m_materials.emits(m)
+                                     ? m_materials.emission_w_per_cm2_sr_um(m).data()
+                                     : nullptr;
         double sun_factor = 0.0;
         const Frame frame = Frame::from_normal(normal);
         const Vec3 wo_local = frame.to_local(wo);

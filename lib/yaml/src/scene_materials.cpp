@@ -166,9 +166,9 @@ model::Material read_material(Reader& r, const YAML::Node& node, const std::stri
     model::Material m;
     m.where = r.where(node, path);
     if (!r.expect_map(node, path)) return m;
-    r.warn_unknown(
-        node, path,
-        {"id", "name", "reflectance", "transmittance", "specular", "emissivity", "temperature"});
+    r.warn_unknown(node, path,
+                   {"id", "name", "reflectance", "transmittance", "specular", "emissivity",
+                    "temperature", "double_sided"});
     m.id = r.text_key(node, path, "id", true).value_or("");
     m.name = r.text_key(node, path, "name", false).value_or(m.id);
     if (node["reflectance"]) {
@@ -224,6 +224,7 @@ model::Material read_material(Reader& r, const YAML::Node& node, const std::stri
         }
         m.emissivity.where = m.reflectance.where;
     }
+    if (const auto sides = r.bool_key(node, path, "double_sided")) m.double_sided = *sides;
     if (const auto t = r.number_key(node, path, "temperature", false)) {
         if (*t > 0.0) {
             m.temperature_k = *t;

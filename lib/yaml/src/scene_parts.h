@@ -102,6 +102,17 @@ struct Reader {
         error(node, join(path, key), "expected an integer");
         return std::nullopt;
     }
+    /// An optional true/false key (also yes/no, 1/0).
+    std::optional<bool> bool_key(const YAML::Node& parent, const std::string& path,
+                                 const std::string& key) {
+        const YAML::Node node = parent[key];
+        if (!node) return std::nullopt;
+        if (node.IsScalar()) {
+            if (auto value = parse_bool(node.Scalar())) return *value;
+        }
+        error(node, join(path, key), "expected true or false");
+        return std::nullopt;
+    }
     std::optional<std::string> text_key(const YAML::Node& parent, const std::string& path,
                                         const std::string& key, bool required) {
         const YAML::Node node = parent[key];

@@ -113,6 +113,29 @@ TEST(MatReader, HashIsACommentOnlyAtTheStartOfALine) {
     EXPECT_EQ(materials[0].name, "Class #2 # not a comment either");
 }
 
+TEST(MatReader, DoubleSidedFalseMakesTheBackFaceBlack) {
+    // TRUE and FALSE are applied; anything else is one warning at the key, and two-sided.
+    TempDir dir;
+    write_file(dir / "r.txt", "0.4 0.1\n");
+    write_file(dir / "m.mat",
+               "MATERIAL_ENTRY {\n  ID = 1\n  DOUBLE_SIDED = FALSE\n"
+               "  SURFACE_PROPERTIES { REFLECTANCE_PROP { TXT_FILENAME = r.txt } }\n}\n"
+               "MATERIAL_ENTRY {\n  ID = 2\n  DOUBLE_SIDED = TRUE\n"
+               "  SURFACE_PROPERTIES { REFLECTANCE_PROP { TXT_FILENAME = r.txt } }\n}\n"
+               "MATERIAL_ENTRY {\n  ID = 3\n  DOUBLE_SIDED = SOMETIMES\n"
+               "  SURFACE_PROPERTIES { REFLECTANCE_PROP { TXT_FILENAME = r.txt } }\n}\n");
+    Diagnostics diagnostics;
+    const auto materials = read_dirsig_materials(dir / "m.mat", {}, diagnostics);
+    ASSERT_EQ(materials.size(), 3u);
+    EXPECT_FALSE(materials[0].double_sided);
+    EXPECT_TRUE(materials[1].double_sided);
+    EXPECT_TRUE(materials[2].double_sided);
+    EXPECT_EQ(warnings_text(diagnostics),
+              (dir / "m.mat").string() +
+                  ":13: MATERIAL_ENTRY[3]/DOUBLE_SIDED: DOUBLE_SIDED \"SOMETIMES\" is neither "
+                  "TRUE nor FALSE; the material is two-sided\n");
+}
+
 TEST(MatReader, EmissivityPlusReflectanceAboveOneLowersTheReflectanceWithOneWarning) {
     TempDir dir;
     write_file(dir / "r.txt", "0.4 0.2\n10.0 0.2\n");

@@ -131,5 +131,13 @@ TEST(CheckMaterial, ALeafsEmissivityCountsItsTransmittance) {
               "only 1 - reflectance - transmittance)");
 }
 
+TEST(CheckMaterial, ASingleSidedSheetIsRefused) {
+    Material m = sheet(table({0.4, 2.5}, {0.4, 0.4}), table({0.4, 2.5}, {0.4, 0.4}));
+    m.double_sided = false;
+    EXPECT_EQ(only_error(m),
+              "s.yaml:7: materials[0]: material 'm' is single-sided and has a transmittance: "
+              "light cannot pass a surface whose back face is black");
+}
+
 }  // namespace material_check_test
 }  // namespace glint::model

@@ -152,6 +152,32 @@ TEST(PathTracer, BlackbodyPlate) {
     }
 }
 
+TEST(PathTracer, ASingleSidedPlatesBackFaceIsBlack) {
+    // A hot plate (ε = 0.9, 320 K) whose front faces up: seen from above it radiates ε B; seen
+    // from below only when it is double-sided (DOUBLE_SIDED = FALSE makes the back black).
+    const SpectralGrid thermal({8.0, 10.0, 12.0});
+    for (const bool double_sided : {true, false}) {
+        model::Scene scene;
+        scene.materials.push_back(flat_material("hot", 0.1, 320.0, 0.9));
+        scene.materials.back().double_sided = double_sided;
+        test::add_primitive(scene, ground_plane(), 0);
+        Rig rig(std::move(scene), thermal,
+                Environment::uniform(thermal, {0.0, 0.0, 1.0}, kBlack, kBlack));
+        const FixedRay above(nadir_ray());
+        const FixedRay below({{0.0, 0.0, -1000.0}, {0.0, 0.0, 1.0}, 0.0, 1.0});
+        const Solution front = solve(rig.tracer, batch_of(above, 16), 0);
+        const Solution back = solve(rig.tracer, batch_of(below, 16), 0);
+        for (std::size_t b = 0; b < 3; ++b) {
+            const double expected =
+                0.9 * planck_radiance_w_per_cm2_sr_um(thermal.wavelength_um(b), 320.0);
+            EXPECT_NEAR(front.radiance_w_per_cm2_sr_um[b], expected, 1e-12 * expected) << b;
+            EXPECT_NEAR(back.radiance_w_per_cm2_sr_um[b], double_sided ? expected : 0.0,
+                        1e-12 * expected)
+                << b << " double-sided " << double_sided;
+        }
+    }
+}
+
 TEST(PathTracer, FurnacePlateUnderAUniformSky) {
     const std::vector<double> sky{0.01, 0.02, 0.03};
     const double rho = 0.7;

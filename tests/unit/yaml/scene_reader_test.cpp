@@ -344,6 +344,20 @@ objects: []
                       "materials[0].transmittance.values[1]");
 }
 
+TEST(SceneReaderMaterials, DoubleSided) {
+    TempDir dir;
+    const Read read = read_text(dir, R"(materials:
+  - {id: a, reflectance: {wavelengths: [0.4, 0.7], values: [0.1, 0.1]}}
+  - {id: b, reflectance: {wavelengths: [0.4, 0.7], values: [0.1, 0.1]}, double_sided: false}
+  - {id: c, reflectance: {wavelengths: [0.4, 0.7], values: [0.1, 0.1]}, double_sided: maybe}
+objects: []
+)");
+    ASSERT_EQ(read.scene.materials.size(), 3u);
+    EXPECT_TRUE(read.scene.materials[0].double_sided);
+    EXPECT_FALSE(read.scene.materials[1].double_sided);
+    expect_diagnostic(read, "expected true or false", 4, "materials[2].double_sided");
+}
+
 TEST(SceneReaderErrors, ReflectanceFileErrors) {
     TempDir dir;
     write(dir, "r.txt", "# units: um\n0.4 0.1\n0.5 x\n0.6 1.5\n");

@@ -115,6 +115,10 @@ struct Material {
     /// share of the irradiance on one face that leaves the other, spread as f = τ/π. Empty:
     /// opaque (τ = 0).
     SpectralTable transmittance;
+    /// False: only the front face (counter-clockwise seen from it) has these properties; the
+    /// back face is black — it neither reflects, transmits nor emits (it still casts shadows).
+    /// A single-sided material cannot have a transmittance.
+    bool double_sided = true;
     /// Emissivity; when not given it is 1 − reflectance − transmittance (Kirchhoff) at the
     /// curves' wavelengths and `emissivity_is_default` is true.
     SpectralTable emissivity;

@@ -51,6 +51,9 @@ public:
     }
     /// Whether material `m` (a thin sheet) transmits anything on the grid.
     bool transmits(std::size_t m) const noexcept { return m_transmits[m] != 0; }
+    /// Whether both faces of material `m` have its properties (false: the back face, against
+    /// the triangle's winding, is black).
+    bool double_sided(std::size_t m) const noexcept { return m_double_sided[m] != 0; }
     /// Whether a path goes on from material `m`: it reflects or transmits.
     bool scatters(std::size_t m) const noexcept { return reflects(m) || transmits(m); }
     /// The probability with which a path leaving material `m` is transmitted rather than
@@ -69,6 +72,7 @@ private:
     std::vector<unsigned char> m_reflects;
     std::vector<double> m_transmittance;
     std::vector<unsigned char> m_transmits;
+    std::vector<unsigned char> m_double_sided;
     std::vector<double> m_transmission_probability;
     std::vector<SurfaceBrdf> m_shapes;
 };
