@@ -196,8 +196,8 @@ TEST(LidarTracer, ALeafLayerReturnsItsReflectionFirstAndTheGroundThroughIt) {
         const MaterialTable materials(scene.materials, SpectralGrid({1.064}));
         TracerSettings settings;
         settings.max_bounces = 16;
-        const PulseShape shape = PulseShape::gaussian(2e-9);  // the tracer keeps a reference
-        const LidarTracer tracer(geometry, materials, settings, shape, kGate);
+        // A temporary shape: the tracer keeps a copy.
+        const LidarTracer tracer(geometry, materials, settings, PulseShape::gaussian(2e-9), kGate);
         const LaserPulse laser = nadir_laser(1000.0, 1e-3);
         std::vector<double> h(kGate.samples, 0.0);
         std::uint64_t rays = 0;

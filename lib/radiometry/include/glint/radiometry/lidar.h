@@ -91,8 +91,9 @@ struct LaserPulse {
 class LidarTracer {
 public:
     /// `materials` hold one band: the laser's centre wavelength. Kept by reference (they and
-    /// the scene must outlive the tracer). Throws glint::Error (input) for a table of another
-    /// band count, (usage) for max_bounces above the tracer's limit or a gate without samples.
+    /// the scene must outlive the tracer); the pulse shape is copied. Throws glint::Error (input)
+    /// for a table of another band count, (usage) for max_bounces above the tracer's limit or a
+    /// gate without samples.
     LidarTracer(const scene::GeometryScene& scene, const MaterialTable& materials,
                 TracerSettings settings, const PulseShape& shape, TimeGate gate);
 
@@ -108,7 +109,7 @@ private:
     const scene::GeometryScene& m_scene;
     const MaterialTable& m_materials;
     TracerSettings m_settings;
-    const PulseShape& m_shape;
+    PulseShape m_shape;  ///< a copy: a temporary shape may be passed
     TimeGate m_gate;
 };
 
