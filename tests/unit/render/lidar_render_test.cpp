@@ -78,6 +78,33 @@ Sums sums_of(const io::BinFile& file) {
     return s;
 }
 
+/// A simple-capture camera with the lidar's optics, band and 16-column array (`rows` rows),
+/// its image in photons/s per cm² at the focal plane (basename cam), for the platform's
+/// attachment.
+std::string camera_beside_the_lidar(int rows) {
+    return "    <instrument name=\"Cam\" type=\"generic\">\n"
+           "      <properties><focallength>500</focallength>"
+           "<aperturediameter>0.05</aperturediameter></properties>\n"
+           "      <focalplane name=\"Frame\"><capturemethod type=\"simple\">\n"
+           "        <imagefile fluxunits=\"photonspersecond\"><basename>cam</basename>"
+           "</imagefile>\n"
+           "        <spectralresponse><bandpass spectralunits=\"microns\"><minimum>1.060"
+           "</minimum><maximum>1.068</maximum><delta>0.002</delta></bandpass>\n"
+           "          <channellist><channel name=\"band\" shape=\"tophat\"><center>1.064</center>"
+           "<width>0.02</width></channel></channellist></spectralresponse>\n"
+           "      </capturemethod>\n"
+           "      <detectorarray spatialunits=\"microns\">\n"
+           "        <clock type=\"independent\" temporalunits=\"hertz\"><rate>10</rate>"
+           "<offset>0</offset></clock>\n"
+           "        <xelementcount>16</xelementcount><yelementcount>" +
+           std::to_string(rows) +
+           "</yelementcount>\n"
+           "        <xelementsize>20</xelementsize><yelementsize>20</yelementsize>\n"
+           "        <xelementspacing>20</xelementspacing><yelementspacing>20</yelementspacing>\n"
+           "      </detectorarray></focalplane>\n"
+           "    </instrument>\n";
+}
+
 TEST(LidarRender, ReturnedPhotonsFollowTheLidarEquationAndPeakAt2ROverC) {
     test::TempDir dir;
     RenderOptions options = options_into(dir / "out");
@@ -130,27 +157,7 @@ TEST(LidarRender, PassiveTermEqualsASimpleCapturesPhotonRateInTheSameBand) {
     // photons/s per cm² at the focal plane: passive = camera × element area (cm²).
     test::TempDir dir;
     const fs::path jsim = write_simulation(dir.path(), [](std::string text) {
-        const std::string camera =
-            "    <instrument name=\"Cam\" type=\"generic\">\n"
-            "      <properties><focallength>500</focallength>"
-            "<aperturediameter>0.05</aperturediameter></properties>\n"
-            "      <focalplane name=\"Frame\"><capturemethod type=\"simple\">\n"
-            "        <imagefile fluxunits=\"photonspersecond\"><basename>cam</basename>"
-            "</imagefile>\n"
-            "        <spectralresponse><bandpass spectralunits=\"microns\"><minimum>1.060"
-            "</minimum><maximum>1.068</maximum><delta>0.002</delta></bandpass>\n"
-            "          <channellist><channel name=\"band\" shape=\"tophat\"><center>1.064</center>"
-            "<width>0.02</width></channel></channellist></spectralresponse>\n"
-            "      </capturemethod>\n"
-            "      <detectorarray spatialunits=\"microns\">\n"
-            "        <clock type=\"independent\" temporalunits=\"hertz\"><rate>10</rate>"
-            "<offset>0</offset></clock>\n"
-            "        <xelementcount>16</xelementcount><yelementcount>16</yelementcount>\n"
-            "        <xelementsize>20</xelementsize><yelementsize>20</yelementsize>\n"
-            "        <xelementspacing>20</xelementspacing><yelementspacing>20</yelementspacing>\n"
-            "      </detectorarray></focalplane>\n"
-            "    </instrument>\n";
-        return replace(text, "  </attachment>", camera + "  </attachment>");
+        return replace(text, "  </attachment>", camera_beside_the_lidar(16) + "  </attachment>");
     });
     RenderOptions options = options_into(dir / "out");
     options.convergence = radiometry::Convergence{64, 64, 0.0};
@@ -191,29 +198,7 @@ TEST(LidarRender, PixelsAreInDirsigsOrderXSlowest) {
         [](std::string text) {
             text = replace(text, "<yelementcount>16</yelementcount>",
                            "<yelementcount>8</yelementcount>");
-            const std::string camera =
-                "    <instrument name=\"Cam\" type=\"generic\">\n"
-                "      <properties><focallength>500</focallength>"
-                "<aperturediameter>0.05</aperturediameter></properties>\n"
-                "      <focalplane name=\"Frame\"><capturemethod type=\"simple\">\n"
-                "        <imagefile fluxunits=\"photonspersecond\"><basename>cam</basename>"
-                "</imagefile>\n"
-                "        <spectralresponse><bandpass spectralunits=\"microns\"><minimum>1.060"
-                "</minimum><maximum>1.068</maximum><delta>0.002</delta></bandpass>\n"
-                "          <channellist><channel name=\"band\" shape=\"tophat\">"
-                "<center>1.064</center><width>0.02</width></channel></channellist>"
-                "</spectralresponse>\n"
-                "      </capturemethod>\n"
-                "      <detectorarray spatialunits=\"microns\">\n"
-                "        <clock type=\"independent\" temporalunits=\"hertz\"><rate>10</rate>"
-                "<offset>0</offset></clock>\n"
-                "        <xelementcount>16</xelementcount><yelementcount>8</yelementcount>\n"
-                "        <xelementsize>20</xelementsize><yelementsize>20</yelementsize>\n"
-                "        <xelementspacing>20</xelementspacing>"
-                "<yelementspacing>20</yelementspacing>\n"
-                "      </detectorarray></focalplane>\n"
-                "    </instrument>\n";
-            return replace(text, "  </attachment>", camera + "  </attachment>");
+            return replace(text, "  </attachment>", camera_beside_the_lidar(8) + "  </attachment>");
         },
         dir / "corner.yaml");
     RenderOptions options = options_into(dir / "out");
