@@ -54,6 +54,50 @@ std::pair<double, double> measured_range_um(const Material& material) {
     return {lo, hi};
 }
 
+namespace {
+
+/// The reflection model's parameters: Ward's weights in [0, 1] summing to at most 1 and its
+/// widths in (0, 1]; Ross–Li's weights finite.
+bool check_reflection_model(const Material& material, const std::string& name,
+                            Diagnostics& diagnostics) {
+    if (material.model == ReflectionModel::ward) {
+        const WardParameters& w = material.ward;
+        if (!(w.diffuse >= 0.0 && w.specular >= 0.0 && w.diffuse + w.specular <= 1.0)) {
+            diagnostics.error(material.where, name + ": Ward weights diffuse " +
+                                                  format_shortest(w.diffuse) + " and specular " +
+                                                  format_shortest(w.specular) +
+                                                  " must be >= 0 with a sum of at most 1");
+            return false;
+        }
+        if (!(w.alpha_x > 0.0 && w.alpha_x <= 1.0 && w.alpha_y > 0.0 && w.alpha_y <= 1.0)) {
+            diagnostics.error(material.where,
+                              name + ": Ward widths (sigma) " + format_shortest(w.alpha_x) +
+                                  " and " + format_shortest(w.alpha_y) + " must lie in (0, 1]");
+            return false;
+        }
+        if (material.specular.fraction != 0.0) {
+            diagnostics.error(material.where,
+                              name + ": a Ward material has no separate specular lobe");
+            return false;
+        }
+    }
+    if (material.model == ReflectionModel::ross_li) {
+        if (!std::isfinite(material.ross_li.volumetric) ||
+            !std::isfinite(material.ross_li.geometric)) {
+            diagnostics.error(material.where, name + ": Ross-Li weights must be finite numbers");
+            return false;
+        }
+        if (material.specular.fraction != 0.0) {
+            diagnostics.error(material.where,
+                              name + ": a Ross-Li material has no separate specular lobe");
+            return false;
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
 void check_material(const Material& material, Diagnostics& diagnostics) {
     // Rounding slack of the [0, 1] ranges; the renderer allows the same.
     constexpr double kSlack = 1e-9;
@@ -74,6 +118,7 @@ void check_material(const Material& material, Diagnostics& diagnostics) {
                               "a surface whose back face is black");
         return;
     }
+    if (!check_reflection_model(material, name, diagnostics)) return;
     std::set<double> wavelengths(material.reflectance.wavelengths_um.begin(),
                                  material.reflectance.wavelengths_um.end());
     for (const SpectralTable* table : {&material.transmittance, &material.emissivity}) {
@@ -124,6 +169,24 @@ void check_material(const Material& material, Diagnostics& diagnostics) {
             return;
         }
     }
+}
+
+SpectralTable kirchhoff_emissivity(const Material& material) {
+    std::vector<double> at = material.reflectance.wavelengths_um;
+    at.insert(at.end(), material.transmittance.wavelengths_um.begin(),
+              material.transmittance.wavelengths_um.end());
+    std::sort(at.begin(), at.end());
+    at.erase(std::unique(at.begin(), at.end()), at.end());
+    SpectralTable table;
+    const bool thin = !material.transmittance.empty();
+    for (const double w : at) {
+        table.wavelengths_um.push_back(w);
+        const double rho = sample_held(material.reflectance, w);
+        const double tau = thin ? sample_held(material.transmittance, w) : 0.0;
+        table.values.push_back(thin ? std::max(0.0, 1.0 - rho - tau) : 1.0 - rho);
+    }
+    table.where = material.reflectance.where;
+    return table;
 }
 
 }  // namespace glint::model

@@ -22,9 +22,6 @@ void require_unit_interval(double v, const char* name) {
     }
 }
 
-/// wo reflected about the unit normal h.
-Vec3 reflect(const Vec3& wo, const Vec3& h) noexcept { return 2.0 * dot(wo, h) * h - wo; }
-
 }  // namespace
 
 // ---- Lambertian ------------------------------------------------------------------------
@@ -117,7 +114,7 @@ Vec3 GgxBrdf::sample_visible_normal(const Vec3& wo, double u1, double u2) const 
 std::optional<BrdfSample> GgxBrdf::sample(const Vec3& wo, double u1, double u2) const noexcept {
     if (wo.z <= 0.0) return std::nullopt;
     const Vec3 h = sample_visible_normal(wo, u1, u2);
-    const Vec3 wi = reflect(wo, h);
+    const Vec3 wi = reflect_about(wo, h);
     if (wi.z <= 0.0) return std::nullopt;
     const double pdf = pdf_per_sr(wo, wi);
     if (!(pdf > 0.0)) return std::nullopt;
@@ -144,11 +141,13 @@ SurfaceBrdf::SurfaceBrdf(double reflectance, double specular_fraction, double ro
     : m_diffuse(reflectance),
       m_specular(make_ggx(roughness)),
       m_specular_fraction(checked_fraction(specular_fraction)),
-      m_specular_probability(specular_fraction) {}
+      m_specular_probability(specular_fraction),
+      m_mirror(roughness == 0.0 && specular_fraction > 0.0) {}
 
 double SurfaceBrdf::eval(const Vec3& wo, const Vec3& wi) const noexcept {
     // A Lambertian surface: the GGX lobe weighs nothing (same value: 1·d + 0 = d).
     if (m_specular_fraction == 0.0) return m_diffuse.eval(wo, wi);
+    if (m_mirror) return (1.0 - m_specular_fraction) * m_diffuse.eval(wo, wi);
     return (1.0 - m_specular_fraction) * m_diffuse.eval(wo, wi) +
            m_specular_fraction * m_diffuse.reflectance() * m_specular.eval(wo, wi);
 }
@@ -158,7 +157,7 @@ double SurfaceBrdf::pdf_per_sr(const Vec3& wo, const Vec3& wi) const noexcept {
     const double ps = m_specular_probability;
     double pdf = 0.0;
     if (ps < 1.0) pdf += (1.0 - ps) * m_diffuse.pdf_per_sr(wo, wi);
-    if (ps > 0.0) pdf += ps * m_specular.pdf_per_sr(wo, wi);
+    if (ps > 0.0 && !m_mirror) pdf += ps * m_specular.pdf_per_sr(wo, wi);
     return pdf;
 }
 
@@ -168,6 +167,10 @@ std::optional<BrdfSample> SurfaceBrdf::sample(const Vec3& wo, double u_lobe, dou
     const double ps = m_specular_probability;
     if (m_diffuse.reflectance() <= 0.0) return std::nullopt;  // black
     Vec3 wi;
+    if (u_lobe < ps && m_mirror) {
+        // The mirror: weight ρ s / P_s = ρ.
+        return BrdfSample{Vec3{-wo.x, -wo.y, wo.z}, m_diffuse.reflectance(), 0.0, true};
+    }
     if (u_lobe < ps) {
         const auto s = m_specular.sample(wo, u1, u2);
         if (!s) return std::nullopt;

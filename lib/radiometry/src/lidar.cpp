@@ -140,7 +140,8 @@ void LidarTracer::trace(const SampleRay& ray, const LaserPulse& laser, RandomStr
         travelled_m += hit->distance_m;
         const Vec3 wo = -direction;
         const Vec3 normal = dot(hit->normal, wo) < 0.0 ? -hit->normal : hit->normal;
-        const Frame frame = Frame::from_normal(normal);
+        const Bsdf& bsdf = m_materials.bsdf(m);
+        const Frame frame = shading_frame(bsdf, normal);
         const Vec3 wo_local = frame.to_local(wo);
         const double rho = m_materials.reflectance(m)[0];
         const double tau = m_materials.transmittance(m)[0];
@@ -162,8 +163,7 @@ void LidarTracer::trace(const SampleRay& ray, const LaserPulse& laser, RandomStr
                         laser.intensity_j_per_sr(-wi) * std::abs(cos_i) / (r_m * r_m * 1e4);
                     const double value =
                         cos_i > 0.0
-                            ? beta * rho * m_materials.shape(m).eval(wo_local, frame.to_local(wi)) *
-                                  fluence
+                            ? beta * rho * bsdf.reflection(wo_local, frame.to_local(wi)) * fluence
                             : beta * (tau / kPi) * fluence;
                     deposit(m_shape, m_gate, (travelled_m + r_m) / kSpeedOfLightMPerS, value,
                             histogram);
@@ -173,23 +173,15 @@ void LidarTracer::trace(const SampleRay& ray, const LaserPulse& laser, RandomStr
         if (bounce >= m_settings.max_bounces) break;
         // As the path tracer: through the sheet with probability P_t, else reflected; an
         // opaque material draws no number for the choice.
-        const double p_transmit = m_materials.transmission_probability(m);
-        const bool through = p_transmit > 0.0 && rng.uniform() < p_transmit;
+        const double p_transmit = bsdf.transmission_probability();
+        const double u_side = p_transmit > 0.0 ? rng.uniform() : 1.0;
         const double u_lobe = rng.uniform();
         const double u1 = rng.uniform();
         const double u2 = rng.uniform();
-        Vec3 next;
-        if (through) {
-            const Vec3 local = sample_cosine_hemisphere(u1, u2);
-            next = {local.x, local.y, -local.z};
-            beta *= tau / p_transmit;
-        } else {
-            const auto sample = m_materials.shape(m).sample(wo_local, u_lobe, u1, u2);
-            if (!sample || !(sample->weight > 0.0)) break;
-            next = sample->wi;
-            beta *=
-                p_transmit > 0.0 ? rho * sample->weight / (1.0 - p_transmit) : rho * sample->weight;
-        }
+        const auto sample = bsdf.sample(wo_local, u_side, u_lobe, u1, u2);
+        if (!sample || !(sample->weight > 0.0)) break;
+        const Vec3 next = sample->wi;
+        beta *= (sample->side == ScatterSide::transmitted ? tau : rho) * sample->weight;
         if (!(beta > 0.0)) break;
         if (bounce + 1 >= m_settings.roulette_start_bounce) {
             const double survive = std::min(1.0, beta / ray.weight);

@@ -15,6 +15,8 @@ namespace {
 
 /// Tolerance on ε + ρ ≤ 1 and on the [0, 1] ranges (interpolation rounding).
 constexpr double kRangeSlack = 1e-9;
+/// Tolerance on ρ A(θo) ≤ 1: the tabulated albedo's estimation error (bsdf.h).
+constexpr double kAlbedoSlack = 2e-3;
 
 /// The table sampled at the grid's wavelengths, held constant beyond its ends; `covered` is
 /// cleared when the grid reaches outside the table.
@@ -42,7 +44,55 @@ void check_unit_range(const std::vector<double>& values, const model::Material& 
     }
 }
 
+/// The material's reflection lobe as a shape (ρ = 1); Ward's weights become shares of ρd + ρs.
+Bsdf::Reflection reflection_lobe(const model::Material& material) {
+    switch (material.model) {
+        case model::ReflectionModel::ward: {
+            const model::WardParameters& w = material.ward;
+            const double sum = w.diffuse + w.specular;
+            const double specular = sum > 0.0 ? w.specular / sum : 0.0;
+            return WardBrdf(1.0 - specular, specular, w.alpha_x, w.alpha_y);
+        }
+        case model::ReflectionModel::ross_li:
+            return RossLiBrdf(material.ross_li.volumetric, material.ross_li.geometric);
+        case model::ReflectionModel::lambertian:
+            break;
+    }
+    return SurfaceBrdf(1.0, material.specular.fraction, material.specular.roughness);
+}
+
 }  // namespace
+
+void MaterialTable::add_directional_emission(const model::Material& material,
+                                             const SpectralGrid& grid,
+                                             const std::vector<double>& rho) {
+    const Bsdf& shape = m_shapes.back();
+    if (shape.unit_albedo()) {
+        m_albedo_slot.push_back(kNoSlot);
+        return;
+    }
+    DirectionalAlbedo albedo(shape.reflection_lobe());
+    const double largest_rho = *std::max_element(rho.begin(), rho.end());
+    if (largest_rho * albedo.max() > 1.0 + kAlbedoSlack) {
+        throw input_error("material '" + material.id + "': its lobe's directional albedo reaches " +
+                              format_shortest(albedo.max()) + ", times its reflectance " +
+                              format_shortest(largest_rho) +
+                              " above 1 (it would reflect more than it receives)",
+                          material.where);
+    }
+    if (!material.emissivity_is_default) {
+        // A given emissivity is the material's, in every direction.
+        m_albedo_slot.push_back(kNoSlot);
+        return;
+    }
+    m_albedo_slot.push_back(m_albedos.size());
+    m_albedos.push_back(albedo);
+    for (std::size_t i = 0; i < m_bands; ++i) {
+        m_reflected_planck.push_back(rho[i] * planck_radiance_w_per_cm2_sr_um(
+                                                  grid.wavelength_um(i), material.temperature_k));
+    }
+    m_emits.back() = 1;
+}
 
 MaterialTable::MaterialTable(std::span<const model::Material> materials, const SpectralGrid& grid,
                              Log log)
@@ -151,8 +201,9 @@ MaterialTable::MaterialTable(std::span<const model::Material> materials, const S
         m_double_sided.push_back(material.double_sided ? 1 : 0);
         // Transmission is drawn in proportion to the band-mean τ against ρ + τ (0 for an
         // opaque material: its paths draw exactly what they drew before transmission existed).
-        m_transmission_probability.push_back(transmits ? tau_sum / (rho_sum + tau_sum) : 0.0);
-        m_shapes.emplace_back(1.0, material.specular.fraction, material.specular.roughness);
+        m_shapes.emplace_back(reflection_lobe(material),
+                              transmits ? tau_sum / (rho_sum + tau_sum) : 0.0);
+        add_directional_emission(material, grid, rho);
     }
 }
 

@@ -118,6 +118,24 @@ const double* at_height(const Bands& bands, const AltitudeLevel& at,
     return scratch.data();
 }
 
+/// L += β ⊙ E_sun / Ω_sun · weight for a path leaving the scene from a vertex at `level` in
+/// direction `wi`, when wi lies in the sun's disc (radiance E/Ω of a uniform disc; `sun_pdf`
+/// = 1/Ω).
+template <typename Bands>
+void add_sun_disc(const Bands& bands, const Environment& env, const AltitudeLevel& level,
+                  const Vec3& wi, double time_s, double weight, double sun_pdf,
+                  std::span<const double> beta, std::span<double> radiance,
+                  std::vector<double>& scratch) {
+    if (!(weight > 0.0)) return;
+    if (1.0 - dot(wi, env.sun_direction(time_s)) > env.sun_cone_one_minus_cos()) return;
+    const double* sun =
+        at_height(bands, level, &Environment::sun_irradiance_w_per_cm2_um, env, scratch);
+    const double factor = weight * sun_pdf;
+    for (std::size_t j = 0; j < radiance.size(); ++j) {
+        radiance[j] += beta[j] * sun[bands[j]] * factor;
+    }
+}
+
 /// L ← T_v ⊙ L + L_p for the primary ray's direction, from the primary hit's height z_m.
 void apply_sensor_path(const Environment& env, const RangeBands& bands, const Vec3& to_sensor,
                        double time_s, double z_m, PathScratch& scratch,
@@ -207,10 +225,10 @@ void PathTracer::add_point_lights(const Bands& bands, const scene::RayHit& hit, 
             continue;
         }
         // I |cos θ| / r², m² → cm² (10⁴), times the lobe's BRDF or 1/π through the sheet.
-        const double factor = cos_i > 0.0
-                                  ? m_materials.shape(material).eval(wo_local, frame.to_local(wi)) *
-                                        cos_i / (r2_m2 * 1e4)
-                                  : -cos_i / kPi / (r2_m2 * 1e4);
+        const double factor =
+            cos_i > 0.0 ? m_materials.bsdf(material).reflection(wo_local, frame.to_local(wi)) *
+                              cos_i / (r2_m2 * 1e4)
+                        : -cos_i / kPi / (r2_m2 * 1e4);
         const double* spectrum = cos_i > 0.0 ? rho : tau;
         const double* intensity = m_lights->intensity_w_per_sr_um(l).data();
         for (std::size_t j = 0; j < radiance.size(); ++j) {
@@ -291,6 +309,12 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
 
     Vec3 direction = ray.direction;
     const double first_z_m = hit->position_m.z;  // the sensor path starts here
+    // The density of a direction drawn uniformly in the sun's disc, per steradian.
+    const double sun_pdf = 1.0 / (2.0 * kPi * env.sun_cone_one_minus_cos());
+    // A glossy draw's share of the sun it finds (the balance heuristic against the disc).
+    const auto sun_weight = [sun_pdf](const BsdfSample& s) {
+        return s.pdf_per_sr / (s.pdf_per_sr + sun_pdf);
+    };
     for (unsigned bounce = 0;; ++bounce) {
         const std::size_t m = hit->material;
         // The sun and sky at this vertex's height (docs/scene.md).
@@ -308,13 +332,21 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
         // The spectrum the sun's next-event term scales: ρ in front, τ from behind a sheet.
         const double* sun_spectrum = rho;
 
+        const Bsdf& bsdf = m_materials.bsdf(m);
         // Emission and the sun by next-event estimation.
-        const double* emission = !dark && m_materials.emits(m)
-                                     ? m_materials.emission_w_per_cm2_sr_um(m).data()
-                                     : nullptr;
         double sun_factor = 0.0;
-        const Frame frame = Frame::from_normal(normal);
+        const Frame frame = shading_frame(bsdf, normal);
         const Vec3 wo_local = frame.to_local(wo);
+        const double* emission = nullptr;
+        if (!dark && m_materials.emits(m)) {
+            if (m_materials.directional_emission(m)) {
+                // Kirchhoff towards wo of a lobe whose albedo depends on the direction.
+                m_materials.emission_at(m, wo_local.z, bands, scratch.emission_towards);
+                emission = scratch.emission_towards.data();
+            } else {
+                emission = m_materials.emission_w_per_cm2_sr_um(m).data();
+            }
+        }
         // The first hit's record: its shadow ray is traced even on a black material (whose
         // path ends here, so the numbers drawn for it change nothing after).
         FirstHit* record = bounce == 0 ? first_hit : nullptr;
@@ -327,8 +359,13 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
             if (sun_blocked) return;
             if (drawn.cos_i > 0.0) {
                 if (reflects) {
-                    sun_factor =
-                        m_materials.shape(m).eval(wo_local, frame.to_local(drawn.wi)) * drawn.cos_i;
+                    const Vec3 wi_local = frame.to_local(drawn.wi);
+                    sun_factor = bsdf.reflection(wo_local, wi_local) * drawn.cos_i;
+                    // A glossy lobe's draws may find the sun too: the balance heuristic
+                    // between the two (the draw's share is added where a path escapes).
+                    if (bsdf.glossy()) {
+                        sun_factor /= 1.0 + bsdf.pdf_per_sr(wo_local, wi_local) / sun_pdf;
+                    }
                 }
             } else if (transmits) {
                 sun_factor = -drawn.cos_i / kPi;  // through the sheet: f = τ/π
@@ -378,25 +415,16 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
         // the far side, weight τ / P_t), else reflected by the lobe (weight ρ · w / (1 − P_t)).
         // An opaque material has P_t = 0 and draws no number for the choice.
         if (!scatters || bounce >= m_settings.max_bounces) break;
-        const double p_transmit = m_materials.transmission_probability(m);
-        const bool through = p_transmit > 0.0 && rng.uniform() < p_transmit;
+        const double p_transmit = bsdf.transmission_probability();
+        const double u_side = p_transmit > 0.0 ? rng.uniform() : 1.0;
         const double u_lobe = rng.uniform();
         const double u1 = rng.uniform();
         const double u2 = rng.uniform();
-        Vec3 wi;
-        double weight = 0.0;
-        const double* spectrum = rho;
-        if (through) {
-            const Vec3 local = sample_cosine_hemisphere(u1, u2);
-            wi = normalized(frame.to_world({local.x, local.y, -local.z}));
-            weight = 1.0 / p_transmit;
-            spectrum = tau;
-        } else {
-            const auto sample = m_materials.shape(m).sample(wo_local, u_lobe, u1, u2);
-            if (!sample || !(sample->weight > 0.0)) break;
-            wi = normalized(frame.to_world(sample->wi));
-            weight = p_transmit > 0.0 ? sample->weight / (1.0 - p_transmit) : sample->weight;
-        }
+        const auto sample = bsdf.sample(wo_local, u_side, u_lobe, u1, u2);
+        if (!sample || !(sample->weight > 0.0)) break;
+        const Vec3 wi = normalized(frame.to_world(sample->wi));
+        const double weight = sample->weight;
+        const double* spectrum = sample->side == ScatterSide::transmitted ? tau : rho;
         const double largest = beta_is_one ? first_throughput(bands, beta, spectrum, weight)
                                            : scale_throughput(bands, beta, spectrum, weight);
         beta_is_one = false;
@@ -417,6 +445,10 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
                     at_height(bands, level, &Environment::sky_radiance_w_per_cm2_sr_um, env,
                               scratch.sky_at_height);
                 for (std::size_t j = 0; j < count; ++j) radiance[j] += beta[j] * sky[bands[j]];
+            }
+            if ((sample->delta || bsdf.glossy()) && env.sun_visible()) {
+                add_sun_disc(bands, env, level, wi, time, sample->delta ? 1.0 : sun_weight(*sample),
+                             sun_pdf, beta, radiance, scratch.sun_at_height);
             }
             break;
         }

@@ -162,19 +162,71 @@ model::SpectralTable read_spectrum(Reader& r, const YAML::Node& node, const std:
 
 // ---- materials ------------------------------------------------------------------------------
 
+namespace {
+
+/// `ward: {diffuse, specular, alpha_x, alpha_y}` or `ross_li: {volumetric, geometric}`
+/// (docs/materials.md); Ward's reflectance becomes the constant diffuse + specular.
+void read_reflection_model(Reader& r, const YAML::Node& node, const std::string& path,
+                           model::Material& m) {
+    const YAML::Node ward = node["ward"];
+    const YAML::Node ross_li = node["ross_li"];
+    if (ward && ross_li) {
+        r.error(ross_li, Reader::join(path, "ross_li"),
+                "a material has one reflection model: \"ward\" or \"ross_li\", not both");
+        return;
+    }
+    for (const char* other : {"ward", "ross_li"}) {
+        if (node[other] && node["specular"]) {
+            r.error(node["specular"], Reader::join(path, "specular"),
+                    std::string("\"specular\" is the Lambertian model's lobe; a \"") + other +
+                        "\" material has its own");
+        }
+    }
+    if (ward) {
+        const std::string wp = Reader::join(path, "ward");
+        if (!r.expect_map(ward, wp)) return;
+        r.warn_unknown(ward, wp, {"diffuse", "specular", "alpha_x", "alpha_y"});
+        m.model = model::ReflectionModel::ward;
+        m.ward.diffuse = r.number_key(ward, wp, "diffuse", true).value_or(0.0);
+        m.ward.specular = r.number_key(ward, wp, "specular", true).value_or(0.0);
+        m.ward.alpha_x = r.number_key(ward, wp, "alpha_x", true).value_or(0.0);
+        m.ward.alpha_y = r.number_key(ward, wp, "alpha_y", false).value_or(m.ward.alpha_x);
+        m.reflectance.wavelengths_um = {0.01, 1000.0};
+        m.reflectance.values = {m.ward.diffuse + m.ward.specular, m.ward.diffuse + m.ward.specular};
+        m.reflectance.where = r.where(ward, wp);
+    }
+    if (ross_li) {
+        const std::string rp = Reader::join(path, "ross_li");
+        if (!r.expect_map(ross_li, rp)) return;
+        r.warn_unknown(ross_li, rp, {"volumetric", "geometric"});
+        m.model = model::ReflectionModel::ross_li;
+        m.ross_li.volumetric = r.number_key(ross_li, rp, "volumetric", true).value_or(0.0);
+        m.ross_li.geometric = r.number_key(ross_li, rp, "geometric", true).value_or(0.0);
+    }
+}
+
+}  // namespace
+
 model::Material read_material(Reader& r, const YAML::Node& node, const std::string& path) {
     model::Material m;
     m.where = r.where(node, path);
     if (!r.expect_map(node, path)) return m;
     r.warn_unknown(node, path,
-                   {"id", "name", "reflectance", "transmittance", "specular", "emissivity",
-                    "temperature", "double_sided"});
+                   {"id", "name", "reflectance", "transmittance", "specular", "ward", "ross_li",
+                    "emissivity", "temperature", "double_sided"});
     m.id = r.text_key(node, path, "id", true).value_or("");
     m.name = r.text_key(node, path, "name", false).value_or(m.id);
+    read_reflection_model(r, node, path, m);
     if (node["reflectance"]) {
-        m.reflectance =
-            read_spectrum(r, node["reflectance"], Reader::join(path, "reflectance"), "reflectance");
-    } else {
+        if (m.model == model::ReflectionModel::ward) {
+            r.error(node["reflectance"], Reader::join(path, "reflectance"),
+                    "a Ward material's reflectance is its diffuse + specular weights; remove "
+                    "\"reflectance\"");
+        } else {
+            m.reflectance = read_spectrum(r, node["reflectance"], Reader::join(path, "reflectance"),
+                                          "reflectance");
+        }
+    } else if (m.model != model::ReflectionModel::ward) {
         r.error(node, path, "missing required key \"reflectance\"");
     }
     if (const YAML::Node specular = node["specular"]) {
@@ -204,25 +256,9 @@ model::Material read_material(Reader& r, const YAML::Node& node, const std::stri
         m.emissivity =
             read_spectrum(r, node["emissivity"], Reader::join(path, "emissivity"), "emissivity");
         m.emissivity_is_default = false;
-    } else if (m.transmittance.empty()) {
-        m.emissivity.wavelengths_um = m.reflectance.wavelengths_um;
-        for (const double rho : m.reflectance.values) m.emissivity.values.push_back(1.0 - rho);
-        m.emissivity.where = m.reflectance.where;
     } else if (!m.reflectance.empty()) {
-        // Kirchhoff for a sheet, ε = 1 − ρ − τ, at every wavelength of either curve (so that it
-        // is exact between them too).
-        std::vector<double> at = m.reflectance.wavelengths_um;
-        at.insert(at.end(), m.transmittance.wavelengths_um.begin(),
-                  m.transmittance.wavelengths_um.end());
-        std::sort(at.begin(), at.end());
-        at.erase(std::unique(at.begin(), at.end()), at.end());
-        for (const double w : at) {
-            m.emissivity.wavelengths_um.push_back(w);
-            m.emissivity.values.push_back(
-                std::max(0.0, 1.0 - model::sample_held(m.reflectance, w) -
-                                  model::sample_held(m.transmittance, w)));
-        }
-        m.emissivity.where = m.reflectance.where;
+        // Kirchhoff: ε = 1 − ρ (− τ for a sheet) at every wavelength of the curves.
+        m.emissivity = model::kirchhoff_emissivity(m);
     }
     if (const auto sides = r.bool_key(node, path, "double_sided")) m.double_sided = *sides;
     if (const auto t = r.number_key(node, path, "temperature", false)) {

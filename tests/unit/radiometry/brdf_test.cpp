@@ -27,26 +27,14 @@ namespace brdf_test {
 
 using testing::chi_square_direction_test;
 using testing::DirectionHistogram;
+using testing::integrate_upper_hemisphere;
 using testing::kChiSquarePValueThreshold;
+using testing::local_direction;
 
 constexpr std::uint64_t kSeed = 20260522;
 constexpr int kChiSamples = 200000;
 /// Standard errors allowed between a Monte Carlo estimate and its bound or reference.
 constexpr double kSigmas = 4.0;
-
-Vec3 direction(double theta_deg, double phi_deg) {
-    const double t = theta_deg * kPi / 180.0, p = phi_deg * kPi / 180.0;
-    return {std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t)};
-}
-
-/// ∫ g(ω) dω over the upper hemisphere by Simpson on a fine (θ, φ) grid.
-double integrate_hemisphere(const std::function<double(const Vec3&)>& g) {
-    DirectionHistogram h;
-    h.theta_bins = 90;
-    h.phi_bins = 16;
-    const auto e = h.expected(1.0, g, 8);
-    return 1.0 - e.back();
-}
 
 /// Mean and standard error of n weights.
 struct Estimate {
@@ -71,13 +59,13 @@ Estimate estimate(int n, Draw&& draw) {
 
 TEST(Lambertian, ValueReciprocityAndAlbedo) {
     const LambertianBrdf f(0.7);
-    const Vec3 a = direction(20, 10), b = direction(70, 200);
+    const Vec3 a = local_direction(20, 10), b = local_direction(70, 200);
     EXPECT_DOUBLE_EQ(f.eval(a, b), 0.7 / kPi);
     EXPECT_EQ(f.eval(a, b), f.eval(b, a));
     EXPECT_EQ(f.eval(a, Vec3{0.0, 0.6, -0.8}), 0.0);
     EXPECT_EQ(f.eval(Vec3{0.0, 0.6, -0.8}, a), 0.0);
     const double albedo =
-        integrate_hemisphere([&](const Vec3& wi) { return f.eval(a, wi) * wi.z; });
+        integrate_upper_hemisphere([&](const Vec3& wi) { return f.eval(a, wi) * wi.z; });
     EXPECT_NEAR(albedo, 0.7, 1e-9);
     RandomStream rng(kSeed, {1});
     for (int i = 0; i < 1000; ++i) {
@@ -101,13 +89,14 @@ TEST(Ggx, DistributionAndVisibleNormalsAreNormalised) {
     for (double alpha : {0.05, 0.1, 0.3, 0.6, 1.0}) {
         const GgxBrdf g(alpha);
         // ∫ D(h) cos θh dωh = 1 (projected microfacet area equals the macro-surface).
-        EXPECT_NEAR(integrate_hemisphere([&](const Vec3& h) { return g.distribution(h) * h.z; }),
-                    1.0, 1e-4)
+        EXPECT_NEAR(
+            integrate_upper_hemisphere([&](const Vec3& h) { return g.distribution(h) * h.z; }), 1.0,
+            1e-4)
             << alpha;
         for (double theta_o : {0.0, 45.0, 80.0}) {
-            const Vec3 wo = direction(theta_o, 30.0);
+            const Vec3 wo = local_direction(theta_o, 30.0);
             // ∫ G₁(wo) max(0, wo·h) D(h) / cos θo dωh = 1 (Smith's G₁ is consistent with D).
-            const double visible = integrate_hemisphere([&](const Vec3& h) {
+            const double visible = integrate_upper_hemisphere([&](const Vec3& h) {
                 return g.masking(wo) * std::max(0.0, dot(wo, h)) * g.distribution(h) / wo.z;
             });
             EXPECT_NEAR(visible, 1.0, 1e-4) << alpha << " " << theta_o;
@@ -138,7 +127,7 @@ TEST(Ggx, ChiSquareOfSampledDirections) {
         // 24 do as much for α ≥ 0.3.
         const int panels = alpha < 0.2 ? 48 : 24;
         for (double theta_o : {0.0, 30.0, 60.0, 85.0}) {
-            const Vec3 wo = direction(theta_o, 40.0);
+            const Vec3 wo = local_direction(theta_o, 40.0);
             const auto r = chi_square_direction_test(
                 DirectionHistogram{}, kChiSamples,
                 [&](double u1, double u2) -> std::optional<Vec3> {
@@ -183,7 +172,7 @@ TEST(Ggx, WhiteFurnaceAlbedoWithinBound) {
     for (double alpha : {0.001, 0.05, 0.3, 0.6, 1.0}) {
         const GgxBrdf g(alpha);
         for (double theta_o : {0.0, 30.0, 60.0, 80.0, 89.0}) {
-            const Vec3 wo = direction(theta_o, 0.0);
+            const Vec3 wo = local_direction(theta_o, 0.0);
             RandomStream rng(kSeed, {stream++});
             const Estimate e = estimate(kN, [&] {
                 const auto s = g.sample(wo, rng.uniform(), rng.uniform());
@@ -214,8 +203,8 @@ TEST(Ggx, AnalyticAlbedoAtNormalIncidenceForAlphaOne) {
     const GgxBrdf g(1.0);
     const Vec3 wo{0.0, 0.0, 1.0};
     const double exact = 1.0 - std::log(2.0);
-    EXPECT_NEAR(integrate_hemisphere([&](const Vec3& wi) { return g.eval(wo, wi) * wi.z; }), exact,
-                1e-6);
+    EXPECT_NEAR(integrate_upper_hemisphere([&](const Vec3& wi) { return g.eval(wo, wi) * wi.z; }),
+                exact, 1e-6);
     RandomStream rng(kSeed, {7});
     const Estimate e = estimate(40000, [&] {
         const auto s = g.sample(wo, rng.uniform(), rng.uniform());
@@ -252,7 +241,7 @@ TEST(SurfaceBrdf, ChiSquareOfSampledDirections) {
     std::uint64_t stream = 300;
     for (double theta_o : {10.0, 50.0, 80.0}) {
         const SurfaceBrdf m(0.5, 0.3, 0.6);
-        const Vec3 wo = direction(theta_o, 120.0);
+        const Vec3 wo = local_direction(theta_o, 120.0);
         RandomStream lobe(kSeed, {stream + 1000});
         const auto r = chi_square_direction_test(
             DirectionHistogram{}, kChiSamples,
@@ -273,7 +262,7 @@ TEST(SurfaceBrdf, SampleWeightAndAlbedoBound) {
                                     std::tuple{0.0, 1.0, 0.1}, std::tuple{0.3, 0.0, 0.5}}) {
         const SurfaceBrdf m(rho, s, r);
         for (double theta_o : {0.0, 45.0, 85.0}) {
-            const Vec3 wo = direction(theta_o, 0.0);
+            const Vec3 wo = local_direction(theta_o, 0.0);
             const Estimate e = estimate(20000, [&] {
                 const auto smp = m.sample(wo, rng.uniform(), rng.uniform(), rng.uniform());
                 if (!smp) return 0.0;
@@ -294,11 +283,11 @@ TEST(SurfaceBrdf, SampleWeightAndAlbedoBound) {
 
 TEST(SurfaceBrdf, BlackAndBelowHorizonGiveNoSample) {
     const SurfaceBrdf black(0.0, 0.0, 0.5);
-    EXPECT_FALSE(black.sample(direction(30, 0), 0.5, 0.5, 0.5).has_value());
-    EXPECT_EQ(black.eval(direction(30, 0), direction(40, 90)), 0.0);
+    EXPECT_FALSE(black.sample(local_direction(30, 0), 0.5, 0.5, 0.5).has_value());
+    EXPECT_EQ(black.eval(local_direction(30, 0), local_direction(40, 90)), 0.0);
     const SurfaceBrdf m(0.5, 0.5, 0.5);
     EXPECT_FALSE(m.sample(Vec3{0.0, 0.0, -1.0}, 0.5, 0.5, 0.5).has_value());
-    EXPECT_EQ(m.pdf_per_sr(direction(30, 0), Vec3{0.0, 0.0, -1.0}), 0.0);
+    EXPECT_EQ(m.pdf_per_sr(local_direction(30, 0), Vec3{0.0, 0.0, -1.0}), 0.0);
     EXPECT_THROW(SurfaceBrdf(0.5, 1.2, 0.5), Error);
     EXPECT_THROW(SurfaceBrdf(0.5, 0.5, -0.1), Error);
     EXPECT_THROW(SurfaceBrdf(2.0, 0.5, 0.5), Error);
@@ -307,7 +296,7 @@ TEST(SurfaceBrdf, BlackAndBelowHorizonGiveNoSample) {
 TEST(SurfaceBrdf, Deterministic) {
     const SurfaceBrdf m(0.5, 0.3, 0.4);
     RandomStream a(kSeed, {6}), b(kSeed, {6});
-    const Vec3 wo = direction(35, 10);
+    const Vec3 wo = local_direction(35, 10);
     for (int i = 0; i < 1000; ++i) {
         const auto sa = m.sample(wo, a.uniform(), a.uniform(), a.uniform());
         const auto sb = m.sample(wo, b.uniform(), b.uniform(), b.uniform());

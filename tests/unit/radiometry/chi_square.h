@@ -176,4 +176,24 @@ inline ChiSquareResult chi_square_direction_test(
     return chi_square(observed, hist.expected(n, pdf, sub));
 }
 
+/// The local unit direction at polar angle `theta_deg` from +z and azimuth `phi_deg` from +x.
+inline Vec3 local_direction(double theta_deg, double phi_deg) {
+    const double t = theta_deg * kPi / 180.0, p = phi_deg * kPi / 180.0;
+    return {std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t)};
+}
+
+/// ∫ g(ω) dω over the upper hemisphere by Simpson on 90 θ × 16 φ cells with `panels` × `panels`
+/// panels each: the sum of DirectionHistogram's cells (its extra cell, max(0, 1 − Σ), is left
+/// out, so an integral above 1 is not clipped).
+inline double integrate_upper_hemisphere(const std::function<double(const Vec3&)>& g,
+                                         int panels = 8) {
+    DirectionHistogram h;
+    h.theta_bins = 90;
+    h.phi_bins = 16;
+    const std::vector<double> cells = h.expected(1.0, g, panels);
+    double sum = 0.0;
+    for (std::size_t i = 0; i + 1 < cells.size(); ++i) sum += cells[i];
+    return sum;
+}
+
 }  // namespace glint::radiometry::testing

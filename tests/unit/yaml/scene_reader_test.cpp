@@ -344,6 +344,60 @@ objects: []
                       "materials[0].transmittance.values[1]");
 }
 
+TEST(SceneReaderMaterials, WardAndRossLiModels) {
+    // `ward` replaces the reflectance (spectrally constant diffuse + specular); `ross_li`
+    // shapes the reflectance curve (f_iso); alpha_y defaults to alpha_x.
+    TempDir dir;
+    const Read read = read_text(dir, R"(materials:
+  - id: metal
+    ward: {diffuse: 0.1, specular: 0.5, alpha_x: 0.2}
+  - id: field
+    reflectance: {wavelengths: [0.4, 0.8], values: [0.05, 0.4]}
+    ross_li: {volumetric: 0.6, geometric: 0.12}
+objects: []
+)");
+    EXPECT_EQ(read.diagnostics.items().size(), 0u) << dump(read.diagnostics);
+    ASSERT_EQ(read.scene.materials.size(), 2u);
+    const model::Material& metal = read.scene.materials[0];
+    EXPECT_EQ(metal.model, model::ReflectionModel::ward);
+    EXPECT_DOUBLE_EQ(metal.ward.alpha_y, 0.2);
+    EXPECT_EQ(metal.reflectance.values, (std::vector<double>{0.6, 0.6}));
+    EXPECT_TRUE(metal.emissivity_is_default);
+    EXPECT_NEAR(metal.emissivity.values[0], 0.4, 1e-12);
+    const model::Material& field = read.scene.materials[1];
+    EXPECT_EQ(field.model, model::ReflectionModel::ross_li);
+    EXPECT_DOUBLE_EQ(field.ross_li.volumetric, 0.6);
+    EXPECT_DOUBLE_EQ(field.ross_li.geometric, 0.12);
+
+    const Read both = read_text(dir, R"(materials:
+  - id: metal
+    ward: {diffuse: 0.1, specular: 0.5, alpha_x: 0.2}
+    reflectance: {wavelengths: [0.4, 0.8], values: [0.05, 0.4]}
+objects: []
+)");
+    expect_diagnostic(both,
+                      "a Ward material's reflectance is its diffuse + specular weights; remove "
+                      "\"reflectance\"",
+                      4, "materials[0].reflectance");
+    const Read lobe = read_text(dir, R"(materials:
+  - id: field
+    reflectance: {wavelengths: [0.4, 0.8], values: [0.05, 0.4]}
+    ross_li: {volumetric: 0.6, geometric: 0.12}
+    specular: {fraction: 0.2, roughness: 0.1}
+objects: []
+)");
+    expect_diagnostic(lobe,
+                      "\"specular\" is the Lambertian model's lobe; a \"ross_li\" material has "
+                      "its own",
+                      5, "materials[0].specular");
+    const Read missing = read_text(dir, R"(materials:
+  - id: metal
+    ward: {diffuse: 0.1, alpha_x: 0.2}
+objects: []
+)");
+    expect_diagnostic(missing, "missing required key \"specular\"", 3, "materials[0].ward");
+}
+
 TEST(SceneReaderMaterials, DoubleSided) {
     TempDir dir;
     const Read read = read_text(dir, R"(materials:

@@ -105,12 +105,36 @@ struct SpecularLobe {
     double roughness = 0.0;
 };
 
+/// The reflection model of a material (docs/materials.md). `lambertian`: ρ(λ) spread as a
+/// Lambertian lobe, with the SpecularLobe's share in a GGX lobe or a mirror.
+enum class ReflectionModel { lambertian, ward, ross_li };
+
+/// DIRSIG's Ward BRDF, f = ρd/π + ρs f_Ward(αx, αy) (spectrally constant): the diffuse and
+/// specular weights and the widths (σ, the rms slope) along the surface's x and y axes.
+struct WardParameters {
+    double diffuse = 0.0;
+    double specular = 0.0;
+    double alpha_x = 0.0;
+    double alpha_y = 0.0;
+};
+
+/// The Ross–Li kernel weights relative to the isotropic one (f_vol/f_iso, f_geo/f_iso); the
+/// material's reflectance curve is f_iso(λ).
+struct RossLiParameters {
+    double volumetric = 0.0;
+    double geometric = 0.0;
+};
+
 /// A surface material: opaque, or a thin two-sided sheet (a leaf) when it has a transmittance.
 struct Material {
     std::string id;    ///< as written (a number is kept as its text)
     std::string name;  ///< OBJ `usemtl` names bind to it; defaults to the id
     SpectralTable reflectance;
     SpecularLobe specular;
+    /// The reflection lobe's shape; with `ward`, `reflectance` is the constant ρd + ρs.
+    ReflectionModel model = ReflectionModel::lambertian;
+    WardParameters ward;
+    RossLiParameters ross_li;
     /// Diffuse (Lambertian) transmittance τ of a thin sheet, the same from either side: the
     /// share of the irradiance on one face that leaves the other, spread as f = τ/π. Empty:
     /// opaque (τ = 0).
@@ -268,5 +292,10 @@ std::pair<double, double> measured_range_um(const Material& material);
 /// 1 on any grid; beyond it the renderer lowers the held emissivity, see physics.md).
 /// Problems go to `diagnostics` at the material's `where`.
 void check_material(const Material& material, Diagnostics& diagnostics);
+
+/// Kirchhoff's emissivity of `material`, ε = max(0, 1 − ρ − τ), at every wavelength of its
+/// reflectance and transmittance curves (so that it is exact between them too), located at
+/// the reflectance curve.
+SpectralTable kirchhoff_emissivity(const Material& material);
 
 }  // namespace glint::model

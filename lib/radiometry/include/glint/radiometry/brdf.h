@@ -29,11 +29,19 @@ namespace glint::radiometry {
 /// not modelled).
 inline constexpr double kMinGgxAlpha = 1e-3;
 
+/// wo reflected about the unit vector h: 2 (wo·h) h − wo.
+inline Vec3 reflect_about(const Vec3& wo, const Vec3& h) noexcept {
+    return 2.0 * dot(wo, h) * h - wo;
+}
+
 /// A sampled incident direction with its Monte Carlo weight.
 struct BrdfSample {
     Vec3 wi;                  ///< sampled unit direction towards the light (local frame)
     double weight = 0.0;      ///< f(wo, wi) · cos θi / pdf: the factor applied to L(wi)
     double pdf_per_sr = 0.0;  ///< density of wi per steradian (of the whole sampler)
+    /// wi was drawn from a delta lobe (a mirror): `pdf_per_sr` is 0, eval() cannot give it,
+    /// and `weight` is the lobe's share of the reflectance over its probability.
+    bool delta = false;
 };
 
 /// The Lambertian BRDF f = ρ / π, sampled with the cosine-weighted hemisphere (weight = ρ).
@@ -100,8 +108,11 @@ private:
 
 /// The material BRDF: f = ρ [(1 − s) / π + s f_GGX(α)], with ρ the reflectance, s the
 /// specular fraction (the share of the reflectance that goes into the lobe) and α =
-/// max(roughness², kMinGgxAlpha). Its directional albedo is ρ [(1 − s) + s E_GGX(wo)] ≤ ρ.
-/// Because ρ scales the whole BRDF, a spectral reflectance ρ(λ) keeps the lobe shape and
+/// max(roughness², kMinGgxAlpha); a roughness of exactly 0 makes the lobe a mirror,
+/// f = ρ [(1 − s)/π + s δ(wi − R(wo)) / cos θi] with R(wo) = (−wo.x, −wo.y, wo.z): eval() and
+/// pdf_per_sr() then hold the diffuse part only, and sample() gives the mirror direction
+/// (delta = true, weight ρ) with probability s. Its directional albedo is ρ [(1 − s) + s E_GGX(wo)]
+/// ≤ ρ. Because ρ scales the whole BRDF, a spectral reflectance ρ(λ) keeps the lobe shape and
 /// sampling independent of wavelength (the path tracer samples once for all bands).
 /// Sampling picks the GGX lobe with probability P_s = s and the cosine lobe otherwise, and
 /// weights the sample by the full f cos θi / pdf with pdf = (1 − s) cos θi/π + s pdf_GGX
@@ -120,6 +131,8 @@ public:
     double specular_fraction() const noexcept { return m_specular_fraction; }
     /// The probability P_s with which sample() picks the specular lobe.
     double specular_probability() const noexcept { return m_specular_probability; }
+    /// Whether the specular lobe is a mirror (roughness 0 and s > 0).
+    bool mirror() const noexcept { return m_mirror; }
 
     /// f(wo, wi) in sr⁻¹.
     double eval(const Vec3& wo, const Vec3& wi) const noexcept;
@@ -136,6 +149,7 @@ private:
     GgxBrdf m_specular;
     double m_specular_fraction;
     double m_specular_probability;
+    bool m_mirror;
 };
 
 }  // namespace glint::radiometry

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // A scene's materials sampled on one spectral grid, as the path tracer uses them: per band
 // the reflectance ρ(λ), the diffuse transmittance τ(λ) of a thin sheet (0 when opaque) and
-// the emitted radiance ε(λ) B(λ, T); per material the wavelength-independent lobe shape
-// (SurfaceBrdf with ρ = 1, so f_λ = ρ(λ) · shape) and the transmission f_λ = τ(λ)/π. Tables are
+// the emitted radiance ε(λ) B(λ, T); per material the wavelength-independent scattering
+// shape (Bsdf: f_λ = ρ(λ) · R on the side of wo, τ(λ)/π through a thin sheet). A directional
+// lobe whose albedo A(θo) is not 1 and whose emissivity is Kirchhoff's emits
+// [1 − τ(λ) − ρ(λ) A(θo)] B(λ, T) towards θo (emission_at). Tables are
 // held flat ([material][band]) so a path touches no allocation. Curves are linearly interpolated
 // and held constant beyond their first and last wavelength (a warning names each material
 // whose curve does not cover the grid). Units: emitted radiance W/(cm² sr µm).
@@ -15,7 +17,7 @@
 #include "glint/core/log.h"
 #include "glint/core/spectral.h"
 #include "glint/model/scene.h"
-#include "glint/radiometry/brdf.h"
+#include "glint/radiometry/bsdf.h"
 
 namespace glint::radiometry {
 
@@ -59,12 +61,35 @@ public:
     /// The probability with which a path leaving material `m` is transmitted rather than
     /// reflected: Σ τ / Σ (ρ + τ) over the bands; 0 for an opaque material.
     double transmission_probability(std::size_t m) const noexcept {
-        return m_transmission_probability[m];
+        return m_shapes[m].transmission_probability();
     }
-    /// The lobe shape of material `m`: SurfaceBrdf(1, s, roughness).
-    const SurfaceBrdf& shape(std::size_t m) const noexcept { return m_shapes[m]; }
+    /// The scattering shape of material `m`.
+    const Bsdf& bsdf(std::size_t m) const noexcept { return m_shapes[m]; }
+    /// Whether material `m`'s emission depends on the direction (Kirchhoff's emissivity of a
+    /// lobe whose albedo is not 1): use emission_at().
+    bool directional_emission(std::size_t m) const noexcept { return m_albedo_slot[m] != kNoSlot; }
+    /// Material `m`'s emission towards a direction at cos θo from its normal, W/(cm² sr µm),
+    /// at the bands `bands` (indices into the grid) written into `out` at the same indices:
+    /// ε(λ) B + ρ(λ) B (1 − A(θo)) with ε = 1 − ρ − τ the table's.
+    template <typename Bands>
+    void emission_at(std::size_t m, double cos_o, const Bands& bands,
+                     std::span<double> out) const noexcept {
+        const double absorbed = 1.0 - m_albedos[m_albedo_slot[m]].at(cos_o);
+        const double* e = m_emission.data() + m * m_bands;
+        const double* rb = m_reflected_planck.data() + m_albedo_slot[m] * m_bands;
+        for (std::size_t j = 0; j < bands.size(); ++j) {
+            const std::size_t b = bands[j];
+            out[b] = e[b] + rb[b] * absorbed;
+        }
+    }
 
 private:
+    /// Completes the last material added (its Bsdf is m_shapes.back()): refuses a lobe that
+    /// reflects more than it receives and, for Kirchhoff's emissivity of a lobe whose albedo is
+    /// not 1, keeps the albedo table and ρ B for emission_at().
+    void add_directional_emission(const model::Material& material, const SpectralGrid& grid,
+                                  const std::vector<double>& rho);
+
     std::size_t m_bands = 0;
     std::vector<double> m_reflectance;
     std::vector<double> m_emission;
@@ -73,8 +98,11 @@ private:
     std::vector<double> m_transmittance;
     std::vector<unsigned char> m_transmits;
     std::vector<unsigned char> m_double_sided;
-    std::vector<double> m_transmission_probability;
-    std::vector<SurfaceBrdf> m_shapes;
+    std::vector<Bsdf> m_shapes;
+    static constexpr std::size_t kNoSlot = static_cast<std::size_t>(-1);
+    std::vector<std::size_t> m_albedo_slot;    ///< per material: index into m_albedos
+    std::vector<DirectionalAlbedo> m_albedos;  ///< of the directional-emission materials
+    std::vector<double> m_reflected_planck;    ///< ρ(λ) B(λ, T) per slot and band
 };
 
 }  // namespace glint::radiometry
