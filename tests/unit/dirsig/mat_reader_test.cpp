@@ -136,6 +136,147 @@ TEST(MatReader, DoubleSidedFalseMakesTheBackFaceBlack) {
                   "TRUE nor FALSE; the material is two-sided\n");
 }
 
+TEST(MatReader, SurfaceModelsAsDirsigWritesThem) {
+    // SimpleReflectance + SimpleTransmittance (a leaf: Kirchhoff ε = 1 − ρ − τ), WardBRDF
+    // (DS_WEIGHTS, XY_SIGMAS: spectrally constant ρd + ρs) and ClassicEmissivity with a
+    // SPECULAR_FRACTION (a mirror share); each guessed reading is said once per file.
+    TempDir dir;
+    write_file(dir / "r.txt", "0.4 0.1\n0.8 0.5\n");
+    write_file(dir / "t.txt", "0.4 0.05\n0.8 0.4\n");
+    write_file(dir / "w.ems", "0.4 0.98\n1.0 0.98\n");
+    write_file(dir / "m.mat",
+               "MATERIAL_ENTRY {\n  ID = leaf\n  DOUBLE_SIDED = TRUE\n"
+               "  SURFACE_PROPERTIES {\n"
+               "    REFLECTANCE_PROP_NAME = SimpleReflectance\n"
+               "    REFLECTANCE_PROP { TXT_FILENAME = r.txt }\n"
+               "    TRANSMITTANCE_PROP_NAME = SimpleTransmittance\n"
+               "    TRANSMITTANCE_PROP { TXT_FILENAME = t.txt }\n  }\n}\n"
+               "MATERIAL_ENTRY {\n  ID = metal\n  SURFACE_PROPERTIES {\n"
+               "    REFLECTANCE_PROP_NAME = WardBRDF\n"
+               "    REFLECTANCE_PROP {\n      DS_WEIGHTS = 0.2, 0.5\n      XY_SIGMAS = 0.1 0.3\n"
+               "    }\n  }\n}\n"
+               "MATERIAL_ENTRY {\n  ID = water\n  SURFACE_PROPERTIES {\n"
+               "    EMISSIVITY_PROP_NAME = ClassicEmissivity\n"
+               "    EMISSIVITY_PROP {\n      FILENAME = w.ems\n      SPECULAR_FRACTION = 1\n"
+               "    }\n  }\n}\n"
+               "MATERIAL_ENTRY {\n  ID = wet\n  SURFACE_PROPERTIES {\n"
+               "    EMISSIVITY_PROP { FILENAME = w.ems\n SPECULAR_FRACTION = 0.25 }\n  }\n}\n");
+    Diagnostics diagnostics;
+    const auto materials = read_dirsig_materials(dir / "m.mat", {}, diagnostics);
+    EXPECT_FALSE(diagnostics.has_errors()) << diagnostics_text(diagnostics);
+    ASSERT_EQ(materials.size(), 4u);
+    const model::Material& leaf = materials[0];
+    expect_values(leaf.transmittance.values, {0.05, 0.4});
+    EXPECT_TRUE(leaf.emissivity_is_default);
+    expect_values(leaf.emissivity.values, {0.85, 0.1});
+    const model::Material& metal = materials[1];
+    EXPECT_EQ(metal.model, model::ReflectionModel::ward);
+    EXPECT_DOUBLE_EQ(metal.ward.diffuse, 0.2);
+    EXPECT_DOUBLE_EQ(metal.ward.specular, 0.5);
+    EXPECT_DOUBLE_EQ(metal.ward.alpha_x, 0.1);
+    EXPECT_DOUBLE_EQ(metal.ward.alpha_y, 0.3);
+    expect_values(metal.reflectance.values, {0.7, 0.7});
+    expect_values(metal.emissivity.values, {0.3, 0.3});
+    EXPECT_DOUBLE_EQ(materials[2].specular.fraction, 1.0);
+    EXPECT_DOUBLE_EQ(materials[2].specular.roughness, 0.0);
+    expect_values(materials[2].reflectance.values, {0.02, 0.02});
+    EXPECT_DOUBLE_EQ(materials[3].specular.fraction, 0.25);
+    const std::string m = (dir / "m.mat").string();
+    EXPECT_EQ(warnings_text(diagnostics),
+              m +
+                  ":8: MATERIAL_ENTRY[leaf]/SURFACE_PROPERTIES/TRANSMITTANCE_PROP: "
+                  "TRANSMITTANCE_PROP read as SimpleTransmittance: a diffuse transmittance curve "
+                  "(TXT_FILENAME) of a thin two-sided sheet (glint's reading; "
+                  "docs/materials.md); said once per file\n" +
+                  m +
+                  ":16: MATERIAL_ENTRY[metal]/SURFACE_PROPERTIES/REFLECTANCE_PROP/"
+                  "DS_WEIGHTS: WardBRDF read as DS_WEIGHTS = diffuse, specular and "
+                  "XY_SIGMAS = sigma_x, sigma_y of Ward's 1992 model (glint's reading of "
+                  "DIRSIG's keys; docs/materials.md); said once per file\n" +
+                  m +
+                  ":27: MATERIAL_ENTRY[water]/SURFACE_PROPERTIES/EMISSIVITY_PROP/"
+                  "SPECULAR_FRACTION: SPECULAR_FRACTION read as the share of the "
+                  "reflectance in a mirror lobe, the rest Lambertian (glint's reading of "
+                  "DIRSIG's specularity; docs/materials.md); said once per file\n");
+}
+
+struct RefusedModel {
+    const char* name;
+    const char* surface;  ///< the SURFACE_PROPERTIES body
+    const char* message;
+};
+
+class RefusedSurfaceModels : public ::testing::TestWithParam<RefusedModel> {};
+
+TEST_P(RefusedSurfaceModels, OneErrorNamingTheModel) {
+    TempDir dir;
+    write_file(dir / "r.txt", "0.4 0.1\n0.8 0.5\n");
+    write_file(dir / "m.mat", std::string("MATERIAL_ENTRY {\n  ID = 1\n  SURFACE_PROPERTIES {\n") +
+                                  GetParam().surface + "\n  }\n}\n");
+    Diagnostics diagnostics;
+    read_dirsig_materials(dir / "m.mat", {}, diagnostics);
+    EXPECT_EQ(only_error(diagnostics).text(), (dir / "m.mat").string() + GetParam().message);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    MatReader, RefusedSurfaceModels,
+    ::testing::Values(
+        RefusedModel{"RossLi",
+                     "REFLECTANCE_PROP_NAME = RossLiBRDF\nREFLECTANCE_PROP { F_ISO = 0.1 }",
+                     ":4: MATERIAL_ENTRY[1]/SURFACE_PROPERTIES/REFLECTANCE_PROP_NAME: surface "
+                     "model \"RossLiBRDF\" is not supported: its .mat parameter keys are not "
+                     "documented publicly; glint's YAML scene format has the Ross-Li model "
+                     "(ross_li: {volumetric, geometric})"},
+        RefusedModel{"PriestGermer",
+                     "REFLECTANCE_PROP_NAME = PriestGermerBRDF\nREFLECTANCE_PROP { }",
+                     ":4: MATERIAL_ENTRY[1]/SURFACE_PROPERTIES/REFLECTANCE_PROP_NAME: surface "
+                     "model \"PriestGermerBRDF\" is not supported: its parameter files (.brdf) "
+                     "are not documented publicly"},
+        RefusedModel{"DeltaTransmittance",
+                     "REFLECTANCE_PROP { TXT_FILENAME = r.txt }\n"
+                     "TRANSMITTANCE_PROP_NAME = DeltaTransmittance\nTRANSMITTANCE_PROP { }",
+                     ":5: MATERIAL_ENTRY[1]/SURFACE_PROPERTIES/TRANSMITTANCE_PROP_NAME: surface "
+                     "model \"DeltaTransmittance\" is not supported: straight-through "
+                     "transmission is not modelled (shadows would need spectral shadow rays)"},
+        RefusedModel{"Unknown", "REFLECTANCE_PROP_NAME = Shiny\nREFLECTANCE_PROP { }",
+                     ":4: MATERIAL_ENTRY[1]/SURFACE_PROPERTIES/REFLECTANCE_PROP_NAME: unknown "
+                     "REFLECTANCE model \"Shiny\" (and no curve file to read as "
+                     "SimpleReflectance)"},
+        RefusedModel{"Extinction",
+                     "REFLECTANCE_PROP { TXT_FILENAME = r.txt }\nEXTINCTION_PROP { FILENAME = "
+                     "leaf.ext }",
+                     ":5: MATERIAL_ENTRY[1]/SURFACE_PROPERTIES/EXTINCTION_PROP: EXTINCTION_PROP "
+                     "is not supported: extinction (.ext) slabs are not modelled; give a "
+                     "SimpleTransmittance"},
+        RefusedModel{"WardWithoutSigmas",
+                     "REFLECTANCE_PROP_NAME = WardBRDF\nREFLECTANCE_PROP { DS_WEIGHTS = 0.1, 0.2 }",
+                     ":5: MATERIAL_ENTRY[1]/SURFACE_PROPERTIES/REFLECTANCE_PROP: WardBRDF needs "
+                     "DS_WEIGHTS (diffuse, specular) and XY_SIGMAS (x, y)"},
+        RefusedModel{"BadSpecularFraction",
+                     "EMISSIVITY_PROP { FILENAME = r.txt\nSPECULAR_FRACTION = 2 }",
+                     ":5: MATERIAL_ENTRY[1]/SURFACE_PROPERTIES/EMISSIVITY_PROP/SPECULAR_FRACTION: "
+                     "SPECULAR_FRACTION \"2\" is not a number in [0, 1]"}),
+    [](const ::testing::TestParamInfo<RefusedModel>& param) { return param.param.name; });
+
+TEST(MatReader, AnUnknownModelWithACurveFileIsReadAsTheSimpleOneWithAWarning) {
+    TempDir dir;
+    write_file(dir / "r.txt", "0.4 0.1\n0.8 0.5\n");
+    write_file(dir / "m.mat",
+               "MATERIAL_ENTRY {\n  ID = 1\n  SURFACE_PROPERTIES {\n"
+               "    REFLECTANCE_PROP_NAME = ExtendedReflectanceProp\n"
+               "    REFLECTANCE_PROP { TXT_FILENAME = r.txt }\n  }\n}\n");
+    Diagnostics diagnostics;
+    const auto materials = read_dirsig_materials(dir / "m.mat", {}, diagnostics);
+    EXPECT_FALSE(diagnostics.has_errors()) << diagnostics_text(diagnostics);
+    ASSERT_EQ(materials.size(), 1u);
+    expect_values(materials[0].reflectance.values, {0.1, 0.5});
+    EXPECT_EQ(warnings_text(diagnostics),
+              (dir / "m.mat").string() +
+                  ":4: MATERIAL_ENTRY[1]/SURFACE_PROPERTIES/REFLECTANCE_PROP_NAME: unknown "
+                  "REFLECTANCE model \"ExtendedReflectanceProp\": its curve file is read as "
+                  "SimpleReflectance's\n");
+}
+
 TEST(MatReader, EmissivityPlusReflectanceAboveOneLowersTheReflectanceWithOneWarning) {
     TempDir dir;
     write_file(dir / "r.txt", "0.4 0.2\n10.0 0.2\n");
