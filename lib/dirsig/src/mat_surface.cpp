@@ -36,8 +36,8 @@ constexpr Refused kRefusedModels[] = {
      "its keys are not documented publicly; SPECULAR_FRACTION = 1 in EMISSIVITY_PROP gives a "
      "mirror"},
     {"DELTATRANSMITTANCE",
-     "straight-through transmission is not modelled (shadows would need spectral shadow "
-     "rays)"},
+     "its keys are not documented publicly; glint's YAML scene format has straight-through "
+     "transmission (transmission: straight)"},
     {"RGBMAP", "reflectance maps are not read"},
     {"REFLECTANCEMAP", "reflectance maps are not read"},
     {"CURVEMAP", "reflectance maps are not read"},

@@ -119,6 +119,10 @@ void check_material(const Material& material, Diagnostics& diagnostics) {
         return;
     }
     if (!check_reflection_model(material, name, diagnostics)) return;
+    if (material.straight_transmission && material.transmittance.empty()) {
+        diagnostics.error(material.where, name + ": straight transmission needs a transmittance");
+        return;
+    }
     std::set<double> wavelengths(material.reflectance.wavelengths_um.begin(),
                                  material.reflectance.wavelengths_um.end());
     for (const SpectralTable* table : {&material.transmittance, &material.emissivity}) {

@@ -29,8 +29,10 @@ std::optional<BrdfSample> draw(const Bsdf::Reflection& lobe, const Vec3& wo, dou
 
 }  // namespace
 
-Bsdf::Bsdf(Reflection reflection, double transmission_probability)
-    : m_reflection(std::move(reflection)), m_transmission_probability(transmission_probability) {
+Bsdf::Bsdf(Reflection reflection, double transmission_probability, bool straight)
+    : m_reflection(std::move(reflection)),
+      m_transmission_probability(transmission_probability),
+      m_straight(straight && transmission_probability > 0.0) {
     if (!(transmission_probability >= 0.0 && transmission_probability <= 1.0)) {
         throw input_error("transmission probability " + format_shortest(transmission_probability) +
                           " must lie in [0, 1]");
@@ -56,7 +58,7 @@ double Bsdf::reflection(const Vec3& wo, const Vec3& wi) const noexcept {
 double Bsdf::pdf_per_sr(const Vec3& wo, const Vec3& wi) const noexcept {
     if (wo.z <= 0.0) return 0.0;
     const double pt = m_transmission_probability;
-    if (wi.z < 0.0) return pt * cosine_hemisphere_pdf_per_sr(-wi.z);
+    if (wi.z < 0.0) return m_straight ? 0.0 : pt * cosine_hemisphere_pdf_per_sr(-wi.z);
     const double pdf =
         std::visit([&](const auto& model) { return model.pdf_per_sr(wo, wi); }, m_reflection);
     return pt > 0.0 ? (1.0 - pt) * pdf : pdf;
@@ -66,6 +68,9 @@ std::optional<BsdfSample> Bsdf::sample(const Vec3& wo, double u_side, double u_l
                                        double u2) const noexcept {
     const double pt = m_transmission_probability;
     if (pt > 0.0 && u_side < pt) {
+        if (m_straight) {
+            return BsdfSample{-1.0 * wo, 1.0 / pt, 0.0, ScatterSide::transmitted, true};
+        }
         const Vec3 local = sample_cosine_hemisphere(u1, u2);
         return BsdfSample{{local.x, local.y, -local.z},
                           1.0 / pt,

@@ -14,6 +14,7 @@
 
 #include "glint/core/error.h"
 #include "glint/core/text.h"
+#include "glint/radiometry/clear_sheets.h"
 #include "glint/radiometry/sampling.h"
 
 namespace glint::radiometry {
@@ -154,13 +155,24 @@ void LidarTracer::trace(const SampleRay& ray, const LaserPulse& laser, RandomStr
             const Vec3 wi = (1.0 / r_m) * to_laser;
             const double cos_i = dot(normal, wi);
             // In front: reflected (ρ · shape); behind a thin sheet: transmitted (τ/π).
-            if (cos_i > 0.0 ? reflects : (cos_i < 0.0 && transmits)) {
+            if (cos_i > 0.0 ? reflects : (cos_i < 0.0 && transmits && !bsdf.straight())) {
                 const Vec3 origin = m_scene.spawn_origin(*hit, wi);
                 ++rays;
-                if (!m_scene.occluded(origin, wi, time, 0.0, norm(laser.position_m - origin))) {
+                const double reach_m = norm(laser.position_m - origin);
+                // Clear sheets between the point and the transmitter pass the pulse attenuated
+                // by their τ at the laser's band (the first of the grid).
+                double through = 1.0;
+                bool clear = !m_scene.occluded(origin, wi, time, 0.0, reach_m);
+                if (!clear && m_materials.any_straight()) {
+                    std::vector<double> sheets(m_materials.bands(), 1.0);
+                    clear =
+                        pass_clear_sheets(m_scene, m_materials, origin, wi, time, reach_m, sheets);
+                    through = sheets[0];
+                }
+                if (clear) {
                     // I |cos θ| / r², m² → cm² (10⁴), times the BRDF or BTDF.
-                    const double fluence =
-                        laser.intensity_j_per_sr(-wi) * std::abs(cos_i) / (r_m * r_m * 1e4);
+                    const double fluence = laser.intensity_j_per_sr(-wi) * std::abs(cos_i) /
+                                           (r_m * r_m * 1e4) * through;
                     const double value =
                         cos_i > 0.0
                             ? beta * rho * bsdf.reflection(wo_local, frame.to_local(wi)) * fluence

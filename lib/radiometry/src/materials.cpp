@@ -202,7 +202,9 @@ MaterialTable::MaterialTable(std::span<const model::Material> materials, const S
         // Transmission is drawn in proportion to the band-mean τ against ρ + τ (0 for an
         // opaque material: its paths draw exactly what they drew before transmission existed).
         m_shapes.emplace_back(reflection_lobe(material),
-                              transmits ? tau_sum / (rho_sum + tau_sum) : 0.0);
+                              transmits ? tau_sum / (rho_sum + tau_sum) : 0.0,
+                              material.straight_transmission);
+        m_any_straight = m_any_straight || m_shapes.back().straight();
         add_directional_emission(material, grid, rho);
     }
 }

@@ -4,9 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "glint/core/error.h"
+#include "glint/radiometry/clear_sheets.h"
 #include "glint/radiometry/sampling.h"
 
 namespace glint::radiometry {
@@ -211,6 +213,7 @@ void PathTracer::add_point_lights(const Bands& bands, const scene::RayHit& hit, 
     const double* tau = m_materials.transmittance(material).data();
     const bool reflects = m_materials.reflects(material);
     const bool transmits = m_materials.transmits(material);
+    const bool straight = m_materials.straight(material);  // no diffuse light through a pane
     for (std::size_t l = 0; l < m_lights->size(); ++l) {
         const Vec3 to_light = m_lights->position_m(l) - hit.position_m;
         const double r2_m2 = dot(to_light, to_light);
@@ -218,11 +221,19 @@ void PathTracer::add_point_lights(const Bands& bands, const scene::RayHit& hit, 
         const Vec3 wi = (1.0 / std::sqrt(r2_m2)) * to_light;
         const double cos_i = dot(normal, wi);
         // In front: reflected; behind a thin sheet: transmitted (f = τ/π).
-        if (cos_i > 0.0 ? !reflects : !(cos_i < 0.0 && transmits)) continue;
+        if (cos_i > 0.0 ? !reflects : !(cos_i < 0.0 && transmits && !straight)) continue;
         const Vec3 origin = m_scene.spawn_origin(hit, wi);
         ++scratch.rays;
-        if (m_scene.occluded(origin, wi, time_s, 0.0, norm(m_lights->position_m(l) - origin))) {
-            continue;
+        const double reach_m = norm(m_lights->position_m(l) - origin);
+        const double* through = nullptr;  // clear sheets' τ on the way, when any
+        if (m_scene.occluded(origin, wi, time_s, 0.0, reach_m)) {
+            if (!m_materials.any_straight()) continue;
+            std::fill(scratch.sheets.begin(), scratch.sheets.end(), 1.0);
+            if (!pass_clear_sheets(m_scene, m_materials, origin, wi, time_s, reach_m,
+                                   scratch.sheets)) {
+                continue;
+            }
+            through = scratch.sheets.data();
         }
         // I |cos θ| / r², m² → cm² (10⁴), times the lobe's BRDF or 1/π through the sheet.
         const double factor =
@@ -233,7 +244,8 @@ void PathTracer::add_point_lights(const Bands& bands, const scene::RayHit& hit, 
         const double* intensity = m_lights->intensity_w_per_sr_um(l).data();
         for (std::size_t j = 0; j < radiance.size(); ++j) {
             const std::size_t b = bands[j];
-            radiance[j] += beta[j] * spectrum[b] * intensity[b] * factor;
+            const double pass = through != nullptr ? through[b] : 1.0;
+            radiance[j] += beta[j] * spectrum[b] * intensity[b] * factor * pass;
         }
     }
 }
@@ -267,8 +279,9 @@ FirstSun PathTracer::first_sun(const SampleRay& ray,
     if ((dark || !m_materials.scatters(hit.material)) && !records_first_hit) return {};
     const Vec3 normal = back_face ? -hit.normal : hit.normal;
     const double wo_z = Frame::from_normal(normal).to_local(wo).z;
-    return draw_sun(hit, normal, wo_z, ray.time_s, !dark && m_materials.transmits(hit.material),
-                    rng);
+    return draw_sun(
+        hit, normal, wo_z, ray.time_s,
+        !dark && m_materials.transmits(hit.material) && !m_materials.straight(hit.material), rng);
 }
 
 template <typename Bands>
@@ -315,6 +328,11 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
     const auto sun_weight = [sun_pdf](const BsdfSample& s) {
         return s.pdf_per_sr / (s.pdf_per_sr + sun_pdf);
     };
+    // The weight with which a path leaving the scene inside the sun's disc counts it: 0 when
+    // the last vertex that drew a direction counted the sun by its shadow ray alone
+    // (Lambertian), its draw's MIS share when glossy, 1 after a mirror; a straight pass
+    // through a clear sheet keeps it (the direction is unchanged). The camera's ray: 0.
+    double disc_weight = 0.0;
     for (unsigned bounce = 0;; ++bounce) {
         const std::size_t m = hit->material;
         // The sun and sky at this vertex's height (docs/scene.md).
@@ -326,6 +344,8 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
         const bool dark = back_face && !m_materials.double_sided(m);
         const bool reflects = !dark && m_materials.reflects(m);
         const bool transmits = !dark && m_materials.transmits(m);
+        // A clear sheet's light passes straight through: no diffuse next-event term behind it.
+        const bool diffuses = transmits && !m_materials.straight(m);
         const bool scatters = reflects || transmits;
         const double* rho = m_materials.reflectance(m).data();
         const double* tau = m_materials.transmittance(m).data();
@@ -351,11 +371,19 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
         // path ends here, so the numbers drawn for it change nothing after).
         FirstHit* record = bounce == 0 ? first_hit : nullptr;
         bool sun_blocked = true;
+        bool sun_through_sheets = false;  // the shadow ray passed clear sheets (scratch.sheets)
         // The sun's draw is read where it lies (the 120-byte draw is not copied).
         const auto take_sun = [&](const FirstSun& drawn) {
             if (!drawn.query) return;
             ++scratch.rays;
             sun_blocked = drawn.blocked;
+            if (sun_blocked && m_materials.any_straight()) {
+                std::fill(scratch.sheets.begin(), scratch.sheets.end(), 1.0);
+                sun_blocked =
+                    !pass_clear_sheets(m_scene, m_materials, drawn.ray.origin_m, drawn.wi, time,
+                                       std::numeric_limits<double>::infinity(), scratch.sheets);
+                sun_through_sheets = !sun_blocked;
+            }
             if (sun_blocked) return;
             if (drawn.cos_i > 0.0) {
                 if (reflects) {
@@ -367,7 +395,7 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
                         sun_factor /= 1.0 + bsdf.pdf_per_sr(wo_local, wi_local) / sun_pdf;
                     }
                 }
-            } else if (transmits) {
+            } else if (diffuses) {
                 sun_factor = -drawn.cos_i / kPi;  // through the sheet: f = τ/π
                 sun_spectrum = tau;
             }
@@ -376,7 +404,7 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
             if (bounce == 0 && sun != nullptr) {
                 take_sun(*sun);  // drawn, and its shadow ray answered, before the path
             } else {
-                FirstSun drawn = draw_sun(*hit, normal, wo_local.z, time, transmits, rng);
+                FirstSun drawn = draw_sun(*hit, normal, wo_local.z, time, diffuses, rng);
                 if (drawn.query) {
                     const scene::PacketRay& q = drawn.ray;
                     drawn.blocked = m_scene.occluded(q.origin_m, q.direction, q.time_s);
@@ -396,6 +424,14 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
             sun_factor > 0.0 ? at_height(bands, level, &Environment::sun_irradiance_w_per_cm2_um,
                                          env, scratch.sun_at_height)
                              : nullptr;
+        if (sun_irradiance != nullptr && sun_through_sheets) {
+            // E_sun as it arrives through the panes.
+            for (std::size_t j = 0; j < count; ++j) {
+                const std::size_t b = bands[j];
+                scratch.sheets[b] *= sun_irradiance[b];
+            }
+            sun_irradiance = scratch.sheets.data();
+        }
         if (bounce == 0) {
             first_vertex_light(bands, radiance, emission, sun_spectrum, sun_irradiance, sun_factor);
         } else {
@@ -424,6 +460,9 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
         if (!sample || !(sample->weight > 0.0)) break;
         const Vec3 wi = normalized(frame.to_world(sample->wi));
         const double weight = sample->weight;
+        if (!(sample->delta && sample->side == ScatterSide::transmitted)) {
+            disc_weight = sample->delta ? 1.0 : bsdf.glossy() ? sun_weight(*sample) : 0.0;
+        }
         const double* spectrum = sample->side == ScatterSide::transmitted ? tau : rho;
         const double largest = beta_is_one ? first_throughput(bands, beta, spectrum, weight)
                                            : scale_throughput(bands, beta, spectrum, weight);
@@ -446,9 +485,9 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
                               scratch.sky_at_height);
                 for (std::size_t j = 0; j < count; ++j) radiance[j] += beta[j] * sky[bands[j]];
             }
-            if ((sample->delta || bsdf.glossy()) && env.sun_visible()) {
-                add_sun_disc(bands, env, level, wi, time, sample->delta ? 1.0 : sun_weight(*sample),
-                             sun_pdf, beta, radiance, scratch.sun_at_height);
+            if (disc_weight > 0.0 && env.sun_visible()) {
+                add_sun_disc(bands, env, level, wi, time, disc_weight, sun_pdf, beta, radiance,
+                             scratch.sun_at_height);
             }
             break;
         }

@@ -212,8 +212,8 @@ model::Material read_material(Reader& r, const YAML::Node& node, const std::stri
     m.where = r.where(node, path);
     if (!r.expect_map(node, path)) return m;
     r.warn_unknown(node, path,
-                   {"id", "name", "reflectance", "transmittance", "specular", "ward", "ross_li",
-                    "emissivity", "temperature", "double_sided"});
+                   {"id", "name", "reflectance", "transmittance", "transmission", "specular",
+                    "ward", "ross_li", "emissivity", "temperature", "double_sided"});
     m.id = r.text_key(node, path, "id", true).value_or("");
     m.name = r.text_key(node, path, "name", false).value_or(m.id);
     read_reflection_model(r, node, path, m);
@@ -251,6 +251,19 @@ model::Material read_material(Reader& r, const YAML::Node& node, const std::stri
         // A thin two-sided sheet (a leaf): diffuse transmittance, the same from either side.
         m.transmittance = read_spectrum(r, node["transmittance"],
                                         Reader::join(path, "transmittance"), "transmittance");
+    }
+    if (const auto kind = r.text_key(node, path, "transmission", false)) {
+        // `diffuse` (a leaf, the default) or `straight` (a clear pane).
+        if (*kind == "straight") {
+            m.straight_transmission = true;
+        } else if (*kind != "diffuse") {
+            r.error(node["transmission"], Reader::join(path, "transmission"),
+                    "transmission \"" + *kind + "\" is neither diffuse nor straight");
+        }
+        if (m.transmittance.empty()) {
+            r.error(node["transmission"], Reader::join(path, "transmission"),
+                    "\"transmission\" needs a \"transmittance\"");
+        }
     }
     if (node["emissivity"]) {
         m.emissivity =

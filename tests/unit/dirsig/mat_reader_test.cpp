@@ -236,8 +236,9 @@ INSTANTIATE_TEST_SUITE_P(
                      "REFLECTANCE_PROP { TXT_FILENAME = r.txt }\n"
                      "TRANSMITTANCE_PROP_NAME = DeltaTransmittance\nTRANSMITTANCE_PROP { }",
                      ":5: MATERIAL_ENTRY[1]/SURFACE_PROPERTIES/TRANSMITTANCE_PROP_NAME: surface "
-                     "model \"DeltaTransmittance\" is not supported: straight-through "
-                     "transmission is not modelled (shadows would need spectral shadow rays)"},
+                     "model \"DeltaTransmittance\" is not supported: its keys are not "
+                     "documented publicly; glint's YAML scene format has straight-through "
+                     "transmission (transmission: straight)"},
         RefusedModel{"Unknown", "REFLECTANCE_PROP_NAME = Shiny\nREFLECTANCE_PROP { }",
                      ":4: MATERIAL_ENTRY[1]/SURFACE_PROPERTIES/REFLECTANCE_PROP_NAME: unknown "
                      "REFLECTANCE model \"Shiny\" (and no curve file to read as "

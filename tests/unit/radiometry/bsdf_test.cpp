@@ -114,6 +114,22 @@ TEST(Bsdf, TransmitsWithItsProbabilityAndOpaqueDrawsNoSide) {
     EXPECT_THROW(Bsdf(lobe, 1.5), Error);
 }
 
+TEST(Bsdf, AClearSheetTransmitsStraightThrough) {
+    const Bsdf pane(SurfaceBrdf(1.0, 1.0, 0.0), 0.9, true);
+    EXPECT_TRUE(pane.straight());
+    const Vec3 wo = local_direction(25.0, 40.0);
+    const auto through = pane.sample(wo, 0.5, 0.5, 0.2, 0.3);
+    ASSERT_TRUE(through);
+    EXPECT_TRUE(through->delta);
+    EXPECT_EQ(through->side, ScatterSide::transmitted);
+    EXPECT_DOUBLE_EQ(through->wi.x, -wo.x);
+    EXPECT_DOUBLE_EQ(through->wi.z, -wo.z);
+    EXPECT_DOUBLE_EQ(through->weight, 1.0 / 0.9);
+    EXPECT_EQ(pane.pdf_per_sr(wo, Vec3{0.0, 0.0, -1.0}), 0.0);
+    // An opaque shape cannot be straight.
+    EXPECT_FALSE(Bsdf(SurfaceBrdf(1.0, 0.0, 0.0), 0.0, true).straight());
+}
+
 TEST(Bsdf, MirrorDrawsTheReflectionAsADelta) {
     const Bsdf water(SurfaceBrdf(1.0, 0.7, 0.0), 0.0);
     EXPECT_TRUE(water.has_mirror());

@@ -195,6 +195,35 @@ TEST(SurfaceModels, RossLiPlateUnderAUniformSkyReflectsItsAlbedo) {
     }
 }
 
+TEST(SurfaceModels, AClearPaneLetsTheSunThroughStraight) {
+    // A non-reflecting pane (τ = 0.8, straight) 2 m above a Lambertian ground (ρ_g = 0.4),
+    // seen from above: the ground's shadow rays pass the pane (τ), and the view through it
+    // (τ again): L = τ² ρ_g E cos θ / π. Without the shadow rays' pass the ground would be dark.
+    const double tau = 0.8;
+    const double ground = 0.4;
+    const double zenith = 30.0;
+    model::Scene scene;
+    model::Material pane = flat_material("pane", 0.0, 300.0, std::nullopt, {}, tau);
+    pane.straight_transmission = true;
+    scene.materials.push_back(pane);
+    scene.materials.push_back(flat_material("ground", ground));
+    model::Primitive sheet = ground_plane(50.0);
+    sheet.center_m = {0.0, 0.0, 2.0};
+    test::add_primitive(scene, sheet, 0);
+    test::add_primitive(scene, ground_plane(), 1);
+    Rig rig(std::move(scene), kVisible,
+            Environment::uniform(kVisible, direction_from(zenith, 135.0), kSun, kBlack));
+    ASSERT_TRUE(rig.materials.any_straight());
+    const FixedRay source({{0.0, 0.0, 1000.0}, {0.0, 0.0, -1.0}, 0.0, 1.0});
+    const Solution s = solve(rig.tracer, batch_of(source, 2000), 0);
+    for (std::size_t b = 0; b < 3; ++b) {
+        const double expected = tau * tau * ground * kSun[b] * std::cos(zenith * kPi / 180.0) / kPi;
+        // The only noise is the sun-disc cosine's (~1e-5).
+        EXPECT_NEAR(s.radiance_w_per_cm2_sr_um[b], expected, 1e-4 * expected)
+            << b << " ratio " << s.radiance_w_per_cm2_sr_um[b] / expected;
+    }
+}
+
 TEST(SurfaceModels, ALobeThatReflectsMoreThanItReceivesIsRefused) {
     model::Scene scene;
     scene.materials.push_back(ross_li_material("bright", 0.9, 2.0, 0.0));

@@ -398,6 +398,24 @@ objects: []
     expect_diagnostic(missing, "missing required key \"specular\"", 3, "materials[0].ward");
 }
 
+TEST(SceneReaderMaterials, StraightTransmission) {
+    TempDir dir;
+    const Read read = read_text(dir, R"(materials:
+  - id: pane
+    reflectance: {wavelengths: [0.4, 0.8], values: [0.04, 0.04]}
+    transmittance: {wavelengths: [0.4, 0.8], values: [0.9, 0.9]}
+    transmission: straight
+  - id: odd
+    reflectance: {wavelengths: [0.4, 0.8], values: [0.04, 0.04]}
+    transmission: sideways
+objects: []
+)");
+    ASSERT_EQ(read.scene.materials.size(), 2u);
+    EXPECT_TRUE(read.scene.materials[0].straight_transmission);
+    expect_diagnostic(read, "transmission \"sideways\" is neither diffuse nor straight", 8,
+                      "materials[1].transmission");
+}
+
 TEST(SceneReaderMaterials, DoubleSided) {
     TempDir dir;
     const Read read = read_text(dir, R"(materials:

@@ -139,6 +139,9 @@ struct Material {
     /// share of the irradiance on one face that leaves the other, spread as f = τ/π. Empty:
     /// opaque (τ = 0).
     SpectralTable transmittance;
+    /// The transmittance passes straight through (a clear pane: the direction unchanged, as
+    /// a delta lobe) instead of diffusely.
+    bool straight_transmission = false;
     /// False: only the front face (counter-clockwise seen from it) has these properties; the
     /// back face is black — it neither reflects, transmits nor emits (it still casts shadows).
     /// A single-sided material cannot have a transmittance.

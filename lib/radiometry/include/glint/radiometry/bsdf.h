@@ -4,7 +4,8 @@
 // Ross–Li) and, for a thin two-sided sheet, diffuse transmission. The shape is wavelength-
 // independent; the material's spectra scale it, so the BSDF at wavelength λ is
 //   f_λ(wo, wi) = ρ(λ) R(wo, wi)   when wo and wi lie on the same side of the surface,
-//   f_λ(wo, wi) = τ(λ) / π         when they lie on opposite sides,
+//   f_λ(wo, wi) = τ(λ) / π         when they lie on opposite sides (diffusing sheet),
+//   f_λ(wo, wi) = τ(λ) δ(wi + wo)/|cos θi|   straight through a clear sheet (a pane),
 // with R the reflection lobe's shape (brdf.h, brdf_models.h). Local frame, normal +z facing
 // wo; directions point away from the surface; values per steradian. docs/materials.md.
 #pragma once
@@ -38,14 +39,17 @@ public:
     /// The shape with reflection lobe `reflection`; a path is transmitted with probability
     /// `transmission_probability` in [0, 1] (0: opaque; 1: a sheet that reflects nothing). Throws
     /// glint::Error (input) outside that range.
-    Bsdf(Reflection reflection, double transmission_probability);
+    Bsdf(Reflection reflection, double transmission_probability, bool straight = false);
 
     /// The reflection lobe.
     const Reflection& reflection_lobe() const noexcept { return m_reflection; }
     /// R(wo, wi) in sr⁻¹, 0 unless both lie above the surface (a mirror's delta is not in it).
     double reflection(const Vec3& wo, const Vec3& wi) const noexcept;
-    /// The transmission shape 1/π (sr⁻¹) of a thin sheet.
+    /// The transmission shape 1/π (sr⁻¹) of a diffusing thin sheet.
     static constexpr double transmission() noexcept { return 1.0 / kPi; }
+    /// Whether the transmission is straight through (a delta: wi = −wo, weight 1/P_t; no
+    /// value for next-event estimates, which pass the sheet along shadow rays instead).
+    bool straight() const noexcept { return m_straight; }
     /// The probability with which sample() transmits.
     double transmission_probability() const noexcept { return m_transmission_probability; }
     /// The density of sample()'s non-delta draws at wi, per steradian (both sides).
@@ -71,6 +75,7 @@ public:
 private:
     Reflection m_reflection;
     double m_transmission_probability = 0.0;
+    bool m_straight = false;
     bool m_glossy = false;
     bool m_mirror = false;
     bool m_anisotropic = false;

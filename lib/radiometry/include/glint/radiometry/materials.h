@@ -53,6 +53,10 @@ public:
     }
     /// Whether material `m` (a thin sheet) transmits anything on the grid.
     bool transmits(std::size_t m) const noexcept { return m_transmits[m] != 0; }
+    /// Whether material `m` is a clear sheet: its transmittance passes straight through.
+    bool straight(std::size_t m) const noexcept { return m_shapes[m].straight(); }
+    /// Whether any material is a clear sheet (shadow rays must then pass them).
+    bool any_straight() const noexcept { return m_any_straight; }
     /// Whether both faces of material `m` have its properties (false: the back face, against
     /// the triangle's winding, is black).
     bool double_sided(std::size_t m) const noexcept { return m_double_sided[m] != 0; }
@@ -99,6 +103,7 @@ private:
     std::vector<unsigned char> m_transmits;
     std::vector<unsigned char> m_double_sided;
     std::vector<Bsdf> m_shapes;
+    bool m_any_straight = false;
     static constexpr std::size_t kNoSlot = static_cast<std::size_t>(-1);
     std::vector<std::size_t> m_albedo_slot;    ///< per material: index into m_albedos
     std::vector<DirectionalAlbedo> m_albedos;  ///< of the directional-emission materials

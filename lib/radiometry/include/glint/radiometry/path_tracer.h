@@ -93,7 +93,8 @@ public:
           path_radiance(bands),
           sun_at_height(bands),
           sky_at_height(bands),
-          emission_towards(bands) {}
+          emission_towards(bands),
+          sheets(bands) {}
     std::vector<double> throughput;            ///< of the path so far, per band
     std::vector<double> sensor_transmittance;  ///< T_v(λ): surface → sensor
     std::vector<double> path_radiance;         ///< L_p(λ): the atmosphere's own, at the sensor
@@ -102,6 +103,8 @@ public:
     std::vector<double> sky_at_height;
     /// ε(λ, θo) B(λ, T) of a material whose emission depends on the direction (grid bands)
     std::vector<double> emission_towards;
+    /// The clear sheets' τ(λ) along a shadow ray (grid bands)
+    std::vector<double> sheets;
     std::uint64_t rays = 0;  ///< intersection and shadow queries traced so far (statistics)
 };
 
