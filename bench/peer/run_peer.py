@@ -173,7 +173,7 @@ def main():
     ap.add_argument("--max-attempts", type=int, default=None,
                     help="most glint+Cycles pairs per configuration (default 2 x repeats)")
     ap.add_argument("--threads", type=int, default=2, help="threads of both renderers")
-    ap.add_argument("--max-bounces", type=int, default=8, help="glint's default")
+    ap.add_argument("--max-bounces", type=int, default=8, help="both renderers get it")
     ap.add_argument("--min-bounces", type=int, default=2,
                     help="Cycles min light bounces: no Russian roulette at bounces 0..N "
                          "(glint starts it with its 3rd continuation ray)")
