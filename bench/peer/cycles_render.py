@@ -68,9 +68,85 @@ def main():
     bpy.ops.wm.read_factory_settings(use_empty=True)
     scene = bpy.context.scene
 
+    if peer.get("canopy"):
+        t0 = time.monotonic()
+        triangles = build_canopy(peer, args.work, scene)
+        times["obj_import_s"] = time.monotonic() - t0
+    else:
+        triangles = build_terrain(peer, args.work, scene, times)
+    rest_of_scene(args, peer, scene, settings, times, triangles)
+
+
+def diffuse_material(name, rho):
+    """Diffuse BSDF (Lambert: roughness 0) of grey reflectance rho."""
+    mat = bpy.data.materials.new(name)
+    mat.use_nodes = True
+    nodes = mat.node_tree.nodes
+    nodes.clear()
+    diffuse = nodes.new("ShaderNodeBsdfDiffuse")
+    diffuse.inputs["Color"].default_value = (rho, rho, rho, 1.0)
+    diffuse.inputs["Roughness"].default_value = 0.0
+    out = nodes.new("ShaderNodeOutputMaterial")
+    mat.node_tree.links.new(diffuse.outputs["BSDF"], out.inputs["Surface"])
+    return mat
+
+
+def leaf_material(rt):
+    """A thin leaf: Mix(0.5) of Diffuse BSDF and Translucent BSDF of colour 2 rt, so that it
+    reflects rt and transmits rt, both Lambertian (glint: reflectance rt, transmittance rt)."""
+    mat = bpy.data.materials.new("leaf")
+    mat.use_nodes = True
+    nodes = mat.node_tree.nodes
+    nodes.clear()
+    c = 2.0 * rt
+    diffuse = nodes.new("ShaderNodeBsdfDiffuse")
+    diffuse.inputs["Color"].default_value = (c, c, c, 1.0)
+    diffuse.inputs["Roughness"].default_value = 0.0
+    translucent = nodes.new("ShaderNodeBsdfTranslucent")
+    translucent.inputs["Color"].default_value = (c, c, c, 1.0)
+    mix = nodes.new("ShaderNodeMixShader")
+    mix.inputs["Fac"].default_value = 0.5
+    links = mat.node_tree.links
+    links.new(diffuse.outputs["BSDF"], mix.inputs[1])
+    links.new(translucent.outputs["BSDF"], mix.inputs[2])
+    out = nodes.new("ShaderNodeOutputMaterial")
+    links.new(mix.outputs["Shader"], out.inputs["Surface"])
+    return mat
+
+
+def build_canopy(peer, work, scene):
+    """The tree OBJ once, its mesh shared by one object per instance (Cycles instances
+    objects that share mesh data), over a flat soil square; returns the triangle count."""
+    canopy = peer["canopy"]
+    bpy.ops.wm.obj_import(filepath=os.path.join(work, canopy["tree_obj"]),
+                          forward_axis="Y", up_axis="Z")
+    tree = [o for o in scene.objects if o.type == "MESH"][0]
+    tree.data.polygons.foreach_set("use_smooth", [False] * len(tree.data.polygons))
+    leaf = leaf_material(canopy["leaf_rt"])
+    bark = diffuse_material("bark", canopy["bark_reflectance"])
+    for slot in tree.material_slots:
+        slot.material = leaf if "leaf" in (slot.name or "") else bark
+    for x, y, rot_deg, scale in canopy["instances"]:
+        o = tree.copy()  # shares tree.data
+        o.location = (x, y, 0.0)
+        o.rotation_euler = (0.0, 0.0, math.radians(rot_deg))
+        o.scale = (scale, scale, scale)
+        scene.collection.objects.link(o)
+    tree.hide_render = True
+    half = canopy["ground_size_m"] / 2.0
+    mesh = bpy.data.meshes.new("ground")
+    mesh.from_pydata([(-half, -half, 0), (half, -half, 0), (half, half, 0), (-half, half, 0)], [],
+                     [(0, 1, 2, 3)])
+    ground = bpy.data.objects.new("ground", mesh)
+    ground.data.materials.append(diffuse_material("soil", peer["reflectance"]))
+    scene.collection.objects.link(ground)
+    return canopy["triangles"]
+
+
+def build_terrain(peer, work, scene, times):
     # Geometry: the same OBJ glint reads (z up, as glint's scene frame).
     t0 = time.monotonic()
-    bpy.ops.wm.obj_import(filepath=os.path.join(args.work, peer["terrain_obj"]),
+    bpy.ops.wm.obj_import(filepath=os.path.join(work, peer["terrain_obj"]),
                           forward_axis="Y", up_axis="Z")
     times["obj_import_s"] = time.monotonic() - t0
     terrain = [o for o in scene.objects if o.type == "MESH"]
@@ -84,18 +160,12 @@ def main():
     polygons.foreach_set("use_smooth", [False] * len(polygons))
 
     # Material: Diffuse BSDF (Lambert: roughness 0), grey reflectance.
-    rho = peer["reflectance"]
-    mat = bpy.data.materials.new("soil")
-    mat.use_nodes = True
-    nodes = mat.node_tree.nodes
-    nodes.clear()
-    diffuse = nodes.new("ShaderNodeBsdfDiffuse")
-    diffuse.inputs["Color"].default_value = (rho, rho, rho, 1.0)
-    diffuse.inputs["Roughness"].default_value = 0.0
-    out = nodes.new("ShaderNodeOutputMaterial")
-    mat.node_tree.links.new(diffuse.outputs["BSDF"], out.inputs["Surface"])
     terrain.data.materials.clear()
-    terrain.data.materials.append(mat)
+    terrain.data.materials.append(diffuse_material("soil", peer["reflectance"]))
+    return triangles
+
+
+def rest_of_scene(args, peer, scene, settings, times, triangles):
 
     # World: uniform radiance, not importance-sampled (glint: sky only on continuation rays).
     world = bpy.data.worlds.new("sky")

@@ -160,24 +160,84 @@ def platform_xml(px, bands):
 """, n
 
 
+# The canopy scene (--canopy N): examples/vegetation's tree (a trunk and 6,000 leaf quads)
+# instanced N times on a jittered grid centred under the camera, over a flat soil of
+# REFLECTANCE; spectrally flat leaves (reflectance and transmittance LEAF_RT each, so that
+# Cycles' Diffuse + Translucent mix gives the same numbers in every channel) and bark.
+CANOPY_CAMERA_HEIGHT_M = 300.0
+CANOPY_SPACING_M = 7.0
+LEAF_RT = 0.45
+BARK_REFLECTANCE = 0.2
+
+
+def write_canopy(work, trees, put):
+    import importlib.util
+    import random
+    path = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "examples",
+                        "vegetation", "make_forest.py")
+    spec = importlib.util.spec_from_file_location("make_forest", path)
+    forest = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(forest)
+    rng = random.Random(20261128)
+    forest.write_tree(os.path.join(work, "tree.obj"), 6000, rng)
+    side = int(math.ceil(math.sqrt(trees)))
+    half = (side - 1) * CANOPY_SPACING_M / 2.0
+    instances = []
+    for i in range(side):
+        for j in range(side):
+            if len(instances) == trees:
+                break
+            x = -half + (i + rng.uniform(-0.3, 0.3)) * CANOPY_SPACING_M
+            y = -half + (j + rng.uniform(-0.3, 0.3)) * CANOPY_SPACING_M
+            instances.append([round(x, 2), round(y, 2), round(rng.uniform(0, 360), 1),
+                              round(rng.uniform(0.8, 1.2), 3)])
+    flat = lambda v: "{wavelengths: [0.3, 1.0], values: [%g, %g]}" % (v, v)
+    lines = ["# glint peer benchmark canopy (bench/peer/make_scene.py --canopy %d)" % trees,
+             "origin: {latitude: %s, longitude: %s, altitude: 0}" % (LATITUDE_DEG, LONGITUDE_DEG),
+             "materials:",
+             "  - {id: soil, reflectance: %s}" % flat(REFLECTANCE),
+             "  - {id: leaf, reflectance: %s, transmittance: %s}" % (flat(LEAF_RT), flat(LEAF_RT)),
+             "  - {id: bark, reflectance: %s}" % flat(BARK_REFLECTANCE),
+             "objects:",
+             "  - {name: ground, primitive: ground_plane, material: soil, size: %g}"
+             % (2 * half + 200.0),
+             "  - name: tree", "    obj: tree.obj", "    instances:"]
+    lines += ["      - {translation: [%g, %g, 0], rotation_deg: [0, 0, %g], scale: %g}" % tuple(v)
+              for v in instances]
+    put("scene.yaml", "\n".join(lines) + "\n")
+    return {"tree_obj": "tree.obj", "instances": instances, "leaf_rt": LEAF_RT,
+            "bark_reflectance": BARK_REFLECTANCE, "ground_size_m": 2 * half + 200.0,
+            "triangles": 12010 * len(instances)}
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("work")
     ap.add_argument("--sizes", default="1024,256")
     ap.add_argument("--bands", default="3,32")
+    ap.add_argument("--canopy", type=int, default=0,
+                    help="instead of the terrain: this many instanced trees of transmitting "
+                         "leaves (examples/vegetation's tree) over a flat soil, the camera at "
+                         "CANOPY_CAMERA_HEIGHT_M")
     ap.add_argument("--data-dir", default=os.path.join(
         os.path.dirname(os.path.abspath(__file__)), "..", "..", "data"))
     args = ap.parse_args()
     work = os.path.abspath(args.work)
     os.makedirs(work, exist_ok=True)
-    wrote = write_terrain(os.path.join(work, "terrain.obj"))
-    print("terrain.obj: %s" % ("written" if wrote else "kept (cached)"), file=sys.stderr)
 
     def put(name, text):
         with open(os.path.join(work, name), "w") as f:
             f.write(text)
 
-    put("scene.yaml", f"""# glint peer benchmark scene (bench/peer/make_scene.py)
+    camera_height_m = CAMERA_HEIGHT_M
+    canopy = None
+    if args.canopy:
+        canopy = write_canopy(work, args.canopy, put)
+        camera_height_m = CANOPY_CAMERA_HEIGHT_M
+    else:
+        wrote = write_terrain(os.path.join(work, "terrain.obj"))
+        print("terrain.obj: %s" % ("written" if wrote else "kept (cached)"), file=sys.stderr)
+        put("scene.yaml", f"""# glint peer benchmark scene (bench/peer/make_scene.py)
 origin: {{latitude: {LATITUDE_DEG}, longitude: {LONGITUDE_DEG}, altitude: 0}}
 materials:
   - id: soil
@@ -199,7 +259,7 @@ objects:
         angularunits="degrees" spatialunits="meters">
     <entry>
       <datetime type="relative">0</datetime>
-      <position><location type="scene"><point><x>0</x><y>0</y><z>{CAMERA_HEIGHT_M}</z></point></location></position>
+      <position><location type="scene"><point><x>0</x><y>0</y><z>{camera_height_m}</z></point></location></position>
       <orientation><eulerangles><cartesiantriple><x>0</x><y>0</y><z>0</z></cartesiantriple></eulerangles></orientation>
     </entry>
   </data>
@@ -236,7 +296,8 @@ objects:
     e_rgb = (solar_irradiance(args.data_dir, rgb_um) / d ** 2).tolist()
     peer = {
         "terrain_obj": "terrain.obj",
-        "triangles": 2 * QUADS * QUADS,
+        "triangles": canopy["triangles"] if canopy else 2 * QUADS * QUADS,
+        "canopy": canopy,
         "reflectance": REFLECTANCE,
         "sky_radiance": SKY_RADIANCE,
         "sun_zenith_deg": SUN_ZENITH_DEG,
@@ -245,13 +306,17 @@ objects:
         "sun_irradiance_rgb": e_rgb,
         "sun_wavelengths_um": rgb_um,
         "earth_sun_distance_au": d,
-        "camera_height_m": CAMERA_HEIGHT_M,
+        "camera_height_m": camera_height_m,
         "focal_length_mm": FOCAL_LENGTH_MM,
         "sensor_width_mm": ARRAY_WIDTH_MM,
         "configs": configs,
     }
     put("peer.json", json.dumps(peer, indent=1) + "\n")
-    print(json.dumps(peer), file=sys.stderr)
+    brief = dict(peer)
+    if canopy:
+        brief["canopy"] = {k: v for k, v in canopy.items() if k != "instances"}
+        brief["canopy"]["trees"] = len(canopy["instances"])
+    print(json.dumps(brief), file=sys.stderr)
 
 
 if __name__ == "__main__":

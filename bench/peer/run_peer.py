@@ -190,6 +190,9 @@ def main():
                     help="where the images are written (a tmpfs: glint fsyncs its output)")
     ap.add_argument("--quick", action="store_true",
                     help="256 x 256, spp 1 and 4, bands 3 and 32, 1 repeat: checks the script")
+    ap.add_argument("--canopy", type=int, default=0,
+                    help="render the canopy scene of this many instanced trees of transmitting "
+                         "leaves instead of the terrain (make_scene.py --canopy)")
     ap.add_argument("--json", default=None, help="write the full report here")
     args = ap.parse_args()
     if args.quick:
@@ -205,7 +208,8 @@ def main():
     os.makedirs(os.path.join(out, "logs"), exist_ok=True)
 
     subprocess.run([sys.executable, os.path.join(HERE, "make_scene.py"), work,
-                    "--sizes", ",".join(map(str, sizes)), "--bands", ",".join(map(str, bandss))],
+                    "--sizes", ",".join(map(str, sizes)), "--bands", ",".join(map(str, bandss))]
+                   + (["--canopy", str(args.canopy)] if args.canopy else []),
                    check=True)
     with open(os.path.join(work, "peer.json")) as f:
         peer = json.load(f)
