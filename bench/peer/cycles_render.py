@@ -207,8 +207,10 @@ def rest_of_scene(args, peer, scene, settings, times, triangles):
     cam_data.clip_start = 1.0
     cam_data.clip_end = 1.0e6
     cam = bpy.data.objects.new("camera", cam_data)
-    cam.location = (0.0, 0.0, peer["camera_height_m"])
-    cam.rotation_euler = (0.0, 0.0, 0.0)  # looks down -z, north up
+    cam.location = (0.0, peer.get("camera_y_m", 0.0), peer["camera_height_m"])
+    # Looks down -z, north up; a rotation about x tilts the view towards +y (north), as
+    # glint's pitch does.
+    cam.rotation_euler = (math.radians(peer.get("view_zenith_deg", 0.0)), 0.0, 0.0)
     scene.collection.objects.link(cam)
     scene.camera = cam
 

@@ -166,6 +166,9 @@ def platform_xml(px, bands):
 # Cycles' Diffuse + Translucent mix gives the same numbers in every channel) and bark.
 CANOPY_CAMERA_HEIGHT_M = 300.0
 CANOPY_SPACING_M = 7.0
+# The soil: large enough that a camera tilted 30 degrees sees soil to its image's far edge
+# (glint sees nothing below the horizon beyond the scene, Cycles its world colour).
+CANOPY_GROUND_SIZE_M = 4000.0
 LEAF_RT = 0.45
 BARK_REFLECTANCE = 0.2
 
@@ -200,13 +203,13 @@ def write_canopy(work, trees, put):
              "  - {id: bark, reflectance: %s}" % flat(BARK_REFLECTANCE),
              "objects:",
              "  - {name: ground, primitive: ground_plane, material: soil, size: %g}"
-             % (2 * half + 200.0),
+             % CANOPY_GROUND_SIZE_M,
              "  - name: tree", "    obj: tree.obj", "    instances:"]
     lines += ["      - {translation: [%g, %g, 0], rotation_deg: [0, 0, %g], scale: %g}" % tuple(v)
               for v in instances]
     put("scene.yaml", "\n".join(lines) + "\n")
     return {"tree_obj": "tree.obj", "instances": instances, "leaf_rt": LEAF_RT,
-            "bark_reflectance": BARK_REFLECTANCE, "ground_size_m": 2 * half + 200.0,
+            "bark_reflectance": BARK_REFLECTANCE, "ground_size_m": CANOPY_GROUND_SIZE_M,
             "triangles": 12010 * len(instances)}
 
 
@@ -219,6 +222,10 @@ def main():
                     help="instead of the terrain: this many instanced trees of transmitting "
                          "leaves (examples/vegetation's tree) over a flat soil, the camera at "
                          "CANOPY_CAMERA_HEIGHT_M")
+    ap.add_argument("--view-zenith", type=float, default=0.0,
+                    help="tilt the camera this many degrees from nadir about the east axis "
+                         "(positive: looking north, from south of the origin), keeping its "
+                         "height and aiming at the origin")
     ap.add_argument("--data-dir", default=os.path.join(
         os.path.dirname(os.path.abspath(__file__)), "..", "..", "data"))
     args = ap.parse_args()
@@ -247,6 +254,8 @@ objects:
     obj: terrain.obj
     material: soil
 """)
+    # Pitch (nose up) tilts the nadir boresight towards +y, north (docs/motion.md).
+    camera_y_m = -camera_height_m * math.tan(math.radians(args.view_zenith))
     sky_e = SKY_RADIANCE * math.pi
     put("sky.txt", "# uniform sky, no path effects (bench/peer/make_scene.py)\n"
         "# wavelength_um sun_T sensor_T path_radiance sky_irradiance thermal_sky\n"
@@ -259,8 +268,8 @@ objects:
         angularunits="degrees" spatialunits="meters">
     <entry>
       <datetime type="relative">0</datetime>
-      <position><location type="scene"><point><x>0</x><y>0</y><z>{camera_height_m}</z></point></location></position>
-      <orientation><eulerangles><cartesiantriple><x>0</x><y>0</y><z>0</z></cartesiantriple></eulerangles></orientation>
+      <position><location type="scene"><point><x>0</x><y>{camera_y_m:.6f}</y><z>{camera_height_m}</z></point></location></position>
+      <orientation><eulerangles><cartesiantriple><x>{args.view_zenith}</x><y>0</y><z>0</z></cartesiantriple></eulerangles></orientation>
     </entry>
   </data>
 </platformmotion>
@@ -307,6 +316,8 @@ objects:
         "sun_wavelengths_um": rgb_um,
         "earth_sun_distance_au": d,
         "camera_height_m": camera_height_m,
+        "camera_y_m": camera_y_m,
+        "view_zenith_deg": args.view_zenith,
         "focal_length_mm": FOCAL_LENGTH_MM,
         "sensor_width_mm": ARRAY_WIDTH_MM,
         "configs": configs,

@@ -193,6 +193,8 @@ def main():
     ap.add_argument("--canopy", type=int, default=0,
                     help="render the canopy scene of this many instanced trees of transmitting "
                          "leaves instead of the terrain (make_scene.py --canopy)")
+    ap.add_argument("--view-zenith", type=float, default=0.0,
+                    help="camera tilt from nadir, degrees (make_scene.py --view-zenith)")
     ap.add_argument("--json", default=None, help="write the full report here")
     args = ap.parse_args()
     if args.quick:
@@ -209,7 +211,8 @@ def main():
 
     subprocess.run([sys.executable, os.path.join(HERE, "make_scene.py"), work,
                     "--sizes", ",".join(map(str, sizes)), "--bands", ",".join(map(str, bandss))]
-                   + (["--canopy", str(args.canopy)] if args.canopy else []),
+                   + (["--canopy", str(args.canopy)] if args.canopy else [])
+                   + ["--view-zenith", str(args.view_zenith)],
                    check=True)
     with open(os.path.join(work, "peer.json")) as f:
         peer = json.load(f)
