@@ -2,6 +2,7 @@
 // Tessellation of the YAML scene's primitives (ground plane, box, UV sphere, disk, cylinder)
 // into triangle meshes, and the mesh validation every mesh passes before Embree sees it.
 // docs/scene.md ("Primitives", "Validation") is the reference for both.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -82,16 +83,33 @@ bool finite3(const Vec3& v) {
     return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
 }
 
+/// The largest tile of a ground plane, m: a secondary ray leaves a triangle by an offset that
+/// grows with the triangle's diameter (docs/scene.md, "Spawn offset"); one pair of triangles
+/// 100 km across puts it at centimetres, 1 km tiles at under a millimetre.
+constexpr double kGroundTile_m = 1000.0;
+/// At most this many tiles per side (a 128 km plane keeps 1 km tiles; larger ones grow them).
+constexpr int kMaxGroundTilesPerSide = 128;
+
 model::Mesh ground_plane(const model::Primitive& p, std::uint32_t material) {
     MeshBuilder b(material);
     const double h = p.size_m / 2.0;
     const Vec3& c = p.center_m;
-    const auto v0 = b.vertex({c[0] - h, c[1] - h, c[2]});
-    const auto v1 = b.vertex({c[0] + h, c[1] - h, c[2]});
-    const auto v2 = b.vertex({c[0] + h, c[1] + h, c[2]});
-    const auto v3 = b.vertex({c[0] - h, c[1] + h, c[2]});
-    b.triangle(v0, v1, v2, nullptr);
-    b.triangle(v0, v2, v3, nullptr);
+    const int n = std::clamp(static_cast<int>(std::ceil(p.size_m / kGroundTile_m)), 1,
+                             kMaxGroundTilesPerSide);
+    // (n + 1)² vertices on a regular grid, two counter-clockwise triangles per tile.
+    const auto at = [&](int i) { return i == n ? h : -h + p.size_m * i / n; };
+    std::vector<std::uint32_t> grid;
+    grid.reserve(static_cast<std::size_t>(n + 1) * static_cast<std::size_t>(n + 1));
+    for (int j = 0; j <= n; ++j) {
+        for (int i = 0; i <= n; ++i) grid.push_back(b.vertex({c[0] + at(i), c[1] + at(j), c[2]}));
+    }
+    const auto v = [&](int i, int j) { return grid[static_cast<std::size_t>(j * (n + 1) + i)]; };
+    for (int j = 0; j < n; ++j) {
+        for (int i = 0; i < n; ++i) {
+            b.triangle(v(i, j), v(i + 1, j), v(i + 1, j + 1), nullptr);
+            b.triangle(v(i, j), v(i + 1, j + 1), v(i, j + 1), nullptr);
+        }
+    }
     return b.take();
 }
 

@@ -47,13 +47,20 @@ TEST(MeshPrimitives, GroundPlane) {
     p.kind = model::PrimitiveKind::ground_plane;
     p.center_m = {1, 2, 3};
     const model::Mesh mesh = tessellate(p);
-    EXPECT_EQ(mesh.triangles.size(), 2u);
+    // The default 100 km plane in 1 km tiles of two triangles (docs/scene.md, "Spawn offset").
+    EXPECT_EQ(mesh.triangles.size(), 2u * 100u * 100u);
+    EXPECT_EQ(mesh.vertices_m.size(), 101u * 101u);
     const Bounds b = bounds_of(mesh);
     EXPECT_FLOAT_EQ(b.lo[0], 1.0f - 50'000.0f);
     EXPECT_FLOAT_EQ(b.hi[1], 2.0f + 50'000.0f);
     EXPECT_FLOAT_EQ(b.lo[2], 3.0f);
     EXPECT_FLOAT_EQ(b.hi[2], 3.0f);
     expect_outward(mesh, {1, 2, 2});  // faces +z
+    // A plane up to 1 km is one tile; one beyond 128 km keeps 128 tiles a side.
+    p.size_m = 800.0;
+    EXPECT_EQ(tessellate(p).triangles.size(), 2u);
+    p.size_m = 1e6;
+    EXPECT_EQ(tessellate(p).triangles.size(), 2u * 128u * 128u);
 }
 
 TEST(MeshPrimitives, Box) {

@@ -288,11 +288,10 @@ TEST(SurfaceModels, ALeafLayerWithGapsReflectsTheTwoStreamSumWithItsGapTerm) {
     layer.object_index = 0;
     layer.name = "layer";
     scene.instances.push_back(layer);
-    // A 100 m soil, not the default 100 km plane: a shadow ray leaves a triangle by an offset
-    // that bounds the float error of its coordinates, ~4.5 cm for a 100 km plane, which moves
-    // the sun's crossing of the layer by 4.5 cm × tan θ (a fifth of a cell here) and breaks
-    // the half-cell independence (docs/scene.md, "Spawn offset").
-    test::add_primitive(scene, ground_plane(100.0), 1);
+    // The default 100 km plane, in 1 km tiles: as two 141 km triangles its spawn offset
+    // (~4.5 cm) moved the sun's crossing of the layer by a fifth of a cell here and broke the
+    // half-cell independence (docs/scene.md, "Spawn offset").
+    test::add_primitive(scene, ground_plane(), 1);
     TracerSettings settings;
     settings.max_bounces = 64;
     Rig rig(std::move(scene), kVisible,
