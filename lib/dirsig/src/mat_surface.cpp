@@ -44,11 +44,6 @@ constexpr Refused kRefusedModels[] = {
     {"CLASSICEXTINCTION", "extinction (.ext) slabs are not modelled; give a SimpleTransmittance"},
 };
 
-std::string upper(std::string text) {
-    for (char& c : text) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    return text;
-}
-
 /// The numbers of a list value: "0.7, 0.5" or "0.7 0.5".
 std::vector<double> numbers(const std::string& text) {
     std::vector<double> out;
@@ -96,8 +91,14 @@ std::optional<model::SpectralTable> MatReader::read_prop(const MatBlock& surface
     const MatBlock* prop = surface.find_block(prefix + "_PROP");
     if (!prop) return std::nullopt;
     const std::string pp = path + "/" + prefix + "_PROP";
-    warn_unknown(*prop, pp, {"TXT_FILENAME", "FILENAME", "SPECULAR_FRACTION"}, {});
-    if (const MatEntry* fraction = prop->find("SPECULAR_FRACTION")) {
+    // SPECULAR_FRACTION is a share of the reflectance: not a transmittance's key.
+    if (prefix == "TRANSMITTANCE") {
+        warn_unknown(*prop, pp, {"TXT_FILENAME", "FILENAME"}, {});
+    } else {
+        warn_unknown(*prop, pp, {"TXT_FILENAME", "FILENAME", "SPECULAR_FRACTION"}, {});
+    }
+    if (const MatEntry* fraction = prop->find("SPECULAR_FRACTION");
+        fraction && prefix != "TRANSMITTANCE") {
         read_specular_fraction(*fraction, pp + "/SPECULAR_FRACTION");
     }
     const MatEntry* entry = prop->find("TXT_FILENAME");
@@ -113,7 +114,7 @@ std::optional<model::SpectralTable> MatReader::read_prop(const MatBlock& surface
 bool MatReader::model_name(const MatBlock& surface, const std::string& path,
                            const std::string& slot, std::string& name) {
     const MatEntry* entry = surface.find(slot + "_PROP_NAME");
-    name = entry ? upper(entry->value) : std::string();
+    name = entry ? to_upper(entry->value) : std::string();
     if (!entry) return true;
     for (const Refused& r : kRefusedModels) {
         if (name == r.name) {
@@ -182,6 +183,26 @@ void MatReader::read_surface(const MatBlock& surface, const std::string& sp, mod
                           "EXTINCTION_PROP is not supported: extinction (.ext) slabs are not "
                           "modelled; give a SimpleTransmittance");
         return;
+    }
+    if (const MatEntry* extinction = surface.find("EXTINCTION_PROP_NAME")) {
+        diagnostics.error(at(extinction->line, sp + "/EXTINCTION_PROP_NAME"),
+                          "extinction model \"" + extinction->value +
+                              "\" is not supported: extinction slabs are not modelled; give a "
+                              "SimpleTransmittance");
+        return;
+    }
+    // A simple model named without its block describes nothing: said once, at the name
+    // (WardBRDF and unknown names without a block are errors below).
+    for (const auto& [slot, simple] : {std::pair{"REFLECTANCE", "SIMPLEREFLECTANCE"},
+                                       std::pair{"EMISSIVITY", "CLASSICEMISSIVITY"},
+                                       std::pair{"TRANSMITTANCE", "SIMPLETRANSMITTANCE"}}) {
+        const MatEntry* entry = surface.find(std::string(slot) + "_PROP_NAME");
+        if (entry && to_upper(entry->value) == simple &&
+            !surface.find_block(std::string(slot) + "_PROP")) {
+            diagnostics.warning(
+                at(entry->line, sp + "/" + entry->key),
+                entry->key + " \"" + entry->value + "\" has no " + slot + "_PROP block: ignored");
+        }
     }
     // A model name glint does not know: its curve file read as the simple model's, with a
     // warning; without a curve file, an error.

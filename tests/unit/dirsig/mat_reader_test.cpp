@@ -253,11 +253,44 @@ INSTANTIATE_TEST_SUITE_P(
                      "REFLECTANCE_PROP_NAME = WardBRDF\nREFLECTANCE_PROP { DS_WEIGHTS = 0.1, 0.2 }",
                      ":5: MATERIAL_ENTRY[1]/SURFACE_PROPERTIES/REFLECTANCE_PROP: WardBRDF needs "
                      "DS_WEIGHTS (diffuse, specular) and XY_SIGMAS (x, y)"},
+        RefusedModel{"ExtinctionName",
+                     "REFLECTANCE_PROP { TXT_FILENAME = r.txt }\nEXTINCTION_PROP_NAME = LeafSlab",
+                     ":5: MATERIAL_ENTRY[1]/SURFACE_PROPERTIES/EXTINCTION_PROP_NAME: extinction "
+                     "model \"LeafSlab\" is not supported: extinction slabs are not modelled; "
+                     "give a SimpleTransmittance"},
         RefusedModel{"BadSpecularFraction",
                      "EMISSIVITY_PROP { FILENAME = r.txt\nSPECULAR_FRACTION = 2 }",
                      ":5: MATERIAL_ENTRY[1]/SURFACE_PROPERTIES/EMISSIVITY_PROP/SPECULAR_FRACTION: "
                      "SPECULAR_FRACTION \"2\" is not a number in [0, 1]"}),
     [](const ::testing::TestParamInfo<RefusedModel>& param) { return param.param.name; });
+
+TEST(MatReader, AModelWithoutItsBlockAndASpecularFractionOfATransmittanceAreWarned) {
+    // SimpleTransmittance named with no TRANSMITTANCE_PROP: the material stays opaque, said at
+    // the name. SPECULAR_FRACTION inside TRANSMITTANCE_PROP is no transmittance key: an
+    // unknown key, not a mirror share.
+    TempDir dir;
+    write_file(dir / "r.txt", "0.4 0.1\n0.8 0.5\n");
+    write_file(dir / "m.mat",
+               "MATERIAL_ENTRY {\n  ID = 1\n  SURFACE_PROPERTIES {\n"
+               "    REFLECTANCE_PROP { TXT_FILENAME = r.txt }\n"
+               "    TRANSMITTANCE_PROP_NAME = SimpleTransmittance\n  }\n}\n"
+               "MATERIAL_ENTRY {\n  ID = 2\n  SURFACE_PROPERTIES {\n"
+               "    REFLECTANCE_PROP { TXT_FILENAME = r.txt }\n"
+               "    TRANSMITTANCE_PROP { TXT_FILENAME = r.txt\n SPECULAR_FRACTION = 1 }\n  }\n}\n");
+    Diagnostics diagnostics;
+    const auto materials = read_dirsig_materials(dir / "m.mat", {}, diagnostics);
+    EXPECT_FALSE(diagnostics.has_errors()) << diagnostics_text(diagnostics);
+    ASSERT_EQ(materials.size(), 2u);
+    EXPECT_TRUE(materials[0].transmittance.empty());
+    EXPECT_DOUBLE_EQ(materials[1].specular.fraction, 0.0);
+    const std::string text = warnings_text(diagnostics);
+    const std::string m = (dir / "m.mat").string();
+    EXPECT_THAT(text, HasSubstr(m + ":5: MATERIAL_ENTRY[1]/SURFACE_PROPERTIES/"
+                                    "TRANSMITTANCE_PROP_NAME: TRANSMITTANCE_PROP_NAME "
+                                    "\"SimpleTransmittance\" has no TRANSMITTANCE_PROP block: "
+                                    "ignored\n"));
+    EXPECT_THAT(text, HasSubstr("unknown key SPECULAR_FRACTION ignored"));
+}
 
 TEST(MatReader, AnUnknownModelWithACurveFileIsReadAsTheSimpleOneWithAWarning) {
     TempDir dir;
