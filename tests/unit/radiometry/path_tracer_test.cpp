@@ -29,15 +29,11 @@ using test::flat_material;
 using test::ground_plane;
 using test::Rig;
 
-/// Monte Carlo checks at low sample counts: within this many standard errors (a 4σ miss has a
-/// probability of 6e-5 for a normal estimate, and the seeds are fixed).
-constexpr double kSigmas = 4.0;
-/// The accuracy at high sample counts.
-constexpr double kHighCountRelative = 0.005;
-
-const SpectralGrid kVisible({0.45, 0.55, 0.65});
-const std::vector<double> kSun{0.20, 0.19, 0.16};  // W/(cm² µm), roughly ASTM at 1 AU
-const std::vector<double> kBlack(3, 0.0);
+using test::kBlack;
+using test::kHighCountRelative;
+using test::kSigmas;
+using test::kSun;
+using test::kVisible;
 
 /// A camera 1 km above the origin looking straight down.
 SampleRay nadir_ray(Vec3 target = {0.0, 0.0, 0.0}) {

@@ -28,9 +28,7 @@ using test::flat_material;
 using test::ground_plane;
 using test::Rig;
 
-/// Monte Carlo checks: within this many standard errors of the mean of independent problems
-/// (a 4σ miss has a probability of 6e-5 for a normal estimate; the seeds are fixed).
-constexpr double kSigmas = 4.0;
+using test::kSigmas;
 
 SpectralGrid even_grid(double first_um, double last_um, std::size_t bands) {
     std::vector<double> w(bands);

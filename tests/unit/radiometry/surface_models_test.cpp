@@ -32,12 +32,11 @@ using test::flat_material;
 using test::ground_plane;
 using test::Rig;
 
-constexpr double kSigmas = 4.0;
-constexpr double kHighCountRelative = 0.005;
-
-const SpectralGrid kVisible({0.45, 0.55, 0.65});
-const std::vector<double> kSun{0.20, 0.19, 0.16};
-const std::vector<double> kBlack(3, 0.0);
+using test::kBlack;
+using test::kHighCountRelative;
+using test::kSigmas;
+using test::kSun;
+using test::kVisible;
 
 model::Material ward_material(const std::string& id, double diffuse, double specular,
                               double alpha_x, double alpha_y, double temperature_k = 300.0) {

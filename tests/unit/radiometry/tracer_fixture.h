@@ -61,6 +61,18 @@ inline model::Primitive box(std::array<double, 3> lower_m, std::array<double, 3>
     return p;
 }
 
+/// Monte Carlo checks at low sample counts: within this many standard errors (a 4σ miss has a
+/// probability of 6e-5 for a normal estimate, and the seeds are fixed).
+inline constexpr double kSigmas = 4.0;
+/// The accuracy asked of the analytic references at high sample counts.
+inline constexpr double kHighCountRelative = 0.005;
+/// Three visible bands, µm.
+inline const SpectralGrid kVisible({0.45, 0.55, 0.65});
+/// The sun on kVisible, W/(cm² µm): roughly ASTM at 1 AU.
+inline const std::vector<double> kSun{0.20, 0.19, 0.16};
+/// A black sky (or sun) on kVisible.
+inline const std::vector<double> kBlack(3, 0.0);
+
 /// A scene built for rendering with the tracer over a spectral grid and an environment.
 struct Rig {
     Rig(model::Scene scene_in, SpectralGrid grid_in, Environment environment_in,
