@@ -85,10 +85,10 @@ void read_table_file(model::SpectralTable& table, std::optional<double> yaml_sca
     for (double& w : table.wavelengths_um) w *= scale;
 }
 
-/// Reads a spectrum key (`reflectance`, `transmittance`, `emissivity`): inline lists or a file;
-/// checks wavelengths (positive, strictly increasing) and values (in [0, 1]).
-model::SpectralTable read_spectrum(Reader& r, const YAML::Node& node, const std::string& path,
-                                   const std::string& quantity) {
+/// The samples of a spectrum key, checked; may be left partial (even with unequal lengths)
+/// when an error was reported.
+model::SpectralTable read_spectrum_samples(Reader& r, const YAML::Node& node,
+                                           const std::string& path, const std::string& quantity) {
     model::SpectralTable table;
     table.where = r.where(node, path);
     if (!r.expect_map(node, path)) return table;
@@ -154,6 +154,21 @@ model::SpectralTable read_spectrum(Reader& r, const YAML::Node& node, const std:
                 quantity + " " + format_shortest(v) + " is outside [0, 1]" +
                     (inline_values ? "" : " (row " + std::to_string(i + 1) + " of the file)"));
         }
+    }
+    return table;
+}
+
+/// Reads a spectrum key (`reflectance`, `transmittance`, `emissivity`): inline lists or a file;
+/// checks wavelengths (positive, strictly increasing) and values (in [0, 1]). A spectrum with
+/// an error comes back without samples, so that nothing downstream (Kirchhoff's default
+/// emissivity) reads a half-read table.
+model::SpectralTable read_spectrum(Reader& r, const YAML::Node& node, const std::string& path,
+                                   const std::string& quantity) {
+    const std::size_t errors = r.diagnostics.error_count();
+    model::SpectralTable table = read_spectrum_samples(r, node, path, quantity);
+    if (r.diagnostics.error_count() != errors) {
+        table.wavelengths_um.clear();
+        table.values.clear();
     }
     return table;
 }
