@@ -8,6 +8,7 @@
 #include "glint/core/text.h"
 #include "glint/io/xml.h"
 #include "glist_parts.h"
+#include "map_parts.h"
 
 namespace glint::dirsig {
 namespace {
@@ -78,9 +79,6 @@ model::Scene read_dirsig_scene(const std::filesystem::path& file, const ReadOpti
              "absdirectory", "srcdirectory", "mapdirectory", "maplist"},
             diagnostics);
         if (const auto origin = root.child("sceneorigin")) read_origin(*origin, scene, diagnostics);
-        if (const auto maps = root.child("maplist"); maps && !maps->children().empty()) {
-            diagnostics.warning(maps->where(), "property maps are not supported (ignored)");
-        }
         const auto mats = root.children("matfilename");
         if (mats.size() > 1) {
             diagnostics.error(mats[1].where(), "more than one <matfilename>");
@@ -91,6 +89,7 @@ model::Scene read_dirsig_scene(const std::filesystem::path& file, const ReadOpti
                                               "material file", diagnostics)) {
             scene.materials = read_dirsig_materials(*path, local, diagnostics);
         }
+        detail::read_property_maps(root, base_dir, local, scene, diagnostics);
         detail::SceneLoad load;
         load.global_materials = scene.materials.size();
         detail::read_database_dirs(root, base_dir, local, load, diagnostics);

@@ -248,6 +248,19 @@ void merge_scene(model::Scene& scene, model::Scene part, Diagnostics& diagnostic
         if (source.material < index_of.size()) source.material = index_of[source.material];
         scene.point_sources.push_back(std::move(source));
     }
+    // A part's maps apply to its own materials, wherever they landed; they come after the
+    // maps merged before them.
+    for (model::PropertyMap& map : part.maps) {
+        for (auto* list : {&map.applies_to, &map.band_materials, &map.slot_materials}) {
+            for (std::uint32_t& m : *list) {
+                if (m < index_of.size()) m = index_of[m];
+            }
+        }
+        for (auto& entry : map.dc_materials) {
+            if (entry.second < index_of.size()) entry.second = index_of[entry.second];
+        }
+        scene.maps.push_back(std::move(map));
+    }
 }
 
 void check_scene_offset(const model::SceneEntry& entry, Diagnostics& diagnostics) {

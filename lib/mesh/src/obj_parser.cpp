@@ -12,6 +12,7 @@
 #include <charconv>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -108,8 +109,12 @@ public:
 
 private:
     void vertex(std::string_view rest, int line);
+    void texcoord(std::string_view rest);
     void face(std::string_view rest, int line);
     void use_material(std::string_view name, int line);
+    /// The texture coordinates of the face just added (`count` corners, count − 2 triangles),
+    /// when it or an earlier face gave any.
+    void add_face_uvs(std::size_t count);
     /// Reads the indices of a face (`rest`: from its first index to the line's end), checking
     /// each as written; fills m_vertex_indices with each vertex index as tinyobjloader read it
     /// (atoi). Returns false when an index was reported.
@@ -131,7 +136,10 @@ private:
     model::Mesh m_mesh;
     long long m_texcoords = 0;
     long long m_normals = 0;
-    std::vector<int> m_vertex_indices;  ///< of the current face, reused
+    std::vector<std::array<float, 2>> m_uv_values;  ///< every `vt`, in order
+    std::vector<int> m_vertex_indices;              ///< of the current face, reused
+    /// Of the current face: each corner's texture coordinate as written (0: none).
+    std::vector<long long> m_texcoord_indices;
 };
 
 void ObjReader::statement(std::string_view row, int line) {
@@ -139,15 +147,32 @@ void ObjReader::statement(std::string_view row, int line) {
     if (row.size() < 2) return;
     if (row[0] == 'v' && is_blank(row[1])) {
         vertex(row.substr(2), line);
-    } else if (row[0] == 'v' && row.size() > 2 && is_blank(row[2]) &&
-               (row[1] == 't' || row[1] == 'n')) {
-        ++(row[1] == 't' ? m_texcoords : m_normals);
+    } else if (row[0] == 'v' && row.size() > 2 && is_blank(row[2]) && row[1] == 't') {
+        texcoord(row.substr(3));
+    } else if (row[0] == 'v' && row.size() > 2 && is_blank(row[2]) && row[1] == 'n') {
+        ++m_normals;
     } else if (row[0] == 'f' && is_blank(row[1])) {
         const std::string_view rest = skip_blanks(row.substr(2));
         if (!rest.empty()) face(rest, line);  // tinyobjloader reported no face
     } else if (row.substr(0, 6) == "usemtl" && row.size() > 6 && is_blank(row[6])) {
         use_material(row.substr(7), line);
     }
+}
+
+void ObjReader::texcoord(std::string_view rest) {
+    // u and v as tinyobjloader reads them (a missing or unreadable one is 0); w is not used.
+    std::array<double, 2> uv{};
+    const char* p = rest.data();
+    const char* const end = p + rest.size();
+    for (double& value : uv) {
+        while (p != end && is_blank(*p)) ++p;
+        const char* const token = p;
+        while (p != end && !is_blank(*p)) ++p;
+        if (!detail::plain_real(token, p, value))
+            value = detail::legacy_real(token, p).value_or(0.0);
+    }
+    m_uv_values.push_back({static_cast<float>(uv[0]), static_cast<float>(uv[1])});
+    ++m_texcoords;
 }
 
 void ObjReader::vertex(std::string_view rest, int line) {
@@ -193,6 +218,7 @@ bool ObjReader::read_face(std::string_view rest, int line) {
     };
     const auto vertices = static_cast<long long>(m_mesh.vertices_m.size());
     m_vertex_indices.clear();
+    m_texcoord_indices.clear();
     std::size_t at = 0;
     long long value = 0;
     while (at < rest.size()) {
@@ -206,6 +232,7 @@ bool ObjReader::read_face(std::string_view rest, int line) {
         if (digits_end > at && (digits_end == rest.size() || is_blank(rest[digits_end])) &&
             value >= 1 && value <= vertices) {
             m_vertex_indices.push_back(static_cast<int>(value));
+            m_texcoord_indices.push_back(0);
             at = digits_end;
             while (at < rest.size() && is_blank(rest[at])) ++at;
             continue;
@@ -216,6 +243,7 @@ bool ObjReader::read_face(std::string_view rest, int line) {
         // atoi: "+-3" is 0; otherwise the value, in int as tinyobjloader holds it.
         m_vertex_indices.push_back(
             field.size() > 1 && field[0] == '+' && field[1] == '-' ? 0 : static_cast<int>(value));
+        m_texcoord_indices.push_back(0);
         at = end;
         if (at < rest.size() && rest[at] == '/') {
             ++at;
@@ -226,6 +254,7 @@ bool ObjReader::read_face(std::string_view rest, int line) {
                               "texture coordinates", true, line, value)) {
                     return false;
                 }
+                if (end > at) m_texcoord_indices.back() = value;
                 at = end;
             }
             if (at < rest.size() && rest[at] == '/') {
@@ -280,6 +309,36 @@ void ObjReader::face(std::string_view rest, int line) {
     for (std::size_t k = 1; k + 1 < count; ++k) {
         m_mesh.triangles.push_back({corner(0), corner(k), corner(k + 1)});
         m_mesh.triangle_materials.push_back(*m_material);
+    }
+    add_face_uvs(count);
+}
+
+void ObjReader::add_face_uvs(std::size_t count) {
+    const auto uv = [this](std::size_t k) -> std::optional<std::array<float, 2>> {
+        const long long raw = m_texcoord_indices[k];
+        const auto n = static_cast<long long>(m_uv_values.size());
+        const long long index = raw > 0 ? raw - 1 : n + raw;
+        if (raw == 0 || index < 0 || index >= n) return std::nullopt;
+        return m_uv_values[static_cast<std::size_t>(index)];
+    };
+    bool all = true;
+    for (std::size_t k = 0; k < count && all; ++k) all = uv(k).has_value();
+    if (!all && m_mesh.triangle_uvs.empty()) return;
+    // The first face with texture coordinates gives the faces before it NaN ones.
+    constexpr float nan = std::numeric_limits<float>::quiet_NaN();
+    m_mesh.triangle_uvs.resize(m_mesh.triangles.size() - (count - 2),
+                               {nan, nan, nan, nan, nan, nan});
+    for (std::size_t k = 1; k + 1 < count; ++k) {
+        std::array<float, 6> corners{nan, nan, nan, nan, nan, nan};
+        if (all) {
+            std::size_t at = 0;
+            for (const std::size_t c : {std::size_t{0}, k, k + 1}) {
+                const std::array<float, 2> value = *uv(c);
+                corners[at++] = value[0];
+                corners[at++] = value[1];
+            }
+        }
+        m_mesh.triangle_uvs.push_back(corners);
     }
 }
 

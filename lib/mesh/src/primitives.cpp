@@ -287,6 +287,13 @@ bool validate_mesh(model::Mesh& mesh, std::size_t material_count, const ErrorCon
                                      " (one per triangle expected)");
         return false;
     }
+    if (!mesh.triangle_uvs.empty() && mesh.triangle_uvs.size() != mesh.triangles.size()) {
+        diagnostics.error(where, "mesh has " + count_text(mesh.triangles.size(), "triangle") +
+                                     " but " +
+                                     count_text(mesh.triangle_uvs.size(), "texture triangle") +
+                                     " (one per triangle expected)");
+        return false;
+    }
     const std::size_t n_vertices = mesh.vertices_m.size();
     std::size_t degenerate = 0;
     std::size_t kept = 0;
@@ -315,11 +322,13 @@ bool validate_mesh(model::Mesh& mesh, std::size_t material_count, const ErrorCon
         }
         mesh.triangles[kept] = tri;
         mesh.triangle_materials[kept] = mesh.triangle_materials[t];
+        if (!mesh.triangle_uvs.empty()) mesh.triangle_uvs[kept] = mesh.triangle_uvs[t];
         ++kept;
     }
     if (diagnostics.error_count() != errors) return false;
     mesh.triangles.resize(kept);
     mesh.triangle_materials.resize(kept);
+    if (!mesh.triangle_uvs.empty()) mesh.triangle_uvs.resize(kept);
     if (degenerate > 0) {
         diagnostics.warning(where, "dropped " + count_text(degenerate, "degenerate triangle"));
     }

@@ -15,6 +15,7 @@
 #include "glint/core/error.h"
 #include "glint/core/text.h"
 #include "glint/radiometry/clear_sheets.h"
+#include "glint/radiometry/mixture_draw.h"
 #include "glint/radiometry/sampling.h"
 
 namespace glint::radiometry {
@@ -134,6 +135,7 @@ void LidarTracer::trace(const SampleRay& ray, const LaserPulse& laser, RandomStr
     double travelled_m = 0.0;
     Vec3 direction = ray.direction;
     for (unsigned bounce = 0; hit; ++bounce) {
+        draw_mixture_material(m_scene, *hit, rng);
         const std::size_t m = hit->material;
         if (!m_materials.scatters(m)) break;
         // The black back face of a single-sided material.

@@ -9,6 +9,7 @@
 
 #include "glint/core/error.h"
 #include "glint/radiometry/clear_sheets.h"
+#include "glint/radiometry/mixture_draw.h"
 #include "glint/radiometry/sampling.h"
 
 namespace glint::radiometry {
@@ -305,6 +306,7 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
     if (primary_hit != nullptr) {
         hit = primary_hit->has_value() ? &**primary_hit : nullptr;
     } else if (m_scene.intersect_into(ray.origin_m, ray.direction, time, traced)) {
+        draw_mixture_material(m_scene, traced, rng);
         hit = &traced;
     }
     ++scratch.rays;
@@ -417,6 +419,9 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
             record->normal = normal;
             record->distance_m = hit->distance_m;
             record->material = hit->material;
+            record->mix = hit->mixture_map == scene::kNoMixture
+                              ? scene::MaterialMix{}
+                              : m_scene.maps().mix(hit->mixture_map, hit->mixture_texel);
             record->instance = hit->instance;
             record->sun_blocked = sun_blocked;
         }
@@ -477,6 +482,7 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
         }
         const Vec3 origin = m_scene.spawn_origin(*hit, wi);
         hit = m_scene.intersect_into(origin, wi, time, traced) ? &traced : nullptr;
+        if (hit != nullptr) draw_mixture_material(m_scene, traced, rng);
         ++scratch.rays;
         if (hit == nullptr) {
             if (wi.z > 0.0 && !env.sky_black()) {

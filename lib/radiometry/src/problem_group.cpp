@@ -11,6 +11,7 @@
 
 #include "glint/core/error.h"
 #include "glint/core/text.h"
+#include "glint/radiometry/mixture_draw.h"
 
 namespace glint::radiometry::group {
 namespace {
@@ -208,6 +209,7 @@ void solve_group(const PathTracer& tracer, const ProblemBatch& batch, std::uint6
         std::size_t shadows = 0;
         for (std::size_t r = 0; r < rays; ++r) {
             Lane& lane = ws.lanes[ws.packet_lane[r]];
+            if (ws.hits[r]) draw_mixture_material(scene, *ws.hits[r], *lane.rng);
             ws.suns[r] = tracer.first_sun(lane.ray, ws.hits[r], *lane.rng, ws.wants_first_hit);
             if (!ws.suns[r].query) continue;
             ws.shadows[shadows] = ws.suns[r].ray;

@@ -112,8 +112,7 @@ void place_moving(RTCGeometry geometry, const detail::MotionSamples& samples,
                                            static_cast<float>(object.center_m.z));
         const Vec3 t = pose.position_m - anchor_m;
         rtcQuaternionDecompositionSetTranslation(&qd, static_cast<float>(t.x),
-                                                 static_cast<float>(t.y),
-                                                 static_cast<float>(t.z));
+                                                 static_cast<float>(t.y), static_cast<float>(t.z));
         rtcSetGeometryTransformQuaternion(geometry, static_cast<unsigned>(k), &qd);
     }
     data.moving = true;
@@ -156,6 +155,7 @@ GeometryScene GeometryScene::build(
     }
 
     auto impl = std::make_unique<Impl>();
+    impl->maps = SurfaceMaps(scene);
     impl->window = options.window;
     impl->device = std::make_unique<detail::EmbreeDevice>(options.device);
     detail::EmbreeDevice& device = *impl->device;
@@ -163,8 +163,10 @@ GeometryScene GeometryScene::build(
     impl->objects.resize(scene.objects.size());
     for (const model::Instance& instance : scene.instances) {
         detail::ObjectData& data = impl->objects[instance.object_index];
-        if (!data.scene)
-            data = detail::build_object_scene(device, scene.objects[instance.object_index]);
+        if (data.scene) continue;
+        const model::GeometryObject& object = scene.objects[instance.object_index];
+        data = detail::build_object_scene(device, object);
+        if (impl->maps.uses_uv()) data.uvs = object.mesh.triangle_uvs;
     }
 
     bool any_moving = false;
@@ -215,8 +217,8 @@ GeometryScene GeometryScene::build(
             fixed[i] = detail::pose_affine(samples[i].poses.front());
             data.bounds = detail::transformed(object_box, fixed[i]);
         } else {
-            data.bounds = swept_bounds(samples[i], object_box, detail::mesh_extent(mesh),
-                                       options.motion);
+            data.bounds =
+                swept_bounds(samples[i], object_box, detail::mesh_extent(mesh), options.motion);
             impl->time_steps[i] = static_cast<unsigned>(samples[i].poses.size());
         }
         detail::expand(impl->bounds, data.bounds);
@@ -261,6 +263,7 @@ GeometryScene& GeometryScene::operator=(GeometryScene&&) noexcept = default;
 GeometryScene::~GeometryScene() = default;
 
 const Bounds& GeometryScene::bounds() const noexcept { return m_impl->bounds; }
+const SurfaceMaps& GeometryScene::maps() const noexcept { return m_impl->maps; }
 Bounds GeometryScene::instance_bounds(std::size_t instance) const noexcept {
     if (instance >= m_impl->instances.size()) return detail::empty_bounds();
     return m_impl->instances[instance].bounds;

@@ -19,15 +19,15 @@ namespace detail {
 /// normal · p = offset. One aligned 32-byte record per triangle, so a hit rebuilds its point
 /// from one cache line instead of an index and three vertex loads.
 struct alignas(32) TrianglePlane {
-    double offset_m = 0.0;                 ///< normal · v0, in double from the float vertices
-    std::array<float, 3> normal{};         ///< unit (v1 − v0) × (v2 − v0); 0 when degenerate
-    float diameter_m = 0.0f;               ///< the largest |vi − vj|∞, rounded up
+    double offset_m = 0.0;          ///< normal · v0, in double from the float vertices
+    std::array<float, 3> normal{};  ///< unit (v1 − v0) × (v2 − v0); 0 when degenerate
+    float diameter_m = 0.0f;        ///< the largest |vi − vj|∞, rounded up
 };
 static_assert(sizeof(TrianglePlane) == 32, "one plane per half cache line");
 
 /// One object's Embree scene and what a hit on it needs.
 struct ObjectData {
-    ScenePtr scene;                        ///< null for an object no instance uses
+    ScenePtr scene;  ///< null for an object no instance uses
     /// Per triangle, its plane: a hit's position and normal.
     std::vector<TrianglePlane> planes;
     /// The vertex buffer Embree traces: the mesh's vertices minus `center_m`, in float
@@ -40,6 +40,8 @@ struct ObjectData {
     Vec3 center_m;
     std::vector<std::uint32_t> materials;  ///< per triangle; empty when all are single_material
     std::uint32_t single_material = 0;     ///< every triangle's, when `materials` is empty
+    /// Per triangle, its corners' texture coordinates: only when a map projects through them.
+    std::vector<std::array<float, 6>> uvs;
     std::uint64_t triangle_count = 0;
 };
 
@@ -74,6 +76,8 @@ struct GeometryScene::Impl {
     /// Embree's numbers are the scene's size, not its distance from the scene origin (a scene
     /// in UTM coordinates keeps millimetres).
     Vec3 anchor_m;
+    /// The scene's property maps, applied to every hit.
+    SurfaceMaps maps;
     Bounds bounds;       ///< tight (reported)
     Bounds clip_bounds;  ///< enlarged, for clipping rays in double precision
     TimeWindow window;

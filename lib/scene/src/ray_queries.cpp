@@ -132,6 +132,20 @@ double row_norm(const detail::Mat3& m) noexcept {
     return out;
 }
 
+/// The property maps at `hit` (Embree's barycentrics u, v on its triangle).
+void apply_maps(const SurfaceMaps& maps, const detail::ObjectData& object, float u, float v,
+                RayHit& hit) noexcept {
+    MapPoint point{hit.position_m.x, hit.position_m.y, std::nullopt};
+    if (!object.uvs.empty()) {
+        const std::array<float, 6>& c = object.uvs[hit.triangle];
+        const double b0 = 1.0 - double{u} - double{v};
+        const double uu = b0 * c[0] + u * double{c[2]} + v * double{c[4]};
+        const double vv = b0 * c[1] + u * double{c[3]} + v * double{c[5]};
+        if (std::isfinite(uu) && std::isfinite(vv)) point.uv = std::array<double, 2>{uu, vv};
+    }
+    maps.apply(point, hit.material, hit.mixture_map, hit.mixture_texel);
+}
+
 /// The hit Embree reported on the caller's ray origin_m + s · direction: Embree's instance,
 /// triangle and barycentrics (u, v). The triangle's plane (computed in double from its float
 /// vertices at build) is taken to Embree's frame through the instance's map as Embree holds
@@ -139,10 +153,12 @@ double row_norm(const detail::Mat3& m) noexcept {
 /// Embree's surface to double rounding whatever the distance the float ray ran. The normal is
 /// the plane's, in scene ENU. The spawn offset bounds the float error of a ray leaving the hit
 /// (docs/scene.md, "Hit points").
-void make_hit(const std::vector<detail::InstanceData>& instances,
-              const std::vector<detail::ObjectData>& objects, const Vec3& anchor_m,
-              const Vec3& origin_m, const Vec3& direction, float time01,
+template <class SceneImpl>
+void make_hit(const SceneImpl& impl, const Vec3& origin_m, const Vec3& direction, float time01,
               std::uint32_t instance_id, std::uint32_t triangle, float u, float v, RayHit& hit) {
+    const std::vector<detail::InstanceData>& instances = impl.instances;
+    const std::vector<detail::ObjectData>& objects = impl.objects;
+    const Vec3& anchor_m = impl.anchor_m;
     hit.instance = instance_id;
     hit.triangle = triangle;
     const detail::InstanceData& instance = instances[hit.instance];
@@ -160,13 +176,11 @@ void make_hit(const std::vector<detail::InstanceData>& instances,
     }
     const detail::TrianglePlane& plane = object.planes[triangle];
     // p = A q + T with normal · q = offset: (A⁻ᵀ normal) · (p − T) = offset.
-    const Vec3 normal =
-        normal_matrix * Vec3{plane.normal[0], plane.normal[1], plane.normal[2]};
+    const Vec3 normal = normal_matrix * Vec3{plane.normal[0], plane.normal[1], plane.normal[2]};
     hit.normal = normalized(normal);
     const Vec3 start = origin_m - anchor_m;
     const double along = dot(normal, direction);
-    const double t =
-        (plane.offset_m + dot(normal, to_frame.translation_m - start)) / along;
+    const double t = (plane.offset_m + dot(normal, to_frame.translation_m - start)) / along;
     Vec3 in_frame;
     if (along != 0.0 && std::isfinite(t)) {
         in_frame = start + direction * t;
@@ -185,6 +199,8 @@ void make_hit(const std::vector<detail::InstanceData>& instances,
     const double frame_size = largest_abs(in_frame) + largest_abs(to_frame.translation_m);
     const double triangle_size = plane.diameter_m * row_norm(to_frame.linear);
     hit.spawn_offset_m = kSpawnFloor_m + kSpawnRelative * (frame_size + 2.0 * triangle_size);
+    hit.mixture_map = kNoMixture;
+    if (impl.maps.maps_material(hit.material)) apply_maps(impl.maps, object, u, v, hit);
 }
 
 /// Embree's packet of kPacketSize rays, 64-byte aligned as rtcIntersect16 requires, with
@@ -291,8 +307,8 @@ bool GeometryScene::intersect_into(const Vec3& origin_m, const Vec3& direction, 
     rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(impl.top.get(), &context, &rayhit);
     if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
-    make_hit(impl.instances, impl.objects, impl.anchor_m, origin_m, direction, time01,
-             rayhit.hit.instID[0], rayhit.hit.primID, rayhit.hit.u, rayhit.hit.v, hit);
+    make_hit(impl, origin_m, direction, time01, rayhit.hit.instID[0], rayhit.hit.primID,
+             rayhit.hit.u, rayhit.hit.v, hit);
     return true;
 }
 
@@ -321,9 +337,8 @@ void GeometryScene::intersect_packet(std::span<const PacketRay> rays,
             hits[k].reset();
             continue;
         }
-        make_hit(impl.instances, impl.objects, impl.anchor_m, rays[k].origin_m, rays[k].direction,
-                 packet.time01[k], hit.instID[0][k], hit.primID[k], hit.u[k], hit.v[k],
-                 hits[k].emplace());
+        make_hit(impl, rays[k].origin_m, rays[k].direction, packet.time01[k], hit.instID[0][k],
+                 hit.primID[k], hit.u[k], hit.v[k], hits[k].emplace());
     }
 }
 

@@ -80,16 +80,32 @@ public:
         m_normal = m_normal + w * hit->normal;
         m_distance += w * hit->distance_m;
         if (hit->sun_blocked) m_shadow += w;
-        m_temperature += w * c.scene->materials[hit->material].temperature_k;
-        m_reflectance += w * c.materials->reflectance(hit->material)[c.reflectance_band];
-        m_materials.add(hit->material, w);
+        // A mixture map's texel counts each of its materials by its weight (the abundance
+        // of a mixed texel is the weight, not the material this sample drew).
+        const std::uint32_t single = hit->material;
+        const float one = 1.0f;
+        const std::span<const std::uint32_t> materials =
+            hit->mix.materials.empty() ? std::span<const std::uint32_t>(&single, 1)
+                                       : hit->mix.materials;
+        const std::span<const float> weights =
+            hit->mix.materials.empty() ? std::span<const float>(&one, 1) : hit->mix.weights;
+        const auto& targets = m_owner.m_layout.targets;
+        for (std::size_t k = 0; k < materials.size(); ++k) {
+            const double wk = w * weights[k];
+            if (!(wk > 0.0)) continue;
+            const std::uint32_t m = materials[k];
+            m_temperature += wk * c.scene->materials[m].temperature_k;
+            m_reflectance += wk * c.materials->reflectance(m)[c.reflectance_band];
+            m_materials.add(m, wk);
+            for (std::size_t t = 0; t < targets.size(); ++t) {
+                if (!targets[t].is_tag && targets[t].matches[m] != 0) m_targets[t] += wk;
+            }
+        }
         m_instances.add(hit->instance, w);
         m_objects.add(static_cast<std::uint32_t>(c.scene->instances[hit->instance].object_index),
                       w);
-        const auto& targets = m_owner.m_layout.targets;
         for (std::size_t t = 0; t < targets.size(); ++t) {
-            const std::uint32_t key = targets[t].is_tag ? hit->instance : hit->material;
-            if (targets[t].matches[key] != 0) m_targets[t] += w;
+            if (targets[t].is_tag && targets[t].matches[hit->instance] != 0) m_targets[t] += w;
         }
     }
 

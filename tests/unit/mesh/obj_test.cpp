@@ -5,6 +5,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <optional>
 #include <string>
 
@@ -82,6 +83,26 @@ TEST(ObjParser, TextureAndNormalIndices) {
     Diagnostics before;  // counts are those before the face
     parse(kTriangle + "f 1//1 2//1 3//1\nvn 0 0 1\n", before);
     EXPECT_EQ(only_error(before).message, "normal index 1 is out of range (0 normals so far)");
+}
+
+TEST(ObjParser, TextureCoordinatesPerTriangleCorner) {
+    // A quad (fanned into two triangles) with texture coordinates, relative ones included,
+    // then a face without: NaN. A face before the first with coordinates gets NaN too.
+    const std::string text = kTriangle +
+                             "v 1 1 0\nf 1 2 3\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0.25 0.75\n"
+                             "f 1/1 2/2 4/3 3/-1\nf 1 2 4\n";
+    Diagnostics diagnostics;
+    const model::Mesh mesh = parse(text, diagnostics);
+    EXPECT_FALSE(diagnostics.has_errors()) << diagnostics_text(diagnostics);
+    ASSERT_EQ(mesh.triangles.size(), 4u);
+    ASSERT_EQ(mesh.triangle_uvs.size(), 4u);
+    EXPECT_TRUE(std::isnan(mesh.triangle_uvs[0][0]));
+    EXPECT_EQ(mesh.triangle_uvs[1], (std::array<float, 6>{0, 0, 1, 0, 1, 1}));
+    EXPECT_EQ(mesh.triangle_uvs[2], (std::array<float, 6>{0, 0, 1, 1, 0.25f, 0.75f}));
+    EXPECT_TRUE(std::isnan(mesh.triangle_uvs[3][5]));
+    // A mesh without any: none kept.
+    Diagnostics plain;
+    EXPECT_TRUE(parse(kTriangle + "vt 0 0\nf 1 2 3\n", plain).triangle_uvs.empty());
 }
 
 TEST(ObjParser, IndexThatIsNotAnInteger) {

@@ -14,6 +14,7 @@
 // | materials | appended; an id already merged is an error at the later definition, naming the earlier one's file:line ("material id \"1\" is already defined at a.mat:2") (the same definition — one `.mat` shared by two scenes — is merged once, silently) |
 // | objects | appended; their triangles' material indices follow the merged material list |
 // | instances | appended; object indices follow the merged object list |
+// | property maps | appended after the earlier scenes' maps; their material indices follow the merged material list |
 // | scene_list offset | not applied: a warning unless empty or all zeros |
 // clang-format on
 #pragma once

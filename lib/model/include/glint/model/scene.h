@@ -59,6 +59,7 @@
 
 #include "glint/core/diagnostics.h"
 #include "glint/model/common.h"
+#include "glint/model/maps.h"
 #include "glint/model/motion.h"
 
 namespace glint::model {
@@ -173,6 +174,9 @@ struct Mesh {
     std::vector<std::array<std::uint32_t, 3>> triangles;
     /// Per triangle: index into Scene::materials.
     std::vector<std::uint32_t> triangle_materials;
+    /// Per triangle, its corners' texture coordinates (OBJ `vt`: u0 v0 u1 v1 u2 v2), for maps
+    /// projected through them; empty when no face gives any, NaN for a face that gives none.
+    std::vector<std::array<float, 6>> triangle_uvs;
 };
 
 /// Beyond this distance from the object's origin (any coordinate, m) a mesh's vertices are
@@ -267,6 +271,8 @@ struct Scene {
     std::vector<GeometryObject> objects;
     std::vector<Instance> instances;
     std::vector<PointSource> point_sources;
+    /// The enabled property maps, in the order they apply (docs/maps.md).
+    std::vector<PropertyMap> maps;
 };
 
 /// A grey material of constant `reflectance` over 0.1–100 µm, at `temperature_k`, with

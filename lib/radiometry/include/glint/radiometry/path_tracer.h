@@ -50,7 +50,9 @@ struct FirstHit {
     Vec3 position_m;             ///< scene ENU
     Vec3 normal;                 ///< unit geometric normal, facing the ray's origin
     double distance_m = 0.0;     ///< from the ray's origin
-    std::uint32_t material = 0;  ///< index into the scene's materials
+    std::uint32_t material = 0;  ///< index into the scene's materials (drawn from `mix`)
+    /// A mixture map's texel at the point: its materials and weights (empty otherwise).
+    scene::MaterialMix mix;
     std::uint32_t instance = 0;  ///< index into the scene's instances
     /// The sun does not light the point: the sun is below the horizon (or switched off), it
     /// is behind the surface, or the shadow ray towards the point drawn in its disc is

@@ -44,6 +44,7 @@
 #include "glint/motion/geometry.h"
 #include "glint/motion/scene_instances.h"
 #include "glint/motion/trajectory.h"
+#include "glint/scene/surface_maps.h"
 
 namespace glint::scene {
 
@@ -107,9 +108,15 @@ struct RayHit {
     /// coordinates in Embree's frame, its instance's translation and its triangle's size;
     /// docs/scene.md).
     double spawn_offset_m = 0.0;
-    std::uint32_t material = 0;  ///< index into model::Scene::materials
+    /// Index into model::Scene::materials: the triangle's, or what the property maps make
+    /// of it there (surface_maps.h).
+    std::uint32_t material = 0;
     std::uint32_t instance = 0;  ///< index into model::Scene::instances
     std::uint32_t triangle = 0;  ///< index into the object's mesh triangles
+    /// A mixture map's texel covers the hit (maps().mix gives its materials and weights);
+    /// kNoMixture otherwise.
+    std::uint32_t mixture_map = kNoMixture;
+    std::uint64_t mixture_texel = 0;
 };
 
 /// Rays traced together by GeometryScene's packet queries.
@@ -188,6 +195,8 @@ public:
 
     /// Bounds of the whole scene over the window (empty for an empty scene).
     const Bounds& bounds() const noexcept;
+    /// The scene's property maps (applied to every hit; a mixture's draw is the caller's).
+    const SurfaceMaps& maps() const noexcept;
     /// Bounds of instance `instance` (index into scene.instances) over the window — a moving
     /// instance's swept box; empty for an index out of range.
     Bounds instance_bounds(std::size_t instance) const noexcept;

@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: Apache-2.0
+// Internal interface of the `.scene` property-map reader: the `<maplist>` elements
+// (map_reader.cpp) and the decoding of their images into rasters (map_images.cpp).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "glint/core/diagnostics.h"
+#include "glint/dirsig/read_options.h"
+#include "glint/io/xml.h"
+#include "glint/model/scene.h"
+
+namespace glint::dirsig::detail {
+
+/// The most texels a map image may hold (2³¹: a 46k × 46k class map, 2 GiB at one byte).
+inline constexpr std::uint64_t kMaxMapTexels = std::uint64_t{1} << 31;
+
+/// "<materialmap> \"name\"", for messages.
+std::string map_label_text(const model::PropertyMap& map);
+
+/// Reads `<mapdirectory>` and `<maplist>` of a `<classicscene>` into scene.maps, the images
+/// decoded. The scene's materials must be read already (maps name them by id).
+void read_property_maps(const io::XmlNode& root, const std::filesystem::path& base_dir,
+                        const ReadOptions& options, model::Scene& scene, Diagnostics& diagnostics);
+
+/// Decodes a material map's image: each texel's digital count (the first channel, an 8- or
+/// 16-bit integer) through map.dc_materials into a slot of map.slot_materials (which it
+/// fills). Problems (unreadable image, floating-point values, a count the table lacks) are
+/// errors at `map.where` naming the map; nullptr then.
+std::shared_ptr<const model::MapRaster> read_class_raster(model::PropertyMap& map,
+                                                          Diagnostics& diagnostics);
+
+/// Decodes a mixture map's image: one band per entry of map.band_materials, each texel's
+/// weights normalised to sum 1 (all zero: none). Problems are errors at `map.where`; nullptr
+/// then.
+std::shared_ptr<const model::MapRaster> read_weight_raster(const model::PropertyMap& map,
+                                                           Diagnostics& diagnostics);
+
+}  // namespace glint::dirsig::detail

@@ -1,0 +1,325 @@
+// SPDX-License-Identifier: Apache-2.0
+// The property maps of a `.scene` (map_parts.h; docs/maps.md): `<mapdirectory>` and the
+// `<maplist>`'s `<materialmap>` and `<mixturemap>` elements, each with its `<matidlist>`,
+// `<projector>` (`<uvprojector/>` or `<drapeprojector>`) and image. A disabled map is skipped
+// whole; the map kinds glint does not apply are errors naming the map.
+#include <algorithm>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "glint/core/text.h"
+#include "map_parts.h"
+
+namespace glint::dirsig::detail {
+namespace {
+
+/// The kinds of DIRSIG map glint knows by name but does not apply.
+constexpr std::string_view kRefusedMaps[] = {
+    "texturemap",  "temperaturemap", "bumpmap", "normalmap", "reflectancemap",
+    "radiancemap", "curvemap",       "rgbmap",  "decalmap",  "densitymap"};
+
+/// A `<matid>`'s material, by id; an error at it when the scene has none.
+std::optional<std::uint32_t> material_of(const io::XmlNode& node, const model::Scene& scene,
+                                         Diagnostics& diagnostics) {
+    const std::string id = node.text();
+    for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+        if (scene.materials[i].id == id) return static_cast<std::uint32_t>(i);
+    }
+    diagnostics.error(node.where(), "unknown material id " + quote(id) +
+                                        (id.empty() ? "" : " (not in the scene's material file)"));
+    return std::nullopt;
+}
+
+std::optional<model::MapExtend> extend_attribute(const io::XmlNode& node, std::string_view name,
+                                                 Diagnostics& diagnostics) {
+    const auto value =
+        node.attribute_enum(name, {"none", "clamp", "repeat", "mirror"}, diagnostics);
+    if (!value) return std::nullopt;
+    if (*value == "clamp") return model::MapExtend::clamp;
+    if (*value == "repeat") return model::MapExtend::repeat;
+    if (*value == "mirror") return model::MapExtend::mirror;
+    return model::MapExtend::none;
+}
+
+/// A pair of numbers written as `<x>` and `<y>` children (`<z>`, when given, must be a number
+/// and is not used: a drape is vertical) or, for a size, one number for both.
+std::optional<std::array<double, 2>> read_pair(const io::XmlNode& node, bool single_allowed,
+                                               io::NumberRule rule, Diagnostics& diagnostics) {
+    if (single_allowed && node.children().empty()) {
+        const auto value = node.own_double(diagnostics, rule);
+        if (!value) return std::nullopt;
+        return std::array<double, 2>{*value, *value};
+    }
+    node.warn_unknown_children({"x", "y", "z"}, diagnostics);
+    const auto x = node.required_double("x", diagnostics, rule);
+    const auto y = node.required_double("y", diagnostics, rule);
+    (void)node.optional_double("z", diagnostics);
+    if (!x || !y) return std::nullopt;
+    return std::array<double, 2>{*x, *y};
+}
+
+bool read_projector_elements(const io::XmlNode& node, model::MapProjector& projector,
+                             Diagnostics& diagnostics) {
+    projector.where = node.where();
+    node.warn_unknown_children({"uvprojector", "drapeprojector"}, diagnostics);
+    if (const auto origin = node.attribute_enum("origin", {"cartesian", "image"}, diagnostics)) {
+        projector.origin =
+            *origin == "image" ? model::MapOrigin::image : model::MapOrigin::cartesian;
+    }
+    projector.flip_x = node.attribute_bool("flipx", diagnostics).value_or(false);
+    projector.flip_y = node.attribute_bool("flipy", diagnostics).value_or(false);
+    projector.extend_x =
+        extend_attribute(node, "extendx", diagnostics).value_or(model::MapExtend::none);
+    projector.extend_y =
+        extend_attribute(node, "extendy", diagnostics).value_or(model::MapExtend::none);
+    const auto uv = node.child("uvprojector");
+    const auto drape = node.child("drapeprojector");
+    if (uv && drape) {
+        diagnostics.error(node.where(), "<projector> has both <uvprojector> and <drapeprojector>");
+        return false;
+    }
+    if (uv) {
+        uv->warn_unknown_children({}, diagnostics);
+        projector.uv = true;
+        return true;
+    }
+    if (!drape) {
+        diagnostics.error(node.where(), "<projector> needs <uvprojector/> or <drapeprojector>");
+        return false;
+    }
+    drape->warn_unknown_children({"insertpoint", "gsd"}, diagnostics);
+    bool ok = true;
+    if (const auto point = drape->child("insertpoint")) {
+        const auto xy = read_pair(*point, false, io::NumberRule::any(), diagnostics);
+        if (xy) projector.insert_point_m = *xy;
+        ok = xy.has_value();
+    }
+    const auto gsd = drape->child("gsd");
+    if (!gsd) {
+        diagnostics.error(drape->where(), "missing required element <gsd>");
+        return false;
+    }
+    const auto size = read_pair(*gsd, true, io::NumberRule::positive(), diagnostics);
+    if (size) projector.gsd_m = *size;
+    return ok && size.has_value();
+}
+
+/// The `<projector>`; false after an error in it.
+bool read_projector(const io::XmlNode& node, model::MapProjector& projector,
+                    Diagnostics& diagnostics) {
+    const std::size_t errors = diagnostics.error_count();
+    return read_projector_elements(node, projector, diagnostics) &&
+           diagnostics.error_count() == errors;
+}
+
+/// A list of `<matid>` children of the map's `element`, in order (repeats dropped when
+/// `unique`); nullopt after an error (a missing or empty list, an unknown id).
+std::optional<std::vector<std::uint32_t>> read_material_list(const io::XmlNode& map_node,
+                                                             const char* element, bool unique,
+                                                             const model::Scene& scene,
+                                                             Diagnostics& diagnostics) {
+    const auto list = map_node.child(element);
+    if (!list) {
+        diagnostics.error(map_node.where(),
+                          std::string("missing required element <") + element + ">");
+        return std::nullopt;
+    }
+    list->warn_unknown_children({"matid"}, diagnostics);
+    std::vector<std::uint32_t> out;
+    bool ok = true;
+    for (const io::XmlNode& id : list->children("matid")) {
+        const auto m = material_of(id, scene, diagnostics);
+        if (!m) {
+            ok = false;
+        } else if (!unique || std::find(out.begin(), out.end(), *m) == out.end()) {
+            out.push_back(*m);
+        }
+    }
+    if (ok && out.empty()) {
+        diagnostics.error(list->where(), std::string("<") + element + "> lists no material");
+    }
+    if (!ok || out.empty()) return std::nullopt;
+    return out;
+}
+
+bool read_dc_table(const io::XmlNode& map_node, const model::Scene& scene, model::PropertyMap& map,
+                   Diagnostics& diagnostics) {
+    const auto table = map_node.child("dcmatlut");
+    if (!table) {
+        diagnostics.error(map_node.where(), "missing required element <dcmatlut>");
+        return false;
+    }
+    table->warn_unknown_children({"entry"}, diagnostics);
+    bool ok = true;
+    for (const io::XmlNode& entry : table->children("entry")) {
+        entry.warn_unknown_children({"dc", "matid"}, diagnostics);
+        const auto dc = entry.required_int("dc", diagnostics, 0, 65535);
+        const auto id = entry.child("matid");
+        if (!id) diagnostics.error(entry.where(), "missing required element <matid>");
+        const auto m = id ? material_of(*id, scene, diagnostics) : std::nullopt;
+        if (!dc || !m) {
+            ok = false;
+            continue;
+        }
+        const auto dc_value = static_cast<std::uint32_t>(*dc);
+        for (const auto& [earlier, material] : map.dc_materials) {
+            if (earlier == dc_value && material != *m) {
+                diagnostics.error(entry.where(), "digital count " + std::to_string(dc_value) +
+                                                     " is listed twice, for different materials");
+                ok = false;
+            }
+        }
+        map.dc_materials.emplace_back(dc_value, *m);
+    }
+    if (ok && map.dc_materials.empty()) {
+        diagnostics.error(table->where(), "<dcmatlut> has no <entry>");
+        return false;
+    }
+    return ok;
+}
+
+/// The map's `<image><filename>`, resolved against the map directory; an error when it
+/// does not exist.
+bool read_image_name(const io::XmlNode& map_node, const std::filesystem::path& map_dir,
+                     const ReadOptions& options, model::PropertyMap& map,
+                     Diagnostics& diagnostics) {
+    const auto image = map_node.child("image");
+    if (!image) {
+        diagnostics.error(map_node.where(), "missing required element <image>");
+        return false;
+    }
+    image->warn_unknown_children({"filename"}, diagnostics);
+    const auto name = image->child("filename");
+    if (!name) {
+        diagnostics.error(image->where(), "missing required element <filename>");
+        return false;
+    }
+    map.image = options.paths.resolve(name->text(), map_dir, name->where(), diagnostics);
+    if (map.image.resolved.empty()) return false;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(map.image.resolved, ec)) {
+        diagnostics.error(name->where(), map_label_text(map) + " image " + quote(map.image.text) +
+                                             " not found (" + map.image.resolved.string() + ")");
+        return false;
+    }
+    return true;
+}
+
+/// A clear pane's straight transmission is traced past by shadow rays before any map is
+/// looked at, so a map cannot make or unmake one: an error at the map.
+bool no_clear_panes(const model::PropertyMap& map, const model::Scene& scene,
+                    Diagnostics& diagnostics) {
+    std::vector<std::uint32_t> all = map.applies_to;
+    all.insert(all.end(), map.slot_materials.begin(), map.slot_materials.end());
+    for (const auto& entry : map.dc_materials) all.push_back(entry.second);
+    for (const std::uint32_t m : all) {
+        if (scene.materials[m].straight_transmission) {
+            diagnostics.error(map.where, map_label_text(map) + ": material " +
+                                             quote(scene.materials[m].id) +
+                                             " is a clear pane (straight transmission), which "
+                                             "a map cannot apply to or select");
+            return false;
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
+std::string map_label_text(const model::PropertyMap& map) {
+    return std::string("<") + model::map_element_name(map.kind) + "> " + quote(map.name);
+}
+
+void read_property_maps(const io::XmlNode& root, const std::filesystem::path& base_dir,
+                        const ReadOptions& options, model::Scene& scene, Diagnostics& diagnostics) {
+    std::filesystem::path map_dir = base_dir;
+    if (const auto dir = root.child("mapdirectory")) {
+        const model::FileRef ref =
+            options.paths.resolve(dir->text(), base_dir, dir->where(), diagnostics);
+        std::error_code ec;
+        if (!ref.resolved.empty() && !std::filesystem::is_directory(ref.resolved, ec)) {
+            diagnostics.error(dir->where(), "map directory " + quote(dir->text()) +
+                                                " is not a folder (" + ref.resolved.string() + ")");
+        } else if (!ref.resolved.empty()) {
+            map_dir = ref.resolved;
+        }
+    }
+    const auto list = root.child("maplist");
+    if (!list) return;
+    bool warned_guess = false;
+    bool warned_mixture = false;
+    for (const io::XmlNode& node : list->children()) {
+        const std::string& kind = node.name();
+        const bool known = kind == "materialmap" || kind == "mixturemap";
+        const bool refused = std::find(std::begin(kRefusedMaps), std::end(kRefusedMaps), kind) !=
+                             std::end(kRefusedMaps);
+        if (!known && !refused) {
+            diagnostics.warning(node.where(), "unknown element <" + kind + "> ignored");
+            continue;
+        }
+        if (node.attribute_bool("enabled", diagnostics) == false) continue;
+        model::PropertyMap map;
+        map.kind = kind == "mixturemap" ? model::MapKind::mixture : model::MapKind::material;
+        map.name = node.attribute("name").value_or("");
+        map.where = node.where();
+        if (refused) {
+            diagnostics.error(node.where(), "<" + kind + "> " + quote(map.name) +
+                                                " is not supported: glint applies material and "
+                                                "mixture maps (docs/maps.md); disable it "
+                                                "(enabled=\"false\") to render without it");
+            continue;
+        }
+        node.warn_unknown_children({"matidlist", "projector", "dcmatlut", "bandmaterials", "image"},
+                                   diagnostics);
+        if (map.kind == model::MapKind::material &&
+            node.attribute_bool("mixing", diagnostics).value_or(false)) {
+            diagnostics.error(node.where_attribute("mixing"),
+                              map_label_text(map) +
+                                  ": mixing=\"true\" is not supported (DIRSIG does not publish "
+                                  "what it blends); use a <mixturemap> for mixed texels");
+            continue;
+        }
+        // `<matidlist>`: the facets the map applies to.
+        const auto applies_to = read_material_list(node, "matidlist", true, scene, diagnostics);
+        if (applies_to) map.applies_to = *applies_to;
+        bool ok = applies_to.has_value();
+        if (const auto projector = node.child("projector")) {
+            ok = read_projector(*projector, map.projector, diagnostics) && ok;
+            if (!map.projector.uv && !warned_guess) {
+                diagnostics.warning(projector->where(),
+                                    "<drapeprojector> (<insertpoint>, <gsd>) is glint's reading "
+                                    "of DIRSIG's DRAPE_PROJECTOR keys; check the map's placement "
+                                    "(docs/maps.md)");
+                warned_guess = true;
+            }
+        } else {
+            diagnostics.error(node.where(), "missing required element <projector>");
+            ok = false;
+        }
+        if (map.kind == model::MapKind::mixture && !warned_mixture) {
+            diagnostics.warning(node.where(),
+                                "<mixturemap> with <bandmaterials> (a material per image band) "
+                                "is glint's reading of DIRSIG's mixture maps (docs/maps.md)");
+            warned_mixture = true;
+        }
+        if (map.kind == model::MapKind::material) {
+            ok = read_dc_table(node, scene, map, diagnostics) && ok;
+        } else if (const auto bands =
+                       read_material_list(node, "bandmaterials", false, scene, diagnostics)) {
+            // `<bandmaterials>`: a mixture map's material per image band, in band order.
+            map.band_materials = map.slot_materials = *bands;
+        } else {
+            ok = false;
+        }
+        ok = read_image_name(node, map_dir, options, map, diagnostics) && ok;
+        if (!ok) continue;
+        if (!no_clear_panes(map, scene, diagnostics)) continue;
+        map.raster = map.kind == model::MapKind::material ? read_class_raster(map, diagnostics)
+                                                          : read_weight_raster(map, diagnostics);
+        if (map.raster) scene.maps.push_back(std::move(map));
+    }
+}
+
+}  // namespace glint::dirsig::detail

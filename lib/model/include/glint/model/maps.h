@@ -1,0 +1,95 @@
+// SPDX-License-Identifier: Apache-2.0
+// Property maps (DIRSIG's `<maplist>`, docs/maps.md): images whose texels choose, per hit,
+// among a scene's materials. A map applies to the facets whose material is in its
+// `applies_to` list; a projector places its image on them (draped vertically in the scene's
+// x–y plane, or through the facets' texture coordinates), and the texel under a hit decides:
+//   - a material map: one material per texel, through a digital-count look-up table;
+//   - a mixture map: a weight per material per texel (the image's bands), the surface being
+//     that mix (the radiance the weighted mean, the abundance truth the weights).
+// Plain data: the readers fill it (images decoded into compact rasters), the scene component
+// evaluates it per hit.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "glint/core/diagnostics.h"
+#include "glint/model/common.h"
+
+namespace glint::model {
+
+/// What a projection does beyond the image's edge, along one image axis.
+enum class MapExtend {
+    none,    ///< nothing: the facet keeps its own material there
+    clamp,   ///< the edge texel continues
+    repeat,  ///< the image tiles
+    mirror,  ///< the image tiles, every other copy mirrored (seamless)
+};
+
+/// Where the image's first texel lies. `cartesian`: the lower-left corner (columns run +x,
+/// rows run +y, the image upright in the scene's east–north plane; v = 0 is the bottom
+/// line). `image`: the upper-left corner (rows run −y; v = 0 is the top line).
+enum class MapOrigin { cartesian, image };
+
+/// How a map's image is laid on the surface.
+struct MapProjector {
+    /// True: through the facets' texture coordinates (OBJ `vt`), u ∈ [0, 1] across the
+    /// image's width and v ∈ [0, 1] across its height. False: draped vertically.
+    bool uv = false;
+    MapOrigin origin = MapOrigin::cartesian;
+    bool flip_x = false;  ///< mirror the columns (after the origin)
+    bool flip_y = false;  ///< mirror the lines (after the origin)
+    MapExtend extend_x = MapExtend::none;
+    MapExtend extend_y = MapExtend::none;
+    /// Drape: the scene point (east, north, m) where the image's origin corner lies.
+    std::array<double, 2> insert_point_m{};
+    /// Drape: a texel's size on the ground (east, north), m.
+    std::array<double, 2> gsd_m{1.0, 1.0};
+    ErrorContext where;
+};
+
+/// A map image decoded into what its texels select: a class raster (one slot per texel,
+/// 1 or 2 bytes) or a weight raster (`bands` floats per texel). Line 0 is the file's top line.
+struct MapRaster {
+    std::size_t width = 0;
+    std::size_t height = 0;
+    /// Class rasters: the slot of each texel (into the map's `slot_materials`), 1 byte each
+    /// when the map has at most 256 slots, else 2 (little-endian).
+    std::vector<std::uint8_t> slots;
+    unsigned slot_bytes = 1;
+    /// Weight rasters: width × height × bands weights, each texel's summing to 1 (or all 0:
+    /// no material, the facet keeps its own).
+    std::vector<float> weights;
+    std::size_t bands = 0;
+};
+
+enum class MapKind { material, mixture };
+
+/// One `<materialmap>` or `<mixturemap>`.
+struct PropertyMap {
+    MapKind kind = MapKind::material;
+    std::string name;
+    /// The facets it applies to: indices into Scene::materials.
+    std::vector<std::uint32_t> applies_to;
+    MapProjector projector;
+    FileRef image;
+    /// Material maps: the look-up table as written, DC → material index.
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> dc_materials;
+    /// Mixture maps: the material of each image band, in band order.
+    std::vector<std::uint32_t> band_materials;
+    /// What a raster slot selects: material maps, the distinct materials of the table
+    /// (a texel's slot indexes it); mixture maps, band_materials.
+    std::vector<std::uint32_t> slot_materials;
+    /// Shared: every capture's scene holds the same decoded image.
+    std::shared_ptr<const MapRaster> raster;
+    ErrorContext where;
+};
+
+/// The name `kind` is written with in a scene file ("materialmap", "mixturemap").
+const char* map_element_name(MapKind kind);
+
+}  // namespace glint::model

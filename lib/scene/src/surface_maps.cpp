@@ -1,0 +1,151 @@
+// SPDX-License-Identifier: Apache-2.0
+// Property maps at a hit (glint/scene/surface_maps.h).
+#include "glint/scene/surface_maps.h"
+
+#include <cmath>
+#include <cstring>
+#include <string>
+
+#include "glint/core/error.h"
+
+namespace glint::scene {
+namespace {
+
+/// Texel index `i` of an axis `n` texels long under extend mode `mode`.
+std::optional<std::size_t> extend(double i, std::size_t n, model::MapExtend mode) noexcept {
+    const double size = static_cast<double>(n);
+    if (!std::isfinite(i)) return std::nullopt;
+    if (i >= 0.0 && i < size) return static_cast<std::size_t>(i);
+    switch (mode) {
+        case model::MapExtend::none:
+            return std::nullopt;
+        case model::MapExtend::clamp:
+            return i < 0.0 ? 0 : n - 1;
+        case model::MapExtend::repeat: {
+            const double m = i - size * std::floor(i / size);
+            return std::min(static_cast<std::size_t>(m), n - 1);
+        }
+        case model::MapExtend::mirror: {
+            const double period = 2.0 * size;
+            const auto m =
+                std::min(static_cast<std::size_t>(i - period * std::floor(i / period)), 2 * n - 1);
+            return m < n ? m : 2 * n - 1 - m;
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::array<std::size_t, 2>> map_texel(const model::MapProjector& projector,
+                                                    std::size_t width, std::size_t height, double s,
+                                                    double t) noexcept {
+    if (width == 0 || height == 0) return std::nullopt;
+    const auto column = extend(std::floor(s), width, projector.extend_x);
+    const auto away = extend(std::floor(t), height, projector.extend_y);
+    if (!column || !away) return std::nullopt;
+    std::size_t x = *column;
+    // Lines count down from the top; a cartesian origin's t counts up from the bottom.
+    std::size_t y = projector.origin == model::MapOrigin::cartesian ? height - 1 - *away : *away;
+    if (projector.flip_x) x = width - 1 - x;
+    if (projector.flip_y) y = height - 1 - y;
+    return std::array<std::size_t, 2>{x, y};
+}
+
+std::array<double, 2> drape_position(const model::MapProjector& projector, std::size_t, std::size_t,
+                                     double x_m, double y_m) noexcept {
+    const double s = (x_m - projector.insert_point_m[0]) / projector.gsd_m[0];
+    const double north = (y_m - projector.insert_point_m[1]) / projector.gsd_m[1];
+    // An image origin lies at the upper-left corner: its lines run south.
+    return {s, projector.origin == model::MapOrigin::cartesian ? north : -north};
+}
+
+std::array<double, 2> uv_position(const model::MapProjector&, std::size_t width, std::size_t height,
+                                  double u, double v) noexcept {
+    // v runs away from the origin corner's line in either convention (OBJ's v = 0 is the
+    // bottom line with a cartesian origin, the top line with an image origin).
+    return {u * static_cast<double>(width), v * static_cast<double>(height)};
+}
+
+SurfaceMaps::SurfaceMaps(const model::Scene& scene) : m_maps(scene.maps) {
+    const std::size_t materials = scene.materials.size();
+    m_applies.assign(materials * m_maps.size(), 0);
+    m_first_map.assign(materials, kNone);
+    for (std::size_t k = 0; k < m_maps.size(); ++k) {
+        const model::PropertyMap& map = m_maps[k];
+        const std::string what =
+            std::string(model::map_element_name(map.kind)) + " \"" + map.name + "\"";
+        if (!map.raster) throw input_error(what + " has no image read", map.where);
+        const model::MapRaster& raster = *map.raster;
+        const std::uint64_t texels = std::uint64_t{raster.width} * raster.height;
+        const bool classes = map.kind == model::MapKind::material;
+        if (classes ? raster.slots.size() != texels * raster.slot_bytes
+                    : raster.weights.size() != texels * raster.bands ||
+                          raster.bands != map.slot_materials.size()) {
+            throw input_error(what + ": its raster does not match its image", map.where);
+        }
+        for (const std::uint32_t m : map.slot_materials) {
+            if (m >= materials) throw input_error(what + ": material out of range", map.where);
+        }
+        for (const std::uint32_t m : map.applies_to) {
+            if (m >= materials) throw input_error(what + ": material out of range", map.where);
+            m_applies[m * m_maps.size() + k] = 1;
+            if (m_first_map[m] == kNone) m_first_map[m] = static_cast<std::uint32_t>(k);
+        }
+        if (map.projector.uv) m_uses_uv = true;
+    }
+}
+
+std::optional<std::uint64_t> SurfaceMaps::texel(std::size_t k,
+                                                const MapPoint& point) const noexcept {
+    const model::PropertyMap& map = m_maps[k];
+    const model::MapRaster& raster = *map.raster;
+    std::array<double, 2> st{};
+    if (map.projector.uv) {
+        if (!point.uv) return std::nullopt;
+        st =
+            uv_position(map.projector, raster.width, raster.height, (*point.uv)[0], (*point.uv)[1]);
+    } else {
+        st = drape_position(map.projector, raster.width, raster.height, point.x_m, point.y_m);
+    }
+    const auto at = map_texel(map.projector, raster.width, raster.height, st[0], st[1]);
+    if (!at) return std::nullopt;
+    return std::uint64_t{(*at)[1]} * raster.width + (*at)[0];
+}
+
+void SurfaceMaps::apply(const MapPoint& point, std::uint32_t& material, std::uint32_t& mixture_map,
+                        std::uint64_t& mixture_texel) const noexcept {
+    mixture_map = kNoMixture;
+    if (!maps_material(material)) return;
+    const std::size_t count = m_maps.size();
+    for (std::size_t k = m_first_map[material]; k < count; ++k) {
+        if (m_applies[material * count + k] == 0) continue;
+        const auto at = texel(k, point);
+        if (!at) continue;
+        const model::PropertyMap& map = m_maps[k];
+        const model::MapRaster& raster = *map.raster;
+        if (map.kind == model::MapKind::mixture) {
+            const float* w = raster.weights.data() + *at * raster.bands;
+            bool any = false;
+            for (std::size_t b = 0; b < raster.bands && !any; ++b) any = w[b] > 0.0f;
+            if (!any) continue;  // no material here: the facet keeps its own
+            mixture_map = static_cast<std::uint32_t>(k);
+            mixture_texel = *at;
+            return;
+        }
+        std::uint32_t slot = raster.slots[*at * raster.slot_bytes];
+        if (raster.slot_bytes == 2) slot |= std::uint32_t{raster.slots[*at * 2 + 1]} << 8;
+        material = map.slot_materials[slot];
+    }
+}
+
+MaterialMix SurfaceMaps::mix(std::uint32_t mixture_map,
+                             std::uint64_t mixture_texel) const noexcept {
+    const model::PropertyMap& map = m_maps[mixture_map];
+    const model::MapRaster& raster = *map.raster;
+    return {
+        map.slot_materials,
+        std::span<const float>(raster.weights.data() + mixture_texel * raster.bands, raster.bands)};
+}
+
+}  // namespace glint::scene
