@@ -1,0 +1,59 @@
+# SPDX-License-Identifier: Apache-2.0
+"""Checks a render of maps.jsim: the west half's Material truth is the classification image
+texel for texel, the east half's Abundance truth is the mixture's weights, and the radiance
+is proportional to each texel's reflectance (pure) or its weighted mean (mixed, within 5 σ
+of the draw's noise). Usage: check.py OUTPUT_FOLDER SAMPLES_PER_PIXEL"""
+import sys
+from pathlib import Path
+
+import numpy as np
+
+HERE = Path(__file__).resolve().parent
+RHO = {10: 0.1, 50: 0.5, 30: 0.3}  # DC → the reflectance of its material
+ID = {10: "11", 50: "12", 30: "13"}
+
+
+def header(path):
+    keys = {}
+    for line in path.read_text().splitlines():
+        if "=" in line:
+            key, value = line.split("=", 1)
+            keys[key.strip()] = value.strip()
+    return keys
+
+
+def main():
+    out = Path(sys.argv[1])
+    samples = int(sys.argv[2])
+    pgm = (HERE / "maps" / "classes.pgm").read_bytes()
+    classes = np.frombuffer(pgm[-24:], dtype=np.uint8).reshape(6, 4)
+    cube = np.fromfile(HERE / "maps" / "fractions.img", dtype="<f4").reshape(6, 4, 2)
+    dark = cube[..., 0] / cube.sum(axis=-1)  # the weight of material 11 (ρ 0.1)
+
+    truth = np.fromfile(out / "truth.img", dtype="<f8").reshape(6, 8, 3)
+    ids = [s.strip() for s in header(out / "truth.img.hdr")["glint material ids"].strip("{}").split(",")]
+    material = np.vectorize(lambda i: ids[int(i)])(truth[..., 0])
+    expected = np.vectorize(lambda dc: ID[dc])(classes)
+    assert (material[:, :4] == expected).all(), (material, expected)
+    assert (truth[:, :4, 1] == (classes == 10)).all() and (truth[:, :4, 2] == (classes == 50)).all()
+    # Abundance of a mixed texel: its weights (float32 weights, summed in double).
+    assert np.abs(truth[:, 4:, 1] - dark).max() < 1e-6, truth[:, 4:, 1] - dark
+    assert np.abs(truth[:, 4:, 2] - (1 - dark)).max() < 1e-6
+
+    radiance = np.fromfile(out / "frame.img", dtype="<f8").reshape(6, 8)
+    rho_pure = np.vectorize(RHO.get)(classes)
+    k = radiance[:, :4] / rho_pure  # radiance per unit reflectance: the same everywhere
+    # Pure pixels: only the sun's direction within its disc varies, 1e-3 relative.
+    assert k.std() / k.mean() < 1e-3, k
+    k = k.mean()
+    mean = dark * 0.1 + (1 - dark) * 0.5
+    pure = (dark == 0) | (dark == 1)
+    variance = np.clip(dark * 0.01 + (1 - dark) * 0.25 - mean**2, 1e-12, None)
+    z = (radiance[:, 4:] / k - mean) / np.sqrt(variance / samples)
+    assert (np.abs(z[~pure]) < 5).all(), z
+    assert np.allclose(radiance[:, 4:][pure] / k, mean[pure], rtol=1e-3)
+    print(f"maps ok: max |z| {np.abs(z[~pure]).max():.2f} over {(~pure).sum()} mixed pixels")
+
+
+if __name__ == "__main__":
+    main()
