@@ -94,7 +94,8 @@ std::string describe(const model::Scene& scene) {
     }
     return plural(scene.materials.size(), "material") + ", " +
            plural(scene.objects.size(), "object") + ", " +
-           plural(scene.instances.size(), "instance") + ", " + plural(triangles, "triangle");
+           plural(scene.instances.size(), "instance") + ", " + plural(triangles, "triangle") +
+           (scene.maps.empty() ? "" : ", " + plural(scene.maps.size(), "property map"));
 }
 
 /// "parametric, aerosol optical depth 0.1 at 0.55 um, gases (water 2.924 cm, ozone 0.332
@@ -200,6 +201,9 @@ public:
         // A file checked before (another argument) is reported once.
         if (!m_inputs.scenes.emplace(key_of(file), scene).second) return;
         m_inputs.contents.push_back(contents_line("scene", file, errors, describe(scene)));
+        for (const model::PropertyMap& map : scene.maps) {
+            m_inputs.contents.push_back("  " + model::describe_map(map, scene.materials));
+        }
     }
     void atmosphere_read(const model::Simulation& simulation, const model::FileRef* file,
                          std::size_t errors, const model::Atmosphere& atmosphere) override {

@@ -92,4 +92,12 @@ struct PropertyMap {
 /// The name `kind` is written with in a scene file ("materialmap", "mixturemap").
 const char* map_element_name(MapKind kind);
 
+struct Material;
+
+/// One line describing a map for glint-platform2jsim --check: its kind and name, image size,
+/// projector, and the materials it covers and selects (by id; `materials` is the scene's),
+/// e.g. `materialmap "Classes": 4 x 6 texels, drape 0.2 x 0.2 m from (-0.8, 0.6), origin
+/// image, extend none/none, over 1, selects 11, 12, 13`.
+std::string describe_map(const PropertyMap& map, const std::vector<Material>& materials);
+
 }  // namespace glint::model
