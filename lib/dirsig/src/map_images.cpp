@@ -136,10 +136,11 @@ LineSource open_lines(const std::filesystem::path& path) {
 }
 
 /// Opens the map's image, checking its size; errors at the map (nullopt).
-std::optional<LineSource> open_map_image(const model::PropertyMap& map, Diagnostics& diagnostics) {
-    const std::string label = map_label_text(map) + " image " + quote(map.image.text);
+std::optional<LineSource> open_map_image(const model::PropertyMap& map, const model::FileRef& image,
+                                         Diagnostics& diagnostics) {
+    const std::string label = map_label_text(map) + " image " + quote(image.text);
     try {
-        LineSource source = open_lines(map.image.resolved);
+        LineSource source = open_lines(image.resolved);
         const std::uint64_t texels = std::uint64_t{source.width} * source.height;
         if (texels == 0 || source.channels == 0) {
             diagnostics.error(map.where, label + " is empty");
@@ -162,7 +163,7 @@ std::optional<LineSource> open_map_image(const model::PropertyMap& map, Diagnost
 
 std::shared_ptr<const model::MapRaster> read_class_raster(model::PropertyMap& map,
                                                           Diagnostics& diagnostics) {
-    std::optional<LineSource> source = open_map_image(map, diagnostics);
+    std::optional<LineSource> source = open_map_image(map, map.image, diagnostics);
     if (!source) return nullptr;
     const std::string label = map_label_text(map) + " image " + quote(map.image.text);
     if (!source->integer) {
@@ -243,7 +244,7 @@ std::shared_ptr<const model::MapRaster> read_class_raster(model::PropertyMap& ma
 
 std::shared_ptr<const model::MapRaster> read_weight_raster(const model::PropertyMap& map,
                                                            Diagnostics& diagnostics) {
-    std::optional<LineSource> source = open_map_image(map, diagnostics);
+    std::optional<LineSource> source = open_map_image(map, map.image, diagnostics);
     if (!source) return nullptr;
     const std::string label = map_label_text(map) + " image " + quote(map.image.text);
     if (source->channels != map.band_materials.size()) {
@@ -288,6 +289,43 @@ std::shared_ptr<const model::MapRaster> read_weight_raster(const model::Property
         return nullptr;
     }
     return raster;
+}
+
+std::optional<MapBrightness> read_brightness(const model::PropertyMap& map,
+                                             const model::FileRef& image,
+                                             Diagnostics& diagnostics) {
+    std::optional<LineSource> source = open_map_image(map, image, diagnostics);
+    if (!source) return std::nullopt;
+    const std::string label = map_label_text(map) + " image " + quote(image.text);
+    if (source->channels > 1) {
+        diagnostics.warning(map.where, label + " has " + std::to_string(source->channels) +
+                                           " channels; the first holds the brightness, the "
+                                           "others are not used");
+    }
+    MapBrightness out;
+    out.width = source->width;
+    out.height = source->height;
+    out.values.resize(out.width * out.height);
+    std::vector<double> line(source->width * source->channels);
+    try {
+        for (std::size_t y = 0; y < source->height; ++y) {
+            source->read(y, line);
+            for (std::size_t x = 0; x < source->width; ++x) {
+                const double v = line[x * source->channels];
+                if (!std::isfinite(v)) {
+                    diagnostics.error(map.where, label + ": texel (" + std::to_string(x) + ", " +
+                                                     std::to_string(y) + ") is not finite");
+                    return std::nullopt;
+                }
+                out.values[y * out.width + x] = static_cast<float>(v);
+            }
+        }
+    } catch (const Error& e) {
+        if (e.category() != ErrorCategory::input && e.category() != ErrorCategory::io) throw;
+        diagnostics.error(map.where, label + ": " + e.message());
+        return std::nullopt;
+    }
+    return out;
 }
 
 }  // namespace glint::dirsig::detail

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,5 +40,35 @@ std::shared_ptr<const model::MapRaster> read_class_raster(model::PropertyMap& ma
 /// then.
 std::shared_ptr<const model::MapRaster> read_weight_raster(const model::PropertyMap& map,
                                                            Diagnostics& diagnostics);
+
+/// A texture band's image: the first channel's values, line 0 first.
+struct MapBrightness {
+    std::size_t width = 0;
+    std::size_t height = 0;
+    std::vector<float> values;
+};
+
+/// Reads a texture band's image (any channels: the first; any type); problems are errors at
+/// `map.where`, nullopt then.
+std::optional<MapBrightness> read_brightness(const model::PropertyMap& map,
+                                             const model::FileRef& image, Diagnostics& diagnostics);
+
+/// Reads a `<texturemap>`'s `<bandlist>` (windows and images, resolved against `map_dir`);
+/// false after an error.
+bool read_texture_bands(const io::XmlNode& map_node, const std::filesystem::path& map_dir,
+                        const ReadOptions& options, model::PropertyMap& map,
+                        Diagnostics& diagnostics);
+
+/// A texture map's raster (each texel's z-score per band) and its texture classes: for each
+/// material it covers, the material and a variant per further curve of its texture_curves
+/// (appended to scene.materials, once per material however many maps cover it), with each
+/// class's z-score per band. False after an error.
+bool make_texture(model::PropertyMap& map, model::Scene& scene, Diagnostics& diagnostics);
+
+/// The `<image><filename>` of `parent` (a map, or a texture map's band), resolved against
+/// `map_dir` into `image`; an error when it is missing or does not exist (false).
+bool read_image_element(const io::XmlNode& parent, const std::filesystem::path& map_dir,
+                        const ReadOptions& options, const model::PropertyMap& map,
+                        model::FileRef& image, Diagnostics& diagnostics);
 
 }  // namespace glint::dirsig::detail

@@ -16,9 +16,9 @@ namespace glint::dirsig::detail {
 namespace {
 
 /// The kinds of DIRSIG map glint knows by name but does not apply.
-constexpr std::string_view kRefusedMaps[] = {
-    "texturemap",  "temperaturemap", "bumpmap", "normalmap", "reflectancemap",
-    "radiancemap", "curvemap",       "rgbmap",  "decalmap",  "densitymap"};
+constexpr std::string_view kRefusedMaps[] = {"temperaturemap", "bumpmap",     "normalmap",
+                                             "reflectancemap", "radiancemap", "curvemap",
+                                             "rgbmap",         "decalmap",    "densitymap"};
 
 /// A `<matid>`'s material, by id; an error at it when the scene has none.
 std::optional<std::uint32_t> material_of(const io::XmlNode& node, const model::Scene& scene,
@@ -180,33 +180,6 @@ bool read_dc_table(const io::XmlNode& map_node, const model::Scene& scene, model
     return ok;
 }
 
-/// The map's `<image><filename>`, resolved against the map directory; an error when it
-/// does not exist.
-bool read_image_name(const io::XmlNode& map_node, const std::filesystem::path& map_dir,
-                     const ReadOptions& options, model::PropertyMap& map,
-                     Diagnostics& diagnostics) {
-    const auto image = map_node.child("image");
-    if (!image) {
-        diagnostics.error(map_node.where(), "missing required element <image>");
-        return false;
-    }
-    image->warn_unknown_children({"filename"}, diagnostics);
-    const auto name = image->child("filename");
-    if (!name) {
-        diagnostics.error(image->where(), "missing required element <filename>");
-        return false;
-    }
-    map.image = options.paths.resolve(name->text(), map_dir, name->where(), diagnostics);
-    if (map.image.resolved.empty()) return false;
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(map.image.resolved, ec)) {
-        diagnostics.error(name->where(), map_label_text(map) + " image " + quote(map.image.text) +
-                                             " not found (" + map.image.resolved.string() + ")");
-        return false;
-    }
-    return true;
-}
-
 /// A clear pane's straight transmission is traced past by shadow rays before any map is
 /// looked at, so a map cannot make or unmake one: an error at the map.
 bool no_clear_panes(const model::PropertyMap& map, const model::Scene& scene,
@@ -232,6 +205,98 @@ std::string map_label_text(const model::PropertyMap& map) {
     return std::string("<") + model::map_element_name(map.kind) + "> " + quote(map.name);
 }
 
+bool read_image_element(const io::XmlNode& parent, const std::filesystem::path& map_dir,
+                        const ReadOptions& options, const model::PropertyMap& map,
+                        model::FileRef& image, Diagnostics& diagnostics) {
+    const auto element = parent.child("image");
+    if (!element) {
+        diagnostics.error(parent.where(), "missing required element <image>");
+        return false;
+    }
+    element->warn_unknown_children({"filename"}, diagnostics);
+    const auto name = element->child("filename");
+    if (!name) {
+        diagnostics.error(element->where(), "missing required element <filename>");
+        return false;
+    }
+    image = options.paths.resolve(name->text(), map_dir, name->where(), diagnostics);
+    if (image.resolved.empty()) return false;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(image.resolved, ec)) {
+        diagnostics.error(name->where(), map_label_text(map) + " image " + quote(image.text) +
+                                             " not found (" + image.resolved.string() + ")");
+        return false;
+    }
+    return true;
+}
+
+namespace {
+
+/// A map's `<matidlist>` and `<projector>`; false after an error.
+bool read_placement(const io::XmlNode& node, const model::Scene& scene, model::PropertyMap& map,
+                    bool& warned_drape, Diagnostics& diagnostics) {
+    const auto applies_to = read_material_list(node, "matidlist", true, scene, diagnostics);
+    if (applies_to) map.applies_to = *applies_to;
+    bool ok = applies_to.has_value();
+    const auto projector = node.child("projector");
+    if (!projector) {
+        diagnostics.error(node.where(), "missing required element <projector>");
+        return false;
+    }
+    ok = read_projector(*projector, map.projector, diagnostics) && ok;
+    if (!map.projector.uv && !warned_drape) {
+        diagnostics.warning(projector->where(),
+                            "<drapeprojector> (<insertpoint>, <gsd>) is glint's reading of "
+                            "DIRSIG's DRAPE_PROJECTOR keys; check the map's placement "
+                            "(docs/maps.md)");
+        warned_drape = true;
+    }
+    return ok;
+}
+
+/// What a map of each kind holds besides its placement; false after an error.
+bool read_contents(const io::XmlNode& node, const std::filesystem::path& map_dir,
+                   const ReadOptions& options, const model::Scene& scene, model::PropertyMap& map,
+                   bool& warned_mixture, Diagnostics& diagnostics) {
+    switch (map.kind) {
+        case model::MapKind::material:
+            return read_dc_table(node, scene, map, diagnostics) &&
+                   read_image_element(node, map_dir, options, map, map.image, diagnostics);
+        case model::MapKind::texture:
+            return read_texture_bands(node, map_dir, options, map, diagnostics);
+        case model::MapKind::mixture:
+            break;
+    }
+    if (!warned_mixture) {
+        diagnostics.warning(node.where(),
+                            "<mixturemap> with <bandmaterials> (a material per image band) is "
+                            "glint's reading of DIRSIG's mixture maps (docs/maps.md)");
+        warned_mixture = true;
+    }
+    // `<bandmaterials>`: a mixture map's material per image band, in band order.
+    const auto bands = read_material_list(node, "bandmaterials", false, scene, diagnostics);
+    if (bands) map.band_materials = map.slot_materials = *bands;
+    return read_image_element(node, map_dir, options, map, map.image, diagnostics) &&
+           bands.has_value();
+}
+
+/// The map's image decoded (a texture map's bands, with its classes); false after an error.
+bool decode(model::PropertyMap& map, model::Scene& scene, Diagnostics& diagnostics) {
+    switch (map.kind) {
+        case model::MapKind::material:
+            map.raster = read_class_raster(map, diagnostics);
+            break;
+        case model::MapKind::mixture:
+            map.raster = read_weight_raster(map, diagnostics);
+            break;
+        case model::MapKind::texture:
+            return make_texture(map, scene, diagnostics);
+    }
+    return map.raster != nullptr;
+}
+
+}  // namespace
+
 void read_property_maps(const io::XmlNode& root, const std::filesystem::path& base_dir,
                         const ReadOptions& options, model::Scene& scene, Diagnostics& diagnostics) {
     std::filesystem::path map_dir = base_dir;
@@ -248,11 +313,11 @@ void read_property_maps(const io::XmlNode& root, const std::filesystem::path& ba
     }
     const auto list = root.child("maplist");
     if (!list) return;
-    bool warned_guess = false;
+    bool warned_drape = false;
     bool warned_mixture = false;
     for (const io::XmlNode& node : list->children()) {
         const std::string& kind = node.name();
-        const bool known = kind == "materialmap" || kind == "mixturemap";
+        const bool known = kind == "materialmap" || kind == "mixturemap" || kind == "texturemap";
         const bool refused = std::find(std::begin(kRefusedMaps), std::end(kRefusedMaps), kind) !=
                              std::end(kRefusedMaps);
         if (!known && !refused) {
@@ -261,18 +326,32 @@ void read_property_maps(const io::XmlNode& root, const std::filesystem::path& ba
         }
         if (node.attribute_bool("enabled", diagnostics) == false) continue;
         model::PropertyMap map;
-        map.kind = kind == "mixturemap" ? model::MapKind::mixture : model::MapKind::material;
+        map.kind = kind == "mixturemap"   ? model::MapKind::mixture
+                   : kind == "texturemap" ? model::MapKind::texture
+                                          : model::MapKind::material;
         map.name = node.attribute("name").value_or("");
         map.where = node.where();
         if (refused) {
             diagnostics.error(node.where(), "<" + kind + "> " + quote(map.name) +
-                                                " is not supported: glint applies material and "
-                                                "mixture maps (docs/maps.md); disable it "
-                                                "(enabled=\"false\") to render without it");
+                                                " is not supported: glint applies material, "
+                                                "mixture and texture maps (docs/maps.md); "
+                                                "disable it (enabled=\"false\") to render "
+                                                "without it");
             continue;
         }
-        node.warn_unknown_children({"matidlist", "projector", "dcmatlut", "bandmaterials", "image"},
-                                   diagnostics);
+        switch (map.kind) {
+            case model::MapKind::material:
+                node.warn_unknown_children({"matidlist", "projector", "dcmatlut", "image"},
+                                           diagnostics);
+                break;
+            case model::MapKind::mixture:
+                node.warn_unknown_children({"matidlist", "projector", "bandmaterials", "image"},
+                                           diagnostics);
+                break;
+            case model::MapKind::texture:
+                node.warn_unknown_children({"matidlist", "projector", "bandlist"}, diagnostics);
+                break;
+        }
         if (map.kind == model::MapKind::material &&
             node.attribute_bool("mixing", diagnostics).value_or(false)) {
             diagnostics.error(node.where_attribute("mixing"),
@@ -281,44 +360,10 @@ void read_property_maps(const io::XmlNode& root, const std::filesystem::path& ba
                                   "what it blends); use a <mixturemap> for mixed texels");
             continue;
         }
-        // `<matidlist>`: the facets the map applies to.
-        const auto applies_to = read_material_list(node, "matidlist", true, scene, diagnostics);
-        if (applies_to) map.applies_to = *applies_to;
-        bool ok = applies_to.has_value();
-        if (const auto projector = node.child("projector")) {
-            ok = read_projector(*projector, map.projector, diagnostics) && ok;
-            if (!map.projector.uv && !warned_guess) {
-                diagnostics.warning(projector->where(),
-                                    "<drapeprojector> (<insertpoint>, <gsd>) is glint's reading "
-                                    "of DIRSIG's DRAPE_PROJECTOR keys; check the map's placement "
-                                    "(docs/maps.md)");
-                warned_guess = true;
-            }
-        } else {
-            diagnostics.error(node.where(), "missing required element <projector>");
-            ok = false;
-        }
-        if (map.kind == model::MapKind::mixture && !warned_mixture) {
-            diagnostics.warning(node.where(),
-                                "<mixturemap> with <bandmaterials> (a material per image band) "
-                                "is glint's reading of DIRSIG's mixture maps (docs/maps.md)");
-            warned_mixture = true;
-        }
-        if (map.kind == model::MapKind::material) {
-            ok = read_dc_table(node, scene, map, diagnostics) && ok;
-        } else if (const auto bands =
-                       read_material_list(node, "bandmaterials", false, scene, diagnostics)) {
-            // `<bandmaterials>`: a mixture map's material per image band, in band order.
-            map.band_materials = map.slot_materials = *bands;
-        } else {
-            ok = false;
-        }
-        ok = read_image_name(node, map_dir, options, map, diagnostics) && ok;
-        if (!ok) continue;
-        if (!no_clear_panes(map, scene, diagnostics)) continue;
-        map.raster = map.kind == model::MapKind::material ? read_class_raster(map, diagnostics)
-                                                          : read_weight_raster(map, diagnostics);
-        if (map.raster) scene.maps.push_back(std::move(map));
+        bool ok = read_placement(node, scene, map, warned_drape, diagnostics);
+        ok = read_contents(node, map_dir, options, scene, map, warned_mixture, diagnostics) && ok;
+        if (!ok || !no_clear_panes(map, scene, diagnostics)) continue;
+        if (decode(map, scene, diagnostics)) scene.maps.push_back(std::move(map));
     }
 }
 

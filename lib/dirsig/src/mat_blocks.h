@@ -141,9 +141,13 @@ struct MatReader {
             diagnostics.error(table.where, quantity + " file " + name + ": " + error.message());
             return table;
         }
-        parse_curve_text(text, CurveSource{name, path, quantity, max_value}, table, diagnostics);
+        last_classes.clear();
+        parse_curve_text(text, CurveSource{name, path, quantity, max_value}, table, diagnostics,
+                         &last_classes);
         return table;
     }
+    /// The texture classes of the curve file read_curve read last (empty: one curve).
+    std::vector<model::SpectralTable> last_classes;
 
     /// Reads `<PREFIX>_PROP { TXT_FILENAME | FILENAME }` of SURFACE_PROPERTIES (mat_surface.cpp).
     std::optional<model::SpectralTable> read_prop(const MatBlock& surface, const std::string& path,

@@ -248,7 +248,8 @@ struct Parser {
         return curves;
     }
 
-    void classic_ems(const std::vector<Row>& rows, std::size_t count, model::SpectralTable& table) {
+    void classic_ems(const std::vector<Row>& rows, std::size_t count, model::SpectralTable& table,
+                     std::vector<model::SpectralTable>* classes) {
         const std::size_t errors = diagnostics.error_count();
         const int count_line = rows.front().line;
         const std::size_t start = angular_table(rows, 1);
@@ -273,20 +274,33 @@ struct Parser {
                                 "classic .ems with " + std::to_string(count) +
                                     " curves (texture classes): glint uses the first (line " +
                                     std::to_string(first.line) +
-                                    "); texture classes are not applied");
+                                    ") unless an enabled <texturemap> covers the material");
         }
-        if (wavenumbers) {
-            // Descending cm⁻¹ is increasing µm: λ = 10⁴ / ν, in file order.
-            for (std::size_t k = 0; k < first.x.size(); ++k) {
-                table.wavelengths_um.push_back(1.0e4 / first.x[k]);
-                table.values.push_back(first.values[k]);
+        const auto convert = [&](const Curve& curve, model::SpectralTable& out) {
+            if (wavenumbers) {
+                // Descending cm⁻¹ is increasing µm: λ = 10⁴ / ν, in file order.
+                for (std::size_t k = 0; k < curve.x.size(); ++k) {
+                    out.wavelengths_um.push_back(1.0e4 / curve.x[k]);
+                    out.values.push_back(curve.values[k]);
+                }
+            } else {
+                out.wavelengths_um = curve.x;
+                out.values = curve.values;
             }
-        } else {
-            table.wavelengths_um = first.x;
-            table.values = first.values;
-        }
+        };
+        convert(first, table);
         if (table.empty()) {
             diagnostics.error(at(first.line), "classic .ems: the first curve has no samples");
+        }
+        if (classes == nullptr || count < 2) return;
+        for (const Curve& curve : curves) {
+            model::SpectralTable& out = classes->emplace_back();
+            out.file = table.file;
+            out.where = at(curve.line);
+            convert(curve, out);
+            if (out.empty()) {
+                diagnostics.error(at(curve.line), "classic .ems: a curve has no samples");
+            }
         }
     }
 };
@@ -294,7 +308,8 @@ struct Parser {
 }  // namespace
 
 void parse_curve_text(const std::string& text, const CurveSource& source,
-                      model::SpectralTable& table, Diagnostics& diagnostics) {
+                      model::SpectralTable& table, Diagnostics& diagnostics,
+                      std::vector<model::SpectralTable>* classes) {
     Parser parser{source, diagnostics};
     if (text.find('\0') != std::string::npos) {
         diagnostics.error(parser.at(0),
@@ -310,7 +325,7 @@ void parse_curve_text(const std::string& text, const CurveSource& source,
     const Row& head = rows.front();
     if (head.columns.size() == 1) {
         if (const auto count = parse_count(head.columns[0])) {
-            parser.classic_ems(rows, *count, table);
+            parser.classic_ems(rows, *count, table, classes);
             return;
         }
         diagnostics.error(parser.at(head.line),

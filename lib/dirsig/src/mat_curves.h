@@ -7,6 +7,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "glint/core/diagnostics.h"
 #include "glint/model/scene.h"
@@ -27,8 +28,11 @@ struct CurveSource {
 /// [0, source.max_value]).
 /// Each problem goes to `diagnostics` at the curve file's line; a text in neither layout is
 /// one error. An empty table on return means nothing usable was read (always reported).
+/// A classic .ems with several curves (texture classes) also gives every curve, the first
+/// included, in file order, to `classes` when it is given.
 void parse_curve_text(const std::string& text, const CurveSource& source,
-                      model::SpectralTable& table, Diagnostics& diagnostics);
+                      model::SpectralTable& table, Diagnostics& diagnostics,
+                      std::vector<model::SpectralTable>* classes = nullptr);
 
 /// Where `material`'s emissivity + reflectance exceed 1 by more than
 /// model::kEmissivityReflectanceSlack inside both curves' range, lowers the reflectance to

@@ -242,10 +242,18 @@ void MatReader::read_surface(const MatBlock& surface, const std::string& sp, mod
         read_ward(surface, sp, m);
     } else if (auto r = read_prop(surface, sp, "REFLECTANCE", "reflectance")) {
         m.reflectance = std::move(*r);
+        if (!last_classes.empty()) {
+            m.texture_curves = std::move(last_classes);
+            m.texture_curves_are_emissivity = false;
+        }
     }
     if (auto e = read_prop(surface, sp, "EMISSIVITY", "emissivity")) {
         m.emissivity = std::move(*e);
         m.emissivity_is_default = false;
+        if (!last_classes.empty() && m.texture_curves.empty()) {
+            m.texture_curves = std::move(last_classes);
+            m.texture_curves_are_emissivity = true;
+        }
     }
     if (specular_fraction > 0.0) {
         if (ward) {
@@ -277,6 +285,7 @@ void MatReader::read_surface(const MatBlock& surface, const std::string& sp, mod
             m.reflectance.values.push_back(std::max(0.0, 1.0 - e - tau));
         }
         m.reflectance.where = m.emissivity.where;
+        m.reflectance_from_emissivity = true;
     } else if (!has_emissivity) {
         m.emissivity = model::kirchhoff_emissivity(m);
     } else if (!m.reflectance.empty() && !m.emissivity.empty()) {

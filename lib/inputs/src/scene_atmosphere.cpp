@@ -209,6 +209,7 @@ void merge_scene(model::Scene& scene, model::Scene part, Diagnostics& diagnostic
     }
 
     // Where each of part's materials ends up in the merged list.
+    const std::size_t merged_before = scene.materials.size();
     std::vector<std::uint32_t> index_of(part.materials.size(), 0);
     for (std::size_t i = 0; i < part.materials.size(); ++i) {
         model::Material& material = part.materials[i];
@@ -233,6 +234,11 @@ void merge_scene(model::Scene& scene, model::Scene part, Diagnostics& diagnostic
         }
     }
 
+    // A texture class names the material it is a class of by index.
+    for (std::size_t j = merged_before; j < scene.materials.size(); ++j) {
+        std::optional<std::uint32_t>& parent = scene.materials[j].texture_parent;
+        if (parent && *parent < index_of.size()) parent = index_of[*parent];
+    }
     const std::size_t object_offset = scene.objects.size();
     for (model::GeometryObject& object : part.objects) {
         for (std::uint32_t& m : object.mesh.triangle_materials) {
@@ -258,6 +264,11 @@ void merge_scene(model::Scene& scene, model::Scene part, Diagnostics& diagnostic
         }
         for (auto& entry : map.dc_materials) {
             if (entry.second < index_of.size()) entry.second = index_of[entry.second];
+        }
+        for (model::TextureClasses& classes : map.texture_classes) {
+            for (std::uint32_t& m : classes.materials) {
+                if (m < index_of.size()) m = index_of[m];
+            }
         }
         scene.maps.push_back(std::move(map));
     }

@@ -8,7 +8,15 @@
 namespace glint::model {
 
 const char* map_element_name(MapKind kind) {
-    return kind == MapKind::material ? "materialmap" : "mixturemap";
+    switch (kind) {
+        case MapKind::mixture:
+            return "mixturemap";
+        case MapKind::texture:
+            return "texturemap";
+        case MapKind::material:
+            break;
+    }
+    return "materialmap";
 }
 
 namespace {
@@ -43,8 +51,9 @@ std::string describe_map(const PropertyMap& map, const std::vector<Material>& ma
     if (map.raster) {
         out += std::to_string(map.raster->width) + " x " + std::to_string(map.raster->height) +
                " texels" +
-               (map.kind == MapKind::mixture ? " x " + std::to_string(map.raster->bands) + " bands"
-                                             : std::string()) +
+               (map.kind != MapKind::material ? " x " + std::to_string(map.raster->bands) +
+                                                    (map.raster->bands == 1 ? " band" : " bands")
+                                              : std::string()) +
                ", ";
     }
     if (p.uv) {
@@ -57,7 +66,14 @@ std::string describe_map(const PropertyMap& map, const std::vector<Material>& ma
     out += std::string(", origin ") + (p.origin == MapOrigin::image ? "image" : "cartesian") +
            (p.flip_x ? ", flipx" : "") + (p.flip_y ? ", flipy" : "") + ", extend " +
            extend_name(p.extend_x) + "/" + extend_name(p.extend_y) + ", over " +
-           ids(map.applies_to, materials) + ", selects " + ids(map.slot_materials, materials);
+           ids(map.applies_to, materials);
+    if (map.kind == MapKind::texture) {
+        std::size_t classes = 0;
+        for (const TextureClasses& c : map.texture_classes) classes += c.materials.size();
+        out += ", " + std::to_string(classes) + " texture classes";
+    } else {
+        out += ", selects " + ids(map.slot_materials, materials);
+    }
     return out;
 }
 

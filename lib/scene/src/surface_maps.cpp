@@ -35,6 +35,26 @@ std::optional<std::size_t> extend(double i, std::size_t n, model::MapExtend mode
     return std::nullopt;
 }
 
+/// The texture class whose z-scores lie nearest the texel's `z` (least squares over the
+/// bands; the first on a tie).
+std::uint32_t nearest_class(const model::TextureClasses& classes, const float* z,
+                            std::size_t bands) noexcept {
+    std::size_t best = 0;
+    double best_distance = INFINITY;
+    for (std::size_t k = 0; k < classes.materials.size(); ++k) {
+        double distance = 0.0;
+        for (std::size_t b = 0; b < bands; ++b) {
+            const double d = double{z[b]} - double{classes.z[k * bands + b]};
+            distance += d * d;
+        }
+        if (distance < best_distance) {
+            best_distance = distance;
+            best = k;
+        }
+    }
+    return classes.materials[best];
+}
+
 }  // namespace
 
 std::optional<std::array<std::size_t, 2>> map_texel(const model::MapProjector& projector,
@@ -78,18 +98,32 @@ SurfaceMaps::SurfaceMaps(const model::Scene& scene) : m_maps(scene.maps) {
         if (!map.raster) throw input_error(what + " has no image read", map.where);
         const model::MapRaster& raster = *map.raster;
         const std::uint64_t texels = std::uint64_t{raster.width} * raster.height;
-        const bool classes = map.kind == model::MapKind::material;
-        if (classes ? raster.slots.size() != texels * raster.slot_bytes
-                    : raster.weights.size() != texels * raster.bands ||
-                          raster.bands != map.slot_materials.size()) {
-            throw input_error(what + ": its raster does not match its image", map.where);
+        const std::size_t bands =
+            map.kind == model::MapKind::texture ? map.bands.size() : map.slot_materials.size();
+        const bool matches =
+            map.kind == model::MapKind::material
+                ? raster.slots.size() == texels * raster.slot_bytes
+                : raster.weights.size() == texels * raster.bands && raster.bands == bands;
+        if (!matches) throw input_error(what + ": its raster does not match its image", map.where);
+        std::vector<std::uint32_t> selected = map.slot_materials;
+        if (map.kind == model::MapKind::texture) {
+            if (map.texture_classes.size() != map.applies_to.size()) {
+                throw input_error(what + ": texture classes do not match its materials", map.where);
+            }
+            for (const model::TextureClasses& c : map.texture_classes) {
+                if (c.materials.empty() || c.z.size() != c.materials.size() * bands) {
+                    throw input_error(what + ": texture classes do not match its bands", map.where);
+                }
+                selected.insert(selected.end(), c.materials.begin(), c.materials.end());
+            }
         }
-        for (const std::uint32_t m : map.slot_materials) {
+        for (const std::uint32_t m : selected) {
             if (m >= materials) throw input_error(what + ": material out of range", map.where);
         }
-        for (const std::uint32_t m : map.applies_to) {
+        for (std::size_t i = 0; i < map.applies_to.size(); ++i) {
+            const std::uint32_t m = map.applies_to[i];
             if (m >= materials) throw input_error(what + ": material out of range", map.where);
-            m_applies[m * m_maps.size() + k] = 1;
+            m_applies[m * m_maps.size() + k] = static_cast<std::uint32_t>(i + 1);
             if (m_first_map[m] == kNone) m_first_map[m] = static_cast<std::uint32_t>(k);
         }
         if (map.projector.uv) m_uses_uv = true;
@@ -132,6 +166,13 @@ void SurfaceMaps::apply(const MapPoint& point, std::uint32_t& material, std::uin
             mixture_map = static_cast<std::uint32_t>(k);
             mixture_texel = *at;
             return;
+        }
+        if (map.kind == model::MapKind::texture) {
+            const model::TextureClasses& classes =
+                map.texture_classes[m_applies[material * count + k] - 1];
+            material =
+                nearest_class(classes, raster.weights.data() + *at * raster.bands, raster.bands);
+            continue;
         }
         std::uint32_t slot = raster.slots[*at * raster.slot_bytes];
         if (raster.slot_bytes == 2) slot |= std::uint32_t{raster.slots[*at * 2 + 1]} << 8;

@@ -96,9 +96,11 @@ public:
             const std::uint32_t m = materials[k];
             m_temperature += wk * c.scene->materials[m].temperature_k;
             m_reflectance += wk * c.materials->reflectance(m)[c.reflectance_band];
-            m_materials.add(m, wk);
+            // A texture class counts as the material it is a class of.
+            const std::uint32_t reported = c.scene->materials[m].texture_parent.value_or(m);
+            m_materials.add(reported, wk);
             for (std::size_t t = 0; t < targets.size(); ++t) {
-                if (!targets[t].is_tag && targets[t].matches[m] != 0) m_targets[t] += wk;
+                if (!targets[t].is_tag && targets[t].matches[reported] != 0) m_targets[t] += wk;
             }
         }
         m_instances.add(hit->instance, w);

@@ -2,7 +2,13 @@
 """Checks a render of maps.jsim: the west half's Material truth is the classification image
 texel for texel, the east half's Abundance truth is the mixture's weights, and the radiance
 is proportional to each texel's reflectance (pure) or its weighted mean (mixed, within 5 σ
-of the draw's noise). Usage: check.py OUTPUT_FOLDER SAMPLES_PER_PIXEL"""
+of the draw's noise). Usage: check.py OUTPUT_FOLDER SAMPLES_PER_PIXEL
+
+With `texture` as the first argument, checks a render of texture.jsim instead: each texel
+shows the texture class a z-score match of its brightness selects (computed here from the
+image and the .ems curves), the Material truth is the textured material everywhere, and the
+mean reflectance over the image is the material's mean over its classes.
+Usage: check.py texture OUTPUT_FOLDER"""
 import sys
 from pathlib import Path
 
@@ -22,7 +28,30 @@ def header(path):
     return keys
 
 
+def texture(out):
+    pgm = (HERE / "maps" / "texture.pgm").read_bytes()
+    dc = np.frombuffer(pgm[-48:], dtype=np.uint8).reshape(6, 8).astype(float)
+    curves = (HERE / "materials" / "textured.ems").read_text().split("CURVE_BEGIN")[1:]
+    rho = np.array([1 - float(c.split()[1]) for c in curves])  # flat emissivity curves
+    z_texel = (dc - dc.mean()) / dc.std()
+    z_class = (rho - rho.mean()) / rho.std()
+    selected = rho[np.abs(z_texel[..., None] - z_class).argmin(axis=-1)]
+    radiance = np.fromfile(out / "frame.img", dtype="<f8").reshape(6, 8)
+    k = radiance / selected
+    assert k.std() / k.mean() < 1e-3, radiance / radiance.max()
+    truth = np.fromfile(out / "truth.img", dtype="<f8").reshape(6, 8, 3)
+    ids = [s.strip() for s in header(out / "truth.img.hdr")["glint material ids"].strip("{}").split(",")]
+    assert {ids[int(i)] for i in truth[..., 0].ravel()} == {"2"}, truth[..., 0]
+    # Four brightness levels of 12 texels each: every class a quarter of the image.
+    assert abs(selected.mean() - rho.mean()) < 1e-12, (selected.mean(), rho.mean())
+    classes = ", ".join(f"{c:.1f}" for c in sorted(set(selected.ravel())))
+    print(f"texture ok: classes {classes}, mean {selected.mean():.3f}")
+
+
 def main():
+    if sys.argv[1] == "texture":
+        texture(Path(sys.argv[2]))
+        return
     out = Path(sys.argv[1])
     samples = int(sys.argv[2])
     pgm = (HERE / "maps" / "classes.pgm").read_bytes()

@@ -6,8 +6,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -163,10 +165,12 @@ TEST(MapReader, SixteenBitCountsAndUvProjector) {
 
 TEST(MapReader, DisabledMapIsSkippedWithoutAWord) {
     TempDir dir;
-    // Its image does not exist and its kind is refused when enabled: neither is looked at.
+    // Its image does not exist, a texture map's band list is empty and a bump map's kind is
+    // refused when enabled: none is looked at.
     const auto scene_file =
         write_scene(dir, material_map("missing.pgm", kTable, "enabled=\"false\"") +
-                             "<texturemap name=\"T\" enabled=\"false\"><bandlist/></texturemap>\n");
+                             "<texturemap name=\"T\" enabled=\"false\"><bandlist/></texturemap>\n"
+                             "<bumpmap name=\"B\" enabled=\"false\"/>\n");
     Diagnostics diagnostics;
     const model::Scene scene = read_dirsig_scene(scene_file, {}, diagnostics);
     EXPECT_TRUE(diagnostics.items().empty()) << test::diagnostics_text(diagnostics);
@@ -197,6 +201,69 @@ TEST(MapReader, MixtureMapWeightsNormalised) {
     EXPECT_EQ(m.raster->weights, (std::vector<float>{0.75f, 0.25f, 0.0f, 0.0f}));
 }
 
+/// A texture map over material 1 (made textured: three flat classes of reflectance 0.2, 0.4
+/// and 0.6 in its .ems) with one band per image of `images`.
+std::string texture_map(const std::string& name, const std::vector<std::string>& images) {
+    std::string bands;
+    for (const std::string& image : images) {
+        bands += "<band><bandpass><min>0.4</min><max>0.7</max></bandpass><image><filename>" +
+                 image + "</filename></image></band>";
+    }
+    return "<texturemap name=\"" + name +
+           "\"><matidlist><matid>1</matid></matidlist><projector><uvprojector/></projector>"
+           "<bandlist>" +
+           bands + "</bandlist></texturemap>\n";
+}
+
+void make_textured(const TempDir& dir) {
+    std::string mat = kMat;
+    const std::string plain =
+        "REFLECTANCE_PROP_NAME = SimpleReflectance\n        "
+        "REFLECTANCE_PROP { TXT_FILENAME = flat.txt } }";
+    mat.replace(mat.find(plain), plain.size(),
+                "EMISSIVITY_PROP_NAME = ClassicEmissivity\n        "
+                "EMISSIVITY_PROP { FILENAME = classes.ems } }");
+    write(dir.path() / "site.mat", mat);
+    write(dir.path() / "classes.ems",
+          "3\nCURVE_BEGIN\n0.3 0.8\n1.0 0.8\nCURVE_END\nCURVE_BEGIN\n0.3 0.6\n1.0 0.6\n"
+          "CURVE_END\nCURVE_BEGIN\n0.3 0.4\n1.0 0.4\nCURVE_END\n");
+}
+
+TEST(MapReader, TextureMapClassesAndZScores) {
+    TempDir dir;
+    const auto scene_file = write_scene(
+        dir, texture_map("A", {"bright.pgm"}) + texture_map("B", {"bright.pgm", "bright.pgm"}));
+    make_textured(dir);
+    write_pgm(dir.path() / "maps" / "bright.pgm", 4, {10, 20, 30, 40});
+    Diagnostics diagnostics;
+    const model::Scene scene = read_dirsig_scene(scene_file, {}, diagnostics);
+    ASSERT_FALSE(diagnostics.has_errors()) << test::diagnostics_text(diagnostics);
+    // The .ems's texture classes, then the materials: Terrain, Grass, Soil and two variants,
+    // made once though two maps cover the material.
+    ASSERT_EQ(scene.materials.size(), 5u);
+    EXPECT_EQ(scene.materials[3].id, "1#1");
+    EXPECT_EQ(scene.materials[4].id, "1#2");
+    EXPECT_EQ(scene.materials[4].texture_parent, std::optional<std::uint32_t>(0));
+    EXPECT_NEAR(scene.materials[4].reflectance.values[0], 0.6, 1e-12);
+    EXPECT_NEAR(scene.materials[4].emissivity.values[0], 0.4, 1e-12);
+    ASSERT_EQ(scene.maps.size(), 2u);
+    const model::PropertyMap& a = scene.maps[0];
+    EXPECT_EQ(a.kind, model::MapKind::texture);
+    ASSERT_EQ(a.texture_classes.size(), 1u);
+    EXPECT_EQ(a.texture_classes[0].materials, (std::vector<std::uint32_t>{0, 3, 4}));
+    // Classes ρ 0.2, 0.4, 0.6: z = −√1.5, 0, √1.5. Texels 10..40: z = ±1.342, ±0.447.
+    const std::vector<float>& z = a.texture_classes[0].z;
+    ASSERT_EQ(z.size(), 3u);
+    EXPECT_NEAR(z[0], -std::sqrt(1.5), 1e-6);
+    EXPECT_NEAR(z[1], 0.0, 1e-6);
+    EXPECT_NEAR(z[2], std::sqrt(1.5), 1e-6);
+    ASSERT_EQ(a.raster->bands, 1u);
+    EXPECT_NEAR(a.raster->weights[0], -3.0 / std::sqrt(5.0), 1e-6);
+    EXPECT_NEAR(a.raster->weights[2], 1.0 / std::sqrt(5.0), 1e-6);
+    EXPECT_EQ(scene.maps[1].raster->bands, 2u);
+    EXPECT_EQ(scene.maps[1].texture_classes[0].z.size(), 6u);
+}
+
 struct BadMap {
     const char* name;
     std::string maps;
@@ -220,6 +287,7 @@ TEST_P(MapReaderErrors, OneErrorWithItsMessage) {
             at = end + 1;
         }
         write_pgm(dir.path() / "maps" / "classes.pgm", dcs.size(), dcs);
+        write_pgm(dir.path() / "maps" / "other.pgm", 1, {5});
     }
     Diagnostics diagnostics;
     const model::Scene scene = read_dirsig_scene(scene_file, {}, diagnostics);
@@ -259,10 +327,11 @@ INSTANTIATE_TEST_SUITE_P(
         BadMap{"no gsd",
                material_map("classes.pgm", kTable, "", "<projector><drapeprojector/></projector>"),
                "10", "missing required element <gsd>"},
-        BadMap{"texture map", "<texturemap name=\"Tex\"><bandlist/></texturemap>\n", "",
-               "<texturemap> \"Tex\" is not supported"},
         BadMap{"bump map", "<bumpmap name=\"Bumps\" enabled=\"true\"/>\n", "",
                "<bumpmap> \"Bumps\" is not supported"},
+        BadMap{"empty band list", texture_map("T", {}), "", "<bandlist> has no <band>"},
+        BadMap{"band sizes differ", texture_map("T", {"classes.pgm", "other.pgm"}), "10 20",
+               "band image \"other.pgm\" is 1 x 1, the first band's 2 x 1"},
         BadMap{"mixture bands",
                "<mixturemap name=\"Mix\"><matidlist><matid>1</matid></matidlist>" +
                    kMixtureProjector +

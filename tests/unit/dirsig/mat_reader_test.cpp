@@ -84,7 +84,7 @@ TEST(MatReader, ReadsRealDirsigMaterials) {
         all,
         HasSubstr(soil_ems + ":1: MATERIAL_ENTRY[12]/SURFACE_PROPERTIES/EMISSIVITY_PROP/FILENAME: "
                              "classic .ems with 3 curves (texture classes): glint uses the first "
-                             "(line 94); texture classes are not applied"));
+                             "(line 94) unless an enabled <texturemap> covers the material"));
     EXPECT_THAT(
         all,
         HasSubstr(soil_ems + ":2: MATERIAL_ENTRY[12]/SURFACE_PROPERTIES/EMISSIVITY_PROP/FILENAME: "

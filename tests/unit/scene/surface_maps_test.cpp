@@ -189,6 +189,33 @@ TEST(SurfaceMaps, MixtureTexelAndAnEmptyOne) {
     EXPECT_EQ(empty->material, 0u);
 }
 
+TEST(SurfaceMaps, TextureMapPicksTheNearestClassOverItsBands) {
+    model::Scene scene = scene_with_materials(4);
+    add_static(scene, add_object(scene, ground_plane_mesh(100.0, 0), "plate"));
+    model::PropertyMap map;
+    map.kind = model::MapKind::texture;
+    map.name = "texture";
+    map.applies_to = {0};
+    map.bands.resize(2);
+    map.projector.gsd_m = {1.0, 1.0};
+    // Classes 0 (the material), 2 and 3 at z (−1, 0), (0, 1), (1, 0); four texels.
+    map.texture_classes = {model::TextureClasses{{0, 2, 3}, {-1, 0, 0, 1, 1, 0}}};
+    auto raster = std::make_shared<model::MapRaster>();
+    raster->width = 4;
+    raster->height = 1;
+    raster->bands = 2;
+    // Nearest: class 3; class 0; class 2 (z₂ decides); the tie at (−0.5, 0.5) between
+    // classes 0 and 2 goes to the first.
+    raster->weights = {0.9f, 0.2f, -2.0f, 0.0f, 0.1f, 0.8f, -0.5f, 0.5f};
+    map.raster = raster;
+    scene.maps.push_back(map);
+    const GeometryScene built = build(scene);
+    const std::uint32_t expected[] = {3, 0, 2, 0};
+    for (int x = 0; x < 4; ++x) {
+        EXPECT_EQ(built.intersect({x + 0.5, 0.5, 5.0}, kDown, 0.0)->material, expected[x]) << x;
+    }
+}
+
 TEST(SurfaceMaps, RefusesARasterThatDoesNotMatch) {
     model::Scene scene = scene_with_materials(4);
     model::PropertyMap map = material_map(class_raster(4, {0, 1}), {});

@@ -5,7 +5,10 @@
 // x–y plane, or through the facets' texture coordinates), and the texel under a hit decides:
 //   - a material map: one material per texel, through a digital-count look-up table;
 //   - a mixture map: a weight per material per texel (the image's bands), the surface being
-//     that mix (the radiance the weighted mean, the abundance truth the weights).
+//     that mix (the radiance the weighted mean, the abundance truth the weights);
+//   - a texture map: the texel's relative brightness in one or more spectral windows picks,
+//     per material, the texture class (a curve of its multi-curve `.ems`) whose brightness
+//     there matches best (DIRSIG's statistical texture).
 // Plain data: the readers fill it (images decoded into compact rasters), the scene component
 // evaluates it per hit.
 #pragma once
@@ -62,14 +65,30 @@ struct MapRaster {
     std::vector<std::uint8_t> slots;
     unsigned slot_bytes = 1;
     /// Weight rasters: width × height × bands weights, each texel's summing to 1 (or all 0:
-    /// no material, the facet keeps its own).
+    /// no material, the facet keeps its own); texture maps: each texel's z-score per band.
     std::vector<float> weights;
     std::size_t bands = 0;
 };
 
-enum class MapKind { material, mixture };
+enum class MapKind { material, mixture, texture };
 
-/// One `<materialmap>` or `<mixturemap>`.
+/// One `<band>` of a texture map: a spectral window and the image of the scene's relative
+/// brightness in it.
+struct TextureBand {
+    double min_um = 0.0;
+    double max_um = 0.0;
+    FileRef image;
+};
+
+/// A texture map's classes for one material it covers: the material and its texture-class
+/// variants (class 0 is the material itself), and each class's z-score per band (the class's
+/// mean reflectance in the band's window, standardised over the classes), classes × bands.
+struct TextureClasses {
+    std::vector<std::uint32_t> materials;
+    std::vector<float> z;
+};
+
+/// One `<materialmap>`, `<mixturemap>` or `<texturemap>`.
 struct PropertyMap {
     MapKind kind = MapKind::material;
     std::string name;
@@ -84,6 +103,10 @@ struct PropertyMap {
     /// What a raster slot selects: material maps, the distinct materials of the table
     /// (a texel's slot indexes it); mixture maps, band_materials.
     std::vector<std::uint32_t> slot_materials;
+    /// Texture maps: the bands (their images' texels' z-scores fill the raster's weights, one
+    /// per band), and the classes of each material of `applies_to`, in its order.
+    std::vector<TextureBand> bands;
+    std::vector<TextureClasses> texture_classes;
     /// Shared: every capture's scene holds the same decoded image.
     std::shared_ptr<const MapRaster> raster;
     ErrorContext where;

@@ -152,6 +152,17 @@ struct Material {
     SpectralTable emissivity;
     bool emissivity_is_default = true;
     double temperature_k = kDefaultTemperature_k;
+    /// Texture classes (docs/maps.md): every curve of a classic `.ems` holding several, the
+    /// first (this material's own) included, in file order; emissivities when
+    /// `texture_curves_are_emissivity`, else reflectances. A `<texturemap>` selects among them.
+    std::vector<SpectralTable> texture_curves;
+    bool texture_curves_are_emissivity = true;
+    /// The reflectance was made from the emissivity (1 − ε − τ: a `.mat` entry with only an
+    /// emissivity curve).
+    bool reflectance_from_emissivity = false;
+    /// A texture class made from another material's texture_curves: that material (index into
+    /// Scene::materials), which truth reports in its place.
+    std::optional<std::uint32_t> texture_parent;
     /// A point-source material (a DIRSIG `.mat` entry with `OPTICAL_DESCRIPTION = SOURCE`):
     /// only a PointSource may name it; its surface curves are black (ρ = 0, ε = 0).
     bool point_source = false;

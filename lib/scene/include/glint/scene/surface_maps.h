@@ -2,7 +2,8 @@
 // A scene's property maps evaluated at a hit (docs/maps.md): the projector finds the texel
 // under the hit (nearest texel: the maps hold classes and per-texel mixes), and the maps
 // that apply to the hit's material change it — a material map to the texel's material, a
-// mixture map to the texel's mix of materials, which the radiometry samples.
+// texture map to the texture class nearest the texel's brightness, a mixture map to the
+// texel's mix of materials, which the radiometry samples.
 //
 // Maps apply in the scene's order: a material map's result can be mapped again by a later
 // map (DIRSIG chains a land-cover map and the maps of its classes); a mixture ends the chain.
@@ -86,8 +87,9 @@ private:
     std::optional<std::uint64_t> texel(std::size_t k, const MapPoint& point) const noexcept;
 
     std::vector<model::PropertyMap> m_maps;
-    /// Per material, per map: whether the map applies (material-major).
-    std::vector<std::uint8_t> m_applies;
+    /// Per material, per map (material-major): 0 when the map does not apply, else 1 + the
+    /// material's place in the map's applies_to (a texture map's classes are found by it).
+    std::vector<std::uint32_t> m_applies;
     /// Per material: the first map that applies, kNone if none.
     std::vector<std::uint32_t> m_first_map;
     bool m_uses_uv = false;
