@@ -204,6 +204,12 @@ public:
         for (const model::PropertyMap& map : scene.maps) {
             m_inputs.contents.push_back("  " + model::describe_map(map, scene.materials));
         }
+        for (const model::Material& material : scene.materials) {
+            if (material.temperature_map && !material.texture_parent) {
+                m_inputs.contents.push_back(
+                    "  " + model::describe_map(*material.temperature_map, scene.materials));
+            }
+        }
     }
     void atmosphere_read(const model::Simulation& simulation, const model::FileRef* file,
                          std::size_t errors, const model::Atmosphere& atmosphere) override {

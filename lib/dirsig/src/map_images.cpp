@@ -303,6 +303,7 @@ std::optional<MapBrightness> read_brightness(const model::PropertyMap& map,
                                            "others are not used");
     }
     MapBrightness out;
+    out.integer = source->integer;
     out.width = source->width;
     out.height = source->height;
     out.values.resize(out.width * out.height);

@@ -46,10 +46,11 @@ struct MapBrightness {
     std::size_t width = 0;
     std::size_t height = 0;
     std::vector<float> values;
+    bool integer = true;  ///< the file holds integer codes (not floating-point values)
 };
 
-/// Reads a texture band's image (any channels: the first; any type); problems are errors at
-/// `map.where`, nullopt then.
+/// Reads a texture band's or a temperature map's image (any channels: the first; any type);
+/// problems are errors at `map.where`, nullopt then.
 std::optional<MapBrightness> read_brightness(const model::PropertyMap& map,
                                              const model::FileRef& image, Diagnostics& diagnostics);
 

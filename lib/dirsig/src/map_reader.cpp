@@ -202,6 +202,9 @@ bool no_clear_panes(const model::PropertyMap& map, const model::Scene& scene,
 }  // namespace
 
 std::string map_label_text(const model::PropertyMap& map) {
+    if (map.kind == model::MapKind::temperature) {
+        return "the temperature map of material " + quote(map.name);
+    }
     return std::string("<") + model::map_element_name(map.kind) + "> " + quote(map.name);
 }
 
@@ -332,11 +335,16 @@ void read_property_maps(const io::XmlNode& root, const std::filesystem::path& ba
         map.name = node.attribute("name").value_or("");
         map.where = node.where();
         if (refused) {
-            diagnostics.error(node.where(), "<" + kind + "> " + quote(map.name) +
-                                                " is not supported: glint applies material, "
-                                                "mixture and texture maps (docs/maps.md); "
-                                                "disable it (enabled=\"false\") to render "
-                                                "without it");
+            diagnostics.error(node.where(),
+                              "<" + kind + "> " + quote(map.name) +
+                                  " is not supported: glint applies material, mixture and "
+                                  "texture maps" +
+                                  (kind == "temperaturemap"
+                                       ? ", and temperature maps given in the material's .mat "
+                                         "entry (TEMP_SOLVER_NAME = Map)"
+                                       : "") +
+                                  " (docs/maps.md); disable it (enabled=\"false\") to render "
+                                  "without it");
             continue;
         }
         switch (map.kind) {

@@ -171,6 +171,12 @@ struct MatReader {
     void read_surface(const MatBlock& surface, const std::string& path, model::Material& m);
     /// A `RAD_SOLVER_NAME = Null` material: neither reflects nor emits (ρ = 0, ε = 0).
     void read_null(const MatEntry& solver, const std::string& path, model::Material& m);
+    /// `TEMP_SOLVER_NAME = Map`'s TEMP_SOLVER block: the image and its projector
+    /// (mat_temperature.cpp); the map goes to m.temperature_map.
+    void read_temperature_map(const MatBlock& solver, const std::string& path,
+                              model::Material& m);
+    /// Whether the once-per-file note on the temperature map's GAIN/BIAS reading was said.
+    bool said_temperature_gain = false;
     /// An `OPTICAL_DESCRIPTION = SOURCE` material (mat_reader.cpp).
     void read_source(const MatBlock& block, const std::string& path, model::Material& m);
     /// One MATERIAL_ENTRY block (mat_reader.cpp).

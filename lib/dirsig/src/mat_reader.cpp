@@ -125,7 +125,17 @@ model::Material MatReader::read_entry(const MatBlock& block, std::size_t index) 
     }
     // Temperature: TEMPERATURE in the entry or in its TEMP_SOLVER block.
     const MatEntry* temperature = block.find("TEMPERATURE");
-    if (const MatBlock* ts = block.find_block("TEMP_SOLVER")) {
+    const MatEntry* solver_name = block.find("TEMP_SOLVER_NAME");
+    const bool mapped = solver_name && to_upper(solver_name->value) == "MAP";
+    if (mapped) {
+        if (const MatBlock* ts = block.find_block("TEMP_SOLVER")) {
+            read_temperature_map(*ts, path + "/TEMP_SOLVER", m);
+        } else {
+            diagnostics.error(at(solver_name->line, path + "/TEMP_SOLVER_NAME"),
+                              "temperature solver \"Map\" needs a TEMP_SOLVER block (its "
+                              "IMAGE_FILENAME and projector)");
+        }
+    } else if (const MatBlock* ts = block.find_block("TEMP_SOLVER")) {
         warn_unknown(*ts, path + "/TEMP_SOLVER", {"TEMPERATURE"}, {});
         const MatEntry* inner = ts->find("TEMPERATURE");
         if (inner && temperature) {
@@ -139,7 +149,7 @@ model::Material MatReader::read_entry(const MatBlock& block, std::size_t index) 
     }
     if (const MatEntry* solver = block.find("TEMP_SOLVER_NAME")) {
         const std::string s = to_upper(solver->value);
-        if (s != "DATADRIVEN" && s != "CONSTANT") {
+        if (s != "DATADRIVEN" && s != "CONSTANT" && s != "MAP") {
             diagnostics.warning(at(solver->line, path + "/TEMP_SOLVER_NAME"),
                                 "temperature solver \"" + solver->value + "\" of material \"" +
                                     m.name +

@@ -2,6 +2,9 @@
 // Property maps (glint/model/maps.h).
 #include "glint/model/maps.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "glint/core/text.h"
 #include "glint/model/scene.h"
 
@@ -13,6 +16,8 @@ const char* map_element_name(MapKind kind) {
             return "mixturemap";
         case MapKind::texture:
             return "texturemap";
+        case MapKind::temperature:
+            return "temperature map";
         case MapKind::material:
             break;
     }
@@ -67,7 +72,16 @@ std::string describe_map(const PropertyMap& map, const std::vector<Material>& ma
            (p.flip_x ? ", flipx" : "") + (p.flip_y ? ", flipy" : "") + ", extend " +
            extend_name(p.extend_x) + "/" + extend_name(p.extend_y) + ", over " +
            ids(map.applies_to, materials);
-    if (map.kind == MapKind::texture) {
+    if (map.kind == MapKind::temperature) {
+        // Over its own material; its range instead of the materials.
+        out.erase(out.rfind(", over "));
+        if (map.raster && !map.raster->weights.empty()) {
+            const auto [lo, hi] =
+                std::minmax_element(map.raster->weights.begin(), map.raster->weights.end());
+            out += ", " + format_shortest(std::round(*lo * 100.0) / 100.0) + "-" +
+                   format_shortest(std::round(*hi * 100.0) / 100.0) + " K";
+        }
+    } else if (map.kind == MapKind::texture) {
         std::size_t classes = 0;
         for (const TextureClasses& c : map.texture_classes) classes += c.materials.size();
         out += ", " + std::to_string(classes) + " texture classes";

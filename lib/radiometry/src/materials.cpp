@@ -97,6 +97,7 @@ void MaterialTable::add_directional_emission(const model::Material& material,
 MaterialTable::MaterialTable(std::span<const model::Material> materials, const SpectralGrid& grid,
                              Log log)
     : m_bands(grid.size()) {
+    for (std::size_t i = 0; i < m_bands; ++i) m_wavelengths_um.push_back(grid.wavelength_um(i));
     m_reflectance.reserve(materials.size() * m_bands);
     m_transmittance.reserve(materials.size() * m_bands);
     m_emission.reserve(materials.size() * m_bands);
@@ -170,8 +171,9 @@ MaterialTable::MaterialTable(std::span<const model::Material> materials, const S
             rho_sum += rho[i];
             tau_sum += tau[i];
             m_transmittance.push_back(tau[i]);
+            m_emissivity.push_back(std::clamp(eps[i], 0.0, 1.0));
             const double e =
-                std::clamp(eps[i], 0.0, 1.0) *
+                m_emissivity.back() *
                 planck_radiance_w_per_cm2_sr_um(grid.wavelength_um(i), material.temperature_k);
             emits = emits || e > 0.0;
             reflects = reflects || rho[i] > 0.0;

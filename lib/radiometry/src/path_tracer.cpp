@@ -359,16 +359,10 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
         double sun_factor = 0.0;
         const Frame frame = shading_frame(bsdf, normal);
         const Vec3 wo_local = frame.to_local(wo);
-        const double* emission = nullptr;
-        if (!dark && m_materials.emits(m)) {
-            if (m_materials.directional_emission(m)) {
-                // Kirchhoff towards wo of a lobe whose albedo depends on the direction.
-                m_materials.emission_at(m, wo_local.z, bands, scratch.emission_towards);
-                emission = scratch.emission_towards.data();
-            } else {
-                emission = m_materials.emission_w_per_cm2_sr_um(m).data();
-            }
-        }
+        const double* emission =
+            dark ? nullptr
+                 : m_materials.emission_towards(m, hit->temperature_k, wo_local.z, bands,
+                                                scratch.emission_towards);
         // The first hit's record: its shadow ray is traced even on a black material (whose
         // path ends here, so the numbers drawn for it change nothing after).
         FirstHit* record = bounce == 0 ? first_hit : nullptr;
@@ -419,6 +413,7 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
             record->normal = normal;
             record->distance_m = hit->distance_m;
             record->material = hit->material;
+            record->temperature_k = hit->temperature_k;
             record->mix = hit->mixture_map == scene::kNoMixture
                               ? scene::MaterialMix{}
                               : m_scene.maps().mix(hit->mixture_map, hit->mixture_texel);

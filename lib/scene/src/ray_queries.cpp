@@ -143,7 +143,11 @@ void apply_maps(const SurfaceMaps& maps, const detail::ObjectData& object, float
         const double vv = b0 * c[1] + u * double{c[3]} + v * double{c[5]};
         if (std::isfinite(uu) && std::isfinite(vv)) point.uv = std::array<double, 2>{uu, vv};
     }
-    maps.apply(point, hit.material, hit.mixture_map, hit.mixture_texel);
+    const SurfaceMaps::Applied applied = maps.apply(point, hit.material);
+    hit.material = applied.material;
+    hit.mixture_map = applied.mixture_map;
+    hit.mixture_texel = applied.mixture_texel;
+    hit.temperature_k = applied.temperature_k;
 }
 
 /// The hit Embree reported on the caller's ray origin_m + s · direction: Embree's instance,
@@ -200,6 +204,7 @@ void make_hit(const SceneImpl& impl, const Vec3& origin_m, const Vec3& direction
     const double triangle_size = plane.diameter_m * row_norm(to_frame.linear);
     hit.spawn_offset_m = kSpawnFloor_m + kSpawnRelative * (frame_size + 2.0 * triangle_size);
     hit.mixture_map = kNoMixture;
+    hit.temperature_k = 0.0;
     if (impl.maps.maps_material(hit.material)) apply_maps(impl.maps, object, u, v, hit);
 }
 

@@ -128,6 +128,37 @@ SurfaceMaps::SurfaceMaps(const model::Scene& scene) : m_maps(scene.maps) {
         }
         if (map.projector.uv) m_uses_uv = true;
     }
+    m_temperature.resize(materials);
+    m_mapped.assign(materials, 0);
+    for (std::size_t m = 0; m < materials; ++m) {
+        const auto& map = scene.materials[m].temperature_map;
+        if (map) {
+            const model::MapRaster* raster = map->raster.get();
+            if (raster == nullptr || raster->bands != 1 ||
+                raster->weights.size() != raster->width * raster->height) {
+                throw input_error("the temperature map of material \"" + scene.materials[m].id +
+                                      "\": its raster does not match its image",
+                                  map->where);
+            }
+            m_temperature[m] = map;
+            if (map->projector.uv) m_uses_uv = true;
+        }
+        m_mapped[m] = m_first_map[m] != kNone || map ? 1 : 0;
+    }
+    // A mixture's material is drawn by the radiometry, after the maps: none may have a
+    // temperature map of its own.
+    for (const model::PropertyMap& map : m_maps) {
+        if (map.kind != model::MapKind::mixture) continue;
+        for (const std::uint32_t m : map.slot_materials) {
+            if (m_temperature[m]) {
+                throw input_error("mixturemap \"" + map.name + "\": material \"" +
+                                      scene.materials[m].id +
+                                      "\" has a temperature map, which a mixture's materials "
+                                      "cannot have",
+                                  map.where);
+            }
+        }
+    }
 }
 
 std::optional<std::uint64_t> SurfaceMaps::texel(std::size_t k,
@@ -147,13 +178,46 @@ std::optional<std::uint64_t> SurfaceMaps::texel(std::size_t k,
     return std::uint64_t{(*at)[1]} * raster.width + (*at)[0];
 }
 
-void SurfaceMaps::apply(const MapPoint& point, std::uint32_t& material, std::uint32_t& mixture_map,
-                        std::uint64_t& mixture_texel) const noexcept {
-    mixture_map = kNoMixture;
-    if (!maps_material(material)) return;
+double SurfaceMaps::temperature(const model::PropertyMap& map, const MapPoint& point) noexcept {
+    const model::MapRaster& raster = *map.raster;
+    std::array<double, 2> st{};
+    if (map.projector.uv) {
+        if (!point.uv) return 0.0;
+        st =
+            uv_position(map.projector, raster.width, raster.height, (*point.uv)[0], (*point.uv)[1]);
+    } else {
+        st = drape_position(map.projector, raster.width, raster.height, point.x_m, point.y_m);
+    }
+    const auto value = [&](double s, double t) -> std::optional<double> {
+        const auto at = map_texel(map.projector, raster.width, raster.height, s, t);
+        if (!at) return std::nullopt;
+        return raster.weights[(*at)[1] * raster.width + (*at)[0]];
+    };
+    // Texel centres lie at half-integers: interpolate between the four around (s, t).
+    const double s0 = std::floor(st[0] - 0.5);
+    const double t0 = std::floor(st[1] - 0.5);
+    const double fs = st[0] - 0.5 - s0;
+    const double ft = st[1] - 0.5 - t0;
+    const auto a = value(s0 + 0.5, t0 + 0.5);
+    const auto b = value(s0 + 1.5, t0 + 0.5);
+    const auto c = value(s0 + 0.5, t0 + 1.5);
+    const auto d = value(s0 + 1.5, t0 + 1.5);
+    if (a && b && c && d) {
+        return (1.0 - ft) * ((1.0 - fs) * *a + fs * *b) + ft * ((1.0 - fs) * *c + fs * *d);
+    }
+    return value(st[0], st[1]).value_or(0.0);
+}
+
+SurfaceMaps::Applied SurfaceMaps::apply(const MapPoint& point,
+                                        std::uint32_t material) const noexcept {
+    Applied out;
+    out.material = material;
+    if (!maps_material(material)) return out;
     const std::size_t count = m_maps.size();
-    for (std::size_t k = m_first_map[material]; k < count; ++k) {
-        if (m_applies[material * count + k] == 0) continue;
+    const std::size_t first = m_first_map[material] == kNone ? count : m_first_map[material];
+    for (std::size_t k = first; k < count; ++k) {
+        const std::uint32_t material_now = out.material;
+        if (m_applies[material_now * count + k] == 0) continue;
         const auto at = texel(k, point);
         if (!at) continue;
         const model::PropertyMap& map = m_maps[k];
@@ -163,21 +227,25 @@ void SurfaceMaps::apply(const MapPoint& point, std::uint32_t& material, std::uin
             bool any = false;
             for (std::size_t b = 0; b < raster.bands && !any; ++b) any = w[b] > 0.0f;
             if (!any) continue;  // no material here: the facet keeps its own
-            mixture_map = static_cast<std::uint32_t>(k);
-            mixture_texel = *at;
-            return;
+            out.mixture_map = static_cast<std::uint32_t>(k);
+            out.mixture_texel = *at;
+            break;
         }
         if (map.kind == model::MapKind::texture) {
             const model::TextureClasses& classes =
-                map.texture_classes[m_applies[material * count + k] - 1];
-            material =
+                map.texture_classes[m_applies[material_now * count + k] - 1];
+            out.material =
                 nearest_class(classes, raster.weights.data() + *at * raster.bands, raster.bands);
             continue;
         }
         std::uint32_t slot = raster.slots[*at * raster.slot_bytes];
         if (raster.slot_bytes == 2) slot |= std::uint32_t{raster.slots[*at * 2 + 1]} << 8;
-        material = map.slot_materials[slot];
+        out.material = map.slot_materials[slot];
     }
+    if (out.mixture_map == kNoMixture && m_temperature[out.material]) {
+        out.temperature_k = temperature(*m_temperature[out.material], point);
+    }
+    return out;
 }
 
 MaterialMix SurfaceMaps::mix(std::uint32_t mixture_map,

@@ -94,7 +94,8 @@ public:
             const double wk = w * weights[k];
             if (!(wk > 0.0)) continue;
             const std::uint32_t m = materials[k];
-            m_temperature += wk * c.scene->materials[m].temperature_k;
+            m_temperature += wk * (hit->temperature_k > 0.0 ? hit->temperature_k
+                                                            : c.scene->materials[m].temperature_k);
             m_reflectance += wk * c.materials->reflectance(m)[c.reflectance_band];
             // A texture class counts as the material it is a class of.
             const std::uint32_t reported = c.scene->materials[m].texture_parent.value_or(m);

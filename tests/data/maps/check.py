@@ -8,7 +8,10 @@ With `texture` as the first argument, checks a render of texture.jsim instead: e
 shows the texture class a z-score match of its brightness selects (computed here from the
 image and the .ems curves), the Material truth is the textured material everywhere, and the
 mean reflectance over the image is the material's mean over its classes.
-Usage: check.py texture OUTPUT_FOLDER"""
+Usage: check.py texture OUTPUT_FOLDER
+
+With `thermal`, checks a render of thermal.jsim (a temperature map): check.py thermal
+OUTPUT_FOLDER SAMPLES_PER_PIXEL"""
 import sys
 from pathlib import Path
 
@@ -48,7 +51,35 @@ def texture(out):
     print(f"texture ok: classes {classes}, mean {selected.mean():.3f}")
 
 
+def planck_w_per_cm2_sr_um(wavelength_um, temperature_k):
+    h, c, k = 6.62607015e-34, 2.99792458e8, 1.380649e-23
+    w = wavelength_um * 1e-6
+    return 2 * h * c**2 / w**5 / np.expm1(h * c / (w * k * temperature_k)) * 1e-10
+
+
+def thermal(out, samples):
+    """thermal.jsim: a black plate under a temperature map of 10 + 0.5 column + 0.8 line °C,
+    texel (column, line) under pixel (column − 1, line − 1). The Temperature truth is each
+    pixel's mean over its samples of a plane: its texel's value within 5 σ of the samples'
+    spread; the radiance is the band's Planck radiance at it (one scale for all pixels, the
+    tophat's mean, within 1 % of 1)."""
+    truth = np.fromfile(out / "truth.img", dtype="<f8").reshape(6, 8)
+    expected_c = 10 + 0.5 * (np.arange(8) + 1)[None, :] + 0.8 * (np.arange(6) + 1)[:, None]
+    sigma = np.sqrt((0.5**2 + 0.8**2) / 12 / samples)
+    error = np.abs(truth - 273.15 - expected_c).max()
+    assert error < 5 * sigma, (error, sigma)
+    radiance = np.fromfile(out / "frame.img", dtype="<f8").reshape(6, 8)
+    band = np.linspace(10.0, 11.0, 101)
+    expected = np.array([planck_w_per_cm2_sr_um(band, t).mean() for t in (expected_c + 273.15).ravel()])
+    k = radiance.ravel() / expected
+    assert k.std() / k.mean() < 1e-3 and abs(k.mean() - 1) < 0.01, k
+    print(f"thermal ok: temperature within {error:.3f} K (sigma {sigma:.3f} K), radiance scale {k.mean():.4f}")
+
+
 def main():
+    if sys.argv[1] == "thermal":
+        thermal(Path(sys.argv[2]), int(sys.argv[3]))
+        return
     if sys.argv[1] == "texture":
         texture(Path(sys.argv[2]))
         return

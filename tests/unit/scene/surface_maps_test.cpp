@@ -216,6 +216,33 @@ TEST(SurfaceMaps, TextureMapPicksTheNearestClassOverItsBands) {
     }
 }
 
+TEST(SurfaceMaps, TemperatureMapBilinearBetweenTexelCentres) {
+    model::Scene scene = scene_with_materials(2);
+    add_static(scene, add_object(scene, ground_plane_mesh(100.0, 0), "plate"));
+    auto map = std::make_shared<model::PropertyMap>();
+    map->kind = model::MapKind::temperature;
+    map->projector.gsd_m = {1.0, 1.0};  // cartesian drape from (0, 0): line 0 is y 1..2
+    auto raster = std::make_shared<model::MapRaster>();
+    raster->width = 2;
+    raster->height = 2;
+    raster->bands = 1;
+    raster->weights = {300.0f, 310.0f, 280.0f, 290.0f};  // top line, then bottom line
+    map->raster = raster;
+    scene.materials[0].temperature_map = map;
+    const GeometryScene built = build(scene);
+    // Texel centres: the texels' values.
+    EXPECT_NEAR(built.intersect({0.5, 0.5, 5.0}, kDown, 0.0)->temperature_k, 280.0, 1e-9);
+    EXPECT_NEAR(built.intersect({1.5, 1.5, 5.0}, kDown, 0.0)->temperature_k, 310.0, 1e-9);
+    // Between the four centres: their mean; a quarter of the way: bilinear.
+    EXPECT_NEAR(built.intersect({1.0, 1.0, 5.0}, kDown, 0.0)->temperature_k, 295.0, 1e-9);
+    EXPECT_NEAR(built.intersect({0.75, 0.5, 5.0}, kDown, 0.0)->temperature_k, 282.5, 1e-9);
+    // Within half a texel of the edge (extend none): the nearest texel; off it: none (0).
+    EXPECT_NEAR(built.intersect({0.2, 1.8, 5.0}, kDown, 0.0)->temperature_k, 300.0, 1e-9);
+    EXPECT_EQ(built.intersect({2.5, 1.0, 5.0}, kDown, 0.0)->temperature_k, 0.0);
+    // The material stays: a temperature map changes only the temperature.
+    EXPECT_EQ(built.intersect({1.0, 1.0, 5.0}, kDown, 0.0)->material, 0u);
+}
+
 TEST(SurfaceMaps, RefusesARasterThatDoesNotMatch) {
     model::Scene scene = scene_with_materials(4);
     model::PropertyMap map = material_map(class_raster(4, {0, 1}), {});

@@ -8,7 +8,9 @@
 //     that mix (the radiance the weighted mean, the abundance truth the weights);
 //   - a texture map: the texel's relative brightness in one or more spectral windows picks,
 //     per material, the texture class (a curve of its multi-curve `.ems`) whose brightness
-//     there matches best (DIRSIG's statistical texture).
+//     there matches best (DIRSIG's statistical texture);
+//   - a temperature map (a material's `TEMP_SOLVER_NAME = Map` in its `.mat`): the surface's
+//     temperature, interpolated between texel centres, in place of the material's.
 // Plain data: the readers fill it (images decoded into compact rasters), the scene component
 // evaluates it per hit.
 #pragma once
@@ -65,12 +67,13 @@ struct MapRaster {
     std::vector<std::uint8_t> slots;
     unsigned slot_bytes = 1;
     /// Weight rasters: width × height × bands weights, each texel's summing to 1 (or all 0:
-    /// no material, the facet keeps its own); texture maps: each texel's z-score per band.
+    /// no material, the facet keeps its own); texture maps: each texel's z-score per band;
+    /// temperature maps: each texel's temperature, K.
     std::vector<float> weights;
     std::size_t bands = 0;
 };
 
-enum class MapKind { material, mixture, texture };
+enum class MapKind { material, mixture, texture, temperature };
 
 /// One `<band>` of a texture map: a spectral window and the image of the scene's relative
 /// brightness in it.

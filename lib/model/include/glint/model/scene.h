@@ -152,6 +152,9 @@ struct Material {
     SpectralTable emissivity;
     bool emissivity_is_default = true;
     double temperature_k = kDefaultTemperature_k;
+    /// A temperature map (`TEMP_SOLVER_NAME = Map`): the temperature where it covers the
+    /// surface (elsewhere temperature_k). Shared by the material's copies.
+    std::shared_ptr<const PropertyMap> temperature_map;
     /// Texture classes (docs/maps.md): every curve of a classic `.ems` holding several, the
     /// first (this material's own) included, in file order; emissivities when
     /// `texture_curves_are_emissivity`, else reflectances. A `<texturemap>` selects among them.

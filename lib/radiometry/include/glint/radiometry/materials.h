@@ -87,6 +87,42 @@ public:
         }
     }
 
+    /// Material `m`'s emission at temperature `temperature_k` (a temperature map's) instead of
+    /// its own, towards cos θo, at the bands `bands`, written into `out` at the same indices:
+    /// ε(λ) B(λ, T), plus ρ(λ) B(λ, T) (1 − A(θo)) for a directional lobe.
+    template <typename Bands>
+    void emission_at_temperature(std::size_t m, double temperature_k, double cos_o,
+                                 const Bands& bands, std::span<double> out) const {
+        const double* eps = m_emissivity.data() + m * m_bands;
+        const double* rho = m_reflectance.data() + m * m_bands;
+        const double absorbed =
+            directional_emission(m) ? 1.0 - m_albedos[m_albedo_slot[m]].at(cos_o) : 0.0;
+        for (std::size_t j = 0; j < bands.size(); ++j) {
+            const std::size_t b = bands[j];
+            const double planck =
+                planck_radiance_w_per_cm2_sr_um(m_wavelengths_um[b], temperature_k);
+            out[b] = (eps[b] + rho[b] * absorbed) * planck;
+        }
+    }
+
+    /// What material `m` emits towards cos θo at the bands `bands`: nullptr when it emits
+    /// nothing on the grid; its table's emission; or, when it depends on the direction
+    /// (emission_at) or a temperature map gives `temperature_k` > 0 in place of the
+    /// material's (emission_at_temperature), `scratch` filled at those bands.
+    template <typename Bands>
+    const double* emission_towards(std::size_t m, double temperature_k, double cos_o,
+                                   const Bands& bands, std::span<double> scratch) const {
+        if (temperature_k > 0.0) {
+            emission_at_temperature(m, temperature_k, cos_o, bands, scratch);
+            return scratch.data();
+        }
+        if (!emits(m)) return nullptr;
+        if (!directional_emission(m)) return emission_w_per_cm2_sr_um(m).data();
+        // Kirchhoff towards wo of a lobe whose albedo depends on the direction.
+        emission_at(m, cos_o, bands, scratch);
+        return scratch.data();
+    }
+
 private:
     /// Completes the last material added (its Bsdf is m_shapes.back()): refuses a lobe that
     /// reflects more than it receives and, for Kirchhoff's emissivity of a lobe whose albedo is
@@ -97,6 +133,8 @@ private:
     std::size_t m_bands = 0;
     std::vector<double> m_reflectance;
     std::vector<double> m_emission;
+    std::vector<double> m_emissivity;      ///< ε(λ) per material and band, as emission uses it
+    std::vector<double> m_wavelengths_um;  ///< the grid's
     std::vector<unsigned char> m_emits;
     std::vector<unsigned char> m_reflects;
     std::vector<double> m_transmittance;

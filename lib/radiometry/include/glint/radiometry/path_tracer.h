@@ -53,6 +53,8 @@ struct FirstHit {
     std::uint32_t material = 0;  ///< index into the scene's materials (drawn from `mix`)
     /// A mixture map's texel at the point: its materials and weights (empty otherwise).
     scene::MaterialMix mix;
+    /// A temperature map's temperature at the point, K; 0: the material's.
+    double temperature_k = 0.0;
     std::uint32_t instance = 0;  ///< index into the scene's instances
     /// The sun does not light the point: the sun is below the horizon (or switched off), it
     /// is behind the surface, or the shadow ray towards the point drawn in its disc is

@@ -117,6 +117,8 @@ struct RayHit {
     /// kNoMixture otherwise.
     std::uint32_t mixture_map = kNoMixture;
     std::uint64_t mixture_texel = 0;
+    /// A temperature map's value at the hit, K; 0: the material's own temperature.
+    double temperature_k = 0.0;
 };
 
 /// Rays traced together by GeometryScene's packet queries.

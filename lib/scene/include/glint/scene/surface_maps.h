@@ -14,6 +14,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 #include <vector>
@@ -68,15 +69,21 @@ public:
     bool empty() const noexcept { return m_maps.empty(); }
     /// Some map projects through texture coordinates.
     bool uses_uv() const noexcept { return m_uses_uv; }
-    /// Some map applies to material `m`.
+    /// Some map applies to material `m` (or to a material a map turns it into).
     bool maps_material(std::uint32_t m) const noexcept {
-        return m < m_first_map.size() && m_first_map[m] != kNone;
+        return m < m_mapped.size() && m_mapped[m] != 0;
     }
 
-    /// Applies the maps to a hit on material `material` at `point`: `material` becomes the
-    /// mapped one; a mixture sets `mixture_map` and `mixture_texel` (else kNoMixture).
-    void apply(const MapPoint& point, std::uint32_t& material, std::uint32_t& mixture_map,
-               std::uint64_t& mixture_texel) const noexcept;
+    /// What the maps make of a hit.
+    struct Applied {
+        std::uint32_t material = 0;
+        std::uint32_t mixture_map = kNoMixture;  ///< a mixture's map, else kNoMixture
+        std::uint64_t mixture_texel = 0;
+        double temperature_k = 0.0;  ///< a temperature map's value, else 0 (the material's)
+    };
+
+    /// Applies the maps to a hit on material `material` at `point`.
+    Applied apply(const MapPoint& point, std::uint32_t material) const noexcept;
 
     /// The mix of a hit that apply() gave a mixture.
     MaterialMix mix(std::uint32_t mixture_map, std::uint64_t mixture_texel) const noexcept;
@@ -85,6 +92,9 @@ private:
     static constexpr std::uint32_t kNone = 0xffffffffu;
     /// The texel under `point` of map `k`, as width · line + column.
     std::optional<std::uint64_t> texel(std::size_t k, const MapPoint& point) const noexcept;
+    /// A temperature map's value at `point`, bilinear between texel centres (the nearest
+    /// texel where a neighbour is off the image); 0 off the image.
+    static double temperature(const model::PropertyMap& map, const MapPoint& point) noexcept;
 
     std::vector<model::PropertyMap> m_maps;
     /// Per material, per map (material-major): 0 when the map does not apply, else 1 + the
@@ -92,6 +102,10 @@ private:
     std::vector<std::uint32_t> m_applies;
     /// Per material: the first map that applies, kNone if none.
     std::vector<std::uint32_t> m_first_map;
+    /// Per material: its temperature map, if any (shared with the scene's material).
+    std::vector<std::shared_ptr<const model::PropertyMap>> m_temperature;
+    /// Per material: some map applies to it or to what the maps make of it.
+    std::vector<std::uint8_t> m_mapped;
     bool m_uses_uv = false;
 };
 
