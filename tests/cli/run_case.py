@@ -20,10 +20,10 @@ KNOWN_KEYS = {
     "description", "requires", "setup", "args", "stdin", "env", "exit", "timeout",
     "stdout_contains", "stdout_not_contains", "stdout_regex", "stdout_empty", "stdout_equals",
     "stderr_contains", "stderr_not_contains", "stderr_regex", "stderr_empty", "stderr_equals",
-    "files_exist", "files_absent", "check", "limits_address_space",
+    "files_exist", "files_absent", "check", "limits_address_space", "measures_memory",
 }
 CHECK_KEYS = KNOWN_KEYS - {"description", "requires", "setup", "files_exist", "files_absent",
-                           "check", "limits_address_space"}
+                           "check", "limits_address_space", "measures_memory"}
 
 
 class CaseFailure(Exception):
@@ -123,6 +123,10 @@ def main():
     if case.get("limits_address_space", False) and args.sanitized:
         print("SKIP: the case limits the address space (ulimit -v), which AddressSanitizer's "
               "shadow memory cannot run under")
+        return SKIP
+    if case.get("measures_memory", False) and args.sanitized:
+        print("SKIP: the case measures peak memory, which AddressSanitizer's shadow memory and "
+              "quarantine inflate")
         return SKIP
     for program in case.get("requires", []):
         if shutil.which(program) is None:

@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 // Map images decoded into rasters (map_parts.h): a material map's digital counts through its
 // look-up table into one- or two-byte slots, a mixture map's bands into normalised weights.
-// Images are read line by line (OpenImageIO's formats, or ENVI with a header beside the data),
-// so a 20k × 20k class map costs its raster (one byte a texel) and one line of doubles.
+// Images are read line by line (OpenImageIO's formats, ENVI with a header beside the data,
+// binary PNM by glint itself). A class map in a binary PGM/PPM is then memory-mapped as it
+// is (its counts are looked up per hit), so a 20k × 20k class map costs the pages rays touch;
+// other formats keep one or two bytes a texel.
 #include <array>
 #include <cctype>
 #include <cmath>
@@ -17,6 +19,7 @@
 #include "glint/core/text.h"
 #include "glint/io/envi.h"
 #include "glint/io/image.h"
+#include "glint/io/mapped_file.h"
 #include "map_parts.h"
 
 namespace glint::dirsig::detail {
@@ -31,7 +34,15 @@ struct LineSource {
     bool integer = true;
     std::string type_name;
     std::function<void(std::size_t, std::span<double>)> read;
+    /// Bytes a code takes: 1 when the format's codes are below 256, else 2.
+    std::size_t code_bytes = 1;
+    /// A binary PNM's: where its texels start in the file (big-endian codes, channels
+    /// interleaved).
+    std::optional<std::size_t> pnm_data_offset;
 };
+
+/// The slot_of_code entry of a count <dcmatlut> does not list.
+constexpr std::uint16_t kUnlistedSlot = 0xffffu;
 
 bool is_envi(const std::filesystem::path& path) {
     std::error_code ec;
@@ -90,7 +101,9 @@ std::optional<LineSource> open_pnm(const std::filesystem::path& path) {
     source.channels = magic[1] == '5' ? 1 : 3;
     source.type_name = fields[2] > 255 ? "uint16" : "uint8";
     const std::size_t sample_bytes = fields[2] > 255 ? 2 : 1;
+    source.code_bytes = sample_bytes;
     const std::streamoff data = file->tellg();
+    source.pnm_data_offset = static_cast<std::size_t>(data);
     const std::size_t line_bytes = source.width * source.channels * sample_bytes;
     auto bytes = std::make_shared<std::vector<unsigned char>>(line_bytes);
     source.read = [file, bytes, data, line_bytes, sample_bytes, path](std::size_t y,
@@ -119,6 +132,7 @@ LineSource open_lines(const std::filesystem::path& path) {
         source.height = h.lines;
         source.channels = h.bands;
         source.integer = envi_integer(h.data_type);
+        source.code_bytes = h.value_bytes() == 1 ? 1 : 2;
         source.type_name =
             std::string("ENVI data type ") + std::to_string(static_cast<int>(h.data_type));
         source.read = [reader](std::size_t y, std::span<double> out) { reader->read_line(y, out); };
@@ -130,6 +144,7 @@ LineSource open_lines(const std::filesystem::path& path) {
     source.height = info.height;
     source.channels = info.channels;
     source.integer = io::sample_type_max(info.sample_type) > 1.0;
+    source.code_bytes = io::sample_type_max(info.sample_type) > 255.0 ? 2 : 1;
     source.type_name = io::sample_type_name(info.sample_type);
     source.read = [reader](std::size_t y, std::span<double> out) { reader->read_line(y, out); };
     return source;
@@ -178,44 +193,53 @@ std::shared_ptr<const model::MapRaster> read_class_raster(model::PropertyMap& ma
                                            "others are not used");
     }
     // The table's distinct materials become the slots, in the table's order.
-    constexpr std::uint32_t kUnlisted = 0xffffffffu;
-    std::map<std::uint32_t, std::uint32_t> slot_of_dc;
-    map.slot_materials.clear();
-    for (const auto& [dc, material] : map.dc_materials) {
-        std::uint32_t slot = 0;
-        while (slot < map.slot_materials.size() && map.slot_materials[slot] != material) ++slot;
-        if (slot == map.slot_materials.size()) map.slot_materials.push_back(material);
-        slot_of_dc[dc] = slot;
-    }
     auto raster = std::make_shared<model::MapRaster>();
     raster->width = source->width;
     raster->height = source->height;
-    raster->slot_bytes = map.slot_materials.size() > 256 ? 2 : 1;
-    raster->slots.resize(raster->width * raster->height * raster->slot_bytes);
+    raster->slot_of_code.assign(65536, kUnlistedSlot);
+    map.slot_materials.clear();
+    for (const auto& [dc, material] : map.dc_materials) {
+        std::uint16_t slot = 0;
+        while (slot < map.slot_materials.size() && map.slot_materials[slot] != material) ++slot;
+        if (slot == map.slot_materials.size()) map.slot_materials.push_back(material);
+        raster->slot_of_code[dc] = slot;
+    }
+    // Every texel's count must be listed: read once, line by line. A binary PGM/PPM is then
+    // mapped as it is; any other format's counts are kept, one or two bytes each.
+    const bool mapped = source->pnm_data_offset.has_value();
+    raster->code_bytes = source->code_bytes;
+    raster->code_stride = mapped ? source->code_bytes * source->channels : source->code_bytes;
+    std::shared_ptr<std::uint8_t> decoded;
+    if (!mapped) {
+        decoded = std::shared_ptr<std::uint8_t>(
+            new std::uint8_t[raster->width * raster->height * raster->code_bytes],
+            std::default_delete<std::uint8_t[]>());
+    }
     std::vector<double> line(source->width * source->channels);
     std::map<double, std::uint64_t> unlisted;  // DC → texels
-    std::vector<std::uint32_t> slot_table(65536, kUnlisted);
-    for (const auto& [dc, slot] : slot_of_dc) {
-        if (dc < slot_table.size()) slot_table[dc] = slot;
-    }
     try {
         for (std::size_t y = 0; y < source->height; ++y) {
             source->read(y, line);
-            std::uint8_t* out = raster->slots.data() + y * raster->width * raster->slot_bytes;
             for (std::size_t x = 0; x < source->width; ++x) {
                 const double dc = line[x * source->channels];
-                const std::uint32_t slot = dc >= 0.0 && dc < 65536.0
-                                               ? slot_table[static_cast<std::size_t>(dc)]
-                                               : kUnlisted;
-                if (slot == kUnlisted) {
+                const bool in_range = dc >= 0.0 && dc < 65536.0;
+                const auto code = in_range ? static_cast<std::uint32_t>(dc) : 0u;
+                if (!in_range || raster->slot_of_code[code] == kUnlistedSlot) {
                     ++unlisted[dc];
                     continue;
                 }
-                out[x * raster->slot_bytes] = static_cast<std::uint8_t>(slot & 0xffu);
-                if (raster->slot_bytes == 2) {
-                    out[x * 2 + 1] = static_cast<std::uint8_t>(slot >> 8);
+                if (decoded) {
+                    std::uint8_t* out =
+                        decoded.get() + (y * raster->width + x) * raster->code_bytes;
+                    if (raster->code_bytes == 2) *out++ = static_cast<std::uint8_t>(code >> 8);
+                    *out = static_cast<std::uint8_t>(code & 0xffu);
                 }
             }
+        }
+        if (unlisted.empty() && mapped) {
+            raster->codes =
+                io::map_file_bytes(map.image.resolved, *source->pnm_data_offset,
+                                   raster->width * raster->height * raster->code_stride);
         }
     } catch (const Error& e) {
         if (e.category() != ErrorCategory::input && e.category() != ErrorCategory::io) throw;
@@ -239,6 +263,8 @@ std::shared_ptr<const model::MapRaster> read_class_raster(model::PropertyMap& ma
                               " that <dcmatlut> does not list: " + list);
         return nullptr;
     }
+    if (decoded) raster->codes = decoded;
+    raster->slot_of_code.resize(std::size_t{1} << (8 * raster->code_bytes));
     return raster;
 }
 

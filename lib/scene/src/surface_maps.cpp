@@ -102,7 +102,9 @@ SurfaceMaps::SurfaceMaps(const model::Scene& scene) : m_maps(scene.maps) {
             map.kind == model::MapKind::texture ? map.bands.size() : map.slot_materials.size();
         const bool matches =
             map.kind == model::MapKind::material
-                ? raster.slots.size() == texels * raster.slot_bytes
+                ? raster.codes != nullptr && (raster.code_bytes == 1 || raster.code_bytes == 2) &&
+                      raster.code_stride >= raster.code_bytes &&
+                      raster.slot_of_code.size() == (std::size_t{1} << (8 * raster.code_bytes))
                 : raster.weights.size() == texels * raster.bands && raster.bands == bands;
         if (!matches) throw input_error(what + ": its raster does not match its image", map.where);
         std::vector<std::uint32_t> selected = map.slot_materials;
@@ -238,9 +240,8 @@ SurfaceMaps::Applied SurfaceMaps::apply(const MapPoint& point,
                 nearest_class(classes, raster.weights.data() + *at * raster.bands, raster.bands);
             continue;
         }
-        std::uint32_t slot = raster.slots[*at * raster.slot_bytes];
-        if (raster.slot_bytes == 2) slot |= std::uint32_t{raster.slots[*at * 2 + 1]} << 8;
-        out.material = map.slot_materials[slot];
+        const std::uint32_t slot = raster.slot(*at);
+        if (slot < map.slot_materials.size()) out.material = map.slot_materials[slot];
     }
     if (out.mixture_map == kNoMixture && m_temperature[out.material]) {
         out.temperature_k = temperature(*m_temperature[out.material], point);

@@ -11,7 +11,8 @@ mean reflectance over the image is the material's mean over its classes.
 Usage: check.py texture OUTPUT_FOLDER
 
 With `thermal`, checks a render of thermal.jsim (a temperature map): check.py thermal
-OUTPUT_FOLDER SAMPLES_PER_PIXEL"""
+OUTPUT_FOLDER SAMPLES_PER_PIXEL. With `uv`, a render of uv.jsim (a uv projector on a textured
+OBJ): check.py uv OUTPUT_FOLDER"""
 import sys
 from pathlib import Path
 
@@ -76,7 +77,24 @@ def thermal(out, samples):
     print(f"thermal ok: temperature within {error:.3f} K (sigma {sigma:.3f} K), radiance scale {k.mean():.4f}")
 
 
+def uv(out):
+    """uv.jsim: pixel (column c, line l) sees texel (column l // 2, line 3 − c // 2) of
+    maps/uv_classes.pgm (u runs south, v east; the projector flips its lines)."""
+    pgm = (HERE / "maps" / "uv_classes.pgm").read_bytes()
+    image = np.frombuffer(pgm[-12:], dtype=np.uint8).reshape(4, 3)
+    truth = np.fromfile(out / "truth.img", dtype="<f8").reshape(6, 8, 3)
+    ids = [s.strip() for s in header(out / "truth.img.hdr")["glint material ids"].strip("{}").split(",")]
+    material = np.array(ids)[truth[..., 0].astype(int)]
+    lines, cols = np.meshgrid(np.arange(6), np.arange(8), indexing="ij")
+    expected = np.vectorize(lambda dc: ID[dc])(image[3 - cols // 2, lines // 2])
+    assert (material == expected).all(), (material, expected)
+    print("uv ok")
+
+
 def main():
+    if sys.argv[1] == "uv":
+        uv(Path(sys.argv[2]))
+        return
     if sys.argv[1] == "thermal":
         thermal(Path(sys.argv[2]), int(sys.argv[3]))
         return

@@ -55,6 +55,15 @@ void write_envi(const std::filesystem::path& path, std::size_t width, std::size_
     write(path, bytes);
 }
 
+/// Every texel's slot, line by line.
+std::vector<std::uint32_t> slots(const model::MapRaster& raster) {
+    std::vector<std::uint32_t> out;
+    for (std::uint64_t t = 0; t < std::uint64_t{raster.width} * raster.height; ++t) {
+        out.push_back(raster.slot(t));
+    }
+    return out;
+}
+
 const char* kMat = R"(MATERIAL_ENTRY {
     ID = 1
     NAME = Terrain
@@ -129,8 +138,10 @@ TEST(MapReader, MaterialMapSlotsFromTheTable) {
     ASSERT_TRUE(map.raster);
     EXPECT_EQ(map.raster->width, 3u);
     EXPECT_EQ(map.raster->height, 2u);
-    EXPECT_EQ(map.raster->slot_bytes, 1u);
-    EXPECT_EQ(map.raster->slots, (std::vector<std::uint8_t>{0, 1, 0, 0, 1, 0}));
+    // A binary PGM is mapped as it is: its own counts, looked up per texel.
+    EXPECT_EQ(map.raster->code_bytes, 1u);
+    EXPECT_EQ(map.raster->code_stride, 1u);
+    EXPECT_EQ(slots(*map.raster), (std::vector<std::uint32_t>{0, 1, 0, 0, 1, 0}));
     EXPECT_EQ(map.image.resolved, dir.path() / "maps" / "classes.pgm");
     const model::MapProjector& p = map.projector;
     EXPECT_FALSE(p.uv);
@@ -160,7 +171,24 @@ TEST(MapReader, SixteenBitCountsAndUvProjector) {
     EXPECT_TRUE(scene.maps[0].projector.uv);
     EXPECT_EQ(scene.maps[0].projector.origin, model::MapOrigin::image);
     EXPECT_EQ(scene.maps[0].projector.extend_x, model::MapExtend::none);
-    EXPECT_EQ(scene.maps[0].raster->slots, (std::vector<std::uint8_t>{1, 0}));
+    EXPECT_EQ(scene.maps[0].raster->code_bytes, 2u);
+    EXPECT_EQ(slots(*scene.maps[0].raster), (std::vector<std::uint32_t>{1, 0}));
+}
+
+TEST(MapReader, ColourPnmIsMappedWithItsStrideAndAWarning) {
+    TempDir dir;
+    const auto scene_file = write_scene(dir, material_map("rgb.ppm", kTable));
+    // Two texels, R G B each: the first channel holds the counts.
+    write(dir.path() / "maps" / "rgb.ppm", std::string("P6\n2 1\n255\n") + char(20) + char(1) +
+                                               char(2) + char(10) + char(3) + char(4));
+    Diagnostics diagnostics;
+    const model::Scene scene = read_dirsig_scene(scene_file, {}, diagnostics);
+    ASSERT_FALSE(diagnostics.has_errors()) << test::diagnostics_text(diagnostics);
+    EXPECT_THAT(test::diagnostics_text(diagnostics),
+                HasSubstr("has 3 channels; the first holds the digital counts"));
+    ASSERT_EQ(scene.maps.size(), 1u);
+    EXPECT_EQ(scene.maps[0].raster->code_stride, 3u);
+    EXPECT_EQ(slots(*scene.maps[0].raster), (std::vector<std::uint32_t>{1, 0}));
 }
 
 TEST(MapReader, DisabledMapIsSkippedWithoutAWord) {

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -94,7 +95,13 @@ std::shared_ptr<model::MapRaster> class_raster(std::size_t width,
     auto raster = std::make_shared<model::MapRaster>();
     raster->width = width;
     raster->height = slots.size() / width;
-    raster->slots = slots;
+    // Codes are the slots themselves.
+    auto codes = std::shared_ptr<std::uint8_t>(new std::uint8_t[slots.size()],
+                                               std::default_delete<std::uint8_t[]>());
+    std::copy(slots.begin(), slots.end(), codes.get());
+    raster->codes = codes;
+    raster->slot_of_code.resize(256);
+    for (std::size_t c = 0; c < 256; ++c) raster->slot_of_code[c] = static_cast<std::uint16_t>(c);
     return raster;
 }
 
@@ -246,7 +253,7 @@ TEST(SurfaceMaps, TemperatureMapBilinearBetweenTexelCentres) {
 TEST(SurfaceMaps, RefusesARasterThatDoesNotMatch) {
     model::Scene scene = scene_with_materials(4);
     model::PropertyMap map = material_map(class_raster(4, {0, 1}), {});
-    std::const_pointer_cast<model::MapRaster>(map.raster)->height = 3;
+    std::const_pointer_cast<model::MapRaster>(map.raster)->slot_of_code.resize(10);
     scene.maps.push_back(map);
     const Error e = error_of([&] { SurfaceMaps maps(scene); });
     EXPECT_EQ(e.category(), ErrorCategory::input);

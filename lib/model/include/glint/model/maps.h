@@ -57,20 +57,33 @@ struct MapProjector {
     ErrorContext where;
 };
 
-/// A map image decoded into what its texels select: a class raster (one slot per texel,
-/// 1 or 2 bytes) or a weight raster (`bands` floats per texel). Line 0 is the file's top line.
+/// A map image as its texels select: a class raster (each texel's digital count, looked up
+/// in `slot_of_code`) or a weight raster (`bands` floats per texel). Line 0 is the file's top
+/// line.
 struct MapRaster {
     std::size_t width = 0;
     std::size_t height = 0;
-    /// Class rasters: the slot of each texel (into the map's `slot_materials`), 1 byte each
-    /// when the map has at most 256 slots, else 2 (little-endian).
-    std::vector<std::uint8_t> slots;
-    unsigned slot_bytes = 1;
+    /// Class rasters: each texel's code, `code_bytes` bytes (big-endian when 2) every
+    /// `code_stride` bytes, line after line — a binary PGM/PPM's own bytes, memory-mapped (only
+    /// the pages rays touch are read), or codes decoded from another format.
+    std::shared_ptr<const std::uint8_t> codes;
+    std::size_t code_bytes = 1;
+    std::size_t code_stride = 1;
+    /// Class rasters: the slot (into the map's `slot_materials`) of each code the image holds.
+    std::vector<std::uint16_t> slot_of_code;
     /// Weight rasters: width × height × bands weights, each texel's summing to 1 (or all 0:
     /// no material, the facet keeps its own); texture maps: each texel's z-score per band;
     /// temperature maps: each texel's temperature, K.
     std::vector<float> weights;
     std::size_t bands = 0;
+
+    /// A class raster's code at `texel` (width · line + column).
+    std::uint32_t code(std::uint64_t texel) const noexcept {
+        const std::uint8_t* p = codes.get() + texel * code_stride;
+        return code_bytes == 1 ? p[0] : (std::uint32_t{p[0]} << 8) | p[1];
+    }
+    /// A class raster's slot at `texel`.
+    std::uint32_t slot(std::uint64_t texel) const noexcept { return slot_of_code[code(texel)]; }
 };
 
 enum class MapKind { material, mixture, texture, temperature };
