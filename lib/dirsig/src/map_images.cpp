@@ -10,6 +10,7 @@
 #include <cmath>
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <map>
 #include <string>
 #include <system_error>
@@ -156,14 +157,18 @@ std::optional<LineSource> open_map_image(const model::PropertyMap& map, const mo
     const std::string label = map_label_text(map) + " image " + quote(image.text);
     try {
         LineSource source = open_lines(image.resolved);
-        const std::uint64_t texels = std::uint64_t{source.width} * source.height;
+        // Each side first: their product must not wrap.
+        const bool huge = source.width > kMaxMapTexels || source.height > kMaxMapTexels;
+        const std::uint64_t texels =
+            huge ? kMaxMapTexels + 1 : std::uint64_t{source.width} * source.height;
         if (texels == 0 || source.channels == 0) {
             diagnostics.error(map.where, label + " is empty");
             return std::nullopt;
         }
         if (texels > kMaxMapTexels) {
-            diagnostics.error(map.where, label + " has " + std::to_string(texels) +
-                                             " texels, more than " + std::to_string(kMaxMapTexels));
+            diagnostics.error(map.where, label + " is " + std::to_string(source.width) + " x " +
+                                             std::to_string(source.height) + " texels, more than " +
+                                             std::to_string(kMaxMapTexels));
             return std::nullopt;
         }
         return source;
@@ -339,9 +344,10 @@ std::optional<MapBrightness> read_brightness(const model::PropertyMap& map,
             source->read(y, line);
             for (std::size_t x = 0; x < source->width; ++x) {
                 const double v = line[x * source->channels];
-                if (!std::isfinite(v)) {
+                if (!(std::abs(v) <= std::numeric_limits<float>::max())) {
                     diagnostics.error(map.where, label + ": texel (" + std::to_string(x) + ", " +
-                                                     std::to_string(y) + ") is not finite");
+                                                     std::to_string(y) +
+                                                     ") is not a finite single-precision number");
                     return std::nullopt;
                 }
                 out.values[y * out.width + x] = static_cast<float>(v);

@@ -183,13 +183,14 @@ void MatReader::read_temperature_map(const MatBlock& solver, const std::string& 
     raster->weights.resize(values->values.size());
     for (std::size_t t = 0; t < values->values.size(); ++t) {
         const double kelvin = gain * values->values[t] + bias + kCelsiusToKelvin;
-        if (!(kelvin > 0.0)) {
+        if (!(kelvin > 0.0) || !(kelvin < 1e6)) {
             diagnostics.error(at(image->line, path + "/IMAGE_FILENAME"),
                               "temperature map image " + quote(image->value) + ": texel (" +
                                   std::to_string(t % raster->width) + ", " +
                                   std::to_string(t / raster->width) + ") is " +
                                   format_shortest(kelvin - kCelsiusToKelvin) +
-                                  " degrees Celsius, below absolute zero");
+                                  (kelvin > 0.0 ? " degrees Celsius, above 10^6 K"
+                                                : " degrees Celsius, below absolute zero"));
             return;
         }
         raster->weights[t] = static_cast<float>(kelvin);

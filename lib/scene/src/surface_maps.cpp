@@ -11,6 +11,14 @@
 namespace glint::scene {
 namespace {
 
+/// `i` modulo `period`, as an index in [0, last]: rounding (|i| far beyond the period loses
+/// its fraction) can leave the remainder just outside, which the clamp takes back.
+std::size_t wrapped(double i, double period, std::size_t last) noexcept {
+    const double m = i - period * std::floor(i / period);
+    if (!(m > 0.0)) return 0;
+    return std::min(static_cast<std::size_t>(std::min(m, static_cast<double>(last))), last);
+}
+
 /// Texel index `i` of an axis `n` texels long under extend mode `mode`.
 std::optional<std::size_t> extend(double i, std::size_t n, model::MapExtend mode) noexcept {
     const double size = static_cast<double>(n);
@@ -21,14 +29,10 @@ std::optional<std::size_t> extend(double i, std::size_t n, model::MapExtend mode
             return std::nullopt;
         case model::MapExtend::clamp:
             return i < 0.0 ? 0 : n - 1;
-        case model::MapExtend::repeat: {
-            const double m = i - size * std::floor(i / size);
-            return std::min(static_cast<std::size_t>(m), n - 1);
-        }
+        case model::MapExtend::repeat:
+            return wrapped(i, size, n - 1);
         case model::MapExtend::mirror: {
-            const double period = 2.0 * size;
-            const auto m =
-                std::min(static_cast<std::size_t>(i - period * std::floor(i / period)), 2 * n - 1);
+            const std::size_t m = wrapped(i, 2.0 * size, 2 * n - 1);
             return m < n ? m : 2 * n - 1 - m;
         }
     }

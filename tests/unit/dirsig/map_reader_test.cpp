@@ -191,6 +191,18 @@ TEST(MapReader, ColourPnmIsMappedWithItsStrideAndAWarning) {
     EXPECT_EQ(slots(*scene.maps[0].raster), (std::vector<std::uint32_t>{1, 0}));
 }
 
+TEST(MapReader, AnImageTooLargeIsRefusedBeforeItIsRead) {
+    TempDir dir;
+    const auto scene_file = write_scene(dir, material_map("huge.pgm", kTable));
+    // Only the header: 10⁵ × 10⁵ texels is refused before any is read.
+    write(dir.path() / "maps" / "huge.pgm", "P5\n100000 100000\n255\n");
+    Diagnostics diagnostics;
+    const model::Scene scene = read_dirsig_scene(scene_file, {}, diagnostics);
+    EXPECT_THAT(only_error(diagnostics).message,
+                HasSubstr("image \"huge.pgm\" is 100000 x 100000 texels, more than 2147483648"));
+    EXPECT_TRUE(scene.maps.empty());
+}
+
 TEST(MapReader, DisabledMapIsSkippedWithoutAWord) {
     TempDir dir;
     // Its image does not exist, a texture map's band list is empty and a bump map's kind is

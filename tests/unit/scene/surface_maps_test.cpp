@@ -61,6 +61,9 @@ TEST(MapTexel, ExtendModesAlongAnAxisOfFour) {
     EXPECT_EQ(column(MapExtend::mirror, -0.5), 0u);
     EXPECT_EQ(column(MapExtend::mirror, -1.5), 1u);
     EXPECT_EQ(column(MapExtend::none, std::nan("")), std::nullopt);
+    // Far beyond the image (texture coordinates of 10³⁰): still a texel of the image.
+    EXPECT_LT(*column(MapExtend::repeat, -1e30), 4u);
+    EXPECT_LT(*column(MapExtend::mirror, 1e30), 4u);
     EXPECT_EQ(column(MapExtend::repeat, INFINITY), std::nullopt);
 }
 
