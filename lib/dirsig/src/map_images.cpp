@@ -37,6 +37,8 @@ struct LineSource {
     std::function<void(std::size_t, std::span<double>)> read;
     /// Bytes a code takes: 1 when the format's codes are below 256, else 2.
     std::size_t code_bytes = 1;
+    /// The largest code of an integer image (a PNM's maxval, the type's largest otherwise).
+    double max_code = 1.0;
     /// A binary PNM's: where its texels start in the file (big-endian codes, channels
     /// interleaved).
     std::optional<std::size_t> pnm_data_offset;
@@ -103,6 +105,7 @@ std::optional<LineSource> open_pnm(const std::filesystem::path& path) {
     source.type_name = fields[2] > 255 ? "uint16" : "uint8";
     const std::size_t sample_bytes = fields[2] > 255 ? 2 : 1;
     source.code_bytes = sample_bytes;
+    source.max_code = static_cast<double>(fields[2]);
     const std::streamoff data = file->tellg();
     source.pnm_data_offset = static_cast<std::size_t>(data);
     const std::size_t line_bytes = source.width * source.channels * sample_bytes;
@@ -134,6 +137,7 @@ LineSource open_lines(const std::filesystem::path& path) {
         source.channels = h.bands;
         source.integer = envi_integer(h.data_type);
         source.code_bytes = h.value_bytes() == 1 ? 1 : 2;
+        source.max_code = std::pow(2.0, 8.0 * static_cast<double>(h.value_bytes())) - 1.0;
         source.type_name =
             std::string("ENVI data type ") + std::to_string(static_cast<int>(h.data_type));
         source.read = [reader](std::size_t y, std::span<double> out) { reader->read_line(y, out); };
@@ -146,6 +150,7 @@ LineSource open_lines(const std::filesystem::path& path) {
     source.channels = info.channels;
     source.integer = io::sample_type_max(info.sample_type) > 1.0;
     source.code_bytes = io::sample_type_max(info.sample_type) > 255.0 ? 2 : 1;
+    source.max_code = io::sample_type_max(info.sample_type);
     source.type_name = io::sample_type_name(info.sample_type);
     source.read = [reader](std::size_t y, std::span<double> out) { reader->read_line(y, out); };
     return source;
@@ -335,6 +340,7 @@ std::optional<MapBrightness> read_brightness(const model::PropertyMap& map,
     }
     MapBrightness out;
     out.integer = source->integer;
+    out.max_code = source->max_code;
     out.width = source->width;
     out.height = source->height;
     out.values.resize(out.width * out.height);

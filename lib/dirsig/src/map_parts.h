@@ -47,6 +47,7 @@ struct MapBrightness {
     std::size_t height = 0;
     std::vector<float> values;
     bool integer = true;  ///< the file holds integer codes (not floating-point values)
+    double max_code = 1.0;  ///< an integer image's largest code (255, 65535, a PNM's maxval)
 };
 
 /// Reads a texture band's or a temperature map's image (any channels: the first; any type);
@@ -65,6 +66,13 @@ bool read_texture_bands(const io::XmlNode& map_node, const std::filesystem::path
 /// (appended to scene.materials, once per material however many maps cover it), with each
 /// class's z-score per band. False after an error.
 bool make_texture(model::PropertyMap& map, model::Scene& scene, Diagnostics& diagnostics);
+
+/// A `<bumpmap>`'s `<scale>` (read into `scale_m`): false after an error.
+bool read_bump_scale(const io::XmlNode& map_node, double& scale_m, Diagnostics& diagnostics);
+
+/// A bump map's raster: each texel's height, scale_m × its value (an integer image's counts
+/// over its largest code). False after an error.
+bool make_bump(model::PropertyMap& map, double scale_m, Diagnostics& diagnostics);
 
 /// The `<image><filename>` of `parent` (a map, or a texture map's band), resolved against
 /// `map_dir` into `image`; an error when it is missing or does not exist (false).

@@ -16,9 +16,9 @@ namespace glint::dirsig::detail {
 namespace {
 
 /// The kinds of DIRSIG map glint knows by name but does not apply.
-constexpr std::string_view kRefusedMaps[] = {"temperaturemap", "bumpmap",     "normalmap",
-                                             "reflectancemap", "radiancemap", "curvemap",
-                                             "rgbmap",         "decalmap",    "densitymap"};
+constexpr std::string_view kRefusedMaps[] = {"temperaturemap", "normalmap", "reflectancemap",
+                                             "radiancemap",    "curvemap",  "rgbmap",
+                                             "decalmap",       "densitymap"};
 
 /// A `<matid>`'s material, by id; an error at it when the scene has none.
 std::optional<std::uint32_t> material_of(const io::XmlNode& node, const model::Scene& scene,
@@ -260,13 +260,18 @@ bool read_placement(const io::XmlNode& node, const model::Scene& scene, model::P
 /// What a map of each kind holds besides its placement; false after an error.
 bool read_contents(const io::XmlNode& node, const std::filesystem::path& map_dir,
                    const ReadOptions& options, const model::Scene& scene, model::PropertyMap& map,
-                   bool& warned_mixture, Diagnostics& diagnostics) {
+                   bool& warned_mixture, double& bump_scale_m, Diagnostics& diagnostics) {
     switch (map.kind) {
         case model::MapKind::material:
             return read_dc_table(node, scene, map, diagnostics) &&
                    read_image_element(node, map_dir, options, map, map.image, diagnostics);
         case model::MapKind::texture:
             return read_texture_bands(node, map_dir, options, map, diagnostics);
+        case model::MapKind::bump:
+            return read_bump_scale(node, bump_scale_m, diagnostics) &&
+                   read_image_element(node, map_dir, options, map, map.image, diagnostics);
+        case model::MapKind::temperature:
+            return false;  // a .mat's, not a <maplist>'s
         case model::MapKind::mixture:
             break;
     }
@@ -284,8 +289,13 @@ bool read_contents(const io::XmlNode& node, const std::filesystem::path& map_dir
 }
 
 /// The map's image decoded (a texture map's bands, with its classes); false after an error.
-bool decode(model::PropertyMap& map, model::Scene& scene, Diagnostics& diagnostics) {
+bool decode(model::PropertyMap& map, double bump_scale_m, model::Scene& scene,
+            Diagnostics& diagnostics) {
     switch (map.kind) {
+        case model::MapKind::bump:
+            return make_bump(map, bump_scale_m, diagnostics);
+        case model::MapKind::temperature:
+            return false;
         case model::MapKind::material:
             map.raster = read_class_raster(map, diagnostics);
             break;
@@ -318,9 +328,11 @@ void read_property_maps(const io::XmlNode& root, const std::filesystem::path& ba
     if (!list) return;
     bool warned_drape = false;
     bool warned_mixture = false;
+    bool warned_bump = false;
     for (const io::XmlNode& node : list->children()) {
         const std::string& kind = node.name();
-        const bool known = kind == "materialmap" || kind == "mixturemap" || kind == "texturemap";
+        const bool known = kind == "materialmap" || kind == "mixturemap" || kind == "texturemap" ||
+                           kind == "bumpmap";
         const bool refused = std::find(std::begin(kRefusedMaps), std::end(kRefusedMaps), kind) !=
                              std::end(kRefusedMaps);
         if (!known && !refused) {
@@ -331,14 +343,15 @@ void read_property_maps(const io::XmlNode& root, const std::filesystem::path& ba
         model::PropertyMap map;
         map.kind = kind == "mixturemap"   ? model::MapKind::mixture
                    : kind == "texturemap" ? model::MapKind::texture
+                   : kind == "bumpmap"    ? model::MapKind::bump
                                           : model::MapKind::material;
         map.name = node.attribute("name").value_or("");
         map.where = node.where();
         if (refused) {
             diagnostics.error(node.where(),
                               "<" + kind + "> " + quote(map.name) +
-                                  " is not supported: glint applies material, mixture and "
-                                  "texture maps" +
+                                  " is not supported: glint applies material, mixture, "
+                                  "texture and bump maps" +
                                   (kind == "temperaturemap"
                                        ? ", and temperature maps given in the material's .mat "
                                          "entry (TEMP_SOLVER_NAME = Map)"
@@ -359,6 +372,19 @@ void read_property_maps(const io::XmlNode& root, const std::filesystem::path& ba
             case model::MapKind::texture:
                 node.warn_unknown_children({"matidlist", "projector", "bandlist"}, diagnostics);
                 break;
+            case model::MapKind::bump:
+                node.warn_unknown_children({"matidlist", "projector", "scale", "image"},
+                                           diagnostics);
+                if (!warned_bump) {
+                    diagnostics.warning(node.where(),
+                                        "<bumpmap> with <scale> (the height, m, of the image's "
+                                        "white) is glint's reading of DIRSIG's bump maps "
+                                        "(docs/maps.md)");
+                    warned_bump = true;
+                }
+                break;
+            case model::MapKind::temperature:
+                break;
         }
         if (map.kind == model::MapKind::material &&
             node.attribute_bool("mixing", diagnostics).value_or(false)) {
@@ -369,9 +395,12 @@ void read_property_maps(const io::XmlNode& root, const std::filesystem::path& ba
             continue;
         }
         bool ok = read_placement(node, scene, map, warned_drape, diagnostics);
-        ok = read_contents(node, map_dir, options, scene, map, warned_mixture, diagnostics) && ok;
+        double bump_scale_m = 0.0;
+        ok = read_contents(node, map_dir, options, scene, map, warned_mixture, bump_scale_m,
+                           diagnostics) &&
+             ok;
         if (!ok || !no_clear_panes(map, scene, diagnostics)) continue;
-        if (decode(map, scene, diagnostics)) scene.maps.push_back(std::move(map));
+        if (decode(map, bump_scale_m, scene, diagnostics)) scene.maps.push_back(std::move(map));
     }
 }
 

@@ -147,7 +147,7 @@ struct MatReader {
         return table;
     }
     /// The texture classes of the curve file read_curve read last (empty: one curve).
-    std::vector<model::SpectralTable> last_classes;
+    std::vector<model::SpectralTable> last_classes{};
 
     /// Reads `<PREFIX>_PROP { TXT_FILENAME | FILENAME }` of SURFACE_PROPERTIES (mat_surface.cpp).
     std::optional<model::SpectralTable> read_prop(const MatBlock& surface, const std::string& path,
@@ -173,8 +173,7 @@ struct MatReader {
     void read_null(const MatEntry& solver, const std::string& path, model::Material& m);
     /// `TEMP_SOLVER_NAME = Map`'s TEMP_SOLVER block: the image and its projector
     /// (mat_temperature.cpp); the map goes to m.temperature_map.
-    void read_temperature_map(const MatBlock& solver, const std::string& path,
-                              model::Material& m);
+    void read_temperature_map(const MatBlock& solver, const std::string& path, model::Material& m);
     /// Whether the once-per-file note on the temperature map's GAIN/BIAS reading was said.
     bool said_temperature_gain = false;
     /// An `OPTICAL_DESCRIPTION = SOURCE` material (mat_reader.cpp).

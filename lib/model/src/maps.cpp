@@ -18,6 +18,8 @@ const char* map_element_name(MapKind kind) {
             return "texturemap";
         case MapKind::temperature:
             return "temperature map";
+        case MapKind::bump:
+            return "bumpmap";
         case MapKind::material:
             break;
     }
@@ -80,6 +82,13 @@ std::string describe_map(const PropertyMap& map, const std::vector<Material>& ma
                 std::minmax_element(map.raster->weights.begin(), map.raster->weights.end());
             out += ", " + format_shortest(std::round(*lo * 100.0) / 100.0) + "-" +
                    format_shortest(std::round(*hi * 100.0) / 100.0) + " K";
+        }
+    } else if (map.kind == MapKind::bump) {
+        if (map.raster && !map.raster->weights.empty()) {
+            const auto [lo, hi] =
+                std::minmax_element(map.raster->weights.begin(), map.raster->weights.end());
+            out += ", heights " + format_shortest(std::round(*lo * 1e4) / 1e4) + "-" +
+                   format_shortest(std::round(*hi * 1e4) / 1e4) + " m";
         }
     } else if (map.kind == MapKind::texture) {
         std::size_t classes = 0;

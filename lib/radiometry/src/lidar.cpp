@@ -17,6 +17,7 @@
 #include "glint/radiometry/clear_sheets.h"
 #include "glint/radiometry/mixture_draw.h"
 #include "glint/radiometry/sampling.h"
+#include "glint/radiometry/shading_normal.h"
 
 namespace glint::radiometry {
 namespace {
@@ -142,7 +143,10 @@ void LidarTracer::trace(const SampleRay& ray, const LaserPulse& laser, RandomStr
         if (!m_materials.double_sided(m) && dot(hit->normal, direction) > 0.0) break;
         travelled_m += hit->distance_m;
         const Vec3 wo = -direction;
-        const Vec3 normal = dot(hit->normal, wo) < 0.0 ? -hit->normal : hit->normal;
+        const bool back_face = dot(hit->normal, wo) < 0.0;
+        const Vec3 geometric = back_face ? -hit->normal : hit->normal;
+        // A bump map's tilted normal: the BSDF's frame and cosines (shading_normal.h).
+        const Vec3 normal = shading_normal(*hit, geometric, back_face);
         const Bsdf& bsdf = m_materials.bsdf(m);
         const Frame frame = shading_frame(bsdf, normal);
         const Vec3 wo_local = frame.to_local(wo);
@@ -153,7 +157,7 @@ void LidarTracer::trace(const SampleRay& ray, const LaserPulse& laser, RandomStr
         // The laser by next-event estimation: one shadow ray.
         const Vec3 to_laser = laser.position_m - hit->position_m;
         const double r_m = norm(to_laser);
-        if (r_m > 0.0 && wo_local.z > 0.0) {
+        if (r_m > 0.0 && wo_local.z > 0.0 && same_side(geometric, normal, to_laser)) {
             const Vec3 wi = (1.0 / r_m) * to_laser;
             const double cos_i = dot(normal, wi);
             // In front: reflected (ρ · shape); behind a thin sheet: transmitted (τ/π).
@@ -203,6 +207,7 @@ void LidarTracer::trace(const SampleRay& ray, const LaserPulse& laser, RandomStr
             beta /= survive;
         }
         const Vec3 wi = normalized(frame.to_world(next));
+        if (!same_side(geometric, normal, wi)) break;  // into the bumps' facet
         hit = m_scene.intersect(m_scene.spawn_origin(*hit, wi), wi, time);
         ++rays;
         direction = wi;

@@ -11,6 +11,7 @@
 #include "glint/radiometry/clear_sheets.h"
 #include "glint/radiometry/mixture_draw.h"
 #include "glint/radiometry/sampling.h"
+#include "glint/radiometry/shading_normal.h"
 
 namespace glint::radiometry {
 namespace {
@@ -207,8 +208,8 @@ PathTracer::PathTracer(const scene::GeometryScene& scene, const MaterialTable& m
 
 template <typename Bands>
 void PathTracer::add_point_lights(const Bands& bands, const scene::RayHit& hit, const Vec3& normal,
-                                  const Vec3& wo_local, const Frame& frame, std::size_t material,
-                                  double time_s, std::span<const double> beta,
+                                  const Vec3& geometric, const Vec3& wo_local, const Frame& frame,
+                                  std::size_t material, double time_s, std::span<const double> beta,
                                   std::span<double> radiance, PathScratch& scratch) const {
     const double* rho = m_materials.reflectance(material).data();
     const double* tau = m_materials.transmittance(material).data();
@@ -223,6 +224,7 @@ void PathTracer::add_point_lights(const Bands& bands, const scene::RayHit& hit, 
         const double cos_i = dot(normal, wi);
         // In front: reflected; behind a thin sheet: transmitted (f = τ/π).
         if (cos_i > 0.0 ? !reflects : !(cos_i < 0.0 && transmits && !straight)) continue;
+        if (hit.bumped && !same_side(geometric, normal, wi)) continue;
         const Vec3 origin = m_scene.spawn_origin(hit, wi);
         ++scratch.rays;
         const double reach_m = norm(m_lights->position_m(l) - origin);
@@ -251,8 +253,8 @@ void PathTracer::add_point_lights(const Bands& bands, const scene::RayHit& hit, 
     }
 }
 
-FirstSun PathTracer::draw_sun(const scene::RayHit& hit, const Vec3& normal, double wo_z,
-                              double time_s, bool transmits, RandomStream& rng) const {
+FirstSun PathTracer::draw_sun(const scene::RayHit& hit, const Vec3& normal, const Vec3& geometric,
+                              double wo_z, double time_s, bool transmits, RandomStream& rng) const {
     const Environment& env = m_environment;
     const Vec3 sun = env.sun_direction(time_s);
     const Vec3 local =
@@ -260,7 +262,9 @@ FirstSun PathTracer::draw_sun(const scene::RayHit& hit, const Vec3& normal, doub
     FirstSun drawn;
     drawn.wi = Frame::from_normal(sun).to_world(local);
     drawn.cos_i = dot(normal, drawn.wi);
-    if ((drawn.cos_i > 0.0 || (transmits && drawn.cos_i < 0.0)) && wo_z > 0.0) {
+    // A bump map's normal may face the sun where the facet does not: the geometry shadows.
+    if ((drawn.cos_i > 0.0 || (transmits && drawn.cos_i < 0.0)) && wo_z > 0.0 &&
+        same_side(geometric, normal, drawn.wi)) {
         drawn.query = true;
         drawn.ray = scene::PacketRay{m_scene.spawn_origin(hit, drawn.wi), drawn.wi, time_s};
     }
@@ -279,9 +283,10 @@ FirstSun PathTracer::first_sun(const SampleRay& ray,
     const bool dark = back_face && !m_materials.double_sided(hit.material);
     if ((dark || !m_materials.scatters(hit.material)) && !records_first_hit) return {};
     const Vec3 normal = back_face ? -hit.normal : hit.normal;
-    const double wo_z = Frame::from_normal(normal).to_local(wo).z;
+    const Vec3 shading = shading_normal(hit, normal, back_face);
+    const double wo_z = Frame::from_normal(shading).to_local(wo).z;
     return draw_sun(
-        hit, normal, wo_z, ray.time_s,
+        hit, shading, normal, wo_z, ray.time_s,
         !dark && m_materials.transmits(hit.material) && !m_materials.straight(hit.material), rng);
 }
 
@@ -342,6 +347,8 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
         const Vec3 wo = -direction;
         const bool back_face = dot(hit->normal, wo) < 0.0;
         const Vec3 normal = back_face ? -hit->normal : hit->normal;
+        // A bump map's tilted normal: the BSDF's frame and cosines (shading_normal.h).
+        const Vec3 shading = shading_normal(*hit, normal, back_face);
         // The back face of a single-sided material is black: no light, and the path ends.
         const bool dark = back_face && !m_materials.double_sided(m);
         const bool reflects = !dark && m_materials.reflects(m);
@@ -357,7 +364,7 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
         const Bsdf& bsdf = m_materials.bsdf(m);
         // Emission and the sun by next-event estimation.
         double sun_factor = 0.0;
-        const Frame frame = shading_frame(bsdf, normal);
+        const Frame frame = shading_frame(bsdf, shading);
         const Vec3 wo_local = frame.to_local(wo);
         const double* emission =
             dark ? nullptr
@@ -400,7 +407,7 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
             if (bounce == 0 && sun != nullptr) {
                 take_sun(*sun);  // drawn, and its shadow ray answered, before the path
             } else {
-                FirstSun drawn = draw_sun(*hit, normal, wo_local.z, time, diffuses, rng);
+                FirstSun drawn = draw_sun(*hit, shading, normal, wo_local.z, time, diffuses, rng);
                 if (drawn.query) {
                     const scene::PacketRay& q = drawn.ray;
                     drawn.blocked = m_scene.occluded(q.origin_m, q.direction, q.time_s);
@@ -443,7 +450,7 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
                 std::fill(beta.begin(), beta.end(), 1.0);
                 beta_is_one = false;
             }
-            add_point_lights(bands, *hit, normal, wo_local, frame, m, time, beta, radiance,
+            add_point_lights(bands, *hit, shading, normal, wo_local, frame, m, time, beta, radiance,
                              scratch);
         }
 
@@ -459,6 +466,7 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
         const auto sample = bsdf.sample(wo_local, u_side, u_lobe, u1, u2);
         if (!sample || !(sample->weight > 0.0)) break;
         const Vec3 wi = normalized(frame.to_world(sample->wi));
+        if (hit->bumped && !same_side(normal, shading, wi)) break;  // into the bumps' facet
         const double weight = sample->weight;
         if (!(sample->delta && sample->side == ScatterSide::transmitted)) {
             disc_weight = sample->delta ? 1.0 : bsdf.glossy() ? sun_weight(*sample) : 0.0;

@@ -132,6 +132,9 @@ double row_norm(const detail::Mat3& m) noexcept {
     return out;
 }
 
+/// The |n_z| below which a facet is too steep for a drape's bump slope (about 87° tilt).
+constexpr double kBumpMinimumNz = 0.05;
+
 /// The property maps at `hit` (Embree's barycentrics u, v on its triangle).
 void apply_maps(const SurfaceMaps& maps, const detail::ObjectData& object, float u, float v,
                 RayHit& hit) noexcept {
@@ -148,6 +151,15 @@ void apply_maps(const SurfaceMaps& maps, const detail::ObjectData& object, float
     hit.mixture_map = applied.mixture_map;
     hit.mixture_texel = applied.mixture_texel;
     hit.temperature_k = applied.temperature_k;
+    // A bump map's slope tilts the normal as the height field z = h(x, y) tilts a level one:
+    // n' ∝ n − g_t, g = (∂h/∂x, ∂h/∂y, 0) less its part along n. A drape's slope means
+    // nothing on a near-vertical facet, which keeps its normal.
+    if (applied.bumped && std::abs(hit.normal.z) > kBumpMinimumNz) {
+        const Vec3 g{applied.slope_x, applied.slope_y, 0.0};
+        const Vec3 tilted = hit.normal - (g - dot(g, hit.normal) * hit.normal);
+        hit.bumped = true;
+        hit.shading_normal = normalized(tilted);
+    }
 }
 
 /// The hit Embree reported on the caller's ray origin_m + s · direction: Embree's instance,
@@ -205,6 +217,7 @@ void make_hit(const SceneImpl& impl, const Vec3& origin_m, const Vec3& direction
     hit.spawn_offset_m = kSpawnFloor_m + kSpawnRelative * (frame_size + 2.0 * triangle_size);
     hit.mixture_map = kNoMixture;
     hit.temperature_k = 0.0;
+    hit.bumped = false;
     if (impl.maps.maps_material(hit.material)) apply_maps(impl.maps, object, u, v, hit);
 }
 

@@ -102,8 +102,9 @@ SurfaceMaps::SurfaceMaps(const model::Scene& scene) : m_maps(scene.maps) {
         if (!map.raster) throw input_error(what + " has no image read", map.where);
         const model::MapRaster& raster = *map.raster;
         const std::uint64_t texels = std::uint64_t{raster.width} * raster.height;
-        const std::size_t bands =
-            map.kind == model::MapKind::texture ? map.bands.size() : map.slot_materials.size();
+        const std::size_t bands = map.kind == model::MapKind::texture ? map.bands.size()
+                                  : map.kind == model::MapKind::bump  ? 1
+                                                                      : map.slot_materials.size();
         const bool matches =
             map.kind == model::MapKind::material
                 ? raster.codes != nullptr && (raster.code_bytes == 1 || raster.code_bytes == 2) &&
@@ -184,11 +185,12 @@ std::optional<std::uint64_t> SurfaceMaps::texel(std::size_t k,
     return std::uint64_t{(*at)[1]} * raster.width + (*at)[0];
 }
 
-double SurfaceMaps::temperature(const model::PropertyMap& map, const MapPoint& point) noexcept {
+std::optional<double> SurfaceMaps::bilinear(const model::PropertyMap& map,
+                                            const MapPoint& point) noexcept {
     const model::MapRaster& raster = *map.raster;
     std::array<double, 2> st{};
     if (map.projector.uv) {
-        if (!point.uv) return 0.0;
+        if (!point.uv) return std::nullopt;
         st =
             uv_position(map.projector, raster.width, raster.height, (*point.uv)[0], (*point.uv)[1]);
     } else {
@@ -211,7 +213,24 @@ double SurfaceMaps::temperature(const model::PropertyMap& map, const MapPoint& p
     if (a && b && c && d) {
         return (1.0 - ft) * ((1.0 - fs) * *a + fs * *b) + ft * ((1.0 - fs) * *c + fs * *d);
     }
-    return value(st[0], st[1]).value_or(0.0);
+    return value(st[0], st[1]);
+}
+
+void SurfaceMaps::add_slope(const model::PropertyMap& map, const MapPoint& point,
+                            Applied& out) noexcept {
+    const double gx = map.projector.gsd_m[0];
+    const double gy = map.projector.gsd_m[1];
+    const auto at = [&](double dx, double dy) {
+        return bilinear(map, MapPoint{point.x_m + dx, point.y_m + dy, std::nullopt});
+    };
+    const auto east = at(0.5 * gx, 0.0);
+    const auto west = at(-0.5 * gx, 0.0);
+    const auto north = at(0.0, 0.5 * gy);
+    const auto south = at(0.0, -0.5 * gy);
+    if (!east || !west || !north || !south) return;
+    out.bumped = true;
+    out.slope_x += (*east - *west) / gx;
+    out.slope_y += (*north - *south) / gy;
 }
 
 SurfaceMaps::Applied SurfaceMaps::apply(const MapPoint& point,
@@ -228,6 +247,10 @@ SurfaceMaps::Applied SurfaceMaps::apply(const MapPoint& point,
         if (!at) continue;
         const model::PropertyMap& map = m_maps[k];
         const model::MapRaster& raster = *map.raster;
+        if (map.kind == model::MapKind::bump) {
+            add_slope(map, point, out);
+            continue;
+        }
         if (map.kind == model::MapKind::mixture) {
             const float* w = raster.weights.data() + *at * raster.bands;
             bool any = false;
@@ -248,7 +271,7 @@ SurfaceMaps::Applied SurfaceMaps::apply(const MapPoint& point,
         if (slot < map.slot_materials.size()) out.material = map.slot_materials[slot];
     }
     if (out.mixture_map == kNoMixture && m_temperature[out.material]) {
-        out.temperature_k = temperature(*m_temperature[out.material], point);
+        out.temperature_k = bilinear(*m_temperature[out.material], point).value_or(0.0);
     }
     return out;
 }

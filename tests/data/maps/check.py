@@ -12,7 +12,8 @@ Usage: check.py texture OUTPUT_FOLDER
 
 With `thermal`, checks a render of thermal.jsim (a temperature map): check.py thermal
 OUTPUT_FOLDER SAMPLES_PER_PIXEL. With `uv`, a render of uv.jsim (a uv projector on a textured
-OBJ): check.py uv OUTPUT_FOLDER"""
+OBJ): check.py uv OUTPUT_FOLDER. With `bump`, a render of bump.jsim (bump maps of constant
+slope): check.py bump OUTPUT_FOLDER"""
 import sys
 from pathlib import Path
 
@@ -91,7 +92,32 @@ def uv(out):
     print("uv ok")
 
 
+def bump(out):
+    """bump.jsim: eight grey Lambertian quads lit by the sun alone (black sky), six tilted by a
+    bump map of constant slope (sx, sy): L ∝ n'·s with n' ∝ (−sx, −sy, 1). The flat quads A
+    and H agree; B (0.3, 0) and C (0, 0.3) against A give the sun's s_x/s_z and s_y/s_z,
+    which predict D (0.3, 0.3) and E (−0.3, 0); of F (50, 0) and G (−50, 0), nearly upright,
+    the one whose normal faces away from the sun gets no sunlight (its geometry is lit)."""
+    f = np.fromfile(out / "frame.img", dtype="<f8").reshape(6, 8)
+    a, b, c, d = (f[:3, 2 * i:2 * i + 2].mean() for i in range(4))
+    e, f_, g, h = (f[3:, 2 * i:2 * i + 2].mean() for i in range(4))
+    k = 0.3
+    r = lambda quad, tilt: quad / a * np.sqrt(1 + tilt)
+    rb, rc, rd, re_ = r(b, k * k), r(c, k * k), r(d, 2 * k * k), r(e, k * k)
+    # Sun-disc sampling spreads a pixel by ~10^-4: 10^-3 relative.
+    assert abs(h / a - 1) < 1e-3, h / a
+    assert abs(rd - (rb + rc - 1)) < 1e-3, (rd, rb + rc - 1)
+    assert abs(re_ - (2 - rb)) < 1e-3, (re_, 2 - rb)
+    dark, lit = sorted((f_ / a, g / a))
+    assert dark < 1e-20 and lit > 0.05, (f_ / a, g / a)  # thermal emission only: ~1e-29
+    print(f"bump ok: D {rd:.5f} (predicted {rb + rc - 1:.5f}), E {re_:.5f} "
+          f"(predicted {2 - rb:.5f}), the steep quad facing away {dark:.1e}")
+
+
 def main():
+    if sys.argv[1] == "bump":
+        bump(Path(sys.argv[2]))
+        return
     if sys.argv[1] == "uv":
         uv(Path(sys.argv[2]))
         return

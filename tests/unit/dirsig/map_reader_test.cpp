@@ -203,14 +203,31 @@ TEST(MapReader, AnImageTooLargeIsRefusedBeforeItIsRead) {
     EXPECT_TRUE(scene.maps.empty());
 }
 
+TEST(MapReader, BumpMapHeightsFromCountsAndScale) {
+    TempDir dir;
+    const auto scene_file = write_scene(
+        dir, "<bumpmap name=\"B\"><matidlist><matid>1</matid></matidlist>" + std::string(kDrape) +
+                 "<scale>0.5</scale><image><filename>b.pgm</filename></image></bumpmap>\n");
+    write_pgm(dir.path() / "maps" / "b.pgm", 3, {0, 51, 255});
+    Diagnostics diagnostics;
+    const model::Scene scene = read_dirsig_scene(scene_file, {}, diagnostics);
+    ASSERT_FALSE(diagnostics.has_errors()) << test::diagnostics_text(diagnostics);
+    // Two warnings: the drape's and the bump map's element names are glint's reading.
+    EXPECT_EQ(diagnostics.warning_count(), 2u) << test::diagnostics_text(diagnostics);
+    ASSERT_EQ(scene.maps.size(), 1u);
+    EXPECT_EQ(scene.maps[0].kind, model::MapKind::bump);
+    // Heights: scale × count / 255.
+    EXPECT_EQ(scene.maps[0].raster->weights, (std::vector<float>{0.0f, 0.1f, 0.5f}));
+}
+
 TEST(MapReader, DisabledMapIsSkippedWithoutAWord) {
     TempDir dir;
-    // Its image does not exist, a texture map's band list is empty and a bump map's kind is
-    // refused when enabled: none is looked at.
+    // Its image does not exist, a texture map's band list is empty and a normal map's kind
+    // is refused when enabled: none is looked at.
     const auto scene_file =
         write_scene(dir, material_map("missing.pgm", kTable, "enabled=\"false\"") +
                              "<texturemap name=\"T\" enabled=\"false\"><bandlist/></texturemap>\n"
-                             "<bumpmap name=\"B\" enabled=\"false\"/>\n");
+                             "<normalmap name=\"B\" enabled=\"false\"/>\n");
     Diagnostics diagnostics;
     const model::Scene scene = read_dirsig_scene(scene_file, {}, diagnostics);
     EXPECT_TRUE(diagnostics.items().empty()) << test::diagnostics_text(diagnostics);
@@ -367,9 +384,18 @@ INSTANTIATE_TEST_SUITE_P(
         BadMap{"no gsd",
                material_map("classes.pgm", kTable, "", "<projector><drapeprojector/></projector>"),
                "10", "missing required element <gsd>"},
-        BadMap{"bump map", "<bumpmap name=\"Bumps\" enabled=\"true\"/>\n", "",
-               "<bumpmap> \"Bumps\" is not supported"},
+        BadMap{"normal map", "<normalmap name=\"Normals\" enabled=\"true\"/>\n", "",
+               "<normalmap> \"Normals\" is not supported"},
         BadMap{"empty band list", texture_map("T", {}), "", "<bandlist> has no <band>"},
+        BadMap{"bump through uv",
+               "<bumpmap name=\"B\"><matidlist><matid>1</matid></matidlist>" + kMixtureProjector +
+                   "<scale>0.1</scale><image><filename>classes.pgm</filename></image>"
+                   "</bumpmap>\n",
+               "10", "a bump map through texture coordinates is not supported"},
+        BadMap{"bump without scale",
+               "<bumpmap name=\"B\"><matidlist><matid>1</matid></matidlist>" + kMixtureProjector +
+                   "<image><filename>classes.pgm</filename></image></bumpmap>\n",
+               "10", "missing required element <scale>"},
         BadMap{"band sizes differ", texture_map("T", {"classes.pgm", "other.pgm"}), "10 20",
                "band image \"other.pgm\" is 1 x 1, the first band's 2 x 1"},
         BadMap{"mixture bands",
@@ -378,8 +404,8 @@ INSTANTIATE_TEST_SUITE_P(
                    "<bandmaterials><matid>11</matid><matid>12</matid></bandmaterials>"
                    "<image><filename>classes.pgm</filename></image></mixturemap>\n",
                "10 20", "has 1 band but 2 materials are listed"}),
-    [](const ::testing::TestParamInfo<BadMap>& info) {
-        std::string name = info.param.name;
+    [](const ::testing::TestParamInfo<BadMap>& case_info) {
+        std::string name = case_info.param.name;
         for (char& c : name) {
             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
         }

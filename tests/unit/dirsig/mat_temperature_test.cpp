@@ -132,8 +132,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadSolver{"below absolute zero",
                   "        IMAGE_FILENAME = counts.pgm\n        GAIN = -2\n" + kDrape,
                   "texel (2, 0) is -400 degrees Celsius, below absolute zero"}),
-    [](const ::testing::TestParamInfo<BadSolver>& info) {
-        std::string name = info.param.name;
+    [](const ::testing::TestParamInfo<BadSolver>& case_info) {
+        std::string name = case_info.param.name;
         for (char& c : name) {
             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
         }

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -251,6 +252,39 @@ TEST(SurfaceMaps, TemperatureMapBilinearBetweenTexelCentres) {
     EXPECT_EQ(built.intersect({2.5, 1.0, 5.0}, kDown, 0.0)->temperature_k, 0.0);
     // The material stays: a temperature map changes only the temperature.
     EXPECT_EQ(built.intersect({1.0, 1.0, 5.0}, kDown, 0.0)->material, 0u);
+}
+
+TEST(SurfaceMaps, BumpMapTiltsTheShadingNormalByItsSlope) {
+    model::Scene scene = scene_with_materials(2);
+    add_static(scene, add_object(scene, ground_plane_mesh(100.0, 0), "plate"));
+    // Heights 0.2 x + 0.1 y on 3 x 3 texels of 2 m from (-3, -3) (cartesian): a plane.
+    auto raster = std::make_shared<model::MapRaster>();
+    raster->width = 3;
+    raster->height = 3;
+    raster->bands = 1;
+    for (int line = 0; line < 3; ++line) {
+        for (int col = 0; col < 3; ++col) {
+            const double x = -2.0 + 2.0 * col;
+            const double y = 2.0 - 2.0 * line;  // line 0 is the top (north) line
+            raster->weights.push_back(static_cast<float>(0.2 * x + 0.1 * y));
+        }
+    }
+    model::PropertyMap map;
+    map.kind = model::MapKind::bump;
+    map.name = "bumps";
+    map.applies_to = {0};
+    map.projector.insert_point_m = {-3.0, -3.0};
+    map.projector.gsd_m = {2.0, 2.0};
+    map.raster = raster;
+    scene.maps.push_back(map);
+    const GeometryScene built = build(scene);
+    const auto hit = built.intersect({0.3, -0.4, 5.0}, kDown, 0.0);
+    ASSERT_TRUE(hit->bumped);
+    const double norm = std::sqrt(0.2 * 0.2 + 0.1 * 0.1 + 1.0);
+    expect_vec_near(hit->shading_normal, {-0.2 / norm, -0.1 / norm, 1.0 / norm}, 1e-6);
+    expect_vec_near(hit->normal, {0.0, 0.0, 1.0}, kNormalTol);  // the geometry's is kept
+    // Where a central difference leaves the image: no bump.
+    EXPECT_FALSE(built.intersect({2.8, 0.0, 5.0}, kDown, 0.0)->bumped);
 }
 
 TEST(SurfaceMaps, RefusesARasterThatDoesNotMatch) {

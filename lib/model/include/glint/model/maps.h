@@ -10,7 +10,9 @@
 //     per material, the texture class (a curve of its multi-curve `.ems`) whose brightness
 //     there matches best (DIRSIG's statistical texture);
 //   - a temperature map (a material's `TEMP_SOLVER_NAME = Map` in its `.mat`): the surface's
-//     temperature, interpolated between texel centres, in place of the material's.
+//     temperature, interpolated between texel centres, in place of the material's;
+//   - a bump map: a height field whose slope tilts the shading normal (the geometry, and so
+//     every shadow, stays the facets').
 // Plain data: the readers fill it (images decoded into compact rasters), the scene component
 // evaluates it per hit.
 #pragma once
@@ -73,7 +75,7 @@ struct MapRaster {
     std::vector<std::uint16_t> slot_of_code;
     /// Weight rasters: width × height × bands weights, each texel's summing to 1 (or all 0:
     /// no material, the facet keeps its own); texture maps: each texel's z-score per band;
-    /// temperature maps: each texel's temperature, K.
+    /// temperature maps: each texel's temperature, K; bump maps: each texel's height, m.
     std::vector<float> weights;
     std::size_t bands = 0;
 
@@ -86,7 +88,7 @@ struct MapRaster {
     std::uint32_t slot(std::uint64_t texel) const noexcept { return slot_of_code[code(texel)]; }
 };
 
-enum class MapKind { material, mixture, texture, temperature };
+enum class MapKind { material, mixture, texture, temperature, bump };
 
 /// One `<band>` of a texture map: a spectral window and the image of the scene's relative
 /// brightness in it.

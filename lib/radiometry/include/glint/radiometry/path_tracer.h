@@ -190,16 +190,17 @@ private:
                     const std::optional<scene::RayHit>* primary_hit, const FirstSun* sun) const;
     /// The sun's direction drawn at a vertex (two draws) and, when it lights the surface from
     /// the side the path came from (or from behind, through a material that `transmits`), the
-    /// shadow ray to ask.
-    FirstSun draw_sun(const scene::RayHit& hit, const Vec3& normal, double wo_z, double time_s,
-                      bool transmits, RandomStream& rng) const;
+    /// shadow ray to ask. `normal`: the shading normal (a bump map's), `geometric`: the
+    /// facet's, both facing the path; the sun must lie on the same side of both.
+    FirstSun draw_sun(const scene::RayHit& hit, const Vec3& normal, const Vec3& geometric,
+                      double wo_z, double time_s, bool transmits, RandomStream& rng) const;
     /// Adds the point sources' light reflected (or, from behind a thin sheet, transmitted) at
-    /// a vertex (next-event estimation).
+    /// a vertex (next-event estimation); `normal` the shading normal, `geometric` the facet's.
     template <typename Bands>
     void add_point_lights(const Bands& bands, const scene::RayHit& hit, const Vec3& normal,
-                          const Vec3& wo_local, const Frame& frame, std::size_t material,
-                          double time_s, std::span<const double> beta, std::span<double> radiance,
-                          PathScratch& scratch) const;
+                          const Vec3& geometric, const Vec3& wo_local, const Frame& frame,
+                          std::size_t material, double time_s, std::span<const double> beta,
+                          std::span<double> radiance, PathScratch& scratch) const;
 };
 
 }  // namespace glint::radiometry

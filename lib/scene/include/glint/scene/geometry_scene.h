@@ -119,6 +119,10 @@ struct RayHit {
     std::uint64_t mixture_texel = 0;
     /// A temperature map's value at the hit, K; 0: the material's own temperature.
     double temperature_k = 0.0;
+    /// A bump map tilts the shading normal: `shading_normal` (unit, on the side of `normal`)
+    /// is the one the surface's BSDF uses; `normal` stays the geometry's. Unset otherwise.
+    bool bumped = false;
+    Vec3 shading_normal;
 };
 
 /// Rays traced together by GeometryScene's packet queries.

@@ -3,7 +3,8 @@
 // under the hit (nearest texel: the maps hold classes and per-texel mixes), and the maps
 // that apply to the hit's material change it — a material map to the texel's material, a
 // texture map to the texture class nearest the texel's brightness, a mixture map to the
-// texel's mix of materials, which the radiometry samples.
+// texel's mix of materials, which the radiometry samples; a temperature map gives the hit a
+// temperature, a bump map a slope that tilts its shading normal.
 //
 // Maps apply in the scene's order: a material map's result can be mapped again by a later
 // map (DIRSIG chains a land-cover map and the maps of its classes); a mixture ends the chain.
@@ -80,6 +81,10 @@ public:
         std::uint32_t mixture_map = kNoMixture;  ///< a mixture's map, else kNoMixture
         std::uint64_t mixture_texel = 0;
         double temperature_k = 0.0;  ///< a temperature map's value, else 0 (the material's)
+        /// Bump maps: the height field's slope (∂h/∂x, ∂h/∂y, m/m) at the point.
+        bool bumped = false;
+        double slope_x = 0.0;
+        double slope_y = 0.0;
     };
 
     /// Applies the maps to a hit on material `material` at `point`.
@@ -92,9 +97,14 @@ private:
     static constexpr std::uint32_t kNone = 0xffffffffu;
     /// The texel under `point` of map `k`, as width · line + column.
     std::optional<std::uint64_t> texel(std::size_t k, const MapPoint& point) const noexcept;
-    /// A temperature map's value at `point`, bilinear between texel centres (the nearest
-    /// texel where a neighbour is off the image); 0 off the image.
-    static double temperature(const model::PropertyMap& map, const MapPoint& point) noexcept;
+    /// A one-band map's value at `point`, bilinear between texel centres (the nearest texel
+    /// where a neighbour is off the image); nullopt off the image.
+    static std::optional<double> bilinear(const model::PropertyMap& map,
+                                          const MapPoint& point) noexcept;
+    /// A bump map's slope at `point` (central differences of the bilinear heights over one
+    /// texel), added to `out`; nothing off the image.
+    static void add_slope(const model::PropertyMap& map, const MapPoint& point,
+                          Applied& out) noexcept;
 
     std::vector<model::PropertyMap> m_maps;
     /// Per material, per map (material-major): 0 when the map does not apply, else 1 + the
