@@ -91,6 +91,22 @@ std::array<double, 2> uv_position(const model::MapProjector&, std::size_t width,
     return {u * static_cast<double>(width), v * static_cast<double>(height)};
 }
 
+namespace {
+
+/// (s, t) of `point` on `map`'s image by its projector; nullopt for a uv map at a point
+/// without texture coordinates.
+std::optional<std::array<double, 2>> map_position(const model::PropertyMap& map,
+                                                  const MapPoint& point) noexcept {
+    const model::MapRaster& raster = *map.raster;
+    if (!map.projector.uv) {
+        return drape_position(map.projector, raster.width, raster.height, point.x_m, point.y_m);
+    }
+    if (!point.uv) return std::nullopt;
+    return uv_position(map.projector, raster.width, raster.height, (*point.uv)[0], (*point.uv)[1]);
+}
+
+}  // namespace
+
 SurfaceMaps::SurfaceMaps(const model::Scene& scene) : m_maps(scene.maps) {
     const std::size_t materials = scene.materials.size();
     m_applies.assign(materials * m_maps.size(), 0);
@@ -172,14 +188,9 @@ std::optional<std::uint64_t> SurfaceMaps::texel(std::size_t k,
                                                 const MapPoint& point) const noexcept {
     const model::PropertyMap& map = m_maps[k];
     const model::MapRaster& raster = *map.raster;
-    std::array<double, 2> st{};
-    if (map.projector.uv) {
-        if (!point.uv) return std::nullopt;
-        st =
-            uv_position(map.projector, raster.width, raster.height, (*point.uv)[0], (*point.uv)[1]);
-    } else {
-        st = drape_position(map.projector, raster.width, raster.height, point.x_m, point.y_m);
-    }
+    const auto position = map_position(map, point);
+    if (!position) return std::nullopt;
+    const std::array<double, 2>& st = *position;
     const auto at = map_texel(map.projector, raster.width, raster.height, st[0], st[1]);
     if (!at) return std::nullopt;
     return std::uint64_t{(*at)[1]} * raster.width + (*at)[0];
@@ -188,14 +199,9 @@ std::optional<std::uint64_t> SurfaceMaps::texel(std::size_t k,
 std::optional<double> SurfaceMaps::bilinear(const model::PropertyMap& map,
                                             const MapPoint& point) noexcept {
     const model::MapRaster& raster = *map.raster;
-    std::array<double, 2> st{};
-    if (map.projector.uv) {
-        if (!point.uv) return std::nullopt;
-        st =
-            uv_position(map.projector, raster.width, raster.height, (*point.uv)[0], (*point.uv)[1]);
-    } else {
-        st = drape_position(map.projector, raster.width, raster.height, point.x_m, point.y_m);
-    }
+    const auto position = map_position(map, point);
+    if (!position) return std::nullopt;
+    const std::array<double, 2>& st = *position;
     const auto value = [&](double s, double t) -> std::optional<double> {
         const auto at = map_texel(map.projector, raster.width, raster.height, s, t);
         if (!at) return std::nullopt;
