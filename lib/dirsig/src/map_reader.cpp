@@ -308,6 +308,33 @@ bool decode(model::PropertyMap& map, double bump_scale_m, model::Scene& scene,
     return map.raster != nullptr;
 }
 
+/// A mixture's material is drawn per path after the maps have been applied, so no map (nor
+/// a .mat temperature map) can apply to it: an error at the mixture map for each one that
+/// would.
+void refuse_mapped_mixtures(const model::Scene& scene, Diagnostics& diagnostics) {
+    for (const model::PropertyMap& mixture : scene.maps) {
+        if (mixture.kind != model::MapKind::mixture) continue;
+        for (const std::uint32_t m : mixture.slot_materials) {
+            const model::Material& material = scene.materials[m];
+            std::string by;
+            for (const model::PropertyMap& other : scene.maps) {
+                const auto& covered = other.applies_to;
+                if (std::find(covered.begin(), covered.end(), m) != covered.end()) {
+                    by = map_label_text(other);
+                    break;
+                }
+            }
+            if (by.empty() && material.temperature_map) by = "its temperature map";
+            if (by.empty()) continue;
+            diagnostics.error(mixture.where,
+                              map_label_text(mixture) + ": material " + quote(material.id) +
+                                  " is covered by " + by +
+                                  ", which cannot apply to a mixture's material (drawn per "
+                                  "path after the maps)");
+        }
+    }
+}
+
 }  // namespace
 
 void read_property_maps(const io::XmlNode& root, const std::filesystem::path& base_dir,
@@ -402,6 +429,7 @@ void read_property_maps(const io::XmlNode& root, const std::filesystem::path& ba
         if (!ok || !no_clear_panes(map, scene, diagnostics)) continue;
         if (decode(map, bump_scale_m, scene, diagnostics)) scene.maps.push_back(std::move(map));
     }
+    refuse_mapped_mixtures(scene, diagnostics);
 }
 
 }  // namespace glint::dirsig::detail

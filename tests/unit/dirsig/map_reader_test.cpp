@@ -321,6 +321,29 @@ TEST(MapReader, TextureMapClassesAndZScores) {
     EXPECT_EQ(scene.maps[1].texture_classes[0].z.size(), 6u);
 }
 
+TEST(MapReader, AMixturesMaterialCannotBeMappedAgain) {
+    TempDir dir;
+    const std::string mixture =
+        "<mixturemap name=\"Mix\"><matidlist><matid>1</matid></matidlist>"
+        "<projector><uvprojector/></projector>"
+        "<bandmaterials><matid>11</matid><matid>12</matid></bandmaterials>"
+        "<image><filename>mix.img</filename></image></mixturemap>\n";
+    const std::string bumps = "<bumpmap name=\"Bumps\"><matidlist><matid>12</matid></matidlist>" +
+                              std::string(kDrape) +
+                              "<scale>0.1</scale><image><filename>b.pgm</filename></image>"
+                              "</bumpmap>\n";
+    const auto scene_file = write_scene(dir, mixture + bumps);
+    write_envi(dir.path() / "maps" / "mix.img", 1, 1, 2, {0.5f, 0.5f});
+    write_pgm(dir.path() / "maps" / "b.pgm", 1, {0});
+    Diagnostics diagnostics;
+    read_dirsig_scene(scene_file, {}, diagnostics);
+    const Diagnostic error = only_error(diagnostics);
+    EXPECT_EQ(error.message,
+              "<mixturemap> \"Mix\": material \"12\" is covered by <bumpmap> \"Bumps\", which "
+              "cannot apply to a mixture's material (drawn per path after the maps)");
+    EXPECT_EQ(error.where.line, 6);
+}
+
 struct BadMap {
     const char* name;
     std::string maps;
