@@ -98,8 +98,16 @@ std::string describe(const model::Scene& scene) {
            (scene.maps.empty() ? "" : ", " + plural(scene.maps.size(), "property map"));
 }
 
+/// `value` to 4 significant digits (the columns a profile computes carry more).
+std::string four_digits(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", value);
+    return text;
+}
+
 /// "parametric, aerosol optical depth 0.1 at 0.55 um, gases (water 2.924 cm, ozone 0.332
-/// atm-cm), multiple scattering over ground albedo 0.2" and the like.
+/// atm-cm), multiple scattering over ground albedo 0.2, air us_standard_1976 at 288.15 K" and
+/// the like.
 std::string describe(const model::Atmosphere& atmosphere) {
     const std::string kind = model::to_string(atmosphere.kind);
     switch (atmosphere.kind) {
@@ -109,14 +117,15 @@ std::string describe(const model::Atmosphere& atmosphere) {
             const model::ParametricAtmosphere& p = atmosphere.parametric;
             return kind + ", aerosol optical depth " +
                    format_shortest(p.aerosol_optical_depth_550) + " at 0.55 um, " +
-                   (p.gas_absorption
-                        ? "gases (water " + format_shortest(p.water_vapor_cm) + " cm, ozone " +
-                              format_shortest(p.ozone_atm_cm) + " atm-cm)"
-                        : std::string("no gas absorption")) +
+                   (p.gas_absorption ? "gases (water " + four_digits(p.water_vapor_cm) +
+                                           " cm, ozone " + four_digits(p.ozone_atm_cm) + " atm-cm)"
+                                     : std::string("no gas absorption")) +
                    ", " +
                    (p.multiple_scattering ? "multiple scattering over ground albedo " +
                                                 format_shortest(p.ground_albedo)
-                                          : std::string("single scattering"));
+                                          : std::string("single scattering")) +
+                   ", air " + model::standard_atmosphere(p.profile).name + " at " +
+                   format_shortest(p.air_temperature_k) + " K";
         }
         case model::AtmosphereKind::tabulated: {
             const std::vector<double>& w = atmosphere.tabulated.wavelengths_um;

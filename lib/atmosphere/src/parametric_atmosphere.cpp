@@ -2,10 +2,9 @@
 // The parametric atmosphere of glint/atmosphere/atmosphere.h: Rayleigh + aerosol with
 // exponential scale heights, Beer–Lambert paths with the Kasten–Young air mass, the single-
 // scatter path radiance integrated over altitude layers, the Bird–Hulstrom or multiply
-// scattered sky (parametric_scattering.cpp), the Brutsaert thermal sky and the gas band
-// model on every path. Formulas: docs/physics.md ("Parametric model").
-#include "glint/atmosphere/atmosphere.h"
-
+// scattered sky (parametric_scattering.cpp) and the gas band model on every path; the air's
+// emission and the thermal sky are in air_emission.cpp. Formulas: docs/physics.md ("Parametric
+// model").
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -15,6 +14,7 @@
 #include <utility>
 
 #include "atmosphere_detail.h"
+#include "glint/atmosphere/atmosphere.h"
 #include "glint/core/error.h"
 #include "parametric_scattering.h"
 
@@ -109,11 +109,10 @@ GasAmounts ParametricAtmosphereModel::gas_amounts_above(double altitude_m) const
     const double z = std::max(altitude_m, 0.0);
     const double ozone_share =
         std::clamp((kOzoneTopM - z) / (kOzoneTopM - kOzoneBottomM), 0.0, 1.0);
-    return GasAmounts{
-        m_parameters.water_vapor_cm * std::exp(-z / kWaterScaleHeightM),
-        m_parameters.ozone_atm_cm * ozone_share,
-        m_parameters.sea_level_pressure_hpa / kStandardPressureHpa *
-            std::exp(-z / m_parameters.rayleigh_scale_height_m)};
+    return GasAmounts{m_parameters.water_vapor_cm * std::exp(-z / kWaterScaleHeightM),
+                      m_parameters.ozone_atm_cm * ozone_share,
+                      m_parameters.sea_level_pressure_hpa / kStandardPressureHpa *
+                          std::exp(-z / m_parameters.rayleigh_scale_height_m)};
 }
 
 std::shared_ptr<const GasTransmittance> ParametricAtmosphereModel::gases_on(
@@ -126,8 +125,8 @@ std::shared_ptr<const GasTransmittance> ParametricAtmosphereModel::gases_on(
     return slot;
 }
 
-std::vector<double> ParametricAtmosphereModel::gas_transmittance(
-    const SpectralGrid& grid, const GasAmounts& amounts) const {
+std::vector<double> ParametricAtmosphereModel::gas_transmittance(const SpectralGrid& grid,
+                                                                 const GasAmounts& amounts) const {
     const auto gases = gases_on(grid);
     if (!gases) return filled(grid, 1.0);
     return gases->transmittance(amounts);
@@ -149,9 +148,8 @@ double ParametricAtmosphereModel::sky_emissivity(double altitude_m) const noexce
     const double t = m_parameters.air_temperature_k;
     if (t <= 0.0 || altitude_m >= kTopOfAtmosphereM) return 0.0;
     // The vapour pressure falls with the water column above: e · e^(−z/H_w) (sea level 0).
-    const double vapour_hpa =
-        m_parameters.water_vapor_pressure_hpa * std::exp(-std::max(altitude_m, 0.0) /
-                                                         kWaterScaleHeightM);
+    const double vapour_hpa = m_parameters.water_vapor_pressure_hpa *
+                              std::exp(-std::max(altitude_m, 0.0) / kWaterScaleHeightM);
     return std::clamp(1.24 * std::pow(vapour_hpa / t, 1.0 / 7.0), 0.0, 1.0);
 }
 
@@ -225,7 +223,6 @@ std::vector<std::vector<double>> ParametricAtmosphereModel::path_radiance_at_azi
         p_aerosol.push_back(henyey_greenstein(g, cos_scatter));
     }
     const double omega = m_parameters.aerosol_single_scatter_albedo;
-    const double temperature_k = m_parameters.air_temperature_k;
     // τ(λ, z) = τ_R(λ)·e^(−z/H_R) + τ_A(λ)·e^(−z/H_A): the altitude factors of every layer
     // boundary and midpoint are computed once, the spectral ones once per band, and each
     // optical depth is their product, computed exactly as rayleigh_optical_depth and
@@ -238,83 +235,85 @@ std::vector<std::vector<double>> ParametricAtmosphereModel::path_radiance_at_azi
         return Level{std::exp(-z / m_parameters.rayleigh_scale_height_m),
                      std::exp(-z / m_parameters.aerosol_scale_height_m)};
     };
-    const std::size_t layers = static_cast<std::size_t>(kPathLayers);
-    std::vector<Level> bounds(layers + 1);  // z_0 = z0 … z_K = z1
-    std::vector<Level> middles(layers);
-    {
-        double za = z0;
-        bounds[0] = level(za);
-        for (int k = 1; k <= kPathLayers; ++k) {
-            const double f = static_cast<double>(k) / kPathLayers;
-            const double zb = z0 + (z1 - z0) * f * f;
-            bounds[static_cast<std::size_t>(k)] = level(zb);
-            middles[static_cast<std::size_t>(k - 1)] = level(0.5 * (za + zb));
-            za = zb;
+    // Sunlight scattered once into the path (none with the sun down).
+    if (sunlit) {
+        const std::size_t layers = static_cast<std::size_t>(kPathLayers);
+        std::vector<Level> bounds(layers + 1);  // z_0 = z0 … z_K = z1
+        std::vector<Level> middles(layers);
+        {
+            double za = z0;
+            bounds[0] = level(za);
+            for (int k = 1; k <= kPathLayers; ++k) {
+                const double f = static_cast<double>(k) / kPathLayers;
+                const double zb = z0 + (z1 - z0) * f * f;
+                bounds[static_cast<std::size_t>(k)] = level(zb);
+                middles[static_cast<std::size_t>(k - 1)] = level(0.5 * (za + zb));
+                za = zb;
+            }
         }
-    }
-    const Level top = level(z1);
-    // ln of the gas transmittances of each layer's midpoint from the sun and to the sensor,
-    // per band ([layer][band]); none without gas absorption.
-    const std::shared_ptr<const GasTransmittance> gases = gases_on(grid);
-    std::vector<double> gas_sun;
-    std::vector<double> gas_view;
-    if (gases) {
-        const std::size_t n = grid.size();
-        gas_sun.assign(layers * n, 0.0);
-        gas_view.assign(layers * n, 0.0);
-        const GasAmounts at_sensor = gas_amounts_above(z1);
-        double za = z0;
-        for (std::size_t k = 0; k < layers; ++k) {
-            const double f = static_cast<double>(k + 1) / kPathLayers;
-            const double zb = z0 + (z1 - z0) * f * f;
-            const GasAmounts at_layer = gas_amounts_above(0.5 * (za + zb));
-            za = zb;
-            const std::span<double> view(&gas_view[k * n], n);
-            gases->log_transmittance(slant(at_layer, at_sensor, m_view), view);
-            if (sunlit) {
+        const Level top = level(z1);
+        // ln of the gas transmittances of each layer's midpoint from the sun and to the sensor,
+        // per band ([layer][band]); none without gas absorption.
+        const std::shared_ptr<const GasTransmittance> gases = gases_on(grid);
+        std::vector<double> gas_sun;
+        std::vector<double> gas_view;
+        if (gases) {
+            const std::size_t n = grid.size();
+            gas_sun.assign(layers * n, 0.0);
+            gas_view.assign(layers * n, 0.0);
+            const GasAmounts at_sensor = gas_amounts_above(z1);
+            double za = z0;
+            for (std::size_t k = 0; k < layers; ++k) {
+                const double f = static_cast<double>(k + 1) / kPathLayers;
+                const double zb = z0 + (z1 - z0) * f * f;
+                const GasAmounts at_layer = gas_amounts_above(0.5 * (za + zb));
+                za = zb;
+                const std::span<double> view(&gas_view[k * n], n);
+                gases->log_transmittance(slant(at_layer, at_sensor, m_view), view);
                 gases->log_transmittance(slant(at_layer, {}, m_sun),
                                          std::span<double>(&gas_sun[k * n], n));
             }
         }
-    }
-    // Per layer of one band: its Rayleigh and aerosol optical depths and its transmittances
-    // from the sun and to the sensor, the same at every azimuth.
-    std::vector<double> d_r(layers), d_a(layers), sun(layers), to_sensor(layers);
-    for (std::size_t i = 0; i < grid.size(); ++i) {
-        const double wl = grid.wavelength_um(i);
-        const double rayleigh = rayleigh_sea_level(m_parameters, wl);
-        const double aerosol = aerosol_sea_level(m_parameters, wl);
-        const auto tau_r = [&](const Level& at) { return rayleigh * at.rayleigh; };
-        const auto tau_a = [&](const Level& at) { return aerosol * at.aerosol; };
-        const double tau_sensor = tau_r(top) + tau_a(top);
-        const double emission = planck_radiance_w_per_cm2_sr_um(wl, temperature_k);
-        double tau_r_a = tau_r(bounds[0]);
-        double tau_a_a = tau_a(bounds[0]);
-        for (std::size_t k = 0; k < layers; ++k) {
-            const double tau_r_b = tau_r(bounds[k + 1]);
-            const double tau_a_b = tau_a(bounds[k + 1]);
-            d_r[k] = tau_r_a - tau_r_b;
-            d_a[k] = tau_a_a - tau_a_b;
-            const double tau_m = tau_r(middles[k]) + tau_a(middles[k]);
-            const double log_gas_view = gases ? gas_view[k * grid.size() + i] : 0.0;
-            const double log_gas_sun = gases ? gas_sun[k * grid.size() + i] : 0.0;
-            to_sensor[k] = std::exp(-(tau_m - tau_sensor) * m_view + log_gas_view);
-            if (sunlit) sun[k] = std::exp(-tau_m * m_sun + log_gas_sun);
-            tau_r_a = tau_r_b;
-            tau_a_a = tau_a_b;
-        }
-        for (std::size_t a = 0; a < view_azimuths_deg.size(); ++a) {
-            double sum = 0.0;
+        // Per layer of one band: its Rayleigh and aerosol optical depths and its transmittances
+        // from the sun and to the sensor, the same at every azimuth.
+        std::vector<double> d_r(layers), d_a(layers), sun(layers), to_sensor(layers);
+        for (std::size_t i = 0; i < grid.size(); ++i) {
+            const double wl = grid.wavelength_um(i);
+            const double rayleigh = rayleigh_sea_level(m_parameters, wl);
+            const double aerosol = aerosol_sea_level(m_parameters, wl);
+            const auto tau_r = [&](const Level& at) { return rayleigh * at.rayleigh; };
+            const auto tau_a = [&](const Level& at) { return aerosol * at.aerosol; };
+            const double tau_sensor = tau_r(top) + tau_a(top);
+            double tau_r_a = tau_r(bounds[0]);
+            double tau_a_a = tau_a(bounds[0]);
             for (std::size_t k = 0; k < layers; ++k) {
-                double source = (1.0 - omega) * d_a[k] * emission;
-                if (sunlit) {
-                    source += toa[i] / (4.0 * kPi) * sun[k] *
-                              (d_r[k] * p_rayleigh[a] + omega * d_a[k] * p_aerosol[a]);
-                }
-                sum += source * m_view * to_sensor[k];
+                const double tau_r_b = tau_r(bounds[k + 1]);
+                const double tau_a_b = tau_a(bounds[k + 1]);
+                d_r[k] = tau_r_a - tau_r_b;
+                d_a[k] = tau_a_a - tau_a_b;
+                const double tau_m = tau_r(middles[k]) + tau_a(middles[k]);
+                const double log_gas_view = gases ? gas_view[k * grid.size() + i] : 0.0;
+                const double log_gas_sun = gases ? gas_sun[k * grid.size() + i] : 0.0;
+                to_sensor[k] = std::exp(-(tau_m - tau_sensor) * m_view + log_gas_view);
+                sun[k] = std::exp(-tau_m * m_sun + log_gas_sun);
+                tau_r_a = tau_r_b;
+                tau_a_a = tau_a_b;
             }
-            out[a][i] = sum;
+            for (std::size_t a = 0; a < view_azimuths_deg.size(); ++a) {
+                double sum = 0.0;
+                for (std::size_t k = 0; k < layers; ++k) {
+                    const double source = toa[i] / (4.0 * kPi) * sun[k] *
+                                          (d_r[k] * p_rayleigh[a] + omega * d_a[k] * p_aerosol[a]);
+                    sum += source * m_view * to_sensor[k];
+                }
+                out[a][i] = sum;
+            }
         }
+    }
+    // The air's own emission along the path, the same at every azimuth.
+    const std::vector<double> emission = air_emission_w_per_cm2_sr_um(grid, z1, z0, m_view);
+    for (auto& spectrum : out) {
+        for (std::size_t i = 0; i < grid.size(); ++i) spectrum[i] += emission[i];
     }
     add_multiple_scattering(grid, geometry, toa, view_azimuths_deg, out);
     return out;
@@ -338,8 +337,8 @@ std::vector<double> ParametricAtmosphereModel::diffuse_sky_irradiance_w_per_cm2_
     if (const std::shared_ptr<const Scattering> ms = scattering(grid, geometry)) {
         // Multiple scattering: the diffuse flux reaching the ground per unit beam irradiance.
         const std::size_t ground = ms->solutions.front().levels() - 1;
-        const std::vector<double> diffuse = ms->per_band(
-            [&](std::size_t k) { return ms->solutions[k].diffuse_down_flux(ground); });
+        const std::vector<double> diffuse =
+            ms->per_band([&](std::size_t k) { return ms->solutions[k].diffuse_down_flux(ground); });
         for (std::size_t i = 0; i < grid.size(); ++i) out[i] = toa[i] * diffuse[i] * gas[i];
         return out;
     }
@@ -351,19 +350,6 @@ std::vector<double> ParametricAtmosphereModel::diffuse_sky_irradiance_w_per_cm2_
         const double t_as = std::exp(-omega * tau_a * m);
         const double t_aa = std::exp(-(1.0 - omega) * tau_a * m);
         out[i] = toa[i] * mu * gas[i] * t_aa * (0.5 * (1.0 - t_r) + forward * (1.0 - t_as));
-    }
-    return out;
-}
-
-std::vector<double> ParametricAtmosphereModel::thermal_sky_radiance_w_per_cm2_sr_um(
-    const SpectralGrid& grid, const AtmosphereGeometry& geometry) const {
-    check_geometry(geometry);
-    const double emissivity = sky_emissivity(geometry.surface_altitude_m);
-    std::vector<double> out;
-    out.reserve(grid.size());
-    for (double wl : grid.wavelengths_um()) {
-        out.push_back(emissivity *
-                      planck_radiance_w_per_cm2_sr_um(wl, m_parameters.air_temperature_k));
     }
     return out;
 }

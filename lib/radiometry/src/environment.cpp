@@ -175,8 +175,9 @@ Environment Environment::make(const SpectralGrid& grid,
 
     if (!(in.source_irradiance_scale > 0.0) || !std::isfinite(in.source_irradiance_scale) ||
         !(in.source_half_angle_rad > 0.0) || !(in.source_half_angle_rad < 0.1)) {
-        throw input_error("the source's irradiance scale must be > 0 and its angular radius in "
-                          "(0, 0.1) rad");
+        throw input_error(
+            "the source's irradiance scale must be > 0 and its angular radius in "
+            "(0, 0.1) rad");
     }
     env.m_sun_half_angle_rad = in.source_half_angle_rad;
     env.m_sun_cone_one_minus_cos = cone_one_minus_cos(in.source_half_angle_rad);
@@ -184,13 +185,20 @@ Environment Environment::make(const SpectralGrid& grid,
     // kSourceScaleStep): the sun's is exactly 1.
     const long long scale_key =
         std::llround(std::log(in.source_irradiance_scale) / SensorPathCache::kSourceScaleStep);
-    const double scale = std::exp(static_cast<double>(scale_key) * SensorPathCache::kSourceScaleStep);
+    const double scale =
+        std::exp(static_cast<double>(scale_key) * SensorPathCache::kSourceScaleStep);
     std::vector<double> toa = sun.resample(grid, in.sun_distance_au);
     for (double& v : toa) v *= scale;
 
     const std::size_t levels = env.m_levels_z.size();
     env.m_sun.assign(levels * env.m_bands, 0.0);
-    env.m_sky.assign(levels * env.m_bands, 0.0);
+    env.m_sky_nodes = atmosphere.directional_sky() ? kSkyZenithNodes : 1;
+    env.m_sky.assign(levels * env.m_sky_nodes * env.m_bands, 0.0);
+    std::vector<double> sky_zeniths_deg;
+    for (std::size_t node = 0; node < env.m_sky_nodes; ++node) {
+        sky_zeniths_deg.push_back(static_cast<double>(node) * kSkyZenithStepDeg);
+        env.m_sky_air_mass.push_back(glint::atmosphere::relative_air_mass(sky_zeniths_deg.back()));
+    }
     env.m_paths.assign(levels, nullptr);
     env.m_upward.assign(levels, false);
     for (std::size_t level = 0; level < levels; ++level) {
@@ -202,10 +210,23 @@ Environment Environment::make(const SpectralGrid& grid,
         geometry.surface_altitude_m = altitude_m;
         geometry.sensor_altitude_m = std::max(in.sensor_altitude_m, altitude_m);
         const std::vector<double> t_sun = atmosphere.sun_transmittance(grid, geometry);
-        const std::vector<double> sky = atmosphere.sky_radiance_w_per_cm2_sr_um(grid, geometry, toa);
         for (std::size_t b = 0; b < env.m_bands; ++b) {
             env.m_sun[level * env.m_bands + b] = toa[b] * t_sun[b];
-            env.m_sky[level * env.m_bands + b] = sky[b];
+        }
+        if (env.m_sky_nodes == 1) {
+            const std::vector<double> sky =
+                atmosphere.sky_radiance_w_per_cm2_sr_um(grid, geometry, toa);
+            std::copy(sky.begin(), sky.end(), env.m_sky.begin() + level * env.m_bands);
+        } else {
+            const std::vector<double> diffuse =
+                atmosphere.diffuse_sky_irradiance_w_per_cm2_um(grid, geometry, toa);
+            const auto thermal = atmosphere.thermal_sky_at_zeniths(grid, geometry, sky_zeniths_deg);
+            for (std::size_t node = 0; node < env.m_sky_nodes; ++node) {
+                double* row = &env.m_sky[(level * env.m_sky_nodes + node) * env.m_bands];
+                for (std::size_t b = 0; b < env.m_bands; ++b) {
+                    row[b] = diffuse[b] / std::numbers::pi + thermal[node][b];
+                }
+            }
         }
 
         // The sensor path at the rounded geometry (see SensorPathCache).
@@ -219,7 +240,8 @@ Environment Environment::make(const SpectralGrid& grid,
             std::llround(path.sun_azimuth_deg / SensorPathCache::kAngleStepDeg),
             std::llround(path.surface_altitude_m / SensorPathCache::kAltitudeStepM),
             std::llround(path.sensor_altitude_m / SensorPathCache::kAltitudeStepM),
-            std::llround(in.sun_distance_au / SensorPathCache::kSunDistanceStepAu), scale_key};
+            std::llround(in.sun_distance_au / SensorPathCache::kSunDistanceStepAu),
+            scale_key};
         std::shared_ptr<const SensorPathTables> tables =
             cache != nullptr ? cache->find(key) : nullptr;
         if (!tables) {
@@ -244,10 +266,9 @@ Environment Environment::make(const SpectralGrid& grid,
             auto transmittance_only = std::make_shared<SensorPathTables>(*tables);
             std::fill(transmittance_only->path_radiance.begin(),
                       transmittance_only->path_radiance.end(), 0.0);
-            transmittance_only->effects =
-                std::any_of(transmittance_only->transmittance.begin(),
-                            transmittance_only->transmittance.end(),
-                            [](double v) { return v != 1.0; });
+            transmittance_only->effects = std::any_of(transmittance_only->transmittance.begin(),
+                                                      transmittance_only->transmittance.end(),
+                                                      [](double v) { return v != 1.0; });
             tables = std::move(transmittance_only);
         }
         env.m_sensor_path = env.m_sensor_path || tables->effects;
@@ -267,6 +288,20 @@ AltitudeLevel Environment::level_at(double z_m) const noexcept {
     const double lo = m_levels_z[index];
     const double fraction = (z_m - lo) / (m_levels_z[index + 1] - lo);
     return {index, fraction};
+}
+
+AltitudeLevel Environment::sky_node(double cos_zenith) const noexcept {
+    if (m_sky_nodes == 1) return {0, 0.0};
+    if (!(cos_zenith > 0.0)) return {m_sky_nodes - 1, 0.0};
+    const double zenith_deg = std::acos(std::min(cos_zenith, 1.0)) * (180.0 / std::numbers::pi);
+    const auto index =
+        std::min(static_cast<std::size_t>(zenith_deg / kSkyZenithStepDeg), m_sky_nodes - 2);
+    // Linear in the air mass between the nodes: an optically thin band's emission grows as
+    // the air mass does, which in the zenith angle is steeply convex towards the horizon.
+    const double lo = m_sky_air_mass[index];
+    const double hi = m_sky_air_mass[index + 1];
+    const double m = glint::atmosphere::relative_air_mass(zenith_deg);
+    return {index, std::clamp((m - lo) / (hi - lo), 0.0, 1.0)};
 }
 
 Vec3 Environment::sun_direction(double time_s) const noexcept {
@@ -380,8 +415,7 @@ std::vector<double> altitude_levels(const scene::GeometryScene& geometry) {
     if (levels.size() > Environment::kMaxLevels) {
         throw input_error("the scene's surfaces span " +
                           std::to_string(static_cast<long long>(levels.back() - levels.front())) +
-                          " m of height: more than the " +
-                          std::to_string(Environment::kMaxLevels) +
+                          " m of height: more than the " + std::to_string(Environment::kMaxLevels) +
                           " atmosphere levels glint computes");
     }
     return levels;

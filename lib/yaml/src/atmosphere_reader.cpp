@@ -118,12 +118,11 @@ void read_visibility(const YAML::Node& root, const std::string& file,
     const double extinction_per_km =
         model::kKoschmieder / visibility_km - model::kRayleighExtinction550PerKm;
     if (!(extinction_per_km > 0.0)) {
-        diagnostics.error(where, "visibility " + num(visibility_km) +
-                                     " km is beyond that of aerosol-free air (" +
-                                     std::to_string(static_cast<int>(
-                                         model::kKoschmieder /
-                                         model::kRayleighExtinction550PerKm)) +
-                                     " km)");
+        diagnostics.error(
+            where, "visibility " + num(visibility_km) + " km is beyond that of aerosol-free air (" +
+                       std::to_string(static_cast<int>(model::kKoschmieder /
+                                                       model::kRayleighExtinction550PerKm)) +
+                       " km)");
         return;
     }
     const double depth = extinction_per_km * p.aerosol_scale_height_m / 1000.0;
@@ -138,6 +137,29 @@ void read_visibility(const YAML::Node& root, const std::string& file,
     p.aerosol_optical_depth_550 = depth;
 }
 
+/// profile: the air's temperature profile, and the defaults of the sea-level air
+/// temperature and of the water and ozone columns (keys given explicitly are read after, and
+/// win). The isothermal profile keeps every default.
+void read_profile(const YAML::Node& root, const std::string& file, model::ParametricAtmosphere& p,
+                  Diagnostics& diagnostics) {
+    const YAML::Node node = root["profile"];
+    if (!node) return;
+    const std::string name = node.IsScalar() ? node.Scalar() : std::string{};
+    const std::optional<model::StandardAtmosphere> which = model::standard_atmosphere_named(name);
+    if (!which) {
+        diagnostics.error(
+            at(file, node, "profile"),
+            std::string("expected ") + model::standard_atmosphere_names() + ", got '" + name + "'");
+        return;
+    }
+    p.profile = *which;
+    if (*which == model::StandardAtmosphere::isothermal) return;
+    const model::StandardAtmosphereProfile& table = model::standard_atmosphere(*which);
+    p.air_temperature_k = model::profile_temperature_k(table.levels, 0.0);
+    p.water_vapor_cm = table.water_column_cm;
+    p.ozone_atm_cm = table.ozone_column_atm_cm;
+}
+
 /// Keys whose value the settings given with them leave without effect: one warning each at
 /// its line (nothing a user wrote is dropped silently).
 void warn_unused(const YAML::Node& root, const std::string& file,
@@ -150,6 +172,10 @@ void warn_unused(const YAML::Node& root, const std::string& file,
     if (!p.gas_absorption) {
         warn("water_vapor_cm", "gas_absorption is false");
         warn("ozone_atm_cm", "gas_absorption is false");
+    } else {
+        warn("water_vapor_pressure_hpa",
+             "gas_absorption is true: the sky's emission is the gases' own (the vapour pressure "
+             "sets only the grey Brutsaert sky of an atmosphere without gas absorption)");
     }
     if (!p.multiple_scattering) warn("ground_albedo", "multiple_scattering is false");
     if (root["angstrom_exponent"] && root["aerosol_single_scatter_albedo"] &&
@@ -163,8 +189,9 @@ void warn_unused(const YAML::Node& root, const std::string& file,
 void read_parametric(const YAML::Node& root, const std::string& file,
                      model::ParametricAtmosphere& p, Diagnostics& diagnostics) {
     read_aerosol_model(root, file, p, diagnostics);
-    read_number(root, "aerosol_optical_depth_550", file, kAerosolDepth,
-                p.aerosol_optical_depth_550, diagnostics);
+    read_profile(root, file, p, diagnostics);
+    read_number(root, "aerosol_optical_depth_550", file, kAerosolDepth, p.aerosol_optical_depth_550,
+                diagnostics);
     read_number(root, "angstrom_exponent", file, kAny, p.angstrom_exponent, diagnostics);
     read_number(root, "aerosol_scale_height_m", file, kPositive, p.aerosol_scale_height_m,
                 diagnostics);
@@ -221,7 +248,7 @@ model::Atmosphere read_yaml(const std::string& text, const std::filesystem::path
                  "aerosol_asymmetry", "aerosol_single_scatter_albedo", "rayleigh_scale_height_m",
                  "sea_level_pressure_hpa", "air_temperature_k", "water_vapor_pressure_hpa",
                  "gas_absorption", "water_vapor_cm", "ozone_atm_cm", "multiple_scattering",
-                 "ground_albedo", "aerosol_model", "visibility_km"});
+                 "ground_albedo", "aerosol_model", "visibility_km", "profile"});
             read_parametric(root, file, atmosphere.parametric, diagnostics);
         } else if (name == "tabulated") {
             atmosphere.kind = model::AtmosphereKind::tabulated;

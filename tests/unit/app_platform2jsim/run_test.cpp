@@ -345,11 +345,12 @@ TEST_F(Platform2JsimTest, CheckRefusesEntriesThatWriteTheSameFilesAsARenderDoes)
         logged("plugin_list[1] (BasicPlatform) has the same output_folder '' and "
                "output_prefix ''"))
         << log_text();
-    EXPECT_EQ(m_out.str(), "atmosphere (default: " + (in / "twice.jsim").string() +
-                               " names none): parametric, aerosol optical depth 0.1 at 0.55 "
-                               "um, gases (water 2.924 cm, ozone 0.332 atm-cm), multiple "
-                               "scattering over ground albedo 0.2\n"
-                               "check: 2 errors, 1 warning in 6 files\n");
+    EXPECT_EQ(m_out.str(),
+              "atmosphere (default: " + (in / "twice.jsim").string() +
+                  " names none): parametric, aerosol optical depth 0.1 at 0.55 "
+                  "um, gases (water 2.924 cm, ozone 0.332 atm-cm), multiple "
+                  "scattering over ground albedo 0.2, air us_standard_1976 at 288.15 K\n"
+                  "check: 2 errors, 1 warning in 6 files\n");
 }
 
 TEST_F(Platform2JsimTest, CheckReadsScenesAndAtmospheres) {

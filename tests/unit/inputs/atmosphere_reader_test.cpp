@@ -45,9 +45,46 @@ TEST(AtmosphereReader, ReadsParametricYaml) {
     EXPECT_DOUBLE_EQ(a.parametric.aerosol_single_scatter_albedo, 0.9);
     EXPECT_DOUBLE_EQ(a.parametric.sea_level_pressure_hpa, 1000.0);
     EXPECT_DOUBLE_EQ(a.parametric.air_temperature_k, 300.0);
-    EXPECT_DOUBLE_EQ(a.parametric.water_vapor_pressure_hpa, 20.0);
+    // The profile names the air's temperatures and the columns' defaults; the explicit
+    // air_temperature_k wins over the profile's 294.2 K.
+    EXPECT_EQ(a.parametric.profile, model::StandardAtmosphere::midlatitude_summer);
+    EXPECT_DOUBLE_EQ(a.parametric.water_vapor_cm,
+                     model::standard_atmosphere(a.parametric.profile).water_column_cm);
+    EXPECT_NEAR(a.parametric.water_vapor_cm, 2.922, 0.001);
+    EXPECT_NEAR(a.parametric.ozone_atm_cm, 0.334, 0.001);
     EXPECT_EQ(a.where.file, "parametric.yaml");
     EXPECT_EQ(a.where.line, 3);
+}
+
+TEST(AtmosphereReader, ProfileSetsDefaultsAndRefusesUnknownNames) {
+    const test::TempDir dir;
+    Diagnostics diagnostics;
+    const auto a =
+        read_atmosphere(write(dir, "profile.yaml",
+                              "model: parametric\nprofile: subarctic_winter\nozone_atm_cm: 0.3\n"),
+                        {}, diagnostics);
+    EXPECT_TRUE(diagnostics.items().empty()) << first_error(diagnostics);
+    EXPECT_EQ(a.parametric.profile, model::StandardAtmosphere::subarctic_winter);
+    EXPECT_DOUBLE_EQ(a.parametric.air_temperature_k, 257.2);
+    EXPECT_NEAR(a.parametric.water_vapor_cm, 0.416, 0.001);
+    EXPECT_DOUBLE_EQ(a.parametric.ozone_atm_cm, 0.3);
+
+    Diagnostics bad;
+    const auto bad_path = write(dir, "bad_profile.yaml", "model: parametric\nprofile: arctic\n");
+    (void)read_atmosphere(bad_path, {}, bad);
+    EXPECT_EQ(first_error(bad),
+              bad_path.string() +
+                  ":2: profile: expected tropical, midlatitude_summer, midlatitude_winter, "
+                  "subarctic_summer, subarctic_winter, us_standard_1976 or isothermal, got "
+                  "'arctic'");
+
+    // The vapour pressure sets only the Brutsaert sky: a warning with gas absorption on.
+    Diagnostics warned;
+    (void)read_atmosphere(
+        write(dir, "vapour.yaml", "model: parametric\nwater_vapor_pressure_hpa: 12\n"), {}, warned);
+    ASSERT_EQ(warned.items().size(), 1u);
+    EXPECT_NE(warned.items()[0].text().find("water_vapor_pressure_hpa: has no effect"),
+              std::string::npos);
 }
 
 TEST(AtmosphereReader, ReadsNoneYaml) {

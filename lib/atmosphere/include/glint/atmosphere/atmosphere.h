@@ -72,9 +72,35 @@ public:
         const SpectralGrid& grid, const AtmosphereGeometry& geometry,
         std::span<const double> toa_irradiance_w_per_cm2_um) const = 0;
 
-    /// Thermal emission of the sky, isotropic, W/(cm² sr µm).
+    /// Thermal emission of the sky, W/(cm² sr µm): the isotropic sky, or for a directional
+    /// one the radiance of equal irradiance on a horizontal surface (2∫L(μ)μ dμ).
     virtual std::vector<double> thermal_sky_radiance_w_per_cm2_sr_um(
         const SpectralGrid& grid, const AtmosphereGeometry& geometry) const = 0;
+
+    /// Whether the thermal sky depends on the direction (thermal_sky_radiance_at_zenith).
+    virtual bool directional_sky() const noexcept { return false; }
+
+    /// The thermal sky radiance arriving at the surface point from zenith angle
+    /// `zenith_deg` (0 overhead, 90 at the horizon), W/(cm² sr µm). Default: the isotropic
+    /// thermal_sky_radiance_w_per_cm2_sr_um.
+    virtual std::vector<double> thermal_sky_radiance_at_zenith(const SpectralGrid& grid,
+                                                               const AtmosphereGeometry& geometry,
+                                                               double zenith_deg) const {
+        (void)zenith_deg;
+        return thermal_sky_radiance_w_per_cm2_sr_um(grid, geometry);
+    }
+
+    /// thermal_sky_radiance_at_zenith at each of `zeniths_deg` (one spectrum each). This
+    /// default asks once per zenith; a model may share the work.
+    virtual std::vector<std::vector<double>> thermal_sky_at_zeniths(
+        const SpectralGrid& grid, const AtmosphereGeometry& geometry,
+        std::span<const double> zeniths_deg) const {
+        std::vector<std::vector<double>> out;
+        for (double zenith : zeniths_deg) {
+            out.push_back(thermal_sky_radiance_at_zenith(grid, geometry, zenith));
+        }
+        return out;
+    }
 
     /// The isotropic sky radiance: diffuse_sky_irradiance / π + thermal_sky_radiance.
     std::vector<double> sky_radiance_w_per_cm2_sr_um(
@@ -124,8 +150,10 @@ private:
 
 /// Rayleigh + aerosol extinction with exponential scale heights, Kasten–Young air mass,
 /// single-scatter path radiance (Rayleigh and Henyey–Greenstein phase functions), a
-/// Bird–Hulstrom-type diffuse sky, a grey Brutsaert clear-sky emission and (with
-/// gas_absorption) molecular absorption from the gas band model on every path.
+/// Bird–Hulstrom-type diffuse sky and (with gas_absorption) molecular absorption from the gas
+/// band model on every path, and the air's thermal emission along every path and from every
+/// direction of the sky at the temperatures of a standard profile (without gas absorption,
+/// the aerosol's emission on paths and a grey Brutsaert sky).
 class ParametricAtmosphereModel final : public AtmosphereModel {
 public:
     /// Scale height of water vapour, m: the water above altitude z is W·e^(−z/H).
@@ -157,6 +185,27 @@ public:
     /// 0 above the model's top (100 km).
     double sky_emissivity(double altitude_m = 0.0) const noexcept;
 
+    /// The shift of air_temperature_k from the profile fades linearly to 0 at this altitude.
+    static constexpr double kTemperatureShiftTopM = 11'000.0;
+    /// The air temperature at `altitude_m` (above sea level), K: the profile's, shifted by
+    /// air_temperature_k minus the profile's sea-level temperature below
+    /// kTemperatureShiftTopM (docs/thermal.md).
+    double air_temperature_k(double altitude_m) const noexcept;
+
+    /// The thermal emission of the air between altitudes `observer_m` and `far_m`, seen
+    /// from `observer_m` along a straight path of relative air mass `air_mass`, W/(cm² sr µm)
+    /// per band of `grid`: over 256 layers, Σ B(λ, T_k) (A_near − A_far) S_k, A the
+    /// transmittance of the absorbers (gas bands and aerosol absorption) from the observer to
+    /// a layer's boundary, S the scattering transmittance to its middle (docs/thermal.md).
+    /// Nothing above the model's top (100 km).
+    std::vector<double> air_emission_w_per_cm2_sr_um(const SpectralGrid& grid, double observer_m,
+                                                     double far_m, double air_mass) const;
+    /// air_emission_w_per_cm2_sr_um along each of `air_masses` (one spectrum each; the
+    /// layers, their temperatures and Planck radiances shared).
+    std::vector<std::vector<double>> air_emission_at_air_masses(
+        const SpectralGrid& grid, double observer_m, double far_m,
+        std::span<const double> air_masses) const;
+
     std::vector<double> sun_transmittance(const SpectralGrid& grid,
                                           const AtmosphereGeometry& geometry) const override;
     std::vector<double> sensor_transmittance(const SpectralGrid& grid,
@@ -173,8 +222,20 @@ public:
     std::vector<double> diffuse_sky_irradiance_w_per_cm2_um(
         const SpectralGrid& grid, const AtmosphereGeometry& geometry,
         std::span<const double> toa_irradiance_w_per_cm2_um) const override;
+    /// With gas absorption, the air's emission seen from the surface; without, the grey
+    /// Brutsaert sky.
     std::vector<double> thermal_sky_radiance_w_per_cm2_sr_um(
         const SpectralGrid& grid, const AtmosphereGeometry& geometry) const override;
+    bool directional_sky() const noexcept override { return m_parameters.gas_absorption; }
+    /// The air's emission from the surface to the top along zenith `zenith_deg` (Kasten–Young
+    /// air mass); the isotropic Brutsaert sky without gas absorption.
+    std::vector<double> thermal_sky_radiance_at_zenith(const SpectralGrid& grid,
+                                                       const AtmosphereGeometry& geometry,
+                                                       double zenith_deg) const override;
+    /// The zeniths share the layers, their temperatures and Planck radiances.
+    std::vector<std::vector<double>> thermal_sky_at_zeniths(
+        const SpectralGrid& grid, const AtmosphereGeometry& geometry,
+        std::span<const double> zeniths_deg) const override;
 
     /// Wavelength nodes of the multiple-scattering solutions: a grid of at most this many
     /// bands is solved at its own wavelengths, a larger one at this many nodes spaced evenly

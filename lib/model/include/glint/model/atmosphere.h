@@ -16,17 +16,21 @@
 // | `aerosol_single_scatter_albedo` | number in [0, 1] | – | 0.95 | parametric |
 // | `rayleigh_scale_height_m` | number > 0 | m | 8000 | parametric |
 // | `sea_level_pressure_hpa` | number ≥ 0 | hPa | 1013.25 | parametric (0: no Rayleigh) |
-// | `air_temperature_k` | number ≥ 0 | K | 288.15 | parametric (thermal sky) |
-// | `water_vapor_pressure_hpa` | number ≥ 0 | hPa | 10 | parametric (sky emissivity) |
-// | `gas_absorption` | true, false | – | true | parametric (H₂O, O₃, O₂, CO₂, CH₄, … bands) |
-// | `water_vapor_cm` | number ≥ 0 | cm | 2.924 | parametric (precipitable water, vertical) |
-// | `ozone_atm_cm` | number ≥ 0 | atm-cm | 0.332 | parametric (ozone column, vertical) |
-// | `aerosol_model` | rural, urban, maritime, desert | – | (none) | parametric: sets the next three
-// | | `visibility_km` | number > 0 | km | – | parametric: τ₅₅₀ by Koschmieder (not with τ₅₅₀) | |
-// `multiple_scattering` | true, false | – | true | parametric (sky and path radiance) | |
-// `ground_albedo` | number in [0, 1] | – | 0.2 | parametric (Lambertian ground of the sky) | |
-// `table` | path | – | (required) | tabulated (relative to the YAML file) | | `sky_temperature_k` |
-// number ≥ 0 | K | 0 (black) | tabulated without a thermal column |
+// | `profile` | tropical, midlatitude_summer, midlatitude_winter, subarctic_summer,
+// subarctic_winter, us_standard_1976, isothermal | – | us_standard_1976 | parametric (air
+// temperatures; when given, also the defaults of `air_temperature_k`, `water_vapor_cm`,
+// `ozone_atm_cm`) | | `air_temperature_k` | number ≥ 0 | K | 288.15 (the profile's sea level) |
+// parametric (emission) | | `water_vapor_pressure_hpa` | number ≥ 0 | hPa | 10 | parametric
+// (Brutsaert sky without gas absorption) | | `gas_absorption` | true, false | – | true | parametric
+// (H₂O, O₃, O₂, CO₂, CH₄, … bands) | | `water_vapor_cm` | number ≥ 0 | cm | 2.924 (the profile's,
+// when given) | parametric (precipitable water, vertical) | | `ozone_atm_cm` | number ≥ 0 | atm-cm
+// | 0.332 (the profile's, when given) | parametric (ozone column, vertical) | | `aerosol_model` |
+// rural, urban, maritime, desert | – | (none) | parametric: sets the next three | | `visibility_km`
+// | number > 0 | km | – | parametric: τ₅₅₀ by Koschmieder (not with τ₅₅₀) | | `multiple_scattering`
+// | true, false | – | true | parametric (sky and path radiance) | | `ground_albedo` | number in [0,
+// 1] | – | 0.2 | parametric (Lambertian ground of the sky) | | `table` | path | – | (required) |
+// tabulated (relative to the YAML file) | | `sky_temperature_k` | number ≥ 0 | K | 0 (black) |
+// tabulated without a thermal column |
 //
 // DIRSIG .atm subset: `<atmosphericconditions>` > `<simpleradiativetransfer>` >
 // `<apparentskytemperature>` (K, default 0) gives kind simple.
@@ -36,6 +40,7 @@
 #include <vector>
 
 #include "glint/core/error.h"
+#include "glint/model/standard_atmospheres.h"
 
 namespace glint::model {
 
@@ -56,8 +61,14 @@ struct ParametricAtmosphere {
     double aerosol_single_scatter_albedo = 0.95;  ///< ω_a
     double rayleigh_scale_height_m = 8000.0;      ///< Rayleigh extinction ∝ exp(−z/H_R)
     double sea_level_pressure_hpa = 1013.25;      ///< Rayleigh optical depth ∝ pressure
-    double air_temperature_k = 288.15;            ///< effective air temperature of the sky
-    double water_vapor_pressure_hpa = 10.0;       ///< for the Brutsaert clear-sky emissivity
+    /// The air's temperature profile (and, through the YAML reader, the defaults of the
+    /// columns and of air_temperature_k): glint/model/standard_atmospheres.h.
+    StandardAtmosphere profile = StandardAtmosphere::us_standard_1976;
+    /// Air temperature at sea level: the profile is shifted by its difference from the
+    /// profile's own sea-level temperature, the shift fading linearly to 0 at 11 km
+    /// (isothermal: the temperature of every level).
+    double air_temperature_k = 288.15;
+    double water_vapor_pressure_hpa = 10.0;  ///< for the Brutsaert sky (gas_absorption false)
     /// Molecular absorption from the gas band model (glint/atmosphere/gas_absorption.h).
     bool gas_absorption = true;
     /// Precipitable water of the vertical column above sea level, cm (default: the AFGL

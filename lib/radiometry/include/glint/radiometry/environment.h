@@ -5,7 +5,9 @@
 //   - the sun: its direction in scene ENU at the window's begin and end (interpolated per
 //     sample time), its angular radius, and its spectral irradiance at the surface normal to
 //     the beam, E_sun(λ) = E_toa(λ, d) T_sun(λ, θs) [W/(cm² µm)];
-//   - the isotropic sky radiance L_sky(λ) = E_diffuse/π + L_thermal [W/(cm² sr µm)];
+//   - the sky radiance L_sky(λ) = E_diffuse/π + L_thermal [W/(cm² sr µm)], isotropic, or by
+//     zenith angle (every kSkyZenithStepDeg, linear in air mass between) where the model's
+//     thermal sky is directional;
 //   - the sensor path: transmittance T_v(λ) and path radiance L_p(λ) [W/(cm² sr µm)] for the
 //     direction surface → sensor, tabulated over view zenith (0–88° every 4°) and azimuth
 //     relative to the sun (0–180° every 15°; the single-scatter terms are symmetric about
@@ -123,6 +125,9 @@ public:
     static constexpr double kViewZenithMaxDeg = 88.0;
     /// Relative-azimuth nodes, degrees.
     static constexpr double kAzimuthStepDeg = 15.0;
+    /// Zenith nodes of a directional sky, 0° … 90°, degrees.
+    static constexpr double kSkyZenithStepDeg = 3.0;
+    static constexpr std::size_t kSkyZenithNodes = 31;
 
     /// An environment given directly (tests, user-defined skies): no path effects
     /// (T_v = 1, L_p = 0). Throws glint::Error (input) for vectors of the wrong size,
@@ -163,11 +168,20 @@ public:
     }
     /// Whether the sun contributes at all (any band > 0 at any level).
     bool sun_visible() const noexcept { return m_sun_visible; }
-    /// L_sky(λ) at level `level`, W/(cm² sr µm), seen by rays that leave the scene upwards
-    /// from there.
-    std::span<const double> sky_radiance_w_per_cm2_sr_um(std::size_t level = 0) const noexcept {
-        return std::span<const double>(m_sky).subspan(level * m_bands, m_bands);
+    /// Zenith nodes of the sky: 1 (isotropic) or kSkyZenithNodes (0°, 3°, … 90°).
+    std::size_t sky_nodes() const noexcept { return m_sky_nodes; }
+    /// L_sky(λ) at level `level` and zenith node `node`, W/(cm² sr µm), seen by rays that
+    /// leave the scene upwards from there.
+    std::span<const double> sky_radiance_w_per_cm2_sr_um(std::size_t level = 0,
+                                                         std::size_t node = 0) const noexcept {
+        return std::span<const double>(m_sky).subspan((level * m_sky_nodes + node) * m_bands,
+                                                      m_bands);
     }
+    /// Where a direction of z component `cos_zenith` falls among the sky's zenith nodes:
+    /// between node `index` and the next, at `fraction` of the way in relative air mass
+    /// (index 0, fraction 0 for an isotropic sky; the horizon node for a direction at or
+    /// below it).
+    AltitudeLevel sky_node(double cos_zenith) const noexcept;
     /// Whether the sky is black on the whole grid at every level.
     bool sky_black() const noexcept { return m_sky_black; }
     /// Whether the sensor path changes anything (T_v ≠ 1 or L_p ≠ 0 somewhere).
@@ -211,8 +225,7 @@ private:
         }
     };
     /// The lookup in the tables of level `level`.
-    PathLookup path_lookup(std::size_t level, const Vec3& to_sensor,
-                           double time_s) const noexcept;
+    PathLookup path_lookup(std::size_t level, const Vec3& to_sensor, double time_s) const noexcept;
 
     Environment(const SpectralGrid& grid);
 
@@ -226,7 +239,9 @@ private:
     double m_sun_cone_one_minus_cos = 0.0;
     std::vector<double> m_levels_z{0.0};
     std::vector<double> m_sun;  ///< [level][band]
-    std::vector<double> m_sky;  ///< [level][band]
+    std::vector<double> m_sky;  ///< [level][zenith node][band]
+    std::size_t m_sky_nodes = 1;
+    std::vector<double> m_sky_air_mass;  ///< the Kasten–Young air mass of each zenith node
     bool m_sun_visible = false;
     bool m_sky_black = true;
     bool m_sensor_path = false;
