@@ -69,12 +69,13 @@ struct MatReader {
     struct Ignored {
         ErrorContext first;
         std::vector<int> lines;
+        std::string suffix = " ignored";
     };
     std::map<std::string, Ignored> ignored;
     std::vector<std::string> ignored_order;  ///< as first met
 
-    void ignore(const std::string& what, ErrorContext where) {
-        auto [it, added] = ignored.try_emplace(what, Ignored{where, {}});
+    void ignore(const std::string& what, ErrorContext where, std::string suffix = " ignored") {
+        auto [it, added] = ignored.try_emplace(what, Ignored{where, {}, std::move(suffix)});
         if (added) ignored_order.push_back(what);
         it->second.lines.push_back(where.line);
     }
@@ -103,7 +104,7 @@ struct MatReader {
         constexpr std::size_t kLinesShown = 3;
         for (const std::string& what : ignored_order) {
             const Ignored& i = ignored.at(what);
-            std::string message = what + " ignored";
+            std::string message = what + i.suffix;
             if (i.lines.size() > 1) {
                 message += " (" + std::to_string(i.lines.size()) + " times: also line";
                 message += i.lines.size() > 2 ? "s " : " ";
@@ -174,6 +175,12 @@ struct MatReader {
     /// `TEMP_SOLVER_NAME = Map`'s TEMP_SOLVER block: the image and its projector
     /// (mat_temperature.cpp); the map goes to m.temperature_map.
     void read_temperature_map(const MatBlock& solver, const std::string& path, model::Material& m);
+    /// THERM's TEMP_SOLVER block (`TEMP_SOLVER_NAME = Therm`) into m.therm, its units
+    /// converted to SI (mat_therm.cpp); glint's readings of DIRSIG's units said once per file.
+    void read_therm(const MatBlock& solver, const std::string& path, model::Material& m);
+    bool said_therm_units = false;
+    bool said_therm_exposed_sign = false;
+    bool said_therm_no_storage = false;
     /// Whether the once-per-file note on the temperature map's GAIN/BIAS reading was said.
     bool said_temperature_gain = false;
     /// An `OPTICAL_DESCRIPTION = SOURCE` material (mat_reader.cpp).

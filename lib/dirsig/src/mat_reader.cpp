@@ -135,6 +135,15 @@ model::Material MatReader::read_entry(const MatBlock& block, std::size_t index) 
                               "temperature solver \"Map\" needs a TEMP_SOLVER block (its "
                               "IMAGE_FILENAME and projector)");
         }
+    } else if (solver_name && to_upper(solver_name->value) == "THERM") {
+        if (const MatBlock* ts = block.find_block("TEMP_SOLVER")) {
+            read_therm(*ts, path + "/TEMP_SOLVER", m);
+        } else {
+            diagnostics.error(at(solver_name->line, path + "/TEMP_SOLVER_NAME"),
+                              "temperature solver \"Therm\" needs a TEMP_SOLVER block (its "
+                              "SPECIFIC_HEAT, MASS_DENSITY, THERMAL_CONDUCTIVITY, EXPOSED_AREA, "
+                              "...)");
+        }
     } else if (const MatBlock* ts = block.find_block("TEMP_SOLVER")) {
         warn_unknown(*ts, path + "/TEMP_SOLVER", {"TEMPERATURE"}, {});
         const MatEntry* inner = ts->find("TEMPERATURE");
@@ -149,7 +158,14 @@ model::Material MatReader::read_entry(const MatBlock& block, std::size_t index) 
     }
     if (const MatEntry* solver = block.find("TEMP_SOLVER_NAME")) {
         const std::string s = to_upper(solver->value);
-        if (s != "DATADRIVEN" && s != "CONSTANT" && s != "MAP") {
+        if (s == "THERM") {
+            // Read and checked (mat_therm.cpp); said once per file with the count.
+            ignore(
+                "temperature solver Therm: its parameters are read and checked, but "
+                "glint-render does not run THERM yet; the constant TEMPERATURE (default " +
+                    format_shortest(model::kDefaultTemperature_k) + " K) is used",
+                at(solver->line, path + "/TEMP_SOLVER_NAME"), "");
+        } else if (s != "DATADRIVEN" && s != "CONSTANT" && s != "MAP") {
             diagnostics.warning(at(solver->line, path + "/TEMP_SOLVER_NAME"),
                                 "temperature solver \"" + solver->value + "\" of material \"" +
                                     m.name +

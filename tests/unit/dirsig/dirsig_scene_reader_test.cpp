@@ -328,12 +328,13 @@ TEST(DirsigSceneReaderErrors, MaterialProblems) {
     const std::string all = dump(diagnostics);
     EXPECT_THAT(all, HasSubstr("m.mat:3: MATERIAL_ENTRY[1]/RAD_SOLVER_NAME: radiometry solver "
                                "\"Ward\" of material \"1\" is not supported"));
-    EXPECT_THAT(all, HasSubstr("m.mat:4: MATERIAL_ENTRY[1]/TEMP_SOLVER_NAME: temperature solver"));
+    EXPECT_THAT(all, HasSubstr("m.mat:4: MATERIAL_ENTRY[1]/TEMP_SOLVER_NAME: temperature solver "
+                               "\"Therm\" needs a TEMP_SOLVER block"));
     EXPECT_THAT(all, HasSubstr("m.mat:11: MATERIAL_ENTRY[1]/BUNDLE_FILENAME: material bundles"));
     EXPECT_THAT(all, HasSubstr("m.mat:9: MATERIAL_ENTRY[1]: duplicate material ID \"1\""));
     EXPECT_THAT(all, HasSubstr("m.mat:15: MATERIAL_ENTRY[3]/TEMPERATURE: temperature \"-4\""));
     EXPECT_THAT(all, HasSubstr("m.mat:13: MATERIAL_ENTRY[3]: missing SURFACE_PROPERTIES"));
-    EXPECT_EQ(diagnostics.error_count(), 4u) << all;
+    EXPECT_EQ(diagnostics.error_count(), 5u) << all;
     EXPECT_EQ(diagnostics.warning_count(), 2u) << all;
 }
 

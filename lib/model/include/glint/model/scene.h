@@ -126,6 +126,27 @@ struct RossLiParameters {
     double geometric = 0.0;
 };
 
+/// The thermal parameters of DIRSIG's THERM surface energy balance (`TEMP_SOLVER_NAME =
+/// Therm`), in SI units (the `.mat`'s own units are converted by its reader;
+/// docs/thermal.md, "Surface temperatures").
+struct ThermProperties {
+    double specific_heat_j_per_kg_k = 0.0;
+    double density_kg_per_m3 = 0.0;
+    double conductivity_w_per_m_k = 0.0;
+    /// Broadband absorptance of sunlight; empty: 1 − the reflectance's mean over the sun's
+    /// spectrum (worked out by the solver).
+    std::optional<double> solar_absorptance;
+    /// Broadband longwave emissivity; empty: the emissivity's mean over 8-14 µm.
+    std::optional<double> thermal_emissivity;
+    /// Share of the facet exchanging heat with the air, [0, 1] (the magnitude of DIRSIG's
+    /// −1 … 1 EXPOSED_AREA).
+    double exposed_area = 1.0;
+    /// Slab thickness; 0 (or a zero conductivity): a face without heat storage, in balance
+    /// with its forcing at every instant.
+    double thickness_m = 0.0;
+    ErrorContext where;  ///< the TEMP_SOLVER block
+};
+
 /// A surface material: opaque, or a thin two-sided sheet (a leaf) when it has a transmittance.
 struct Material {
     std::string id;    ///< as written (a number is kept as its text)
@@ -155,6 +176,8 @@ struct Material {
     /// A temperature map (`TEMP_SOLVER_NAME = Map`): the temperature where it covers the
     /// surface (elsewhere temperature_k). Shared by the material's copies.
     std::shared_ptr<const PropertyMap> temperature_map;
+    /// THERM's parameters (`TEMP_SOLVER_NAME = Therm`); empty for any other solver.
+    std::optional<ThermProperties> therm;
     /// Texture classes (docs/maps.md): every curve of a classic `.ems` holding several, the
     /// first (this material's own) included, in file order; emissivities when
     /// `texture_curves_are_emissivity`, else reflectances. A `<texturemap>` selects among them.
