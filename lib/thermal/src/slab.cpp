@@ -52,8 +52,7 @@ double Slab::face_flux_w_per_m2(const SurfaceForcing& f, double surface_k) const
     const double a = m_material.exposed_area;
     const double e = m_material.thermal_emissivity;
     const double t2 = surface_k * surface_k;
-    return f.absorbed_sun_w_per_m2 +
-           a * e * (f.longwave_down_w_per_m2 - kStefanBoltzmann * t2 * t2) +
+    return f.absorbed_sun_w_per_m2 + e * (f.longwave_down_w_per_m2 - kStefanBoltzmann * t2 * t2) +
            a * f.convection_w_per_m2_k * (f.air_temperature_k - surface_k);
 }
 
@@ -88,8 +87,8 @@ void Slab::step(const SurfaceForcing& f, double dt_s) {
             m_rhs[i] = c * old[i] + q_per_m * width(i);
         }
         // The face: F(T) ≈ F(T*) + F'(T*)(T − T*).
-        const double derivative = -4.0 * a * e * kStefanBoltzmann * surface * surface * surface -
-                                  a * f.convection_w_per_m2_k;
+        const double derivative =
+            -4.0 * e * kStefanBoltzmann * surface * surface * surface - a * f.convection_w_per_m2_k;
         m_diag[0] -= derivative;
         m_rhs[0] += face_flux_w_per_m2(f, surface) - derivative * surface;
         if (m_material.back_held) {

@@ -26,8 +26,8 @@ struct SlabMaterial {
     double conductivity_w_per_m_k = 1.0;
     double solar_absorptance = 0.7;   ///< of the broadband sun (1 − solar reflectance)
     double thermal_emissivity = 0.9;  ///< broadband longwave emissivity (= absorptance)
-    /// Fraction of the face that exchanges heat with the air and the sky (DIRSIG's exposed
-    /// area): convection and longwave scale with it; the sun falls on the facet as traced.
+    /// Fraction of the face that exchanges heat with the air by convection (DIRSIG's exposed
+    /// area); the sun and the longwave reach the whole face.
     double exposed_area = 1.0;
     /// Heat generated inside the slab per unit face area (engines, people), W/m².
     double internal_heat_w_per_m2 = 0.0;
@@ -67,7 +67,7 @@ public:
     /// unit face area, J/m² (for the energy balance).
     double last_step_heat_in_j_per_m2() const noexcept { return m_last_heat_in; }
 
-    /// The net flux into the exposed face at temperature `surface_k`, W/m²: sun + ε·a·(L↓ −
+    /// The net flux into the exposed face at temperature `surface_k`, W/m²: sun + ε·(L↓ −
     /// σT⁴) + a·h·(T_air − T), a the exposed area.
     double face_flux_w_per_m2(const SurfaceForcing& forcing, double surface_k) const noexcept;
 
