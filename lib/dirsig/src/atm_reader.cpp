@@ -48,8 +48,26 @@ model::Atmosphere parse_atm(std::string_view text, const std::string& file,
                                                  "<simpleradiativetransfer> or a glint YAML "
                                                  "atmosphere; " +
                                                  kAtmosphereOverrideHint);
-        } else if (name == "uniformweather" || name == "weather" || name == "classicweather") {
-            diagnostics.warning(child.where(), "<" + name + "> ignored (weather is not modelled)");
+        } else if (name == "uniformweather") {
+            // <uniformweather><classicdata><filename>: a .wth weather history (the nesting of
+            // DIRSIG's demos as glint reads it; docs/formats.md).
+            const std::optional<io::XmlNode> data = child.child("classicdata");
+            const std::optional<io::XmlNode> file_node =
+                data ? data->child("filename") : std::nullopt;
+            if (!file_node || file_node->text().empty()) {
+                diagnostics.warning(child.where(),
+                                    "<uniformweather> without <classicdata><filename> ignored "
+                                    "(glint reads a .wth weather history named there)");
+            } else {
+                atmosphere.weather_file = file_node->text();
+                atmosphere.weather_where = file_node->where();
+                child.warn_unknown_children({"classicdata"}, diagnostics);
+                data->warn_unknown_children({"filename"}, diagnostics);
+            }
+        } else if (name == "weather" || name == "classicweather") {
+            diagnostics.warning(child.where(), "<" + name +
+                                                   "> ignored (glint reads the weather of "
+                                                   "<uniformweather><classicdata><filename>)");
         } else {
             diagnostics.warning(child.where(), "unknown element <" + name + "> ignored");
         }

@@ -272,7 +272,10 @@ std::string unsupported_plugin_fallback(std::string_view name, bool has_basic_at
         case PluginKind::ephemeris:
             return "glint places the sun and moon itself";
         case PluginKind::thermal:
-            return "materials keep their own temperatures";
+            return name == "ThermWeather"
+                       ? "its weather file is read and checked, but glint-render does not run "
+                         "THERM yet: materials keep their own temperatures"
+                       : "materials keep their own temperatures";
         case PluginKind::basic_platform:
         case PluginKind::basic_atmosphere:
         case PluginKind::other:

@@ -17,6 +17,7 @@
 #include "glint/dirsig/readers.h"
 #include "glint/dirsig/trigger_file.h"
 #include "glint/inputs/scene_atmosphere.h"
+#include "glint/inputs/weather.h"
 
 namespace glint::inputs {
 namespace {
@@ -314,6 +315,10 @@ model::SimulationInputs load(const std::filesystem::path& simulation_file,
             report_atmosphere(inputs, errors, diagnostics, *options.observer);
     } else {
         inputs.atmosphere = default_atmosphere();
+    }
+    if (options.atmosphere) {
+        inputs.weather = read_simulation_weather(inputs.simulation, inputs.atmosphere, read,
+                                                 needs_weather(inputs.scene), diagnostics, log);
     }
     if (!options.keep_going) diagnostics.throw_if_errors();  // the scene's before the platforms'
     ParsedFiles parsed;

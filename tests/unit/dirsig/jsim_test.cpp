@@ -522,6 +522,9 @@ TEST(JsimPlugins, KindsByNameAndWhatGlintDoesInstead) {
     EXPECT_EQ(unsupported_plugin_fallback("SpiceEphemeris", false),
               "glint places the sun and moon itself");
     EXPECT_EQ(unsupported_plugin_fallback("ThermWeather", false),
+              "its weather file is read and checked, but glint-render does not run THERM yet: "
+              "materials keep their own temperatures");
+    EXPECT_EQ(unsupported_plugin_fallback("TemperatureSolver", false),
               "materials keep their own temperatures");
     EXPECT_EQ(unsupported_plugin_fallback("Clouds", false), "it has no effect");
 }

@@ -115,9 +115,10 @@ TEST(AtmosphereReader, ReadsAtmSimpleSubset) {
     EXPECT_FALSE(diagnostics.has_errors()) << first_error(diagnostics);
     EXPECT_EQ(a.kind, model::AtmosphereKind::simple);
     EXPECT_DOUBLE_EQ(a.simple.apparent_sky_temperature_k, 260.0);
-    // The weather block is ignored with a warning naming it.
-    ASSERT_EQ(diagnostics.warning_count(), 1u);
-    EXPECT_NE(diagnostics.items()[0].text().find("<uniformweather>"), std::string::npos);
+    // The weather block names a .wth, read by the loader (inputs/weather.h).
+    EXPECT_EQ(diagnostics.warning_count(), 0u);
+    EXPECT_EQ(a.weather_file, "mls.wth");
+    EXPECT_EQ(a.weather_where.line, 10);
 }
 
 TEST(AtmosphereReader, UnsupportedAtmBlockIsAnErrorNamingIt) {

@@ -131,6 +131,10 @@ struct Atmosphere {
     TabulatedAtmosphere tabulated;
     SimpleAtmosphere simple;
     ErrorContext where;  ///< the file (and line of `model`) it was read from
+    /// A DIRSIG `.atm`'s weather history (`<uniformweather><classicdata><filename>`), as
+    /// written (relative to the .atm); empty: none.
+    std::string weather_file;
+    ErrorContext weather_where;
     /// What it came from, for the outputs' provenance: the file read (its path), or
     /// "--atmosphere none" / "--atmosphere parametric", or "default" (glint's default
     /// parametric atmosphere, the simulation naming none).

@@ -15,6 +15,7 @@
 #include "glint/model/scene.h"
 #include "glint/model/simulation.h"
 #include "glint/model/tasks.h"
+#include "glint/model/weather.h"
 
 namespace glint::model {
 
@@ -33,6 +34,8 @@ struct SimulationInputs {
     Scene scene;
     /// The first BasicAtmosphere's file, or the default (parametric) atmosphere.
     Atmosphere atmosphere;
+    /// The weather history the simulation names (glint/inputs/weather.h); empty: none.
+    Weather weather;
     /// One entry per BasicPlatform plugin, in plugin_list order.
     std::vector<PlatformInputs> platforms;
 };
