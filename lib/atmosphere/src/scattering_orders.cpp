@@ -126,6 +126,25 @@ ScatteringSolution solve_scattering_orders(const ScatteringProblem& problem) {
     if (bad(problem.ground_albedo) || problem.ground_albedo < 0.0 || problem.ground_albedo > 1.0) {
         throw input_error("scattering problem: ground albedo must lie in [0, 1]");
     }
+    if (bad(problem.beam_irradiance) || problem.beam_irradiance < 0.0 ||
+        bad(problem.ground_planck) || problem.ground_planck < 0.0 ||
+        bad(problem.top_isotropic_radiance) || problem.top_isotropic_radiance < 0.0) {
+        throw input_error(
+            "scattering problem: the beam, the ground's Planck radiance and the top's radiance "
+            "must be finite and >= 0");
+    }
+    if (!problem.level_planck.empty()) {
+        if (problem.level_planck.size() != problem.layers.size() + 1) {
+            throw input_error("scattering problem: " + std::to_string(problem.level_planck.size()) +
+                              " level Planck radiances for " +
+                              std::to_string(problem.layers.size() + 1) + " levels");
+        }
+        for (double b : problem.level_planck) {
+            if (bad(b) || b < 0.0) {
+                throw input_error("scattering problem: level Planck radiances must be >= 0");
+            }
+        }
+    }
     if (problem.streams < 2 || problem.azimuth_modes < 1 || !(problem.max_sublayer_depth > 0.0)) {
         throw input_error(
             "scattering problem: streams >= 2, azimuth modes >= 1 and a sublayer "
@@ -174,6 +193,25 @@ ScatteringSolution solve_scattering_orders(const ScatteringProblem& problem) {
     }
     const std::size_t sublayers = s.m_layer_of.size();
     const std::size_t boundaries = s.m_tau.size();
+    // The layers' emission (1 − ω) B(τ) at the top and bottom of every sublayer, B linear in τ
+    // within its layer (none without level Planck radiances).
+    std::vector<double> emission_top(sublayers, 0.0), emission_bottom(sublayers, 0.0);
+    if (!problem.level_planck.empty()) {
+        for (std::size_t q = 0; q < sublayers; ++q) {
+            const std::size_t k = s.m_layer_of[q];
+            const double layer_top = s.m_tau[s.m_level_boundary[k]];
+            const double depth = problem.layers[k].optical_depth;
+            const double b0 = problem.level_planck[k];
+            const double b1 = problem.level_planck[k + 1];
+            const auto planck = [&](double tau) {
+                return depth > 0.0 ? b0 + (b1 - b0) * (tau - layer_top) / depth : b0;
+            };
+            const double absorbing = 1.0 - problem.layers[k].single_scatter_albedo;
+            emission_top[q] = absorbing * planck(s.m_tau[q]);
+            emission_bottom[q] = absorbing * planck(s.m_tau[q + 1]);
+        }
+    }
+    const double beam_scale = problem.beam_irradiance;
     const double mu0 = problem.sun_cos_zenith;
     const int lmax = 2 * n - 1;
 
@@ -212,12 +250,15 @@ ScatteringSolution solve_scattering_orders(const ScatteringProblem& problem) {
         std::vector<double> total(boundaries * nd, 0.0);
         const auto at = [&](std::vector<double>& f, std::size_t boundary,
                             std::size_t dir) -> double& { return f[boundary * nd + dir]; };
-        // Order 1: the direct beam scattered once, and (m = 0) the ground's reflection of it.
+        // Order 1: the direct beam scattered once, and (m = 0) the ground's reflection of it;
+        // with thermal sources (m = 0), the radiance entering at the top, the layers' and
+        // the ground's emission.
         {
+            const bool thermal = m == 0;
             for (std::size_t i = 0; i < static_cast<std::size_t>(n); ++i) {
                 const double mu = s.m_mu[i];
                 const std::size_t down = i + static_cast<std::size_t>(n);
-                at(order, 0, down) = 0.0;
+                at(order, 0, down) = thermal ? problem.top_isotropic_radiance : 0.0;
                 for (std::size_t q = 0; q < sublayers; ++q) {
                     const double t = s.m_tau[q];
                     const double d = s.m_tau[q + 1] - t;
@@ -228,11 +269,19 @@ ScatteringSolution solve_scattering_orders(const ScatteringProblem& problem) {
                     double through = e * exprel(y);
                     if (!std::isfinite(through)) through = std::exp(-d / mu0) * exprel(-y);
                     const double integral = std::exp(-t / mu0) * (d / mu) * through;
-                    at(order, q + 1, down) =
-                        at(order, q, down) * e + beam[s.m_layer_of[q]][down] * integral;
+                    at(order, q + 1, down) = at(order, q, down) * e +
+                                             beam_scale * beam[s.m_layer_of[q]][down] * integral;
+                    if (thermal) {
+                        double entry = 0.0, exit = 0.0, attenuation = 0.0;
+                        linear_weights(d / mu, entry, exit, attenuation);
+                        at(order, q + 1, down) +=
+                            entry * emission_top[q] + exit * emission_bottom[q];
+                    }
                 }
                 at(order, sublayers, i) =
-                    m == 0 ? problem.ground_albedo / kPi * mu0 * std::exp(-s.m_tau.back() / mu0)
+                    m == 0 ? beam_scale * problem.ground_albedo / kPi * mu0 *
+                                     std::exp(-s.m_tau.back() / mu0) +
+                                 (1.0 - problem.ground_albedo) * problem.ground_planck
                            : 0.0;
                 for (std::size_t q = sublayers; q-- > 0;) {
                     const double t = s.m_tau[q];
@@ -241,7 +290,13 @@ ScatteringSolution solve_scattering_orders(const ScatteringProblem& problem) {
                     const double integral = std::exp(-t / mu0) *
                                             (-std::expm1(-d * (1.0 / mu0 + 1.0 / mu))) * mu0 /
                                             (mu0 + mu);
-                    at(order, q, i) = at(order, q + 1, i) * e + beam[s.m_layer_of[q]][i] * integral;
+                    at(order, q, i) =
+                        at(order, q + 1, i) * e + beam_scale * beam[s.m_layer_of[q]][i] * integral;
+                    if (thermal) {
+                        double entry = 0.0, exit = 0.0, attenuation = 0.0;
+                        linear_weights(d / mu, entry, exit, attenuation);
+                        at(order, q, i) += entry * emission_bottom[q] + exit * emission_top[q];
+                    }
                 }
             }
         }
@@ -330,7 +385,7 @@ double ScatteringSolution::optical_depth(std::size_t level) const noexcept {
 
 double ScatteringSolution::direct_flux(std::size_t level) const noexcept {
     const double mu0 = m_problem.sun_cos_zenith;
-    return mu0 * std::exp(-optical_depth(level) / mu0);
+    return m_problem.beam_irradiance * mu0 * std::exp(-optical_depth(level) / mu0);
 }
 
 double ScatteringSolution::diffuse_down_flux(std::size_t level) const noexcept {
@@ -395,7 +450,7 @@ std::vector<double> ScatteringSolution::up_modes(std::size_t level, double mu, b
                 row[k][b] = 0.5 * omega * m_weight[b % n] *
                             phase_mode(layer.moments, mi, lambda_view, lambda[b]);
             }
-            beam[k] = omega / (4.0 * kPi) * (m == 0 ? 1.0 : 2.0) *
+            beam[k] = m_problem.beam_irradiance * omega / (4.0 * kPi) * (m == 0 ? 1.0 : 2.0) *
                       phase_mode(layer.moments, mi, lambda_view, lambda_sun);
         }
         const std::vector<double>& field = m_field[m];

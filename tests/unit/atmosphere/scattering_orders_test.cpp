@@ -191,6 +191,124 @@ TEST(ScatteringOrders, BadProblemsAreRefused) {
     ScatteringProblem streams = one_layer(0.1, 1.0, kRayleigh, 0.5);
     streams.streams = 1;
     EXPECT_NE(message(streams).find("streams >= 2"), std::string::npos);
+    ScatteringProblem planck = one_layer(0.1, 1.0, kRayleigh, 0.5);
+    planck.level_planck = {1.0};
+    EXPECT_EQ(message(planck), "scattering problem: 1 level Planck radiances for 2 levels");
+    planck.level_planck = {1.0, -1.0};
+    EXPECT_EQ(message(planck), "scattering problem: level Planck radiances must be >= 0");
+    planck.level_planck.clear();
+    planck.beam_irradiance = -1.0;
+    EXPECT_NE(message(planck).find("must be finite and >= 0"), std::string::npos);
+}
+
+/// ∫ B_ν dν over [lo, hi] cm⁻¹, W/(m² sr): 2hc²ν³/(e^(hcν/kT) − 1) by Simpson's rule on 20,000
+/// intervals (DISORT's PLKAVG, the unit of its test problems' answers).
+double band_planck(double lo_cm, double hi_cm, double temperature_k) {
+    if (temperature_k <= 0.0) return 0.0;
+    constexpr double kC1 = 1.191042972e-8;  // 2hc², W m⁻² sr⁻¹ cm⁴
+    constexpr double kC2 = 1.438776877;     // hc/k, cm K
+    const auto b = [&](double nu) {
+        return nu <= 0.0 ? 0.0 : kC1 * nu * nu * nu / std::expm1(kC2 * nu / temperature_k);
+    };
+    constexpr int kSteps = 20'000;
+    const double h = (hi_cm - lo_cm) / kSteps;
+    double sum = b(lo_cm) + b(hi_cm);
+    for (int k = 1; k < kSteps; ++k) sum += (k % 2 ? 4.0 : 2.0) * b(lo_cm + k * h);
+    return sum * h / 3.0;
+}
+
+/// Henyey–Greenstein moments g^l, l < count.
+std::vector<double> hg_moments(double g, int count) {
+    std::vector<double> out;
+    for (int l = 0; l < count; ++l) out.push_back(std::pow(g, l));
+    return out;
+}
+
+// DISORT's test problem 7A (K. Stamnes et al. 1988; its answers are Kylling & Stamnes's,
+// J. Comp. Phys. 102, 1992, Table I): one absorbing, weakly scattering layer (τ 1, ω 0.1,
+// Henyey–Greenstein g 0.05) emitting at 200 K at its top and 300 K at its bottom over
+// 300-800 cm⁻¹, B linear in τ, a black ground at 0 K, nothing from above. Fluxes within
+// 0.1 % (ten times the largest difference measured, 0.006 %; DISORT's own test criterion is
+// 1 %).
+TEST(ScatteringOrdersThermal, DisortProblem7AEmittingLayer) {
+    EXPECT_NEAR(band_planck(300.0, 800.0, 200.0), 18.085, 0.001);  // the notes' PLKAVG
+    ScatteringProblem p;
+    p.layers = {ScatteringLayer{1.0, 0.1, hg_moments(0.05, 32)}};
+    p.streams = 16;
+    p.beam_irradiance = 0.0;
+    p.level_planck = {band_planck(300.0, 800.0, 200.0), band_planck(300.0, 800.0, 300.0)};
+    p.tolerance = 1e-9;
+    p.max_sublayer_depth = 0.01;
+    const ScatteringSolution s = solve_scattering_orders(p);
+    std::printf("7A: up at the top %.5g (DISORT 86.2936), down at the ground %.5g (121.204)\n",
+                s.diffuse_up_flux(0), s.diffuse_down_flux(1));
+    EXPECT_NEAR(s.diffuse_up_flux(0), 86.2936, 1e-3 * 86.2936);
+    EXPECT_NEAR(s.diffuse_down_flux(1), 121.204, 1e-3 * 121.204);
+    EXPECT_NEAR(s.diffuse_down_flux(0), 0.0, 1e-12);
+    EXPECT_NEAR(s.diffuse_up_flux(1), 0.0, 1e-12);
+}
+
+// DISORT's test problems 6G and 6H: no scattering (ω 0), a layer of τ 1 (6G) or 10 (6H)
+// emitting at 250 K at its top and 300 K at its bottom, an isotropic 100/π plus B(250 K) from
+// above, a beam of 200 at μ₀ 0.5, over 0-50,000 cm⁻¹. Their ground is Hapke's BRDF, which
+// glint's Lambertian ground is not: only the downward fluxes, which no ground touches, are
+// compared (0.1 %).
+TEST(ScatteringOrdersThermal, DisortProblems6GAnd6HEmissionWithoutScattering) {
+    const auto b = [](double t) { return band_planck(0.0, 50'000.0, t); };
+    const struct {
+        double tau;
+        double middle;  // the level inside the layer
+        double down[3];
+    } cases[] = {{1.0, 0.5, {321.497, 304.775, 363.632}}, {10.0, 1.0, {321.497, 255.455, 443.444}}};
+    for (const auto& c : cases) {
+        ScatteringProblem p;
+        p.layers = {ScatteringLayer{c.middle, 0.0, {1.0}},
+                    ScatteringLayer{c.tau - c.middle, 0.0, {1.0}}};
+        p.streams = 16;
+        p.sun_cos_zenith = 0.5;
+        p.beam_irradiance = 200.0;
+        const double f = c.middle / c.tau;
+        p.level_planck = {b(250.0), (1.0 - f) * b(250.0) + f * b(300.0), b(300.0)};
+        p.top_isotropic_radiance = 100.0 / std::numbers::pi + b(250.0);
+        p.max_sublayer_depth = 0.01;
+        const ScatteringSolution s = solve_scattering_orders(p);
+        for (std::size_t level = 0; level < 3; ++level) {
+            EXPECT_NEAR(s.diffuse_down_flux(level), c.down[level], 1e-3 * c.down[level])
+                << "tau " << c.tau << ", level " << level;
+        }
+    }
+}
+
+// DISORT's test problem 7C: every source at once — a beam of 200 at μ₀ 0.5, an isotropic
+// radiance of 100 plus B(100 K) from above, a layer (τ 1, ω 0.5, g 0.8) at 300 K at its top
+// and 200 K at its bottom, a black ground at 320 K, over 0-50,000 cm⁻¹. Direct and diffuse
+// fluxes at τ 0, 0.5 and 1 within 0.1 % (measured ≤ 0.006 %; DISORT's test criterion is
+// 1 %; DISORT answered with 6 streams per hemisphere and delta-M scaling, glint with 16 and
+// the phase function's first 32 moments).
+TEST(ScatteringOrdersThermal, DisortProblem7CAllSources) {
+    const auto b = [](double t) { return band_planck(0.0, 50'000.0, t); };
+    ScatteringProblem p;
+    p.layers = {ScatteringLayer{0.5, 0.5, hg_moments(0.8, 32)},
+                ScatteringLayer{0.5, 0.5, hg_moments(0.8, 32)}};
+    p.streams = 16;
+    p.sun_cos_zenith = 0.5;
+    p.beam_irradiance = 200.0;
+    p.level_planck = {b(300.0), 0.5 * (b(300.0) + b(200.0)), b(200.0)};
+    p.ground_planck = b(320.0);
+    p.top_isotropic_radiance = 100.0 + b(100.0);
+    p.tolerance = 1e-9;
+    p.max_sublayer_depth = 0.01;
+    const ScatteringSolution s = solve_scattering_orders(p);
+    const double direct[] = {100.0, 36.7879, 13.5335};
+    const double down[] = {319.830, 354.099, 301.334};
+    const double up[] = {429.572, 447.018, 594.576};
+    for (std::size_t level = 0; level < 3; ++level) {
+        std::printf("7C level %zu: down %.6g (DISORT %.6g), up %.6g (%.6g)\n", level,
+                    s.diffuse_down_flux(level), down[level], s.diffuse_up_flux(level), up[level]);
+        EXPECT_NEAR(s.direct_flux(level), direct[level], 1e-5 * direct[level]);
+        EXPECT_NEAR(s.diffuse_down_flux(level), down[level], 1e-3 * down[level]) << level;
+        EXPECT_NEAR(s.diffuse_up_flux(level), up[level], 1e-3 * up[level]) << level;
+    }
 }
 
 }  // namespace scattering_orders_test

@@ -22,11 +22,20 @@ struct ScatteringLayer {
     std::vector<double> moments{1.0};
 };
 
-/// A problem; the beam's irradiance is 1 on a surface normal to it at the top.
+/// A problem; the beam's irradiance is `beam_irradiance` (1 by default) on a surface normal to
+/// it at the top. Thermal sources, in any unit of radiance (the fluxes and radiances then
+/// come out in it): the layers' own emission (1 − ω) B(τ), B given at every level and linear
+/// in optical depth within a layer; the ground's (1 − A) B_ground; an isotropic radiance
+/// entering at the top.
 struct ScatteringProblem {
     std::vector<ScatteringLayer> layers;  ///< from the top of the atmosphere down
     double sun_cos_zenith = 1.0;          ///< μ₀ in (0, 1]
     double ground_albedo = 0.0;           ///< Lambertian, [0, 1]
+    double beam_irradiance = 1.0;         ///< ≥ 0; 0: no beam
+    /// B at each level (layers.size() + 1 values, top first); empty: the layers do not emit.
+    std::vector<double> level_planck;
+    double ground_planck = 0.0;           ///< B of the ground (it emits (1 − A) of it)
+    double top_isotropic_radiance = 0.0;  ///< entering downward at the top, every direction
     int streams = 8;                      ///< Gauss–Legendre directions per hemisphere
     int azimuth_modes = 1;                ///< Fourier terms cos(mφ), m < azimuth_modes
     double max_sublayer_depth = 0.02;     ///< optical depth of the integration sublayers
@@ -36,7 +45,8 @@ struct ScatteringProblem {
 };
 
 /// The solution. Levels are the layer boundaries: 0 at the top, layers.size() at the ground.
-/// Fluxes are per unit beam irradiance normal to the beam at the top.
+/// Fluxes are in the units of the beam's irradiance normal to it at the top (1 by default)
+/// and of the thermal sources.
 class ScatteringSolution {
 public:
     std::size_t levels() const noexcept { return m_level_boundary.size(); }
@@ -49,7 +59,8 @@ public:
     double diffuse_up_flux(std::size_t level) const noexcept;
     /// Upward radiance at `level` in direction cos(zenith) = `mu` (> 0), at azimuth
     /// `relative_azimuth_rad` from the beam's direction of travel (0: light travelling away
-    /// from the sun), from all scattering except the direct beam's first: the diffuse field,
+    /// from the sun), from all scattering except the direct beam's first (the layers' own
+    /// thermal emission is not in it: the fluxes and the field hold it): the diffuse field,
     /// including the light the ground reflected, scattered once more between the ground and
     /// `level`. The light reflected by the ground reaching `level` unscattered is not in it.
     double multiple_scatter_up_radiance(std::size_t level, double mu,
@@ -69,9 +80,9 @@ private:
     std::vector<double> up_modes(std::size_t level, double mu, bool diffuse) const;
 
     ScatteringProblem m_problem;
-    std::vector<double> m_mu;      ///< Gauss nodes in (0, 1)
-    std::vector<double> m_weight;  ///< Gauss weights (sum 1)
-    std::vector<double> m_tau;     ///< sublayer boundaries, top (0) to ground
+    std::vector<double> m_mu;                   ///< Gauss nodes in (0, 1)
+    std::vector<double> m_weight;               ///< Gauss weights (sum 1)
+    std::vector<double> m_tau;                  ///< sublayer boundaries, top (0) to ground
     std::vector<std::size_t> m_layer_of;        ///< layer of each sublayer
     std::vector<std::size_t> m_level_boundary;  ///< sublayer boundary of each level
     /// Total field per mode: [mode][boundary][direction], directions 0..N−1 upward (+μᵢ),
@@ -80,7 +91,8 @@ private:
     std::vector<int> m_orders;
 };
 
-/// The n-point Gauss–Legendre rule on (0, 1), weights summing to 1 (exact for polynomials of degree ≤ 2n − 1).
+/// The n-point Gauss–Legendre rule on (0, 1), weights summing to 1 (exact for polynomials of degree
+/// ≤ 2n − 1).
 void gauss_legendre_unit(int n, std::vector<double>& nodes, std::vector<double>& weights);
 
 /// Solves `problem`. Throws glint::Error (input) for an empty layer list, a negative or
