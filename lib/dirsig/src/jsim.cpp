@@ -134,7 +134,11 @@ model::Simulation JsimReader::read_simulation(const Json& value, const std::stri
     // every plugin is read: an atmosphere plugin beside a BasicAtmosphere changes nothing).
     const bool has_basic_atmosphere = simulation.atmosphere() != nullptr;
     for (const model::Plugin& plugin : simulation.plugins) {
-        if (plugin.basic_platform || plugin.basic_atmosphere || plugin.name.empty()) continue;
+        // ThermWeather's weather drives THERM (glint/inputs/weather.h).
+        if (plugin.basic_platform || plugin.basic_atmosphere || plugin.name.empty() ||
+            plugin.name == "ThermWeather") {
+            continue;
+        }
         m_diagnostics.warning(plugin.where,
                               "plugin \"" + plugin.name + "\" is not run: " +
                                   unsupported_plugin_fallback(plugin.name, has_basic_atmosphere) +
@@ -272,10 +276,8 @@ std::string unsupported_plugin_fallback(std::string_view name, bool has_basic_at
         case PluginKind::ephemeris:
             return "glint places the sun and moon itself";
         case PluginKind::thermal:
-            return name == "ThermWeather"
-                       ? "its weather file is read and checked, but glint-render does not run "
-                         "THERM yet: materials keep their own temperatures"
-                       : "materials keep their own temperatures";
+            return "materials keep their own temperatures (a ThermWeather plugin's weather "
+                   "drives THERM)";
         case PluginKind::basic_platform:
         case PluginKind::basic_atmosphere:
         case PluginKind::other:

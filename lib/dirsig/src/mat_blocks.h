@@ -69,7 +69,7 @@ struct MatReader {
     struct Ignored {
         ErrorContext first;
         std::vector<int> lines;
-        std::string suffix = " ignored";
+        std::string suffix = " ignored";  ///< what the warning says after `what`
     };
     std::map<std::string, Ignored> ignored;
     std::vector<std::string> ignored_order;  ///< as first met

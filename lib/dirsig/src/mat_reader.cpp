@@ -158,14 +158,7 @@ model::Material MatReader::read_entry(const MatBlock& block, std::size_t index) 
     }
     if (const MatEntry* solver = block.find("TEMP_SOLVER_NAME")) {
         const std::string s = to_upper(solver->value);
-        if (s == "THERM") {
-            // Read and checked (mat_therm.cpp); said once per file with the count.
-            ignore(
-                "temperature solver Therm: its parameters are read and checked, but "
-                "glint-render does not run THERM yet; the constant TEMPERATURE (default " +
-                    format_shortest(model::kDefaultTemperature_k) + " K) is used",
-                at(solver->line, path + "/TEMP_SOLVER_NAME"), "");
-        } else if (s != "DATADRIVEN" && s != "CONSTANT" && s != "MAP") {
+        if (s != "THERM" && s != "DATADRIVEN" && s != "CONSTANT" && s != "MAP") {
             diagnostics.warning(at(solver->line, path + "/TEMP_SOLVER_NAME"),
                                 "temperature solver \"" + solver->value + "\" of material \"" +
                                     m.name +

@@ -151,7 +151,7 @@ model::Weather parse_wth(std::string_view text, const std::string& file, Diagnos
     } else if (diagnostics.error_count() == errors_before &&
                static_cast<long long>(weather.records.size()) != *declared_rows) {
         error(last_line, "the header says " + std::to_string(*declared_rows) +
-                               " rows, the file has " + std::to_string(weather.records.size()));
+                             " rows, the file has " + std::to_string(weather.records.size()));
     }
     if (first_precipitation > 0) {
         diagnostics.warning(ErrorContext{file, first_precipitation, {}},

@@ -89,12 +89,13 @@ model::Weather read_simulation_weather(const model::Simulation& simulation,
         weather = read_named(atmosphere.weather_file,
                              std::filesystem::path(atmosphere.source).parent_path(),
                              atmosphere.weather_where, options, needed, diagnostics);
-        if (!weather.empty()) {
-            diagnostics.warning(atmosphere.weather_where,
-                                "weather file " + weather.file +
-                                    " is read and checked, but glint-render does not run THERM "
-                                    "yet: materials keep their own temperatures");
-        }
+    }
+    if (needed && plugin == nullptr && atmosphere.weather_file.empty()) {
+        diagnostics.error(ErrorContext{simulation.file, 0, {}},
+                          "a material uses THERM (TEMP_SOLVER_NAME = Therm) but the simulation "
+                          "names no weather: add a ThermWeather plugin with the .wth as its "
+                          "filename, or name it in the .atm's "
+                          "<uniformweather><classicdata><filename>");
     }
     if (!weather.empty()) {
         log.debug("Weather: " + weather.file + ", " + std::to_string(weather.records.size()) +

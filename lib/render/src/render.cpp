@@ -88,6 +88,13 @@ RenderReport render(model::SimulationInputs inputs, const RenderOptions& options
             in.scene, detail::build_options(options, 0.0, 0.0), context.log));
         report.device = static_scene->device();
         in.light->warn_if_one_geometry(*static_scene, context.log);
+        detail::apply_therm(plan, *static_scene, context);
+    } else if (std::any_of(in.scene.materials.begin(), in.scene.materials.end(),
+                           [](const model::Material& m) { return bool(m.therm); })) {
+        context.log.warning(
+            "THERM is solved for scenes where nothing moves: this scene has "
+            "moving instances, and its THERM materials keep their constant "
+            "TEMPERATURE");
     }
     detail::write_telemetry(plan, options, context);                  // complete before any capture
     std::map<std::size_t, radiometry::SensorPathCache> path_caches;   // per focal plane

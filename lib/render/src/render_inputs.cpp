@@ -50,6 +50,7 @@ void build_all(RenderInputs& in, model::SimulationInputs loaded, const RenderOpt
     in.simulation = std::move(loaded.simulation);
     in.scene = std::move(loaded.scene);
     in.atmosphere = std::move(loaded.atmosphere);
+    in.weather = std::move(loaded.weather);
     in.frame = in.schedule->frame();
     const DateTime reference = in.schedule->plugins().empty()
                                    ? DateTime{}

@@ -44,6 +44,7 @@ struct RenderInputs {
     model::Simulation simulation;
     model::Scene scene;
     model::Atmosphere atmosphere;
+    model::Weather weather;  ///< the simulation's weather history (THERM); empty: none
     motion::SceneFrame frame;
     std::optional<schedule::Schedule> schedule;
     /// The scene instances' trajectories: the Embree scene once, or per capture when
@@ -199,6 +200,12 @@ struct PlannedRender {
     std::unique_ptr<const RenderPlan> plan;
     ImageOutputs outputs;
 };
+
+/// Solves THERM (glint/thermal/therm.h) for every triangle of a static instance whose material
+/// uses it, at the planned captures' times, and gives `geometry` the temperatures
+/// (render_therm.cpp). Nothing without such a material; throws glint::Error (input) when one
+/// exists and the simulation names no weather.
+void apply_therm(const RenderPlan& plan, scene::GeometryScene& geometry, const Context& context);
 
 /// Takes over the loaded inputs, selects the captures (--schedule), builds the state of every
 /// focal plane that writes a file, then plans every output file. Throws what

@@ -78,6 +78,8 @@ struct GeometryScene::Impl {
     Vec3 anchor_m;
     /// The scene's property maps, applied to every hit.
     SurfaceMaps maps;
+    /// THERM's facet temperatures (null: none).
+    std::shared_ptr<const FacetTemperatures> facet_temperatures;
     Bounds bounds;       ///< tight (reported)
     Bounds clip_bounds;  ///< enlarged, for clipping rays in double precision
     TimeWindow window;

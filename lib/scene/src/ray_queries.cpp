@@ -171,7 +171,8 @@ void apply_maps(const SurfaceMaps& maps, const detail::ObjectData& object, float
 /// (docs/scene.md, "Hit points").
 template <class SceneImpl>
 void make_hit(const SceneImpl& impl, const Vec3& origin_m, const Vec3& direction, float time01,
-              std::uint32_t instance_id, std::uint32_t triangle, float u, float v, RayHit& hit) {
+              double time_s, std::uint32_t instance_id, std::uint32_t triangle, float u, float v,
+              RayHit& hit) {
     const std::vector<detail::InstanceData>& instances = impl.instances;
     const std::vector<detail::ObjectData>& objects = impl.objects;
     const Vec3& anchor_m = impl.anchor_m;
@@ -219,6 +220,9 @@ void make_hit(const SceneImpl& impl, const Vec3& origin_m, const Vec3& direction
     hit.temperature_k = 0.0;
     hit.bumped = false;
     if (impl.maps.maps_material(hit.material)) apply_maps(impl.maps, object, u, v, hit);
+    if (impl.facet_temperatures && hit.temperature_k == 0.0) {
+        hit.temperature_k = impl.facet_temperatures->at(hit.instance, hit.triangle, time_s);
+    }
 }
 
 /// Embree's packet of kPacketSize rays, 64-byte aligned as rtcIntersect16 requires, with
@@ -325,7 +329,7 @@ bool GeometryScene::intersect_into(const Vec3& origin_m, const Vec3& direction, 
     rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(impl.top.get(), &context, &rayhit);
     if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
-    make_hit(impl, origin_m, direction, time01, rayhit.hit.instID[0], rayhit.hit.primID,
+    make_hit(impl, origin_m, direction, time01, time_s, rayhit.hit.instID[0], rayhit.hit.primID,
              rayhit.hit.u, rayhit.hit.v, hit);
     return true;
 }
@@ -355,8 +359,8 @@ void GeometryScene::intersect_packet(std::span<const PacketRay> rays,
             hits[k].reset();
             continue;
         }
-        make_hit(impl, rays[k].origin_m, rays[k].direction, packet.time01[k], hit.instID[0][k],
-                 hit.primID[k], hit.u[k], hit.v[k], hits[k].emplace());
+        make_hit(impl, rays[k].origin_m, rays[k].direction, packet.time01[k], rays[k].time_s,
+                 hit.instID[0][k], hit.primID[k], hit.u[k], hit.v[k], hits[k].emplace());
     }
 }
 
@@ -400,6 +404,48 @@ bool GeometryScene::occluded(const Vec3& origin_m, const Vec3& direction, double
 Vec3 GeometryScene::spawn_origin(const RayHit& hit, const Vec3& direction) const noexcept {
     const double side = dot(direction, hit.normal) >= 0.0 ? 1.0 : -1.0;
     return hit.position_m + hit.normal * (side * hit.spawn_offset_m);
+}
+
+std::vector<GeometryScene::Facet> GeometryScene::static_facets(
+    const std::function<bool(std::uint32_t)>& wanted) const {
+    const Impl& impl = *m_impl;
+    std::vector<Facet> out;
+    for (std::size_t i = 0; i < impl.instances.size(); ++i) {
+        const detail::InstanceData& instance = impl.instances[i];
+        if (instance.moving) continue;
+        const detail::ObjectData& object = impl.objects[instance.object];
+        for (std::uint64_t t = 0; t < object.triangle_count; ++t) {
+            const auto triangle = static_cast<std::uint32_t>(t);
+            const std::uint32_t material =
+                object.materials.empty() ? object.single_material : object.materials[triangle];
+            if (!wanted(material)) continue;
+            const std::uint32_t* corners = object.triangles + 3 * static_cast<std::size_t>(t);
+            const Vec3 v0 = instance.to_frame.apply(vertex(object.vertices, corners[0]));
+            const Vec3 v1 = instance.to_frame.apply(vertex(object.vertices, corners[1]));
+            const Vec3 v2 = instance.to_frame.apply(vertex(object.vertices, corners[2]));
+            const Vec3 in_frame = (v0 + v1 + v2) * (1.0 / 3.0);
+            const detail::TrianglePlane& plane = object.planes[triangle];
+            const Vec3 n =
+                instance.normal_matrix * Vec3{plane.normal[0], plane.normal[1], plane.normal[2]};
+            Facet f;
+            f.instance = static_cast<std::uint32_t>(i);
+            f.triangle = triangle;
+            f.material = material;
+            f.centroid_m = in_frame + impl.anchor_m;
+            f.normal = dot(n, n) > 0.0 ? normalized(n) : Vec3{};
+            f.spawn_offset_m =
+                kSpawnFloor_m +
+                kSpawnRelative *
+                    (largest_abs(in_frame) + largest_abs(instance.to_frame.translation_m) +
+                     2.0 * plane.diameter_m * row_norm(instance.to_frame.linear));
+            out.push_back(f);
+        }
+    }
+    return out;
+}
+
+void GeometryScene::set_facet_temperatures(std::shared_ptr<const FacetTemperatures> temperatures) {
+    m_impl->facet_temperatures = std::move(temperatures);
 }
 
 }  // namespace glint::scene

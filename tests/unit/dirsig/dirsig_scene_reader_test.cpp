@@ -335,7 +335,7 @@ TEST(DirsigSceneReaderErrors, MaterialProblems) {
     EXPECT_THAT(all, HasSubstr("m.mat:15: MATERIAL_ENTRY[3]/TEMPERATURE: temperature \"-4\""));
     EXPECT_THAT(all, HasSubstr("m.mat:13: MATERIAL_ENTRY[3]: missing SURFACE_PROPERTIES"));
     EXPECT_EQ(diagnostics.error_count(), 5u) << all;
-    EXPECT_EQ(diagnostics.warning_count(), 2u) << all;
+    EXPECT_EQ(diagnostics.warning_count(), 1u) << all;
 }
 
 TEST(DirsigSceneReaderErrors, GlistIncludingItselfAndBadMotion) {

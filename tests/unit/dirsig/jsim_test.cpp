@@ -138,7 +138,8 @@ TEST(JsimReader, SingleObjectOtherPluginsAndMediumList) {
 })",
                                 diagnostics);
     // Each plugin glint does not run and the non-empty medium_list: one warning each, at its
-    // entry (the scene offset is warned about where the scene is loaded).
+    // entry (the scene offset is warned about where the scene is loaded). ThermWeather is run
+    // (its weather drives THERM; its file is checked where the inputs are loaded).
     std::vector<std::string> warned;
     for (const Diagnostic& item : diagnostics.items()) {
         EXPECT_EQ(item.severity, Diagnostic::Severity::warning) << item.text();
@@ -147,8 +148,8 @@ TEST(JsimReader, SingleObjectOtherPluginsAndMediumList) {
             << item.text();
         warned.push_back(item.where.element);
     }
-    EXPECT_EQ(warned, (std::vector<std::string>{"plugin_list[0]", "plugin_list[1]",
-                                                "plugin_list[2]", "medium_list"}));
+    EXPECT_EQ(warned,
+              (std::vector<std::string>{"plugin_list[0]", "plugin_list[1]", "medium_list"}));
     ASSERT_EQ(sims.size(), 1u);
     const model::Simulation& sim = sims[0];
     EXPECT_EQ(sim.scenes[0].file.resolved, std::filesystem::path("/data/s.scene"));
@@ -521,11 +522,9 @@ TEST(JsimPlugins, KindsByNameAndWhatGlintDoesInstead) {
               "the BasicAtmosphere entry's atmosphere is used");
     EXPECT_EQ(unsupported_plugin_fallback("SpiceEphemeris", false),
               "glint places the sun and moon itself");
-    EXPECT_EQ(unsupported_plugin_fallback("ThermWeather", false),
-              "its weather file is read and checked, but glint-render does not run THERM yet: "
-              "materials keep their own temperatures");
     EXPECT_EQ(unsupported_plugin_fallback("TemperatureSolver", false),
-              "materials keep their own temperatures");
+              "materials keep their own temperatures (a ThermWeather plugin's weather drives "
+              "THERM)");
     EXPECT_EQ(unsupported_plugin_fallback("Clouds", false), "it has no effect");
 }
 

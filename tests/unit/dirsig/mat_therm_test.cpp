@@ -66,15 +66,13 @@ TEST(MatTherm, KeysAreConvertedToSiAndReadingsSaidOncePerFile) {
     EXPECT_EQ(w.solar_absorptance, 0.45);                 // the older key
     EXPECT_FALSE(w.thermal_emissivity);                   // from the .ems when rendered
     EXPECT_EQ(w.exposed_area, 0.5);                       // the magnitude
-    // Warnings, each once: the units, the negative exposed area, SPECULARITY, and that
-    // THERM is not run yet (with the count of its materials).
+    // Warnings, each once however many materials: the units, the negative exposed area,
+    // SPECULARITY.
     const std::string text = test::diagnostics_text(diagnostics);
-    EXPECT_EQ(diagnostics.warning_count(), 4u) << text;
+    EXPECT_EQ(diagnostics.warning_count(), 3u) << text;
     EXPECT_THAT(text, HasSubstr("THERM units read as DIRSIG's files use them"));
     EXPECT_THAT(text, HasSubstr("a negative EXPOSED_AREA is read as its magnitude"));
     EXPECT_THAT(text, HasSubstr("SPECULARITY (the surface properties' lobes apply) ignored"));
-    EXPECT_THAT(text, HasSubstr("glint-render does not run THERM yet"));
-    EXPECT_THAT(text, HasSubstr("(3 times: also lines"));
 }
 
 TEST(MatTherm, ZeroThicknessIsAFaceWithoutStorage) {

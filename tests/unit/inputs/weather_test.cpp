@@ -69,9 +69,7 @@ TEST(SimulationWeather, TheAtmsFileIsRelativeToTheAtm) {
         model::Simulation{}, atm_naming(dir, "mls.wth"), {}, false, diagnostics);
     EXPECT_FALSE(diagnostics.has_errors()) << test::diagnostics_text(diagnostics);
     EXPECT_EQ(w.records.size(), 2u);
-    // Read and checked, but not run yet: said at the .atm.
-    EXPECT_THAT(test::diagnostics_text(diagnostics),
-                HasSubstr("glint-render does not run THERM yet"));
+    EXPECT_EQ(diagnostics.warning_count(), 0u) << test::diagnostics_text(diagnostics);
 }
 
 TEST(SimulationWeather, AMissingFileIsAnErrorOnlyWhenNeeded) {
@@ -98,6 +96,15 @@ TEST(SimulationWeather, AMissingFileIsAnErrorOnlyWhenNeeded) {
     (void)read_simulation_weather(with_plugin(dir, R"({"filename": "bad.wth"})"),
                                   model::Atmosphere{}, {}, false, bad);
     EXPECT_THAT(test::only_error(bad).message, HasSubstr("relative humidity 50 is not a fraction"));
+    // Needed and none named: an error at the simulation.
+    Diagnostics none;
+    model::Simulation bare;
+    bare.file = "bare.jsim";
+    EXPECT_TRUE(read_simulation_weather(bare, model::Atmosphere{}, {}, true, none).empty());
+    EXPECT_THAT(test::only_error(none).message, HasSubstr("names no weather"));
+    Diagnostics unneeded;
+    (void)read_simulation_weather(bare, model::Atmosphere{}, {}, false, unneeded);
+    EXPECT_TRUE(unneeded.items().empty());
     model::Scene scene;
     EXPECT_FALSE(needs_weather(scene));
     scene.materials.emplace_back().therm = model::ThermProperties{};

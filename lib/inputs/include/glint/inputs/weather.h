@@ -18,7 +18,8 @@ namespace glint::inputs {
 /// row by row (glint/dirsig/wth_reader.h); empty when none is named. A bad row is an error in
 /// `diagnostics`; a ThermWeather plugin without a `filename` input or a missing file is an
 /// error when the weather is `needed` (a material uses THERM), else a warning (DIRSIG's
-/// simulations name a weather whether or not a material uses it). A ThermWeather plugin
+/// simulations name a weather whether or not a material uses it); naming none when it is
+/// needed is an error at the simulation file. A ThermWeather plugin
 /// beside an `.atm` that names a weather too is a warning at the .atm's (the plugin's is used).
 model::Weather read_simulation_weather(const model::Simulation& simulation,
                                        const model::Atmosphere& atmosphere,

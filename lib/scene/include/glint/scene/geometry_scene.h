@@ -30,6 +30,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -44,6 +45,7 @@
 #include "glint/motion/geometry.h"
 #include "glint/motion/scene_instances.h"
 #include "glint/motion/trajectory.h"
+#include "glint/scene/facet_temperatures.h"
 #include "glint/scene/surface_maps.h"
 
 namespace glint::scene {
@@ -203,6 +205,23 @@ public:
     const Bounds& bounds() const noexcept;
     /// The scene's property maps (applied to every hit; a mixture's draw is the caller's).
     const SurfaceMaps& maps() const noexcept;
+
+    /// A triangle of a static instance in scene ENU (for per-facet work: THERM).
+    struct Facet {
+        std::uint32_t instance = 0;
+        std::uint32_t triangle = 0;
+        std::uint32_t material = 0;  ///< the triangle's own (before any property map)
+        Vec3 centroid_m;
+        Vec3 normal;  ///< unit, on the front face's side (zero for a degenerate triangle)
+        double spawn_offset_m = 0.0;  ///< as a hit there would have it (spawn_origin())
+    };
+    /// Every triangle of the static instances whose material index `wanted` says, in instance
+    /// then triangle order.
+    std::vector<Facet> static_facets(const std::function<bool(std::uint32_t)>& wanted) const;
+    /// Per-facet temperatures over time (THERM): a hit on a listed facet reports its
+    /// temperature at the ray's time (RayHit::temperature_k) unless a temperature map gave
+    /// one. Set before tracing; null clears.
+    void set_facet_temperatures(std::shared_ptr<const FacetTemperatures> temperatures);
     /// Bounds of instance `instance` (index into scene.instances) over the window — a moving
     /// instance's swept box; empty for an index out of range.
     Bounds instance_bounds(std::size_t instance) const noexcept;

@@ -1,0 +1,155 @@
+// SPDX-License-Identifier: Apache-2.0
+// THERM in a render (docs/thermal.md, "THERM in the renderer"): every triangle of a static
+// instance whose material uses THERM is solved once, before the first capture, at the
+// captures' times (mid-window, rounded to kTimeStep_s), its sunlit share over the 24 h before
+// traced against the scene itself; the scene then reports those temperatures at its hits.
+// The weather's hours are local time: hour 24 is the local midnight that starts the day of
+// the first capture.
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "glint/core/error.h"
+#include "glint/core/text.h"
+#include "glint/thermal/therm.h"
+#include "render_parts.h"
+
+namespace glint::render::detail {
+
+namespace {
+
+/// The captures' times are rounded to this step: a pushbroom's lines share a solution.
+constexpr double kTimeStep_s = 60.0;
+
+/// The broadband optical properties THERM uses where the .mat gives none: 1 − the mean
+/// reflectance over 0.3-2.5 µm (every 10 nm), the mean emissivity over 8-14 µm.
+thermal::ThermFacet optics(const model::Material& m, const model::ThermProperties& t) {
+    thermal::ThermFacet f;
+    const auto mean = [](const model::SpectralTable& table, double lo, double hi) {
+        if (table.wavelengths_um.empty()) return -1.0;
+        double sum = 0.0;
+        int count = 0;
+        for (double wl = lo; wl <= hi + 1e-9; wl += 0.01) {
+            sum += model::sample_held(table, wl);
+            ++count;
+        }
+        return sum / count;
+    };
+    const double reflectance = mean(m.reflectance, 0.3, 2.5);
+    f.solar_absorptance = t.solar_absorptance.value_or(
+        reflectance >= 0.0 ? std::clamp(1.0 - reflectance, 0.0, 1.0) : 0.7);
+    double emissivity = mean(m.emissivity, 8.0, 14.0);
+    if (emissivity < 0.0) {
+        const double r = mean(m.reflectance, 8.0, 14.0);
+        emissivity = r >= 0.0 ? 1.0 - r : 0.9;
+    }
+    f.thermal_emissivity = t.thermal_emissivity.value_or(std::clamp(emissivity, 0.0, 1.0));
+    return f;
+}
+
+}  // namespace
+
+void apply_therm(const RenderPlan& plan, scene::GeometryScene& geometry, const Context& context) {
+    const RenderInputs& in = plan.inputs;
+    std::vector<std::uint32_t> therm;
+    for (std::size_t i = 0; i < in.scene.materials.size(); ++i) {
+        if (in.scene.materials[i].therm) therm.push_back(static_cast<std::uint32_t>(i));
+    }
+    if (therm.empty() || plan.captures.empty()) return;
+    if (in.weather.empty()) {
+        throw input_error("material \"" + in.scene.materials[therm.front()].name +
+                              "\" uses THERM but the simulation names no weather (a ThermWeather "
+                              "plugin's filename, or the .atm's "
+                              "<uniformweather><classicdata><filename>)",
+                          in.scene.materials[therm.front()].therm->where);
+    }
+    // The captures' times, in the rays' clock (the first platform's tasks reference).
+    const auto& plugins = in.schedule->plugins();
+    const DateTime reference = plugins.front().tasks.reference;
+    std::set<double> rounded;
+    for (const PlannedCapture& p : plan.captures) {
+        const auto& source = in.schedule->sources()[p.capture.source];
+        const DateTime own = plugins[source.plugin].tasks.reference;
+        if (own != reference) {
+            throw input_error("THERM needs every platform's tasks on one reference time (" +
+                              format_iso8601_utc(reference) + " and " + format_iso8601_utc(own) +
+                              ")");
+        }
+        const double mid = 0.5 * (p.capture.t0_s + p.capture.t1_s);
+        rounded.insert(std::round(mid / kTimeStep_s) * kTimeStep_s);
+    }
+    const std::vector<double> times_s(rounded.begin(), rounded.end());
+
+    // Local time: the offset the tasks' time was written with, else the longitude's zone.
+    const double longitude = in.frame.origin().longitude_deg;
+    const bool written = reference.utc_offset_min != 0;
+    const double offset_s =
+        written ? 60.0 * reference.utc_offset_min : 3600.0 * std::round(longitude / 15.0);
+    if (!written && std::round(longitude / 15.0) != 0.0) {
+        context.log.warning(
+            "THERM: the tasks' time has no UTC offset: the weather's local time "
+            "is taken as UTC" +
+            std::string(offset_s >= 0.0 ? "+" : "") + format_shortest(offset_s / 3600.0) +
+            " h (the longitude's zone)");
+    }
+    // Weather hour of a ray-clock time t: 24 + hours since the local midnight of the first
+    // capture's day.
+    const DateTime first_local = add_seconds(add_seconds(reference, times_s.front()), offset_s);
+    const double since_midnight_s =
+        static_cast<double>(((first_local.unix_s % 86'400) + 86'400) % 86'400) +
+        first_local.fraction_s;
+    const double hour_of_first = 24.0 + since_midnight_s / 3600.0;
+    const auto weather_hour = [&](double t_s) {
+        return hour_of_first + (t_s - times_s.front()) / 3600.0;
+    };
+    const auto ray_time = [&](double hour) {
+        return times_s.front() + (hour - hour_of_first) * 3600.0;
+    };
+    std::vector<double> hours;
+    for (double t : times_s) hours.push_back(weather_hour(t));
+
+    const std::vector<scene::GeometryScene::Facet> facets = geometry.static_facets(
+        [&](std::uint32_t m) { return std::find(therm.begin(), therm.end(), m) != therm.end(); });
+    context.log.info("THERM: " + std::to_string(facets.size()) + " facets at " +
+                     std::to_string(times_s.size()) + " time(s), weather " + in.weather.file +
+                     " from hour " + format_shortest(std::round(hours.front() * 100.0) / 100.0));
+    std::vector<std::vector<double>> solved(facets.size());
+    const auto solve_one = [&](std::size_t i) {
+        const scene::GeometryScene::Facet& f = facets[i];
+        const model::Material& material = in.scene.materials[f.material];
+        thermal::ThermFacet facet = optics(material, *material.therm);
+        facet.normal = {f.normal.x, f.normal.y, f.normal.z};
+        const auto sun = [&](double hour) {
+            const motion::SunPosition p = in.light->sun_at(add_seconds(reference, ray_time(hour)));
+            return std::array<double, 3>{p.direction_enu.x, p.direction_enu.y, p.direction_enu.z};
+        };
+        const auto sunlit = [&](double hour) {
+            const std::array<double, 3> s = sun(hour);
+            const motion::Vec3 to_sun{s[0], s[1], s[2]};
+            if (s[2] <= 0.0 || dot(to_sun, f.normal) <= 0.0) return 0.0;
+            const motion::Vec3 origin = f.centroid_m + f.normal * f.spawn_offset_m;
+            return geometry.occluded(origin, to_sun, ray_time(hour)) ? 0.0 : 1.0;
+        };
+        solved[i] =
+            thermal::therm_temperatures_k(*material.therm, facet, in.weather, sun, sunlit, hours);
+    };
+    tbb::task_arena arena(context.threads == 0 ? tbb::task_arena::automatic
+                                               : static_cast<int>(context.threads));
+    arena.execute([&] {
+        tbb::parallel_for(std::size_t{0}, facets.size(), [&](std::size_t i) { solve_one(i); });
+    });
+    auto table = std::make_shared<scene::FacetTemperatures>(times_s);
+    for (std::size_t i = 0; i < facets.size(); ++i) {
+        table->add(facets[i].instance, facets[i].triangle, solved[i]);
+    }
+    geometry.set_facet_temperatures(std::move(table));
+}
+
+}  // namespace glint::render::detail
