@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // THERM in a render (docs/thermal.md, "THERM in the renderer"): every triangle of a static
-// instance whose material uses THERM is solved once, before the first capture, at the
-// captures' times (mid-window, rounded to kTimeStep_s), its sunlit share over the 24 h before
-// traced against the scene itself; the scene then reports those temperatures at its hits.
+// instance whose material uses THERM, cut into cells of at most kCellSize_m, is solved once
+// per cell before the first capture, at the captures' times (mid-window, rounded to
+// kTimeStep_s), its sunlit share over the 24 h before traced against the scene itself; the
+// scene then reports those temperatures at its hits.
 // The weather's hours are local time: hour 24 is the local midnight that starts the day of
 // the first capture.
 #include <tbb/parallel_for.h>
@@ -27,6 +28,10 @@ namespace {
 
 /// The captures' times are rounded to this step: a pushbroom's lines share a solution.
 constexpr double kTimeStep_s = 60.0;
+/// A facet is cut into cells at most this long (its longest edge / n, n² cells), so that a
+/// large facet (a ground plane) carries its shadows; at most kMaxCuts cuts per edge.
+constexpr double kCellSize_m = 1.0;
+constexpr std::size_t kMaxCuts = 256;
 
 /// The broadband optical properties THERM uses where the .mat gives none: 1 − the mean
 /// reflectance over 0.3-2.5 µm (every 10 nm), the mean emissivity over 8-14 µm.
@@ -120,34 +125,93 @@ void apply_therm(const RenderPlan& plan, scene::GeometryScene& geometry, const C
     context.log.info("THERM: " + std::to_string(facets.size()) + " facets at " +
                      std::to_string(times_s.size()) + " time(s), weather " + in.weather.file +
                      " from hour " + format_shortest(std::round(hours.front() * 100.0) / 100.0));
-    std::vector<std::vector<double>> solved(facets.size());
-    const auto solve_one = [&](std::size_t i) {
-        const scene::GeometryScene::Facet& f = facets[i];
+    // Each facet's cuts and its cells: (facet, cell slot, the cell's centroid).
+    struct Cell {
+        std::size_t facet = 0;
+        std::size_t slot = 0;
+        motion::Vec3 point_m;
+    };
+    std::vector<std::size_t> cuts(facets.size(), 1);
+    std::vector<Cell> cells;
+    for (std::size_t k = 0; k < facets.size(); ++k) {
+        const auto& c = facets[k].corners_m;
+        const double longest = std::max({norm(c[1] - c[0]), norm(c[2] - c[1]), norm(c[0] - c[2])});
+        const std::size_t n = std::clamp(static_cast<std::size_t>(std::ceil(longest / kCellSize_m)),
+                                         std::size_t{1}, kMaxCuts);
+        cuts[k] = n;
+        const double step = 1.0 / static_cast<double>(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            for (std::size_t j = 0; i + j < n; ++j) {
+                for (const bool upper : {false, true}) {
+                    if (upper && i + j + 1 >= n) continue;
+                    const double third = upper ? 2.0 / 3.0 : 1.0 / 3.0;
+                    const double u = (static_cast<double>(i) + third) * step;
+                    const double v = (static_cast<double>(j) + third) * step;
+                    cells.push_back({k, scene::FacetTemperatures::cell_index(n, i, j, upper),
+                                     c[0] + (c[1] - c[0]) * u + (c[2] - c[0]) * v});
+                }
+            }
+        }
+    }
+    context.log.info("THERM: " + std::to_string(cells.size()) + " cells of at most " +
+                     format_shortest(kCellSize_m) + " m");
+    // The sun's direction every kSunStep_h over the spin-up and the captures, once for every
+    // cell (the ephemeris is the costly part of a step), linear between (it moves 0.25° a
+    // minute: the chord's error is below 10⁻⁶ rad).
+    constexpr double kSunStep_h = 1.0 / 60.0;
+    const double sun_from_h = hours.front() - thermal::ThermSettings{}.spin_up_h - kSunStep_h;
+    std::vector<std::array<double, 3>> sun_table;
+    for (double h = sun_from_h; h <= hours.back() + 2.0 * kSunStep_h; h += kSunStep_h) {
+        const motion::SunPosition p = in.light->sun_at(add_seconds(reference, ray_time(h)));
+        sun_table.push_back({p.direction_enu.x, p.direction_enu.y, p.direction_enu.z});
+    }
+    const auto sun = [&](double hour) {
+        const double position = std::clamp((hour - sun_from_h) / kSunStep_h, 0.0,
+                                           static_cast<double>(sun_table.size() - 2));
+        const auto i = static_cast<std::size_t>(position);
+        const double f = position - static_cast<double>(i);
+        std::array<double, 3> d{};
+        double length = 0.0;
+        for (std::size_t k = 0; k < 3; ++k) {
+            d[k] = (1.0 - f) * sun_table[i][k] + f * sun_table[i + 1][k];
+            length += d[k] * d[k];
+        }
+        for (double& x : d) x /= std::sqrt(length);
+        return d;
+    };
+    std::vector<std::vector<double>> solved(cells.size());
+    const auto solve_one = [&](std::size_t index) {
+        const Cell& cell = cells[index];
+        const scene::GeometryScene::Facet& f = facets[cell.facet];
         const model::Material& material = in.scene.materials[f.material];
         thermal::ThermFacet facet = optics(material, *material.therm);
         facet.normal = {f.normal.x, f.normal.y, f.normal.z};
-        const auto sun = [&](double hour) {
-            const motion::SunPosition p = in.light->sun_at(add_seconds(reference, ray_time(hour)));
-            return std::array<double, 3>{p.direction_enu.x, p.direction_enu.y, p.direction_enu.z};
-        };
         const auto sunlit = [&](double hour) {
             const std::array<double, 3> s = sun(hour);
             const motion::Vec3 to_sun{s[0], s[1], s[2]};
             if (s[2] <= 0.0 || dot(to_sun, f.normal) <= 0.0) return 0.0;
-            const motion::Vec3 origin = f.centroid_m + f.normal * f.spawn_offset_m;
+            const motion::Vec3 origin = cell.point_m + f.normal * f.spawn_offset_m;
             return geometry.occluded(origin, to_sun, ray_time(hour)) ? 0.0 : 1.0;
         };
-        solved[i] =
+        solved[index] =
             thermal::therm_temperatures_k(*material.therm, facet, in.weather, sun, sunlit, hours);
     };
     tbb::task_arena arena(context.threads == 0 ? tbb::task_arena::automatic
                                                : static_cast<int>(context.threads));
     arena.execute([&] {
-        tbb::parallel_for(std::size_t{0}, facets.size(), [&](std::size_t i) { solve_one(i); });
+        tbb::parallel_for(std::size_t{0}, cells.size(), [&](std::size_t i) { solve_one(i); });
     });
     auto table = std::make_shared<scene::FacetTemperatures>(times_s);
-    for (std::size_t i = 0; i < facets.size(); ++i) {
-        table->add(facets[i].instance, facets[i].triangle, solved[i]);
+    std::size_t next = 0;
+    for (std::size_t k = 0; k < facets.size(); ++k) {
+        const std::size_t n = cuts[k];
+        std::vector<double> rows(scene::FacetTemperatures::cell_slots(n) * times_s.size(), 0.0);
+        for (; next < cells.size() && cells[next].facet == k; ++next) {
+            std::copy(
+                solved[next].begin(), solved[next].end(),
+                rows.begin() + static_cast<std::ptrdiff_t>(cells[next].slot * times_s.size()));
+        }
+        table->add(facets[k].instance, facets[k].triangle, n, rows);
     }
     geometry.set_facet_temperatures(std::move(table));
 }

@@ -221,7 +221,7 @@ void make_hit(const SceneImpl& impl, const Vec3& origin_m, const Vec3& direction
     hit.bumped = false;
     if (impl.maps.maps_material(hit.material)) apply_maps(impl.maps, object, u, v, hit);
     if (impl.facet_temperatures && hit.temperature_k == 0.0) {
-        hit.temperature_k = impl.facet_temperatures->at(hit.instance, hit.triangle, time_s);
+        hit.temperature_k = impl.facet_temperatures->at(hit.instance, hit.triangle, u, v, time_s);
     }
 }
 
@@ -432,6 +432,7 @@ std::vector<GeometryScene::Facet> GeometryScene::static_facets(
             f.triangle = triangle;
             f.material = material;
             f.centroid_m = in_frame + impl.anchor_m;
+            f.corners_m = {v0 + impl.anchor_m, v1 + impl.anchor_m, v2 + impl.anchor_m};
             f.normal = dot(n, n) > 0.0 ? normalized(n) : Vec3{};
             f.spawn_offset_m =
                 kSpawnFloor_m +

@@ -12,7 +12,11 @@ equations written again here) for the ground plane of therm.mat under day.wth, a
 - at 02:00 (no sun, a black sky under the 'none' atmosphere) the radiance is 0.7 B(T), the
   band mean of the 10-11 um tophat, within 1 %.
 
-Usage: check.py NOON_FOLDER NIGHT_FOLDER"""
+- shadow.jsim (noon, a 3 m wall south of the view): lines of the view whose ground the wall
+  shaded through the morning are at least 15 K cooler than the open ground, the lines it never
+  shaded have the open ground's temperature (0.05 K), and none is warmer.
+
+Usage: check.py NOON_FOLDER NIGHT_FOLDER [SHADOW_FOLDER]"""
 import math
 import pathlib
 import re
@@ -152,7 +156,15 @@ def main():
     radiance = np.fromfile(night[3] / "frame.img", dtype="<f8")
     scale = radiance.mean() / (0.7 * planck_band(night[0]))
     assert abs(scale - 1.0) < 0.01, scale
-    print(f"therm ok: noon {noon[0]:.3f} K (NumPy {noon[1]:.3f}, air {noon[2]:.2f}), "
+    shaded_text = ""
+    if len(sys.argv) > 3:
+        shaded = np.fromfile(pathlib.Path(sys.argv[3]) / "truth.img", dtype="<f8")
+        open_ground = noon[0]
+        assert shaded.max() < open_ground + 0.05, (shaded.max(), open_ground)
+        assert (np.abs(shaded - open_ground) < 0.05).sum() >= 4, shaded
+        assert (shaded < open_ground - 15.0).sum() >= 4, shaded
+        shaded_text = f", shaded ground down to {shaded.min():.2f} K"
+    print(f"therm ok{shaded_text}: noon {noon[0]:.3f} K (NumPy {noon[1]:.3f}, air {noon[2]:.2f}), "
           f"02:00 {night[0]:.3f} K (NumPy {night[1]:.3f}, air {night[2]:.2f}), "
           f"radiance / 0.7 B = {scale:.4f}")
 

@@ -28,6 +28,7 @@
 // number of threads at once. The object owns its Embree device and scenes.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -212,15 +213,18 @@ public:
         std::uint32_t triangle = 0;
         std::uint32_t material = 0;  ///< the triangle's own (before any property map)
         Vec3 centroid_m;
+        /// Its corners: a point with barycentrics (u, v) (Embree's) is corner 0 + u (corner 1
+        /// − corner 0) + v (corner 2 − corner 0).
+        std::array<Vec3, 3> corners_m;
         Vec3 normal;  ///< unit, on the front face's side (zero for a degenerate triangle)
         double spawn_offset_m = 0.0;  ///< as a hit there would have it (spawn_origin())
     };
     /// Every triangle of the static instances whose material index `wanted` says, in instance
     /// then triangle order.
     std::vector<Facet> static_facets(const std::function<bool(std::uint32_t)>& wanted) const;
-    /// Per-facet temperatures over time (THERM): a hit on a listed facet reports its
-    /// temperature at the ray's time (RayHit::temperature_k) unless a temperature map gave
-    /// one. Set before tracing; null clears.
+    /// Per-facet temperatures over cells and time (THERM): a hit on a listed facet reports
+    /// its cell's temperature at the ray's time (RayHit::temperature_k) unless a temperature
+    /// map gave one. Set before tracing; null clears.
     void set_facet_temperatures(std::shared_ptr<const FacetTemperatures> temperatures);
     /// Bounds of instance `instance` (index into scene.instances) over the window — a moving
     /// instance's swept box; empty for an index out of range.
