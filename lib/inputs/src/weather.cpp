@@ -27,6 +27,12 @@ void report(bool needed, const ErrorContext& where, const std::string& message,
 std::string plugin_filename(const model::Plugin& plugin, bool needed, Diagnostics& diagnostics) {
     const nlohmann::json inputs = nlohmann::json::parse(plugin.inputs_json, nullptr, false);
     if (inputs.is_object()) {
+        for (const auto& [key, value] : inputs.items()) {
+            if (key != "filename") {
+                diagnostics.warning(plugin.where, "unknown key \"" + key + "\" in " + plugin.name +
+                                                      " inputs ignored (glint reads \"filename\")");
+            }
+        }
         if (const auto it = inputs.find("filename"); it != inputs.end() && it->is_string()) {
             return it->get<std::string>();
         }

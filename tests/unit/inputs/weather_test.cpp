@@ -85,6 +85,12 @@ TEST(SimulationWeather, AMissingFileIsAnErrorOnlyWhenNeeded) {
                     HasSubstr("sim.jsim:7: [0].plugin_list[2]: weather file "));
         EXPECT_THAT(test::diagnostics_text(diagnostics), HasSubstr("none.wth does not exist"));
     }
+    Diagnostics extra;
+    (void)read_simulation_weather(with_plugin(dir, R"({"filename": "none.wth", "year": 1992})"),
+                                  model::Atmosphere{}, {}, false, extra);
+    EXPECT_THAT(test::diagnostics_text(extra),
+                HasSubstr("sim.jsim:7: [0].plugin_list[2]: unknown key \"year\" in ThermWeather "
+                          "inputs ignored"));
     Diagnostics no_input;
     (void)read_simulation_weather(with_plugin(dir, "{}"), model::Atmosphere{}, {}, true, no_input);
     EXPECT_THAT(test::only_error(no_input).message,
