@@ -100,8 +100,9 @@ model::Weather read_simulation_weather(const model::Simulation& simulation,
         diagnostics.error(ErrorContext{simulation.file, 0, {}},
                           "a material uses THERM (TEMP_SOLVER_NAME = Therm) but the simulation "
                           "names no weather: add a ThermWeather plugin with the .wth as its "
-                          "filename, or name it in the .atm's "
-                          "<uniformweather><classicdata><filename>");
+                          "filename, or name it in the atmosphere (a .atm's "
+                          "<uniformweather><classicdata><filename>, a YAML atmosphere's "
+                          "'weather')");
     }
     if (!weather.empty()) {
         log.debug("Weather: " + weather.file + ", " + std::to_string(weather.records.size()) +

@@ -83,18 +83,21 @@ RenderReport render(model::SimulationInputs inputs, const RenderOptions& options
         }
     };
     std::optional<scene::GeometryScene> static_scene;
+    std::shared_ptr<const scene::FacetTemperatures> therm;  // THERM's cells, when it runs
     if (!in.scene_motion->moves()) {
         static_scene.emplace(in.scene_motion->build(
             in.scene, detail::build_options(options, 0.0, 0.0), context.log));
         report.device = static_scene->device();
         in.light->warn_if_one_geometry(*static_scene, context.log);
-        detail::apply_therm(plan, *static_scene, context);
-    } else if (std::any_of(in.scene.materials.begin(), in.scene.materials.end(),
-                           [](const model::Material& m) { return bool(m.therm); })) {
-        context.log.warning(
-            "THERM is solved for scenes where nothing moves: this scene has "
-            "moving instances, and its THERM materials keep their constant "
-            "TEMPERATURE");
+        therm = detail::solve_therm(plan, *static_scene, context);
+        static_scene->set_facet_temperatures(therm);
+    } else if (detail::uses_therm(in.scene)) {
+        // Where something moves, THERM solves the instances that stay put, their shadow
+        // history traced in a scene without the moving ones (docs/thermal.md).
+        scene::BuildOptions still = detail::build_options(options, 0.0, 0.0);
+        still.static_only = true;
+        therm = detail::solve_therm(plan, in.scene_motion->build(in.scene, still, context.log),
+                                    context);
     }
     detail::write_telemetry(plan, options, context);                  // complete before any capture
     std::map<std::size_t, radiometry::SensorPathCache> path_caches;   // per focal plane
@@ -111,6 +114,7 @@ RenderReport render(model::SimulationInputs inputs, const RenderOptions& options
                 in.scene, detail::build_options(options, p.capture.t0_s, p.capture.t1_s),
                 context.log));
             report.device = moving->device();
+            moving->set_facet_temperatures(therm);
             if (i == 0) in.light->warn_if_one_geometry(*moving, context.log);
         }
         CaptureReport stats;

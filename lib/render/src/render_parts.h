@@ -28,6 +28,7 @@
 #include "glint/radiometry/point_lights.h"
 #include "glint/render/image_outputs.h"
 #include "glint/render/render.h"
+#include "glint/scene/facet_temperatures.h"
 #include "glint/scene/geometry_scene.h"
 #include "glint/scene/scene_motion.h"
 #include "glint/sensor/camera.h"
@@ -201,11 +202,16 @@ struct PlannedRender {
     ImageOutputs outputs;
 };
 
-/// Solves THERM (glint/thermal/therm.h) for every triangle of a static instance whose material
-/// uses it, at the planned captures' times, and gives `geometry` the temperatures
-/// (render_therm.cpp). Nothing without such a material; throws glint::Error (input) when one
-/// exists and the simulation names no weather.
-void apply_therm(const RenderPlan& plan, scene::GeometryScene& geometry, const Context& context);
+/// Whether a material of `scene` uses THERM.
+bool uses_therm(const model::Scene& scene) noexcept;
+/// Solves THERM (glint/thermal/therm.h) for every triangle of `geometry`'s static instances
+/// whose material uses it, at the planned captures' times, the shadows traced in `geometry`
+/// (render_therm.cpp); warns once naming the dynamic instances with such a material, which
+/// keep its constant temperature. Null without such a material or capture; throws
+/// glint::Error (input) when one exists and the simulation names no weather.
+std::shared_ptr<const scene::FacetTemperatures> solve_therm(const RenderPlan& plan,
+                                                            const scene::GeometryScene& geometry,
+                                                            const Context& context);
 
 /// Takes over the loaded inputs, selects the captures (--schedule), builds the state of every
 /// focal plane that writes a file, then plans every output file. Throws what

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -29,9 +30,12 @@ namespace {
 /// The captures' times are rounded to this step: a pushbroom's lines share a solution.
 constexpr double kTimeStep_s = 60.0;
 /// A facet is cut into cells at most this long (its longest edge / n, n² cells), so that a
-/// large facet (a ground plane) carries its shadows; at most kMaxCuts cuts per edge.
+/// large facet (a ground plane) carries its shadows; at most kMaxCuts cuts per edge, and for
+/// a sliver (the long narrow side of a kerb or a road slab) no more than makes its cells'
+/// mean area (kCellSize_m / kSliverCuts)²: a 300 m × 2 cm face gets 7 cuts, not 256.
 constexpr double kCellSize_m = 1.0;
 constexpr std::size_t kMaxCuts = 256;
+constexpr double kSliverCuts = 4.0;
 
 /// The broadband optical properties THERM uses where the .mat gives none: 1 − the mean
 /// reflectance over 0.3-2.5 µm (every 10 nm), the mean emissivity over 8-14 µm.
@@ -61,18 +65,26 @@ thermal::ThermFacet optics(const model::Material& m, const model::ThermPropertie
 
 }  // namespace
 
-void apply_therm(const RenderPlan& plan, scene::GeometryScene& geometry, const Context& context) {
+bool uses_therm(const model::Scene& scene) noexcept {
+    return std::any_of(scene.materials.begin(), scene.materials.end(),
+                       [](const model::Material& m) { return bool(m.therm); });
+}
+
+std::shared_ptr<const scene::FacetTemperatures> solve_therm(const RenderPlan& plan,
+                                                            const scene::GeometryScene& geometry,
+                                                            const Context& context) {
     const RenderInputs& in = plan.inputs;
     std::vector<std::uint32_t> therm;
     for (std::size_t i = 0; i < in.scene.materials.size(); ++i) {
         if (in.scene.materials[i].therm) therm.push_back(static_cast<std::uint32_t>(i));
     }
-    if (therm.empty() || plan.captures.empty()) return;
+    if (therm.empty() || plan.captures.empty()) return nullptr;
     if (in.weather.empty()) {
         throw input_error("material \"" + in.scene.materials[therm.front()].name +
                               "\" uses THERM but the simulation names no weather (a ThermWeather "
-                              "plugin's filename, or the .atm's "
-                              "<uniformweather><classicdata><filename>)",
+                              "plugin's filename, a .atm's "
+                              "<uniformweather><classicdata><filename>, or a YAML atmosphere's "
+                              "'weather')",
                           in.scene.materials[therm.front()].therm->where);
     }
     // The captures' times, in the rays' clock (the first platform's tasks reference).
@@ -91,6 +103,12 @@ void apply_therm(const RenderPlan& plan, scene::GeometryScene& geometry, const C
         rounded.insert(std::round(mid / kTimeStep_s) * kTimeStep_s);
     }
     const std::vector<double> times_s(rounded.begin(), rounded.end());
+    // The history is anchored on the whole run's first capture (its start, rounded), not on
+    // this run's: a shard (--schedule) or a --captures selection solves the same temperatures.
+    const std::optional<schedule::Capture> first = in.schedule->captures().next();
+    const double anchor_s =
+        std::min(times_s.front(),
+                 std::round((first ? first->t0_s : times_s.front()) / kTimeStep_s) * kTimeStep_s);
 
     // Local time: the offset the tasks' time was written with, else the longitude's zone.
     const double longitude = in.frame.origin().longitude_deg;
@@ -106,22 +124,53 @@ void apply_therm(const RenderPlan& plan, scene::GeometryScene& geometry, const C
     }
     // Weather hour of a ray-clock time t: 24 + hours since the local midnight of the first
     // capture's day.
-    const DateTime first_local = add_seconds(add_seconds(reference, times_s.front()), offset_s);
+    const DateTime first_local = add_seconds(add_seconds(reference, anchor_s), offset_s);
     const double since_midnight_s =
         static_cast<double>(((first_local.unix_s % 86'400) + 86'400) % 86'400) +
         first_local.fraction_s;
     const double hour_of_first = 24.0 + since_midnight_s / 3600.0;
-    const auto weather_hour = [&](double t_s) {
-        return hour_of_first + (t_s - times_s.front()) / 3600.0;
-    };
-    const auto ray_time = [&](double hour) {
-        return times_s.front() + (hour - hour_of_first) * 3600.0;
-    };
+    const auto weather_hour = [&](double t_s) { return hour_of_first + (t_s - anchor_s) / 3600.0; };
+    const auto ray_time = [&](double hour) { return anchor_s + (hour - hour_of_first) * 3600.0; };
+    thermal::ThermSettings settings;
+    settings.start_h = hour_of_first;
     std::vector<double> hours;
     for (double t : times_s) hours.push_back(weather_hour(t));
 
     const std::vector<scene::GeometryScene::Facet> facets = geometry.static_facets(
         [&](std::uint32_t m) { return std::find(therm.begin(), therm.end(), m) != therm.end(); });
+    {
+        // Instances THERM leaves at their materials' constant temperature: those that move.
+        std::set<std::uint32_t> solved;
+        for (const auto& f : facets) solved.insert(f.instance);
+        std::vector<std::string> kept;
+        ErrorContext first_kept;
+        for (std::size_t i = 0; i < in.scene.instances.size(); ++i) {
+            const model::Instance& instance = in.scene.instances[i];
+            if (!instance.dynamic() || solved.count(static_cast<std::uint32_t>(i)) != 0) continue;
+            const auto& materials = in.scene.objects[instance.object_index].mesh.triangle_materials;
+            if (std::any_of(materials.begin(), materials.end(), [&](std::uint32_t m) {
+                    return std::find(therm.begin(), therm.end(), m) != therm.end();
+                })) {
+                if (kept.empty()) first_kept = instance.where;
+                kept.push_back("\"" + instance.name + "\"");
+            }
+        }
+        if (!kept.empty()) {
+            const std::size_t count = kept.size();
+            constexpr std::size_t kNamed = 5;
+            if (count > kNamed) {
+                kept.resize(kNamed);
+                kept.push_back(std::to_string(count - kNamed) + " more");
+            }
+            const bool many = count > 1;
+            context.log.warning(format_located(
+                first_kept, "THERM is solved for what stays put: the moving instance" +
+                                std::string(many ? "s " : " ") + join(kept, ", ", " and ") +
+                                (many ? " keep their" : " keeps its") +
+                                " THERM materials' constant TEMPERATURE and cast" +
+                                (many ? "" : "s") + " no shadow in THERM's sun history"));
+        }
+    }
     context.log.info("THERM: " + std::to_string(facets.size()) + " facets at " +
                      std::to_string(times_s.size()) + " time(s), weather " + in.weather.file +
                      " from hour " + format_shortest(std::round(hours.front() * 100.0) / 100.0));
@@ -136,8 +185,11 @@ void apply_therm(const RenderPlan& plan, scene::GeometryScene& geometry, const C
     for (std::size_t k = 0; k < facets.size(); ++k) {
         const auto& c = facets[k].corners_m;
         const double longest = std::max({norm(c[1] - c[0]), norm(c[2] - c[1]), norm(c[0] - c[2])});
-        const std::size_t n = std::clamp(static_cast<std::size_t>(std::ceil(longest / kCellSize_m)),
-                                         std::size_t{1}, kMaxCuts);
+        const double area_m2 = 0.5 * norm(cross(c[1] - c[0], c[2] - c[0]));
+        const double by_area = std::ceil(kSliverCuts * std::sqrt(area_m2) / kCellSize_m);
+        const double wanted = std::min(std::ceil(longest / kCellSize_m), by_area);
+        const std::size_t n =
+            std::clamp(static_cast<std::size_t>(wanted), std::size_t{1}, kMaxCuts);
         cuts[k] = n;
         const double step = 1.0 / static_cast<double>(n);
         for (std::size_t i = 0; i < n; ++i) {
@@ -159,7 +211,7 @@ void apply_therm(const RenderPlan& plan, scene::GeometryScene& geometry, const C
     // cell (the ephemeris is the costly part of a step), linear between (it moves 0.25° a
     // minute: the chord's error is below 10⁻⁶ rad).
     constexpr double kSunStep_h = 1.0 / 60.0;
-    const double sun_from_h = hours.front() - thermal::ThermSettings{}.spin_up_h - kSunStep_h;
+    const double sun_from_h = settings.start_h - settings.spin_up_h - kSunStep_h;
     std::vector<std::array<double, 3>> sun_table;
     for (double h = sun_from_h; h <= hours.back() + 2.0 * kSunStep_h; h += kSunStep_h) {
         const motion::SunPosition p = in.light->sun_at(add_seconds(reference, ray_time(h)));
@@ -193,8 +245,8 @@ void apply_therm(const RenderPlan& plan, scene::GeometryScene& geometry, const C
             const motion::Vec3 origin = cell.point_m + f.normal * f.spawn_offset_m;
             return geometry.occluded(origin, to_sun, ray_time(hour)) ? 0.0 : 1.0;
         };
-        solved[index] =
-            thermal::therm_temperatures_k(*material.therm, facet, in.weather, sun, sunlit, hours);
+        solved[index] = thermal::therm_temperatures_k(*material.therm, facet, in.weather, sun,
+                                                      sunlit, hours, settings);
     };
     tbb::task_arena arena(context.threads == 0 ? tbb::task_arena::automatic
                                                : static_cast<int>(context.threads));
@@ -213,7 +265,7 @@ void apply_therm(const RenderPlan& plan, scene::GeometryScene& geometry, const C
         }
         table->add(facets[k].instance, facets[k].triangle, n, rows);
     }
-    geometry.set_facet_temperatures(std::move(table));
+    return table;
 }
 
 }  // namespace glint::render::detail

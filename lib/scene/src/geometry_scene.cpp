@@ -178,7 +178,7 @@ GeometryScene GeometryScene::build(
     std::vector<detail::MotionSamples> samples(n);
     for (std::size_t i = 0; i < n; ++i) {
         const model::Instance& instance = scene.instances[i];
-        if (!instance.dynamic()) continue;
+        if (!instance.dynamic() || options.static_only) continue;
         const motion::Trajectory* trajectory =
             i < trajectories.size() ? trajectories[i].get() : nullptr;
         if (!trajectory) {
@@ -209,6 +209,11 @@ GeometryScene GeometryScene::build(
         const model::Mesh& mesh = scene.objects[instance.object_index].mesh;
         detail::InstanceData& data = impl->instances[i];
         data.object = instance.object_index;
+        if (instance.dynamic() && options.static_only) {
+            data.absent = true;
+            data.bounds = detail::empty_bounds();
+            continue;
+        }
         const Bounds object_box = detail::mesh_bounds(mesh);
         if (!instance.dynamic()) {
             fixed[i] = detail::static_affine(instance.transform, instance.where);
@@ -232,6 +237,7 @@ GeometryScene GeometryScene::build(
         const model::Instance& instance = scene.instances[i];
         const std::string what = "placing instance \"" + instance.name + "\"";
         detail::InstanceData& data = impl->instances[i];
+        if (data.absent) continue;
         const detail::ObjectData& object = impl->objects[data.object];
         impl->instanced_triangles += object.triangle_count;
 

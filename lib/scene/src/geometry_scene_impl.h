@@ -50,6 +50,8 @@ struct InstanceData {
     std::size_t object = 0;
     /// True when Embree interpolates the transform over time steps (≥ 2).
     bool moving = false;
+    /// Left out of the Embree scene (BuildOptions::static_only): no ray meets it.
+    bool absent = false;
     /// Static instances (and instants): the normal matrix (inverse transpose of the linear
     /// part of `to_frame`).
     Mat3 normal_matrix = Mat3::identity();

@@ -412,7 +412,7 @@ std::vector<GeometryScene::Facet> GeometryScene::static_facets(
     std::vector<Facet> out;
     for (std::size_t i = 0; i < impl.instances.size(); ++i) {
         const detail::InstanceData& instance = impl.instances[i];
-        if (instance.moving) continue;
+        if (instance.moving || instance.absent) continue;
         const detail::ObjectData& object = impl.objects[instance.object];
         for (std::uint64_t t = 0; t < object.triangle_count; ++t) {
             const auto triangle = static_cast<std::uint32_t>(t);

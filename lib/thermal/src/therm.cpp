@@ -79,6 +79,9 @@ std::vector<double> therm_temperatures_k(const model::ThermProperties& propertie
     }
     std::vector<double> out;
     if (times_h.empty()) return out;
+    if (times_h.front() < settings.start_h - 1e-9) {  // false for a NaN start
+        throw input_error("THERM's times must not precede its start");
+    }
     const auto forcing_at = [&](double t_h) {
         return therm_forcing(weather.at(t_h), facet, sun(t_h), sunlit(t_h));
     };
@@ -98,17 +101,28 @@ std::vector<double> therm_temperatures_k(const model::ThermProperties& propertie
     const auto nodes =
         std::clamp(static_cast<std::size_t>(std::ceil(material.thickness_m / (0.1 * depth))) + 1,
                    kMinNodes, kMaxNodes);
-    double t_h = times_h.front() - settings.spin_up_h;
-    Slab slab(material, nodes, weather.at(t_h).air_temperature_k);
+    const double start_h =
+        (std::isnan(settings.start_h) ? times_h.front() : settings.start_h) - settings.spin_up_h;
+    Slab slab(material, nodes, weather.at(start_h).air_temperature_k);
     const double step_h = settings.step_s / 3600.0;
+    // Grid time k is start + k · step (a product, not a running sum: no drift over a day).
+    std::size_t k = 0;
+    const auto grid = [&](std::size_t i) { return start_h + static_cast<double>(i) * step_h; };
+    // A target within this of a grid time is on it (the hours carry rounding from seconds).
+    constexpr double kOnGrid_h = 1e-9;
     for (double target : times_h) {
-        while (t_h < target) {
-            const double dt_h = std::min(step_h, target - t_h);
+        while (grid(k + 1) <= target + kOnGrid_h) {
             // Backward Euler: the forcing at the step's end.
-            slab.step(forcing_at(t_h + dt_h), dt_h * 3600.0);
-            t_h += dt_h;
+            slab.step(forcing_at(grid(k + 1)), settings.step_s);
+            ++k;
         }
-        out.push_back(slab.surface_temperature_k());
+        if (target - grid(k) <= kOnGrid_h) {
+            out.push_back(slab.surface_temperature_k());
+        } else {
+            Slab rest = slab;
+            rest.step(forcing_at(target), (target - grid(k)) * 3600.0);
+            out.push_back(rest.surface_temperature_k());
+        }
     }
     return out;
 }

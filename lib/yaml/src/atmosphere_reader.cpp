@@ -237,7 +237,18 @@ model::Atmosphere read_yaml(const std::string& text, const std::filesystem::path
         const ErrorContext model_where = at(file, model_node, "model");
         atmosphere.where = model_where;
         const std::string name = model_node.IsScalar() ? model_node.Scalar() : std::string{};
-        std::vector<std::string_view> known{"model"};
+        std::vector<std::string_view> known{"model", "weather"};
+        // The weather history THERM is solved under (a DIRSIG .wth, relative to this file),
+        // as a DIRSIG .atm's <uniformweather> names it.
+        if (const YAML::Node weather = root["weather"]) {
+            if (!weather.IsScalar() || weather.Scalar().empty()) {
+                diagnostics.error(at(file, weather, "weather"),
+                                  "'weather' is the path of a .wth weather history");
+            } else {
+                atmosphere.weather_file = weather.Scalar();
+                atmosphere.weather_where = at(file, weather, "weather");
+            }
+        }
         if (name == "none") {
             atmosphere.kind = model::AtmosphereKind::none;
         } else if (name == "parametric") {

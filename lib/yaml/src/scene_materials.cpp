@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // The glint YAML scene's materials: reflectance, transmittance and emissivity spectra (inline or
-// from a two-column file in µm or nm), the specular lobe and the temperature.
+// from a two-column file in µm or nm), the specular lobe, the temperature and THERM's slab.
 #include <algorithm>
+#include <limits>
+#include <optional>
 
 #include "glint/core/text.h"
 #include "scene_parts.h"
@@ -220,6 +222,55 @@ void read_reflection_model(Reader& r, const YAML::Node& node, const std::string&
     }
 }
 
+/// `therm: {...}`: THERM's slab and surface in SI units (docs/thermal.md), the YAML form of a
+/// DIRSIG `.mat`'s TEMP_SOLVER_NAME = Therm block.
+std::optional<model::ThermProperties> read_therm(Reader& r, const YAML::Node& node,
+                                                 const std::string& path) {
+    if (!r.expect_map(node, path)) return std::nullopt;
+    r.warn_unknown(node, path,
+                   {"specific_heat_j_per_kg_k", "density_kg_per_m3", "conductivity_w_per_m_k",
+                    "thickness_m", "exposed_area", "solar_absorptance", "thermal_emissivity"});
+    model::ThermProperties t;
+    t.where = r.where(node, path);
+    bool ok = true;
+    // Each key: required or not, its lower bound (strict or not) and its upper bound.
+    struct Key {
+        const char* name;
+        bool required;
+        bool positive;  // > 0; otherwise >= 0
+        double upper;
+    };
+    const auto read = [&](const Key& key) -> std::optional<double> {
+        const auto value = r.number_key(node, path, key.name, key.required);
+        if (!value) {
+            ok = ok && !(key.required || node[key.name]);
+            return std::nullopt;
+        }
+        const bool low = key.positive ? *value <= 0.0 : *value < 0.0;
+        if (low || *value > key.upper) {
+            const bool unit = key.upper == 1.0;
+            r.error(node[key.name], Reader::join(path, key.name),
+                    std::string(key.name) + " " + format_shortest(*value) + " is " +
+                        (unit           ? "outside [0, 1]"
+                         : key.positive ? "not > 0"
+                                        : "negative"));
+            ok = false;
+            return std::nullopt;
+        }
+        return value;
+    };
+    constexpr double kAny = std::numeric_limits<double>::infinity();
+    t.specific_heat_j_per_kg_k = read({"specific_heat_j_per_kg_k", true, true, kAny}).value_or(0.0);
+    t.density_kg_per_m3 = read({"density_kg_per_m3", true, true, kAny}).value_or(0.0);
+    t.conductivity_w_per_m_k = read({"conductivity_w_per_m_k", true, false, kAny}).value_or(0.0);
+    t.thickness_m = read({"thickness_m", true, false, kAny}).value_or(0.0);
+    t.exposed_area = read({"exposed_area", false, false, 1.0}).value_or(1.0);
+    t.solar_absorptance = read({"solar_absorptance", false, false, 1.0});
+    t.thermal_emissivity = read({"thermal_emissivity", false, false, 1.0});
+    if (!ok) return std::nullopt;
+    return t;
+}
+
 }  // namespace
 
 model::Material read_material(Reader& r, const YAML::Node& node, const std::string& path) {
@@ -228,7 +279,7 @@ model::Material read_material(Reader& r, const YAML::Node& node, const std::stri
     if (!r.expect_map(node, path)) return m;
     r.warn_unknown(node, path,
                    {"id", "name", "reflectance", "transmittance", "transmission", "specular",
-                    "ward", "ross_li", "emissivity", "temperature", "double_sided"});
+                    "ward", "ross_li", "emissivity", "temperature", "double_sided", "therm"});
     m.id = r.text_key(node, path, "id", true).value_or("");
     m.name = r.text_key(node, path, "name", false).value_or(m.id);
     read_reflection_model(r, node, path, m);
@@ -296,6 +347,9 @@ model::Material read_material(Reader& r, const YAML::Node& node, const std::stri
             r.error(node["temperature"], Reader::join(path, "temperature"),
                     "temperature " + format_shortest(*t) + " K is not > 0");
         }
+    }
+    if (const YAML::Node therm = node["therm"]) {
+        m.therm = read_therm(r, therm, Reader::join(path, "therm"));
     }
     return m;
 }

@@ -16,7 +16,11 @@ equations written again here) for the ground plane of therm.mat under day.wth, a
   shaded through the morning are at least 15 K cooler than the open ground, the lines it never
   shaded have the open ground's temperature (0.05 K), and none is warmer.
 
-Usage: check.py NOON_FOLDER NIGHT_FOLDER [SHADOW_FOLDER]"""
+- moving.jsim (shadow.jsim's scene and a THERM van driving past out of view): THERM is solved
+  for what stays put, the van casting no shadow in its history, so the Temperature truth is
+  shadow.jsim's bit for bit.
+
+Usage: check.py NOON_FOLDER NIGHT_FOLDER [SHADOW_FOLDER [MOVING_FOLDER]]"""
 import math
 import pathlib
 import re
@@ -164,6 +168,10 @@ def main():
         assert (np.abs(shaded - open_ground) < 0.05).sum() >= 4, shaded
         assert (shaded < open_ground - 15.0).sum() >= 4, shaded
         shaded_text = f", shaded ground down to {shaded.min():.2f} K"
+    if len(sys.argv) > 4:
+        moving = np.fromfile(pathlib.Path(sys.argv[4]) / "truth.img", dtype="<f8")
+        assert np.array_equal(moving, shaded), (moving, shaded)
+        shaded_text += ", the same with a van driving past"
     print(f"therm ok{shaded_text}: noon {noon[0]:.3f} K (NumPy {noon[1]:.3f}, air {noon[2]:.2f}), "
           f"02:00 {night[0]:.3f} K (NumPy {night[1]:.3f}, air {night[2]:.2f}), "
           f"radiance / 0.7 B = {scale:.4f}")

@@ -87,6 +87,25 @@ TEST(AtmosphereReader, ProfileSetsDefaultsAndRefusesUnknownNames) {
               std::string::npos);
 }
 
+TEST(AtmosphereReader, WeatherNamesTheWthForEveryModelAndRefusesANonPath) {
+    const test::TempDir dir;
+    for (const std::string model : {"none", "parametric"}) {
+        Diagnostics diagnostics;
+        const auto path = write(dir, model + ".yaml", "model: " + model + "\nweather: day.wth\n");
+        const auto a = read_atmosphere(path, {}, diagnostics);
+        EXPECT_TRUE(diagnostics.items().empty()) << first_error(diagnostics);
+        EXPECT_EQ(a.weather_file, "day.wth");  // resolved against the YAML's folder when read
+        EXPECT_EQ(a.weather_where.line, 2);
+        EXPECT_EQ(a.weather_where.element, "weather");
+    }
+    Diagnostics bad;
+    const auto bad_path = write(dir, "list.yaml", "model: none\nweather: [a.wth, b.wth]\n");
+    const auto a = read_atmosphere(bad_path, {}, bad);
+    EXPECT_EQ(first_error(bad),
+              bad_path.string() + ":2: weather: 'weather' is the path of a .wth weather history");
+    EXPECT_TRUE(a.weather_file.empty());
+}
+
 TEST(AtmosphereReader, ReadsNoneYaml) {
     Diagnostics diagnostics;
     const auto a = read_atmosphere(kDir / "none.yaml", {}, diagnostics);

@@ -44,6 +44,29 @@ TEST(SceneMotion, AMovingBoxIsWhereItsTrajectoryPutsIt) {
     EXPECT_FALSE(geometry.intersect({0.5, 0.0, 50.0}, kDown, 20.0));  // left its start
 }
 
+// static_only (THERM's shadow scene): the moving box is left out, so no ray meets it and
+// static_facets() lists only the static box, whose instance keeps its index (1 after the car).
+TEST(SceneMotion, StaticOnlyLeavesTheMovingInstancesOut) {
+    model::Scene scene = scene_with_materials(1);
+    const std::size_t box = add_object(scene, box_mesh({-1, -1, 0}, {1, 1, 2}, 0), "box");
+    add_dynamic(scene, box, straight_motion({0, 0, 0}, 90.0, 10.0), "car");
+    add_static(scene, box, translated({-50.0, 0.0, 0.0}));
+    const SceneMotion motion = SceneMotion::make(scene, motion::SceneFrame(), DateTime{});
+    BuildOptions options = options_over(0.0, 0.0);
+    options.static_only = true;
+    const GeometryScene geometry = motion.build(scene, options);
+    EXPECT_FALSE(geometry.intersect({0.5, 0.0, 50.0}, kDown, 0.0));
+    EXPECT_FALSE(geometry.occluded({0.5, 0.0, 50.0}, kDown, 0.0));
+    EXPECT_TRUE(geometry.intersect({-49.5, 0.0, 50.0}, kDown, 0.0));
+    EXPECT_EQ(geometry.instanced_triangle_count(), 12u);
+    const auto facets = geometry.static_facets([](std::uint32_t) { return true; });
+    ASSERT_EQ(facets.size(), 12u);
+    for (const auto& f : facets) EXPECT_EQ(f.instance, 1u);
+    // Without static_only the car is there.
+    EXPECT_TRUE(
+        motion.build(scene, options_over(0.0, 0.0)).intersect({0.5, 0.0, 50.0}, kDown, 0.0));
+}
+
 TEST(SceneMotion, RefusesAnotherScene) {
     model::Scene scene = scene_with_materials(1);
     const std::size_t box = add_object(scene, box_mesh({-1, -1, 0}, {1, 1, 2}, 0), "box");

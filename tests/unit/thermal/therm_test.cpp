@@ -141,6 +141,34 @@ TEST(Therm, ADayOfWeatherWarmsTheSunlitFaceAndLagsTheThickSlab) {
     EXPECT_LT(swing(thick), 0.8 * swing(thin));
 }
 
+// The slab steps on a grid fixed by the start, so a time's temperature does not depend on
+// which other times are asked with it (a render's shards must agree with the whole run); a
+// time between grid points is a partial step from the grid, and a time before the start is
+// refused.
+TEST(Therm, ATimesTemperatureIsTheSameWhicheverTimesAreAskedWithIt) {
+    const model::Weather w = day();
+    const auto lit = [](double) { return 1.0; };
+    ThermSettings settings;
+    settings.start_h = 24.0;
+    const double together[] = {24.0, 30.04, 37.0, 41.5};
+    const double alone[] = {37.0};
+    const double late[] = {30.04, 41.5};
+    const auto all =
+        therm_temperatures_k(concrete(0.05), flat(), w, sun_at, lit, together, settings);
+    const auto one = therm_temperatures_k(concrete(0.05), flat(), w, sun_at, lit, alone, settings);
+    const auto two = therm_temperatures_k(concrete(0.05), flat(), w, sun_at, lit, late, settings);
+    EXPECT_EQ(all[2], one[0]);  // bit for bit
+    EXPECT_EQ(all[1], two[0]);
+    EXPECT_EQ(all[3], two[1]);
+    // Without a start, the first time asked ends the spin-up: 37 h alone is then another
+    // history (it starts at 13 h instead of 0 h), and differs.
+    const auto own = therm_temperatures_k(concrete(0.05), flat(), w, sun_at, lit, alone);
+    EXPECT_NE(own[0], one[0]);
+    const double early[] = {23.0};
+    EXPECT_THROW(therm_temperatures_k(concrete(0.05), flat(), w, sun_at, lit, early, settings),
+                 Error);
+}
+
 // Without storage the face is the instantaneous balance of its forcing.
 TEST(Therm, AFaceWithoutStorageIsInBalanceAtEveryInstant) {
     const model::Weather w = day();

@@ -430,6 +430,51 @@ objects: []
     expect_diagnostic(read, "expected true or false", 4, "materials[2].double_sided");
 }
 
+TEST(SceneReaderMaterials, ThermInSiUnitsAndItsErrorsAtTheirKeys) {
+    TempDir dir;
+    const Read read = read_text(dir, R"(materials:
+  - id: asphalt
+    reflectance: {wavelengths: [0.4, 0.7], values: [0.1, 0.1]}
+    therm: {specific_heat_j_per_kg_k: 920, density_kg_per_m3: 2300, conductivity_w_per_m_k: 0.75,
+            thickness_m: 0.1, exposed_area: 0.5, solar_absorptance: 0.9}
+  - id: leaf
+    reflectance: {wavelengths: [0.4, 0.7], values: [0.1, 0.1]}
+    therm: {specific_heat_j_per_kg_k: 3500, density_kg_per_m3: 700, conductivity_w_per_m_k: 0,
+            thickness_m: 0}
+  - id: bad
+    reflectance: {wavelengths: [0.4, 0.7], values: [0.1, 0.1]}
+    therm: {specific_heat_j_per_kg_k: 0, density_kg_per_m3: 2300, conductivity_w_per_m_k: -1,
+            exposed_area: 2, emissivity: 0.9}
+objects: []
+)");
+    ASSERT_EQ(read.scene.materials.size(), 3u);
+    const auto& asphalt = read.scene.materials[0].therm;
+    ASSERT_TRUE(asphalt.has_value());
+    EXPECT_DOUBLE_EQ(asphalt->specific_heat_j_per_kg_k, 920.0);
+    EXPECT_DOUBLE_EQ(asphalt->density_kg_per_m3, 2300.0);
+    EXPECT_DOUBLE_EQ(asphalt->conductivity_w_per_m_k, 0.75);
+    EXPECT_DOUBLE_EQ(asphalt->thickness_m, 0.1);
+    EXPECT_DOUBLE_EQ(asphalt->exposed_area, 0.5);
+    EXPECT_EQ(asphalt->solar_absorptance, 0.9);
+    EXPECT_FALSE(asphalt->thermal_emissivity.has_value());  // from the emissivity curve
+    EXPECT_EQ(asphalt->where.line, 4);
+    // A face without storage (a leaf): zero thickness and conductivity; all of it exposed.
+    ASSERT_TRUE(read.scene.materials[1].therm.has_value());
+    EXPECT_DOUBLE_EQ(read.scene.materials[1].therm->thickness_m, 0.0);
+    EXPECT_DOUBLE_EQ(read.scene.materials[1].therm->exposed_area, 1.0);
+    // Every bad key is reported at its own key, and the material keeps no THERM.
+    EXPECT_FALSE(read.scene.materials[2].therm.has_value());
+    expect_diagnostic(read, "specific_heat_j_per_kg_k 0 is not > 0", 12,
+                      "materials[2].therm.specific_heat_j_per_kg_k");
+    expect_diagnostic(read, "conductivity_w_per_m_k -1 is negative", 12,
+                      "materials[2].therm.conductivity_w_per_m_k");
+    expect_diagnostic(read, "exposed_area 2 is outside [0, 1]", 13,
+                      "materials[2].therm.exposed_area");
+    expect_diagnostic(read, "missing required key \"thickness_m\"", 12, "materials[2].therm");
+    expect_diagnostic(read, "unknown key \"emissivity\" (ignored)", 13,
+                      "materials[2].therm.emissivity", Severity::warning);
+}
+
 TEST(SceneReaderErrors, ReflectanceFileErrors) {
     TempDir dir;
     write(dir, "r.txt", "# units: um\n0.4 0.1\n0.5 x\n0.6 1.5\n");

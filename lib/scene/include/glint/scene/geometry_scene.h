@@ -95,6 +95,10 @@ struct BuildOptions {
     DeviceSettings device;
     TimeWindow window;
     MotionSampling motion;
+    /// Leave the dynamic instances (those with a motion) out: no ray meets them and
+    /// static_facets() lists none of them; the others keep their indices. THERM's shadow
+    /// history in a scene where something moves is traced in such a scene.
+    bool static_only = false;
 };
 
 /// A ray's closest hit.

@@ -17,6 +17,7 @@
 
 #include <array>
 #include <functional>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -29,7 +30,12 @@ namespace glint::thermal {
 /// How THERM steps.
 struct ThermSettings {
     double step_s = 300.0;    ///< time step of the slab
-    double spin_up_h = 24.0;  ///< history before the first time asked
+    double spin_up_h = 24.0;  ///< history before `start_h`
+    /// The weather hour the spin-up ends at (its history starts spin_up_h before); NaN: the
+    /// first time asked. The slab steps on the grid start + k · step_s whatever times are
+    /// asked, so a time's temperature is the same whichever others are asked with it (a
+    /// render's shards agree with the whole run).
+    double start_h = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// A facet: its unit normal (ENU) and broadband optical properties.
@@ -64,8 +70,10 @@ SlabMaterial therm_slab(const model::ThermProperties& properties, const ThermFac
 /// Whether `properties` store heat (thickness, conductivity, specific heat and density > 0).
 bool stores_heat(const model::ThermProperties& properties) noexcept;
 
-/// The facet's surface temperature at each of `times_h` (ascending weather hours), K. Throws
-/// glint::Error (input) for an empty weather history or times not ascending.
+/// The facet's surface temperature at each of `times_h` (ascending weather hours, none
+/// before settings.start_h), K: the slab stepped on its grid to the last grid time at or
+/// before each, then a copy of it stepped the rest of the way. Throws glint::Error (input)
+/// for an empty weather history, times not ascending or a time before the start.
 std::vector<double> therm_temperatures_k(const model::ThermProperties& properties,
                                          const ThermFacet& facet, const model::Weather& weather,
                                          const SunDirection& sun, const SunlitShare& sunlit,
