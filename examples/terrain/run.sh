@@ -17,7 +17,7 @@ run() { printf '$ %s\n' "$*" >&2; "$@"; }
 rm -rf "$out"
 mkdir -p "$out/render"
 cp "$here/terrain.sim" "$here/terrain.platform" "$here/terrain.ppd" "$here/terrain.tasks" \
-    "$here/../demo/sim/demo_atmosphere.yaml" "$out/"
+    "$here/../demo/sim/demo_atmosphere.yaml" "$here/../demo/sim/june.wth" "$out/"
 run /usr/bin/python3 "$here/make_terrain.py" "$out" >&2
 run "$bin/glint-platform2jsim" "$out/terrain.sim" -o "$out/terrain.jsim"
 run "$bin/glint-render" "$out/terrain.jsim" --output-folder "$out/render" \

@@ -19,7 +19,7 @@ run() { printf '$ %s\n' "$*" >&2; "$@"; }
 rm -rf "$out"
 mkdir -p "$out/render"
 cp "$here/vegetation.sim" "$here/vegetation.platform" "$here/vegetation.ppd" \
-    "$here/vegetation.tasks" "$here/../demo/sim/demo_atmosphere.yaml" "$out/"
+    "$here/vegetation.tasks" "$here/../demo/sim/demo_atmosphere.yaml" "$here/../demo/sim/june.wth" "$out/"
 run python3 "$here/make_forest.py" "$out" --trees "$trees" >&2
 run "$bin/glint-platform2jsim" "$out/vegetation.sim" -o "$out/vegetation.jsim"
 run "$bin/glint-render" "$out/vegetation.jsim" --output-folder "$out/render" \

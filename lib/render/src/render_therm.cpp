@@ -16,6 +16,7 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "glint/core/error.h"
@@ -104,7 +105,7 @@ std::shared_ptr<const scene::FacetTemperatures> solve_therm(const RenderPlan& pl
     }
     const std::vector<double> times_s(rounded.begin(), rounded.end());
     // The history is anchored on the whole run's first capture (its start, rounded), not on
-    // this run's: a shard (--schedule) or a --captures selection solves the same temperatures.
+    // this run's: a shard (--schedule) solves the same temperatures.
     const std::optional<schedule::Capture> first = in.schedule->captures().next();
     const double anchor_s =
         std::min(times_s.front(),
@@ -231,27 +232,89 @@ std::shared_ptr<const scene::FacetTemperatures> solve_therm(const RenderPlan& pl
         for (double& x : d) x /= std::sqrt(length);
         return d;
     };
-    std::vector<std::vector<double>> solved(cells.size());
-    const auto solve_one = [&](std::size_t index) {
-        const Cell& cell = cells[index];
-        const scene::GeometryScene::Facet& f = facets[cell.facet];
-        const model::Material& material = in.scene.materials[f.material];
-        thermal::ThermFacet facet = optics(material, *material.therm);
-        facet.normal = {f.normal.x, f.normal.y, f.normal.z};
-        const auto sunlit = [&](double hour) {
-            const std::array<double, 3> s = sun(hour);
-            const motion::Vec3 to_sun{s[0], s[1], s[2]};
-            if (s[2] <= 0.0 || dot(to_sun, f.normal) <= 0.0) return 0.0;
-            const motion::Vec3 origin = cell.point_m + f.normal * f.spawn_offset_m;
-            return geometry.occluded(origin, to_sun, ray_time(hour)) ? 0.0 : 1.0;
-        };
-        solved[index] = thermal::therm_temperatures_k(*material.therm, facet, in.weather, sun,
-                                                      sunlit, hours, settings);
+    // Facets that store heat step on THERM's grid; faces without storage balance at the
+    // times themselves. Each plan says where a cell's sunlit share is needed.
+    const thermal::ThermPlan slab_plan = thermal::therm_plan(true, hours, settings);
+    const thermal::ThermPlan face_plan = thermal::therm_plan(false, hours, settings);
+    const std::vector<double> slab_times = slab_plan.forcing_times_h();
+    const std::vector<double> face_times = face_plan.forcing_times_h();
+    const auto stores = [&](const Cell& cell) {
+        return thermal::stores_heat(*in.scene.materials[facets[cell.facet].material].therm);
     };
     tbb::task_arena arena(context.threads == 0 ? tbb::task_arena::automatic
                                                : static_cast<int>(context.threads));
+    // Pass 1: each cell's shadow history, one bit per forcing time: a shadow ray from its
+    // centroid towards the sun where the sun is up and in front of the face.
+    std::vector<std::vector<std::uint64_t>> lit(cells.size());
+    const auto trace_history = [&](std::size_t index) {
+        const Cell& cell = cells[index];
+        const scene::GeometryScene::Facet& f = facets[cell.facet];
+        const std::vector<double>& at = stores(cell) ? slab_times : face_times;
+        std::vector<std::uint64_t> bits((at.size() + 63) / 64, 0);
+        const motion::Vec3 origin = cell.point_m + f.normal * f.spawn_offset_m;
+        for (std::size_t i = 0; i < at.size(); ++i) {
+            const std::array<double, 3> s = sun(at[i]);
+            const motion::Vec3 to_sun{s[0], s[1], s[2]};
+            if (s[2] <= 0.0 || dot(to_sun, f.normal) <= 0.0) continue;
+            if (!geometry.occluded(origin, to_sun, ray_time(at[i]))) {
+                bits[i / 64] |= std::uint64_t{1} << (i % 64);
+            }
+        }
+        lit[index] = std::move(bits);
+    };
     arena.execute([&] {
-        tbb::parallel_for(std::size_t{0}, cells.size(), [&](std::size_t i) { solve_one(i); });
+        tbb::parallel_for(std::size_t{0}, cells.size(), [&](std::size_t i) { trace_history(i); });
+    });
+    // Cells of one material with the same normal and shadow history have the same forcing at
+    // every step, so the same temperatures: each such group is solved once, numbered in cell
+    // order (a ground plane's open cells are one group; the shaded ones split by history).
+    const auto same = [&](std::size_t a, std::size_t b) {
+        const auto& fa = facets[cells[a].facet];
+        const auto& fb = facets[cells[b].facet];
+        return fa.material == fb.material && fa.normal.x == fb.normal.x &&
+               fa.normal.y == fb.normal.y && fa.normal.z == fb.normal.z && lit[a] == lit[b];
+    };
+    const auto hash = [&](std::size_t index) {
+        const auto& f = facets[cells[index].facet];
+        std::size_t h = std::hash<std::uint32_t>{}(f.material);
+        const auto mix = [&h](std::size_t v) {
+            h ^= v + 0x9e3779b97f4a7c15ULL + (h << 6) + (h >> 2);
+        };
+        for (const double c : {f.normal.x, f.normal.y, f.normal.z}) mix(std::hash<double>{}(c));
+        for (const std::uint64_t word : lit[index]) mix(std::hash<std::uint64_t>{}(word));
+        return h;
+    };
+    std::unordered_map<std::size_t, std::size_t, decltype(hash), decltype(same)> groups(
+        cells.size() / 4 + 1, hash, same);
+    std::vector<std::size_t> group_of(cells.size());
+    std::vector<std::size_t> first_cell;  // of each group
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+        const auto [it, added] = groups.try_emplace(i, first_cell.size());
+        if (added) first_cell.push_back(i);
+        group_of[i] = it->second;
+    }
+    context.log.info("THERM: " + std::to_string(first_cell.size()) +
+                     " distinct (material, normal, shadow history) solved");
+    // Pass 2: one slab per group.
+    std::vector<std::vector<double>> solved(first_cell.size());
+    const auto solve_group = [&](std::size_t g) {
+        const std::size_t index = first_cell[g];
+        const scene::GeometryScene::Facet& f = facets[cells[index].facet];
+        const model::Material& material = in.scene.materials[f.material];
+        thermal::ThermFacet facet = optics(material, *material.therm);
+        facet.normal = {f.normal.x, f.normal.y, f.normal.z};
+        const bool slab = stores(cells[index]);
+        const std::size_t count = (slab ? slab_times : face_times).size();
+        std::vector<double> shares(count, 0.0);
+        for (std::size_t i = 0; i < count; ++i) {
+            if ((lit[index][i / 64] >> (i % 64)) & 1U) shares[i] = 1.0;
+        }
+        solved[g] = thermal::therm_temperatures_k(*material.therm, facet, in.weather, sun, shares,
+                                                  slab ? slab_plan : face_plan);
+    };
+    arena.execute([&] {
+        tbb::parallel_for(std::size_t{0}, first_cell.size(),
+                          [&](std::size_t g) { solve_group(g); });
     });
     auto table = std::make_shared<scene::FacetTemperatures>(times_s);
     std::size_t next = 0;
@@ -259,8 +322,9 @@ std::shared_ptr<const scene::FacetTemperatures> solve_therm(const RenderPlan& pl
         const std::size_t n = cuts[k];
         std::vector<double> rows(scene::FacetTemperatures::cell_slots(n) * times_s.size(), 0.0);
         for (; next < cells.size() && cells[next].facet == k; ++next) {
+            const std::vector<double>& temperatures = solved[group_of[next]];
             std::copy(
-                solved[next].begin(), solved[next].end(),
+                temperatures.begin(), temperatures.end(),
                 rows.begin() + static_cast<std::ptrdiff_t>(cells[next].slot * times_s.size()));
         }
         table->add(facets[k].instance, facets[k].triangle, n, rows);

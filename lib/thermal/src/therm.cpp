@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstddef>
 #include <numbers>
+#include <optional>
 
 #include "glint/core/error.h"
 
@@ -68,63 +69,115 @@ SlabMaterial therm_slab(const model::ThermProperties& p, const ThermFacet& facet
     return m;
 }
 
+ThermPlan therm_plan(bool stores, std::span<const double> times_h, const ThermSettings& settings) {
+    if (!std::is_sorted(times_h.begin(), times_h.end())) {
+        throw input_error("THERM's times must be ascending");
+    }
+    ThermPlan plan;
+    if (times_h.empty()) return plan;
+    if (times_h.front() < settings.start_h - 1e-9) {  // false for a NaN start
+        throw input_error("THERM's times must not precede its start");
+    }
+    if (!stores) {
+        // No storage: the face's balance at each instant.
+        for (double t : times_h) plan.steps.push_back({t, 0.0, ThermStep::Kind::instant});
+        return plan;
+    }
+    plan.start_h =
+        (std::isnan(settings.start_h) ? times_h.front() : settings.start_h) - settings.spin_up_h;
+    const double step_h = settings.step_s / 3600.0;
+    // Grid time k is start + k · step (a product, not a running sum: no drift over a day).
+    std::size_t k = 0;
+    const auto grid = [&](std::size_t i) { return plan.start_h + static_cast<double>(i) * step_h; };
+    // A target within this of a grid time is on it (the hours carry rounding from seconds).
+    constexpr double kOnGrid_h = 1e-9;
+    for (double target : times_h) {
+        while (grid(k + 1) <= target + kOnGrid_h) {
+            plan.steps.push_back({grid(k + 1), settings.step_s, ThermStep::Kind::advance});
+            ++k;
+        }
+        if (target - grid(k) <= kOnGrid_h) {
+            plan.steps.push_back({target, 0.0, ThermStep::Kind::current});
+        } else {
+            plan.steps.push_back({target, (target - grid(k)) * 3600.0, ThermStep::Kind::partial});
+        }
+    }
+    return plan;
+}
+
+std::vector<double> ThermPlan::forcing_times_h() const {
+    std::vector<double> out;
+    for (const ThermStep& step : steps) {
+        if (step.kind != ThermStep::Kind::current) out.push_back(step.time_h);
+    }
+    return out;
+}
+
+std::vector<double> therm_temperatures_k(const model::ThermProperties& properties,
+                                         const ThermFacet& facet, const model::Weather& weather,
+                                         const SunDirection& sun, std::span<const double> sunlit,
+                                         const ThermPlan& plan) {
+    if (weather.empty()) throw input_error("THERM needs a weather history");
+    std::vector<double> out;
+    std::size_t next = 0;  // into sunlit: the forcing steps in order
+    const auto forcing_at = [&](double t_h) {
+        if (next >= sunlit.size()) {
+            throw internal_error("THERM: fewer sunlit shares than the plan's forcing steps");
+        }
+        return therm_forcing(weather.at(t_h), facet, sun(t_h), sunlit[next++]);
+    };
+    SlabMaterial material = therm_slab(properties, facet);
+    if (!stores_heat(properties)) {
+        // The balance alone: an insulated face conducting nothing.
+        material.thickness_m = 1.0;
+        material.density_kg_per_m3 = 1.0;
+        material.specific_heat_j_per_kg_k = 1.0;
+        material.conductivity_w_per_m_k = 1.0;
+        material.back_held = false;
+    }
+    std::optional<Slab> slab;
+    if (stores_heat(properties)) {
+        const double depth = Slab::penetration_depth_m(material, kDaySeconds);
+        const auto nodes = std::clamp(
+            static_cast<std::size_t>(std::ceil(material.thickness_m / (0.1 * depth))) + 1,
+            kMinNodes, kMaxNodes);
+        slab.emplace(material, nodes, weather.at(plan.start_h).air_temperature_k);
+    }
+    for (const ThermStep& step : plan.steps) {
+        switch (step.kind) {
+            case ThermStep::Kind::instant:
+                out.push_back(steady_surface_temperature_k(material, forcing_at(step.time_h)));
+                break;
+            case ThermStep::Kind::advance:
+            case ThermStep::Kind::partial:
+            case ThermStep::Kind::current:
+                if (!slab) throw internal_error("THERM: a slab's plan for a face without storage");
+                if (step.kind == ThermStep::Kind::advance) {
+                    // Backward Euler: the forcing at the step's end.
+                    slab->step(forcing_at(step.time_h), step.dt_s);
+                } else if (step.kind == ThermStep::Kind::partial) {
+                    Slab rest = *slab;
+                    rest.step(forcing_at(step.time_h), step.dt_s);
+                    out.push_back(rest.surface_temperature_k());
+                } else {
+                    out.push_back(slab->surface_temperature_k());
+                }
+                break;
+        }
+    }
+    return out;
+}
+
 std::vector<double> therm_temperatures_k(const model::ThermProperties& properties,
                                          const ThermFacet& facet, const model::Weather& weather,
                                          const SunDirection& sun, const SunlitShare& sunlit,
                                          std::span<const double> times_h,
                                          const ThermSettings& settings) {
     if (weather.empty()) throw input_error("THERM needs a weather history");
-    if (!std::is_sorted(times_h.begin(), times_h.end())) {
-        throw input_error("THERM's times must be ascending");
-    }
-    std::vector<double> out;
-    if (times_h.empty()) return out;
-    if (times_h.front() < settings.start_h - 1e-9) {  // false for a NaN start
-        throw input_error("THERM's times must not precede its start");
-    }
-    const auto forcing_at = [&](double t_h) {
-        return therm_forcing(weather.at(t_h), facet, sun(t_h), sunlit(t_h));
-    };
-    SlabMaterial material = therm_slab(properties, facet);
-    if (!stores_heat(properties)) {
-        // No storage: the face's balance at each instant (insulated, nothing conducted).
-        material.thickness_m = 1.0;
-        material.density_kg_per_m3 = 1.0;
-        material.specific_heat_j_per_kg_k = 1.0;
-        material.conductivity_w_per_m_k = 1.0;
-        material.back_held = false;
-        for (double t : times_h)
-            out.push_back(steady_surface_temperature_k(material, forcing_at(t)));
-        return out;
-    }
-    const double depth = Slab::penetration_depth_m(material, kDaySeconds);
-    const auto nodes =
-        std::clamp(static_cast<std::size_t>(std::ceil(material.thickness_m / (0.1 * depth))) + 1,
-                   kMinNodes, kMaxNodes);
-    const double start_h =
-        (std::isnan(settings.start_h) ? times_h.front() : settings.start_h) - settings.spin_up_h;
-    Slab slab(material, nodes, weather.at(start_h).air_temperature_k);
-    const double step_h = settings.step_s / 3600.0;
-    // Grid time k is start + k · step (a product, not a running sum: no drift over a day).
-    std::size_t k = 0;
-    const auto grid = [&](std::size_t i) { return start_h + static_cast<double>(i) * step_h; };
-    // A target within this of a grid time is on it (the hours carry rounding from seconds).
-    constexpr double kOnGrid_h = 1e-9;
-    for (double target : times_h) {
-        while (grid(k + 1) <= target + kOnGrid_h) {
-            // Backward Euler: the forcing at the step's end.
-            slab.step(forcing_at(grid(k + 1)), settings.step_s);
-            ++k;
-        }
-        if (target - grid(k) <= kOnGrid_h) {
-            out.push_back(slab.surface_temperature_k());
-        } else {
-            Slab rest = slab;
-            rest.step(forcing_at(target), (target - grid(k)) * 3600.0);
-            out.push_back(rest.surface_temperature_k());
-        }
-    }
-    return out;
+    const ThermPlan plan = therm_plan(stores_heat(properties), times_h, settings);
+    std::vector<double> shares;
+    for (double t : plan.forcing_times_h()) shares.push_back(sunlit(t));
+    return therm_temperatures_k(properties, facet, weather, sun, shares, plan);
 }
 
 }  // namespace glint::thermal

@@ -70,6 +70,44 @@ SlabMaterial therm_slab(const model::ThermProperties& properties, const ThermFac
 /// Whether `properties` store heat (thickness, conductivity, specific heat and density > 0).
 bool stores_heat(const model::ThermProperties& properties) noexcept;
 
+/// One step of THERM's time stepping.
+struct ThermStep {
+    enum class Kind {
+        advance,  ///< the slab steps dt_s to time_h (a grid step), the forcing at time_h
+        partial,  ///< a copy of the slab steps dt_s to time_h: its face is an output
+        current,  ///< the slab's face is an output (time_h is on the grid); no forcing
+        instant,  ///< a face without storage: its balance under the forcing at time_h
+    };
+    double time_h = 0.0;
+    double dt_s = 0.0;
+    Kind kind = Kind::advance;
+};
+
+/// THERM's steps for a set of times: the same for every facet of a kind (storing heat or
+/// not), so a caller can find the sunlit shares a facet needs before solving it, and solve
+/// facets with the same material, normal and shares once.
+struct ThermPlan {
+    double start_h = 0.0;  ///< where the history starts (the slab at the air's temperature)
+    std::vector<ThermStep> steps;
+    /// The times the forcing is evaluated at, in order (every step but `current`).
+    std::vector<double> forcing_times_h() const;
+};
+
+/// The plan for a facet that stores heat (`stores`) or not, at `times_h` (ascending weather
+/// hours, none before settings.start_h): the slab stepped on its grid to the last grid time
+/// at or before each, then a copy of it stepped the rest of the way. Throws glint::Error
+/// (input) for times not ascending or before the start.
+ThermPlan therm_plan(bool stores, std::span<const double> times_h,
+                     const ThermSettings& settings = {});
+
+/// The facet's surface temperature at each of the plan's outputs, K, `sunlit` its sunlit
+/// share at each of plan.forcing_times_h(). Throws glint::Error (input) for an empty weather
+/// history, (internal) for a plan of the other kind or too few shares.
+std::vector<double> therm_temperatures_k(const model::ThermProperties& properties,
+                                         const ThermFacet& facet, const model::Weather& weather,
+                                         const SunDirection& sun, std::span<const double> sunlit,
+                                         const ThermPlan& plan);
+
 /// The facet's surface temperature at each of `times_h` (ascending weather hours, none
 /// before settings.start_h), K: the slab stepped on its grid to the last grid time at or
 /// before each, then a copy of it stepped the rest of the way. Throws glint::Error (input)
