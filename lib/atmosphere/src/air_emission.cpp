@@ -169,8 +169,16 @@ std::vector<std::vector<double>> ParametricAtmosphereModel::thermal_sky_at_zenit
         return std::vector<std::vector<double>>(
             zeniths_deg.size(), thermal_sky_radiance_at_zenith(grid, geometry, 0.0));
     }
-    return air_emission_at_air_masses(grid, geometry.surface_altitude_m, kTopOfAtmosphereM,
-                                      air_masses);
+    std::vector<std::vector<double>> sky = air_emission_at_air_masses(
+        grid, geometry.surface_altitude_m, kTopOfAtmosphereM, air_masses);
+    // What scattering adds (thermal multiple scattering; zero where it is not solved).
+    for (std::size_t j = 0; j < zeniths_deg.size(); ++j) {
+        const double mu = std::cos(std::clamp(zeniths_deg[j], 0.0, 90.0) * kDegToRad);
+        const std::vector<double> in_scatter = thermal_in_scatter_w_per_cm2_sr_um(
+            grid, geometry.surface_altitude_m, geometry.surface_altitude_m, mu, false);
+        for (std::size_t i = 0; i < grid.size(); ++i) sky[j][i] += in_scatter[i];
+    }
+    return sky;
 }
 
 std::vector<double> ParametricAtmosphereModel::thermal_sky_radiance_w_per_cm2_sr_um(

@@ -16,6 +16,7 @@
 #include "atmosphere_detail.h"
 #include "glint/atmosphere/atmosphere.h"
 #include "glint/core/error.h"
+#include "glint/model/standard_atmospheres.h"
 #include "parametric_scattering.h"
 
 namespace glint::atmosphere {
@@ -107,9 +108,18 @@ ParametricAtmosphereModel::ParametricAtmosphereModel(model::ParametricAtmosphere
 GasAmounts ParametricAtmosphereModel::gas_amounts_above(double altitude_m) const noexcept {
     if (!m_parameters.gas_absorption) return {};
     const double z = std::max(altitude_m, 0.0);
-    const double ozone_share =
-        std::clamp((kOzoneTopM - z) / (kOzoneTopM - kOzoneBottomM), 0.0, 1.0);
-    return GasAmounts{m_parameters.water_vapor_cm * std::exp(-z / kWaterScaleHeightM),
+    // The columns' shapes: the profile's densities (scaled to the columns asked for), or,
+    // for the isothermal atmosphere, which has none, an exponential water and an ozone
+    // layer between kOzoneBottomM and kOzoneTopM.
+    const model::StandardAtmosphereProfile& profile =
+        model::standard_atmosphere(m_parameters.profile);
+    double water_share = model::water_share_above(profile, z);
+    double ozone_share = model::ozone_share_above(profile, z);
+    if (water_share < 0.0) water_share = std::exp(-z / kWaterScaleHeightM);
+    if (ozone_share < 0.0) {
+        ozone_share = std::clamp((kOzoneTopM - z) / (kOzoneTopM - kOzoneBottomM), 0.0, 1.0);
+    }
+    return GasAmounts{m_parameters.water_vapor_cm * water_share,
                       m_parameters.ozone_atm_cm * ozone_share,
                       m_parameters.sea_level_pressure_hpa / kStandardPressureHpa *
                           std::exp(-z / m_parameters.rayleigh_scale_height_m)};
@@ -310,8 +320,12 @@ std::vector<std::vector<double>> ParametricAtmosphereModel::path_radiance_at_azi
             }
         }
     }
-    // The air's own emission along the path, the same at every azimuth.
-    const std::vector<double> emission = air_emission_w_per_cm2_sr_um(grid, z1, z0, m_view);
+    // The air's own emission along the path and what scattering adds to it (thermal
+    // multiple scattering), the same at every azimuth.
+    std::vector<double> emission = air_emission_w_per_cm2_sr_um(grid, z1, z0, m_view);
+    const std::vector<double> in_scatter = thermal_in_scatter_w_per_cm2_sr_um(
+        grid, z0, z1, std::cos(std::clamp(geometry.view_zenith_deg, 0.0, 90.0) * kDegToRad), true);
+    for (std::size_t i = 0; i < grid.size(); ++i) emission[i] += in_scatter[i];
     for (auto& spectrum : out) {
         for (std::size_t i = 0; i < grid.size(); ++i) spectrum[i] += emission[i];
     }

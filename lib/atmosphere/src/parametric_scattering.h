@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "glint/atmosphere/atmosphere.h"
@@ -37,6 +38,17 @@ struct ParametricAtmosphereModel::Scattering {
         }
         return out;
     }
+};
+
+/// Thermal multiple-scattering solutions of one pair of altitudes, one per band where it is
+/// solved (thermal_scattering.cpp).
+struct ParametricAtmosphereModel::ThermalScattering {
+    std::vector<double> grid;  ///< the grid's wavelengths (part of the key)
+    double surface_altitude_m = 0.0;
+    double sensor_altitude_m = 0.0;
+    std::size_t sensor_level = 0;                          ///< level of the sensor altitude
+    std::size_t ground_level = 0;                          ///< level of the surface (the last)
+    std::vector<std::optional<ScatteringSolution>> bands;  ///< empty: not solved
 };
 
 }  // namespace glint::atmosphere

@@ -415,6 +415,11 @@ std::vector<double> ScatteringSolution::multiple_scatter_up_modes(std::size_t le
     return up_modes(level, mu, true);
 }
 
+double ScatteringSolution::multiple_scatter_down_radiance(std::size_t level, double mu,
+                                                          double relative_azimuth_rad) const {
+    return sum_modes(down_modes(level, mu), relative_azimuth_rad);
+}
+
 double ScatteringSolution::single_scatter_up_radiance(std::size_t level, double mu,
                                                       double relative_azimuth_rad) const {
     return sum_modes(up_modes(level, mu, false), relative_azimuth_rad);
@@ -474,6 +479,48 @@ std::vector<double> ScatteringSolution::up_modes(std::size_t level, double mu, b
                                         (mu0 + mu);
                 value = value * e + beam[k] * integral;
             }
+        }
+        terms[m] = value;
+    }
+    return terms;
+}
+
+std::vector<double> ScatteringSolution::down_modes(std::size_t level, double mu) const {
+    if (!(mu > 0.0) || mu > 1.0) {
+        throw input_error("downward radiance needs a direction cosine in (0, 1]");
+    }
+    const std::size_t n = m_mu.size();
+    const std::size_t nd = 2 * n;
+    const int lmax = static_cast<int>(nd) - 1;
+    const std::size_t stop = m_level_boundary.at(level);
+    std::vector<double> terms(m_field.size(), 0.0);
+    for (std::size_t m = 0; m < m_field.size(); ++m) {
+        const int mi = static_cast<int>(m);
+        // Travelling downward: the direction −μ.
+        const std::vector<double> lambda_view = normalized_legendre(mi, lmax, -mu);
+        const std::size_t layers = m_problem.layers.size();
+        std::vector<std::vector<double>> row(layers, std::vector<double>(nd, 0.0));
+        for (std::size_t b = 0; b < nd; ++b) {
+            const std::vector<double> lambda =
+                normalized_legendre(mi, lmax, b < n ? m_mu[b] : -m_mu[b - n]);
+            for (std::size_t k = 0; k < layers; ++k) {
+                const ScatteringLayer& layer = m_problem.layers[k];
+                row[k][b] = 0.5 * layer.single_scatter_albedo * m_weight[b % n] *
+                            phase_mode(layer.moments, mi, lambda_view, lambda);
+            }
+        }
+        const std::vector<double>& field = m_field[m];
+        const auto source = [&](std::size_t k, std::size_t boundary) {
+            double sum = 0.0;
+            for (std::size_t b = 0; b < nd; ++b) sum += row[k][b] * field[boundary * nd + b];
+            return sum;
+        };
+        double value = 0.0;  // nothing scattered above the top
+        for (std::size_t q = 0; q < stop; ++q) {
+            const std::size_t k = m_layer_of[q];
+            double entry = 0.0, exit = 0.0, e = 0.0;
+            linear_weights((m_tau[q + 1] - m_tau[q]) / mu, entry, exit, e);
+            value = value * e + entry * source(k, q) + exit * source(k, q + 1);
         }
         terms[m] = value;
     }

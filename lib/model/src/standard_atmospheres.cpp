@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <vector>
 
 #include "standard_atmospheres_data.h"
 
@@ -54,6 +55,55 @@ double column_g_per_m2(std::span<const AtmosphereLevel> levels, Field field) {
     return sum;
 }
 
+/// ∫ density dz from `z_m` up to the level above it (index `upper`), the density exponential
+/// between levels upper − 1 and upper.
+template <typename Field>
+double partial_g_per_m2(std::span<const AtmosphereLevel> levels, std::size_t upper, double z_m,
+                        Field field) {
+    const AtmosphereLevel& lo = levels[upper - 1];
+    const AtmosphereLevel& hi = levels[upper];
+    const double dz_m = (hi.altitude_km - lo.altitude_km) * 1000.0;
+    const double f = (z_m - lo.altitude_km * 1000.0) / dz_m;
+    const double a = field(lo);
+    const double b = field(hi);
+    const double rest_m = (1.0 - f) * dz_m;
+    if (a > 0.0 && b > 0.0 && std::abs(a - b) > 1e-12 * a) {
+        const double at_z = a * std::pow(b / a, f);
+        return dz_m * (at_z - b) / std::log(a / b);
+    }
+    const double at_z = a + f * (b - a);
+    return rest_m * 0.5 * (at_z + b);
+}
+
+/// Column above every level, g/m².
+template <typename Field>
+std::vector<double> columns_above(std::span<const AtmosphereLevel> levels, Field field) {
+    std::vector<double> above(levels.size(), 0.0);
+    for (std::size_t i = levels.size(); i-- > 1;) {
+        above[i - 1] = above[i] + column_g_per_m2(levels.subspan(i - 1, 2), field);
+    }
+    return above;
+}
+
+template <typename Field>
+double share_above(std::span<const AtmosphereLevel> levels, const std::vector<double>& above,
+                   double altitude_m, Field field) {
+    if (levels.empty() || above.empty()) return -1.0;
+    if (!(above.front() > 0.0)) return 0.0;
+    const double z_km = altitude_m / 1000.0;
+    if (!(z_km > levels.front().altitude_km)) return 1.0;
+    if (!(z_km < levels.back().altitude_km)) return 0.0;
+    const auto it = std::upper_bound(
+        levels.begin(), levels.end(), z_km,
+        [](double z, const AtmosphereLevel& level) { return z < level.altitude_km; });
+    const auto upper = static_cast<std::size_t>(it - levels.begin());
+    const double column = partial_g_per_m2(levels, upper, altitude_m, field) + above[upper];
+    return std::clamp(column / above.front(), 0.0, 1.0);
+}
+
+double water_of(const AtmosphereLevel& l) { return l.water_g_per_m3; }
+double ozone_of(const AtmosphereLevel& l) { return l.ozone_g_per_m3; }
+
 StandardAtmosphereProfile make_profile(StandardAtmosphere which) {
     StandardAtmosphereProfile p;
     for (const Entry& e : kNames) {
@@ -66,6 +116,8 @@ StandardAtmosphereProfile make_profile(StandardAtmosphere which) {
     p.ozone_column_atm_cm =
         column_g_per_m2(p.levels, [](const AtmosphereLevel& l) { return l.ozone_g_per_m3; }) /
         kGramsPerM2PerAtmCmOzone;
+    p.water_above_g_per_m2 = columns_above(p.levels, water_of);
+    p.ozone_above_g_per_m2 = columns_above(p.levels, ozone_of);
     return p;
 }
 
@@ -94,6 +146,14 @@ std::optional<StandardAtmosphere> standard_atmosphere_named(std::string_view nam
 const char* standard_atmosphere_names() noexcept {
     return "tropical, midlatitude_summer, midlatitude_winter, subarctic_summer, "
            "subarctic_winter, us_standard_1976 or isothermal";
+}
+
+double water_share_above(const StandardAtmosphereProfile& profile, double altitude_m) noexcept {
+    return share_above(profile.levels, profile.water_above_g_per_m2, altitude_m, water_of);
+}
+
+double ozone_share_above(const StandardAtmosphereProfile& profile, double altitude_m) noexcept {
+    return share_above(profile.levels, profile.ozone_above_g_per_m2, altitude_m, ozone_of);
 }
 
 double profile_temperature_k(std::span<const AtmosphereLevel> levels, double altitude_m) noexcept {

@@ -24,6 +24,7 @@
 #include "glint/atmosphere/solar.h"
 #include "glint/core/error.h"
 #include "glint/io/input_files.h"
+#include "glint/model/standard_atmospheres.h"
 #include "glint/test/temp_dir.h"
 
 namespace glint::atmosphere {
@@ -160,15 +161,21 @@ TEST(ParametricAtmosphereGases, SunTransmittanceIsScatteringTimesGases) {
             EXPECT_NEAR(a[i], b[i] * t[i], 1e-9 * (1.0 + b[i]));
         }
     }
-    // A sensor path through the lowest 3 km holds 1 - e^(-1.5) of the water, the share of
-    // the mixed gases below 3 km, and no ozone.
+    // A sensor path through the lowest 3 km holds the profile's (the 1976 standard's) share
+    // of the water and of the ozone below 3 km (model::water_share_above: 0.76 and 0.02) and
+    // the share of the mixed gases below 3 km.
     AtmosphereGeometry up = sun_at(30.0);
     up.sensor_altitude_m = 3000.0;
     const auto v = with.sensor_transmittance(grid, up);
     const auto v0 = without.sensor_transmittance(grid, up);
     const double m0 = relative_air_mass(0.0);  // Kasten-Young: 0.9997 at the zenith
-    const auto expected = gases.transmittance(
-        {1.418 * (1.0 - std::exp(-1.5)) * m0, 0.0, (1.0 - std::exp(-3000.0 / 8000.0)) * m0});
+    const auto& us76 = model::standard_atmosphere(model::StandardAtmosphere::us_standard_1976);
+    const double water_below = 1.0 - model::water_share_above(us76, 3000.0);
+    const double ozone_below = 1.0 - model::ozone_share_above(us76, 3000.0);
+    EXPECT_NEAR(water_below, 0.76, 0.01);
+    EXPECT_NEAR(ozone_below, 0.022, 0.001);
+    const auto expected = gases.transmittance({1.418 * water_below * m0, 0.343 * ozone_below * m0,
+                                               (1.0 - std::exp(-3000.0 / 8000.0)) * m0});
     for (std::size_t i = 0; i < grid.size(); ++i) {
         EXPECT_NEAR(v[i], v0[i] * expected[i], 1e-9);
     }

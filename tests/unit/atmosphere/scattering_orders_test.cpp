@@ -224,6 +224,46 @@ std::vector<double> hg_moments(double g, int count) {
     return out;
 }
 
+// Equilibrium: an isothermal slab (τ 2 in three layers, ω 0.6, Henyey–Greenstein g 0.7) at B
+// over a black ground at B, lit from above by an isotropic B, holds B in every direction, so
+// the source function is B everywhere; what scattering adds along a path of slant optical
+// depth τ/μ is then exactly ω B (1 − e^(−τ/μ)) (the rest, the unscattered B e^(−τ/μ) and the
+// emission (1 − ω) B (1 − e^(−τ/μ)), is not in it). Within 2e-4 of B: the field's
+// discretisation (16 streams, sublayers of 0.01, the series stopped at 1e-9).
+TEST(ScatteringOrdersThermal, InScatteredRadianceOfAnIsothermalSlabInEquilibrium) {
+    const double b = 7.0;
+    ScatteringProblem p;
+    for (int k = 0; k < 3; ++k) {
+        p.layers.push_back(ScatteringLayer{2.0 / 3.0, 0.6, hg_moments(0.7, 32)});
+    }
+    p.streams = 16;
+    p.beam_irradiance = 0.0;
+    p.level_planck.assign(4, b);
+    p.ground_planck = b;
+    p.top_isotropic_radiance = b;
+    p.tolerance = 1e-9;
+    p.max_sublayer_depth = 0.01;
+    const ScatteringSolution s = solve_scattering_orders(p);
+    EXPECT_NEAR(s.diffuse_up_flux(0), kPi * b, 2e-4 * kPi * b);
+    EXPECT_NEAR(s.diffuse_down_flux(3), kPi * b, 2e-4 * kPi * b);
+    for (double mu : {0.1, 0.35, 0.8, 1.0}) {
+        for (std::size_t level : {std::size_t{1}, std::size_t{3}}) {
+            const double down_depth = s.optical_depth(level);
+            EXPECT_NEAR(s.multiple_scatter_down_radiance(level, mu, 0.0),
+                        0.6 * b * -std::expm1(-down_depth / mu), 2e-4 * b)
+                << "down, level " << level << ", mu " << mu;
+        }
+        for (std::size_t level : {std::size_t{0}, std::size_t{2}}) {
+            const double up_depth = s.optical_depth(3) - s.optical_depth(level);
+            EXPECT_NEAR(s.multiple_scatter_up_radiance(level, mu, 0.0),
+                        0.6 * b * -std::expm1(-up_depth / mu), 2e-4 * b)
+                << "up, level " << level << ", mu " << mu;
+        }
+    }
+    EXPECT_EQ(s.multiple_scatter_down_radiance(0, 0.5, 0.0), 0.0);  // nothing above the top
+    EXPECT_THROW((void)s.multiple_scatter_down_radiance(1, 0.0, 0.0), Error);
+}
+
 // DISORT's test problem 7A (K. Stamnes et al. 1988; its answers are Kylling & Stamnes's,
 // J. Comp. Phys. 102, 1992, Table I): one absorbing, weakly scattering layer (τ 1, ω 0.1,
 // Henyey–Greenstein g 0.05) emitting at 200 K at its top and 300 K at its bottom over

@@ -156,10 +156,11 @@ private:
 /// the aerosol's emission on paths and a grey Brutsaert sky).
 class ParametricAtmosphereModel final : public AtmosphereModel {
 public:
-    /// Scale height of water vapour, m: the water above altitude z is W·e^(−z/H).
+    /// The isothermal profile's water (the standard profiles use their own densities):
+    /// the water above altitude z is W·e^(−z/H), H this scale height, m.
     static constexpr double kWaterScaleHeightM = 2000.0;
-    /// Ozone: all of the column lies above kOzoneBottomM, none above kOzoneTopM, and the
-    /// share above z falls linearly between.
+    /// The isothermal profile's ozone: all of the column lies above kOzoneBottomM, none above
+    /// kOzoneTopM, and the share above z falls linearly between.
     static constexpr double kOzoneBottomM = 10'000.0;
     static constexpr double kOzoneTopM = 40'000.0;
 
@@ -169,7 +170,9 @@ public:
     explicit ParametricAtmosphereModel(model::ParametricAtmosphere parameters,
                                        std::shared_ptr<const GasBandModel> gases = nullptr);
 
-    /// The vertical absorber amounts above `altitude_m` (zero without gas absorption).
+    /// The vertical absorber amounts above `altitude_m` (zero without gas absorption): the
+    /// water and ozone columns shared out by the profile's densities (docs/thermal.md), the
+    /// mixed gases by the Rayleigh scale height.
     GasAmounts gas_amounts_above(double altitude_m) const noexcept;
     /// Gas transmittance of every band of `grid` for slant amounts `amounts` (1 without gas
     /// absorption).
@@ -253,8 +256,24 @@ public:
     /// The gas band-model table in use; nullptr without gas absorption.
     const GasBandModel* gas_table() const noexcept { return m_gases.get(); }
 
+    /// Thermal multiple scattering (with multiple_scattering on) is solved for the bands at
+    /// or beyond this wavelength whose column above the surface scatters at least
+    /// kThermalScatteringMinDepth (vertical optical depth); elsewhere what it adds is below
+    /// 10⁻⁴ of the emission, or the sun's light dwarfs it (docs/thermal.md).
+    static constexpr double kThermalScatteringFromUm = 2.5;
+    static constexpr double kThermalScatteringMinDepth = 1e-4;
+    /// What thermal multiple scattering adds, W/(cm² sr µm) per band of `grid`: upward at
+    /// `sensor_m` along cos(zenith) `mu` when `upward`, else downward at `surface_m`
+    /// arriving from cos(zenith) `mu`, in the plane-parallel atmosphere from `surface_m` to
+    /// the top, emitting at the profile's temperatures over a black ground at the air's
+    /// temperature there (docs/thermal.md). Zero for the bands it is not solved for.
+    std::vector<double> thermal_in_scatter_w_per_cm2_sr_um(const SpectralGrid& grid,
+                                                           double surface_m, double sensor_m,
+                                                           double mu, bool upward) const;
+
 private:
     struct Scattering;
+    struct ThermalScattering;
 
     /// The band model on `grid`, computed once per grid (null without gas absorption).
     std::shared_ptr<const GasTransmittance> gases_on(const SpectralGrid& grid) const;
@@ -274,6 +293,14 @@ private:
     mutable std::map<std::vector<double>, std::shared_ptr<const GasTransmittance>> m_grids;
     mutable std::mutex m_scattering_mutex;
     mutable std::vector<std::shared_ptr<const Scattering>> m_scattering;  ///< most recent last
+    mutable std::vector<std::shared_ptr<const ThermalScattering>> m_thermal_scattering;
+
+    /// The thermal scattering solutions between `surface_m` and the top with a level at
+    /// `sensor_m` (both rounded to kScatteringAltitudeStepM), per band of `grid`; the last
+    /// few are kept.
+    std::shared_ptr<const ThermalScattering> thermal_scattering(const SpectralGrid& grid,
+                                                                double surface_m,
+                                                                double sensor_m) const;
 };
 
 /// A user table for one geometry: the geometry is ignored, values are linearly interpolated

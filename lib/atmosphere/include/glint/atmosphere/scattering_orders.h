@@ -65,6 +65,14 @@ public:
     /// `level`. The light reflected by the ground reaching `level` unscattered is not in it.
     double multiple_scatter_up_radiance(std::size_t level, double mu,
                                         double relative_azimuth_rad) const;
+    /// Downward radiance at `level` travelling at cos(zenith) = `mu` (> 0, the direction it
+    /// comes from seen from below), at `relative_azimuth_rad`, from all scattering except the
+    /// direct beam's first, between the top and `level`: the in-scattered part of the sky.
+    /// Neither the layers' own emission nor the radiance entering at the top unscattered is
+    /// in it. With thermal sources and no beam it is what thermal multiple scattering adds
+    /// to a sky the emission integral already holds.
+    double multiple_scatter_down_radiance(std::size_t level, double mu,
+                                          double relative_azimuth_rad) const;
     /// The same radiance from the first scattering of the direct beam alone, with the
     /// truncated phase function of the problem (for checks against the exact one).
     double single_scatter_up_radiance(std::size_t level, double mu,
@@ -78,6 +86,7 @@ public:
 private:
     friend ScatteringSolution solve_scattering_orders(const ScatteringProblem& problem);
     std::vector<double> up_modes(std::size_t level, double mu, bool diffuse) const;
+    std::vector<double> down_modes(std::size_t level, double mu) const;
 
     ScatteringProblem m_problem;
     std::vector<double> m_mu;                   ///< Gauss nodes in (0, 1)

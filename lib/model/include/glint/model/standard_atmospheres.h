@@ -12,6 +12,7 @@
 #include <optional>
 #include <span>
 #include <string_view>
+#include <vector>
 
 namespace glint::model {
 
@@ -43,7 +44,17 @@ struct StandardAtmosphereProfile {
     /// Precipitable water and ozone above sea level, each density exponential between levels.
     double water_column_cm = 0.0;
     double ozone_column_atm_cm = 0.0;
+    /// The water's and the ozone's column above each level, g/m² (like `levels`).
+    std::vector<double> water_above_g_per_m2;
+    std::vector<double> ozone_above_g_per_m2;
 };
+
+/// The share of the profile's water column that lies above `altitude_m`, [0, 1]: 1 at or
+/// below its first level, 0 at or above its last, the density exponential between levels
+/// (as the columns are integrated). −1 for a profile without levels (isothermal).
+double water_share_above(const StandardAtmosphereProfile& profile, double altitude_m) noexcept;
+/// The same for its ozone.
+double ozone_share_above(const StandardAtmosphereProfile& profile, double altitude_m) noexcept;
 
 /// The table of `which` (the columns computed once from it).
 const StandardAtmosphereProfile& standard_atmosphere(StandardAtmosphere which) noexcept;

@@ -1,0 +1,154 @@
+// SPDX-License-Identifier: Apache-2.0
+// The parametric model's thermal multiple scattering (glint/atmosphere/atmosphere.h): the
+// successive-orders solution of the emitting, absorbing and scattering atmosphere above a
+// surface, per band, and the in-scattered radiance it adds to the emission integral of
+// air_emission.cpp along the sensor path and from the sky. docs/thermal.md, "Thermal
+// multiple scattering".
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <mutex>
+#include <vector>
+
+#include "atmosphere_detail.h"
+#include "glint/atmosphere/atmosphere.h"
+#include "glint/atmosphere/scattering_orders.h"
+#include "glint/core/spectral.h"
+#include "parametric_scattering.h"
+
+namespace glint::atmosphere {
+
+using namespace detail;
+
+namespace {
+
+/// A layer's absorption optical depth from its gas transmittance is capped here: such a
+/// layer is opaque (e^−30), and the cap bounds the solver's sublayers.
+constexpr double kMaxGasDepth = 30.0;
+
+}  // namespace
+
+std::shared_ptr<const ParametricAtmosphereModel::ThermalScattering>
+ParametricAtmosphereModel::thermal_scattering(const SpectralGrid& grid, double surface_m,
+                                              double sensor_m) const {
+    const double z0 = std::round(surface_m / kScatteringAltitudeStepM) * kScatteringAltitudeStepM;
+    const double z1 =
+        std::max(z0, std::round(sensor_m / kScatteringAltitudeStepM) * kScatteringAltitudeStepM);
+    const std::vector<double> wavelengths(grid.wavelengths_um().begin(),
+                                          grid.wavelengths_um().end());
+    const std::lock_guard<std::mutex> lock(m_scattering_mutex);
+    for (const auto& cached : m_thermal_scattering) {
+        if (cached->surface_altitude_m == z0 && cached->sensor_altitude_m == z1 &&
+            cached->grid == wavelengths) {
+            return cached;
+        }
+    }
+    auto out = std::make_shared<ThermalScattering>();
+    out->grid = wavelengths;
+    out->surface_altitude_m = z0;
+    out->sensor_altitude_m = z1;
+    out->bands.resize(grid.size());
+    // Layer boundaries as the solar solutions have them: ∝ (k/K)³ from the surface to 100 km,
+    // and the sensor's altitude.
+    const double top = std::max(z0, kTopOfAtmosphereM);
+    std::vector<double> bounds;
+    for (int k = 0; k <= kScatteringLayers; ++k) {
+        const double f = static_cast<double>(k) / kScatteringLayers;
+        bounds.push_back(z0 + (top - z0) * f * f * f);
+    }
+    if (z1 > z0 && z1 < top) bounds.push_back(z1);
+    std::sort(bounds.begin(), bounds.end());
+    bounds.erase(std::unique(bounds.begin(), bounds.end()), bounds.end());
+    const std::size_t layers = bounds.size() - 1;
+    const auto at_sensor = std::find(bounds.begin(), bounds.end(), std::min(z1, top));
+    out->sensor_level = layers - static_cast<std::size_t>(at_sensor - bounds.begin());
+    out->ground_level = layers;
+    if (!m_parameters.multiple_scattering || z0 >= kTopOfAtmosphereM) return out;
+
+    // ln of each layer's vertical gas transmittance, [layer][band] (bottom first).
+    const std::shared_ptr<const GasTransmittance> gases = gases_on(grid);
+    const std::size_t n = grid.size();
+    std::vector<double> log_gas(layers * n, 0.0);
+    if (gases) {
+        for (std::size_t k = 0; k < layers; ++k) {
+            gases->log_transmittance(
+                slant(gas_amounts_above(bounds[k]), gas_amounts_above(bounds[k + 1]), 1.0),
+                std::span<double>(&log_gas[k * n], n));
+        }
+    }
+    const double g = m_parameters.aerosol_asymmetry;
+    const double omega_a = m_parameters.aerosol_single_scatter_albedo;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double wl = grid.wavelength_um(i);
+        if (wl < kThermalScatteringFromUm) continue;
+        const double column_scattering =
+            rayleigh_optical_depth(wl, z0) + omega_a * aerosol_optical_depth(wl, z0);
+        if (column_scattering < kThermalScatteringMinDepth) continue;
+        ScatteringProblem problem;
+        problem.beam_irradiance = 0.0;
+        problem.streams = 8;
+        problem.azimuth_modes = 1;  // isotropic sources: the field has no azimuth
+        problem.max_sublayer_depth = 0.05;
+        problem.tolerance = 1e-5;
+        // A black ground at the air's temperature there: the surface's own emission and
+        // reflection are the renderer's.
+        problem.ground_albedo = 0.0;
+        problem.ground_planck = planck_radiance_w_per_cm2_sr_um(wl, air_temperature_k(z0));
+        for (std::size_t k = layers + 1; k-- > 0;) {  // levels, top first
+            problem.level_planck.push_back(
+                planck_radiance_w_per_cm2_sr_um(wl, air_temperature_k(bounds[k])));
+        }
+        for (std::size_t k = layers; k-- > 0;) {  // layers, top first
+            const double rayleigh =
+                rayleigh_optical_depth(wl, bounds[k]) - rayleigh_optical_depth(wl, bounds[k + 1]);
+            const double aerosol =
+                aerosol_optical_depth(wl, bounds[k]) - aerosol_optical_depth(wl, bounds[k + 1]);
+            const double gas = std::min(-log_gas[k * n + i], kMaxGasDepth);
+            ScatteringLayer layer;
+            layer.optical_depth = std::max(0.0, rayleigh + aerosol + gas);
+            const double scattering = rayleigh + omega_a * aerosol;
+            layer.single_scatter_albedo =
+                layer.optical_depth > 0.0 ? std::clamp(scattering / layer.optical_depth, 0.0, 1.0)
+                                          : 0.0;
+            layer.moments.assign(static_cast<std::size_t>(2 * problem.streams), 0.0);
+            for (std::size_t l = 0; l < layer.moments.size(); ++l) {
+                const double rayleigh_moment = l == 0 ? 1.0 : (l == 2 ? 0.1 : 0.0);
+                const double aerosol_moment = std::pow(g, static_cast<double>(l));
+                layer.moments[l] =
+                    scattering > 0.0
+                        ? (rayleigh * rayleigh_moment + omega_a * aerosol * aerosol_moment) /
+                              scattering
+                        : (l == 0 ? 1.0 : 0.0);
+            }
+            layer.moments[0] = 1.0;
+            problem.layers.push_back(std::move(layer));
+        }
+        out->bands[i] = solve_scattering_orders(problem);
+    }
+    constexpr std::size_t kKept = 64;
+    if (m_thermal_scattering.size() >= kKept)
+        m_thermal_scattering.erase(m_thermal_scattering.begin());
+    m_thermal_scattering.push_back(out);
+    return out;
+}
+
+std::vector<double> ParametricAtmosphereModel::thermal_in_scatter_w_per_cm2_sr_um(
+    const SpectralGrid& grid, double surface_m, double sensor_m, double mu, bool upward) const {
+    std::vector<double> out(grid.size(), 0.0);
+    if (!m_parameters.multiple_scattering) return out;
+    const std::shared_ptr<const ThermalScattering> ts =
+        thermal_scattering(grid, surface_m, sensor_m);
+    // Grazing directions take the horizon's slant through the plane-parallel layers at this
+    // cosine (the Kasten–Young air mass caps near 38 as well).
+    const double cosine = std::clamp(mu, 1.0 / 38.0, 1.0);
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+        if (!ts->bands[i]) continue;
+        const ScatteringSolution& s = *ts->bands[i];
+        out[i] =
+            std::max(0.0, upward ? s.multiple_scatter_up_radiance(ts->sensor_level, cosine, 0.0)
+                                 : s.multiple_scatter_down_radiance(ts->ground_level, cosine, 0.0));
+    }
+    return out;
+}
+
+}  // namespace glint::atmosphere
