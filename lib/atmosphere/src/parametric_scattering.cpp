@@ -3,6 +3,8 @@
 // plane-parallel successive-orders solutions of a geometry's layered atmosphere at wavelength
 // nodes (kept for the last few geometries), and the path radiance they add. docs/physics.md,
 // "Multiple scattering".
+#include "parametric_scattering.h"
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -12,11 +14,47 @@
 #include "atmosphere_detail.h"
 #include "glint/atmosphere/atmosphere.h"
 #include "glint/atmosphere/scattering_orders.h"
-#include "parametric_scattering.h"
 
 namespace glint::atmosphere {
 
 using namespace detail;
+
+ScatteringLevels scattering_levels(double z0, double z1) {
+    constexpr int kLayers = ParametricAtmosphereModel::kScatteringLayers;
+    const double top = std::max(z0, kTopOfAtmosphereM);
+    ScatteringLevels out;
+    for (int k = 0; k <= kLayers; ++k) {
+        const double f = static_cast<double>(k) / kLayers;
+        out.bounds.push_back(z0 + (top - z0) * f * f * f);
+    }
+    if (z1 > z0 && z1 < top) out.bounds.push_back(z1);
+    std::sort(out.bounds.begin(), out.bounds.end());
+    out.bounds.erase(std::unique(out.bounds.begin(), out.bounds.end()), out.bounds.end());
+    const std::size_t layers = out.bounds.size() - 1;
+    const auto at_sensor = std::find(out.bounds.begin(), out.bounds.end(), std::min(z1, top));
+    out.sensor_level = layers - static_cast<std::size_t>(at_sensor - out.bounds.begin());
+    return out;
+}
+
+ScatteringLayer rayleigh_aerosol_layer(double rayleigh, double aerosol, double absorption,
+                                       double omega_a, double g, int streams) {
+    ScatteringLayer layer;
+    layer.optical_depth = std::max(0.0, rayleigh + aerosol + absorption);
+    const double scattering = rayleigh + omega_a * aerosol;
+    layer.single_scatter_albedo =
+        layer.optical_depth > 0.0 ? std::clamp(scattering / layer.optical_depth, 0.0, 1.0) : 0.0;
+    layer.moments.assign(static_cast<std::size_t>(2 * streams), 0.0);
+    for (std::size_t l = 0; l < layer.moments.size(); ++l) {
+        const double rayleigh_moment = l == 0 ? 1.0 : (l == 2 ? 0.1 : 0.0);
+        const double aerosol_moment = std::pow(g, static_cast<double>(l));
+        layer.moments[l] =
+            scattering > 0.0
+                ? (rayleigh * rayleigh_moment + omega_a * aerosol * aerosol_moment) / scattering
+                : (l == 0 ? 1.0 : 0.0);
+    }
+    layer.moments[0] = 1.0;
+    return layer;
+}
 
 std::shared_ptr<const ParametricAtmosphereModel::Scattering> ParametricAtmosphereModel::scattering(
     const SpectralGrid& grid, const AtmosphereGeometry& geometry) const {
@@ -28,22 +66,20 @@ std::shared_ptr<const ParametricAtmosphereModel::Scattering> ParametricAtmospher
     // kScatteringZenithStepDeg, altitudes to kScatteringAltitudeStepM), always, so that the
     // captures of a sequence share them and what a cached entry holds never depends on which
     // query made it.
-    const double sun_zenith_deg =
-        std::min(std::round(geometry.sun_zenith_deg / kScatteringZenithStepDeg) *
-                     kScatteringZenithStepDeg,
-                 89.95);
+    const double sun_zenith_deg = std::min(
+        std::round(geometry.sun_zenith_deg / kScatteringZenithStepDeg) * kScatteringZenithStepDeg,
+        89.95);
     const double z0 = std::round(geometry.surface_altitude_m / kScatteringAltitudeStepM) *
                       kScatteringAltitudeStepM;
-    const double z1 = std::max(
-        z0, std::round(geometry.sensor_altitude_m / kScatteringAltitudeStepM) *
-                kScatteringAltitudeStepM);
+    const double z1 =
+        std::max(z0, std::round(geometry.sensor_altitude_m / kScatteringAltitudeStepM) *
+                         kScatteringAltitudeStepM);
     const std::vector<double> wavelengths(grid.wavelengths_um().begin(),
                                           grid.wavelengths_um().end());
     const std::lock_guard<std::mutex> lock(m_scattering_mutex);
     for (const auto& cached : m_scattering) {
-        if (cached->sun_zenith_deg == sun_zenith_deg &&
-            cached->surface_altitude_m == z0 && cached->sensor_altitude_m == z1 &&
-            cached->grid == wavelengths) {
+        if (cached->sun_zenith_deg == sun_zenith_deg && cached->surface_altitude_m == z0 &&
+            cached->sensor_altitude_m == z1 && cached->grid == wavelengths) {
             return cached;
         }
     }
@@ -66,7 +102,8 @@ std::shared_ptr<const ParametricAtmosphereModel::Scattering> ParametricAtmospher
     }
     for (const double wl : wavelengths) {
         const auto above = std::upper_bound(nodes.begin(), nodes.end(), wl);
-        std::size_t k = above == nodes.begin() ? 0 : static_cast<std::size_t>(above - nodes.begin()) - 1;
+        std::size_t k =
+            above == nodes.begin() ? 0 : static_cast<std::size_t>(above - nodes.begin()) - 1;
         double f = 0.0;
         if (k + 1 >= nodes.size()) {
             k = nodes.size() - 1;
@@ -76,21 +113,10 @@ std::shared_ptr<const ParametricAtmosphereModel::Scattering> ParametricAtmospher
         out->lower.push_back(k);
         out->fraction.push_back(f);
     }
-    // Layer boundaries: the surface to 100 km, denser near the ground (∝ (k/K)³), and the
-    // sensor's altitude.
-    const double top = std::max(z0, kTopOfAtmosphereM);
-    std::vector<double> bounds;
-    for (int k = 0; k <= kScatteringLayers; ++k) {
-        const double f = static_cast<double>(k) / kScatteringLayers;
-        bounds.push_back(z0 + (top - z0) * f * f * f);
-    }
-    if (z1 > z0 && z1 < top) bounds.push_back(z1);
-    std::sort(bounds.begin(), bounds.end());
-    bounds.erase(std::unique(bounds.begin(), bounds.end()), bounds.end());
+    const ScatteringLevels levels = scattering_levels(z0, z1);
+    const std::vector<double>& bounds = levels.bounds;
     const std::size_t layers = bounds.size() - 1;
-    // Levels count from the top: the sensor's is the boundary at z1 (0 above the model).
-    const auto at_sensor = std::find(bounds.begin(), bounds.end(), std::min(z1, top));
-    out->sensor_level = layers - static_cast<std::size_t>(at_sensor - bounds.begin());
+    out->sensor_level = levels.sensor_level;
     const double g = m_parameters.aerosol_asymmetry;
     const double omega_a = m_parameters.aerosol_single_scatter_albedo;
     for (const double wl : nodes) {
@@ -106,22 +132,8 @@ std::shared_ptr<const ParametricAtmosphereModel::Scattering> ParametricAtmospher
                 rayleigh_optical_depth(wl, bounds[k]) - rayleigh_optical_depth(wl, bounds[k + 1]);
             const double aerosol =
                 aerosol_optical_depth(wl, bounds[k]) - aerosol_optical_depth(wl, bounds[k + 1]);
-            ScatteringLayer layer;
-            layer.optical_depth = std::max(0.0, rayleigh + aerosol);
-            const double scattering = rayleigh + omega_a * aerosol;
-            layer.single_scatter_albedo =
-                layer.optical_depth > 0.0 ? std::clamp(scattering / layer.optical_depth, 0.0, 1.0)
-                                          : 0.0;
-            layer.moments.assign(static_cast<std::size_t>(2 * problem.streams), 0.0);
-            for (std::size_t l = 0; l < layer.moments.size(); ++l) {
-                const double rayleigh_moment = l == 0 ? 1.0 : (l == 2 ? 0.1 : 0.0);
-                const double aerosol_moment = std::pow(g, static_cast<double>(l));
-                layer.moments[l] =
-                    scattering > 0.0 ? (rayleigh * rayleigh_moment +
-                                        omega_a * aerosol * aerosol_moment) / scattering
-                                     : (l == 0 ? 1.0 : 0.0);
-            }
-            layer.moments[0] = 1.0;
+            ScatteringLayer layer =
+                rayleigh_aerosol_layer(rayleigh, aerosol, 0.0, omega_a, g, problem.streams);
             problem.layers.push_back(std::move(layer));
         }
         out->solutions.push_back(solve_scattering_orders(problem));
@@ -151,13 +163,13 @@ void ParametricAtmosphereModel::add_multiple_scattering(
     // multiply scattered light by the transmittances of the sun's and the sensor's paths).
     const double m_sun = relative_air_mass(geometry.sun_zenith_deg);
     const double m_view = relative_air_mass(geometry.view_zenith_deg);
-    const std::vector<double> gas_sun = gas_transmittance(grid, slant(gas_amounts_above(z0), {}, m_sun));
+    const std::vector<double> gas_sun =
+        gas_transmittance(grid, slant(gas_amounts_above(z0), {}, m_sun));
     const std::vector<double> gas_view =
         gas_transmittance(grid, slant(gas_amounts_above(z0), gas_amounts_above(z1), m_view));
     for (std::size_t a = 0; a < view_azimuths_deg.size(); ++a) {
         // Azimuth from the beam's direction of travel (the sun's azimuth + 180°).
-        const double phi =
-            (view_azimuths_deg[a] - geometry.sun_azimuth_deg - 180.0) * kDegToRad;
+        const double phi = (view_azimuths_deg[a] - geometry.sun_azimuth_deg - 180.0) * kDegToRad;
         const std::vector<double> reflectance = ms->per_band([&](std::size_t k) {
             double sum = 0.0;
             for (std::size_t m = 0; m < modes[k].size(); ++m) {

@@ -40,6 +40,21 @@ struct ParametricAtmosphereModel::Scattering {
     }
 };
 
+/// The layer boundaries of the solutions, ascending: the surface `z0` to 100 km spaced
+/// ∝ (k/K)³ (K = kScatteringLayers, denser near the ground), and the sensor's altitude `z1`;
+/// and the sensor's level, counted from the top as the solver counts them.
+struct ScatteringLevels {
+    std::vector<double> bounds;
+    std::size_t sensor_level = 0;
+};
+ScatteringLevels scattering_levels(double z0, double z1);
+
+/// A solver layer holding Rayleigh (`rayleigh`) and aerosol (`aerosol`) optical depths, the
+/// aerosol of single-scatter albedo `omega_a` and Henyey–Greenstein asymmetry `g`, and
+/// `absorption` more of a pure absorber; its phase function's moments for `streams`.
+ScatteringLayer rayleigh_aerosol_layer(double rayleigh, double aerosol, double absorption,
+                                       double omega_a, double g, int streams);
+
 /// Thermal multiple-scattering solutions of one pair of altitudes, one per band where it is
 /// solved (thermal_scattering.cpp).
 struct ParametricAtmosphereModel::ThermalScattering {

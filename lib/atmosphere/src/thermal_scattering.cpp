@@ -48,20 +48,11 @@ ParametricAtmosphereModel::thermal_scattering(const SpectralGrid& grid, double s
     out->surface_altitude_m = z0;
     out->sensor_altitude_m = z1;
     out->bands.resize(grid.size());
-    // Layer boundaries as the solar solutions have them: ∝ (k/K)³ from the surface to 100 km,
-    // and the sensor's altitude.
-    const double top = std::max(z0, kTopOfAtmosphereM);
-    std::vector<double> bounds;
-    for (int k = 0; k <= kScatteringLayers; ++k) {
-        const double f = static_cast<double>(k) / kScatteringLayers;
-        bounds.push_back(z0 + (top - z0) * f * f * f);
-    }
-    if (z1 > z0 && z1 < top) bounds.push_back(z1);
-    std::sort(bounds.begin(), bounds.end());
-    bounds.erase(std::unique(bounds.begin(), bounds.end()), bounds.end());
+    // The solar solutions' layers.
+    const ScatteringLevels levels = scattering_levels(z0, z1);
+    const std::vector<double>& bounds = levels.bounds;
     const std::size_t layers = bounds.size() - 1;
-    const auto at_sensor = std::find(bounds.begin(), bounds.end(), std::min(z1, top));
-    out->sensor_level = layers - static_cast<std::size_t>(at_sensor - bounds.begin());
+    out->sensor_level = levels.sensor_level;
     out->ground_level = layers;
     if (!m_parameters.multiple_scattering || z0 >= kTopOfAtmosphereM) return out;
 
@@ -104,23 +95,8 @@ ParametricAtmosphereModel::thermal_scattering(const SpectralGrid& grid, double s
             const double aerosol =
                 aerosol_optical_depth(wl, bounds[k]) - aerosol_optical_depth(wl, bounds[k + 1]);
             const double gas = std::min(-log_gas[k * n + i], kMaxGasDepth);
-            ScatteringLayer layer;
-            layer.optical_depth = std::max(0.0, rayleigh + aerosol + gas);
-            const double scattering = rayleigh + omega_a * aerosol;
-            layer.single_scatter_albedo =
-                layer.optical_depth > 0.0 ? std::clamp(scattering / layer.optical_depth, 0.0, 1.0)
-                                          : 0.0;
-            layer.moments.assign(static_cast<std::size_t>(2 * problem.streams), 0.0);
-            for (std::size_t l = 0; l < layer.moments.size(); ++l) {
-                const double rayleigh_moment = l == 0 ? 1.0 : (l == 2 ? 0.1 : 0.0);
-                const double aerosol_moment = std::pow(g, static_cast<double>(l));
-                layer.moments[l] =
-                    scattering > 0.0
-                        ? (rayleigh * rayleigh_moment + omega_a * aerosol * aerosol_moment) /
-                              scattering
-                        : (l == 0 ? 1.0 : 0.0);
-            }
-            layer.moments[0] = 1.0;
+            ScatteringLayer layer =
+                rayleigh_aerosol_layer(rayleigh, aerosol, gas, omega_a, g, problem.streams);
             problem.layers.push_back(std::move(layer));
         }
         out->bands[i] = solve_scattering_orders(problem);
