@@ -18,19 +18,14 @@
 #include "glint/atmosphere/gas_absorption.h"
 #include "glint/io/input_files.h"
 #include "glint/model/standard_atmospheres.h"
+#include "glint/test/gas_table.h"
 
 namespace glint::atmosphere {
 namespace air_emission_test {
 
 const SpectralGrid kThermal = SpectralGrid::regular(7.0, 14.0, 0.25);
 
-std::shared_ptr<const GasBandModel> gas_table() {
-    static const auto loaded = std::make_shared<const GasBandModel>(
-        GasBandModel::from_csv(io::read_input_file(std::filesystem::path(GLINT_SOURCE_DIR) /
-                                                   "data" / GasBandModel::kRelativePath),
-                               GasBandModel::kRelativePath));
-    return loaded;
-}
+using test::gas_table;
 
 AtmosphereGeometry looking_down(double sensor_altitude_m, double view_zenith_deg = 0.0) {
     AtmosphereGeometry g;

@@ -25,6 +25,7 @@
 #include "glint/core/error.h"
 #include "glint/io/input_files.h"
 #include "glint/model/standard_atmospheres.h"
+#include "glint/test/gas_table.h"
 #include "glint/test/temp_dir.h"
 
 namespace glint::atmosphere {
@@ -34,11 +35,7 @@ using ::testing::HasSubstr;
 
 const std::filesystem::path kData = std::filesystem::path(GLINT_SOURCE_DIR) / "data";
 
-std::shared_ptr<const GasBandModel> table() {
-    static const auto loaded = std::make_shared<const GasBandModel>(GasBandModel::from_csv(
-        io::read_input_file(kData / GasBandModel::kRelativePath), GasBandModel::kRelativePath));
-    return loaded;
-}
+std::shared_ptr<const GasBandModel> table() { return test::gas_table(); }
 
 AtmosphereGeometry sun_at(double zenith_deg) {
     AtmosphereGeometry g;

@@ -22,6 +22,7 @@
 #include "glint/core/spectral.h"
 #include "glint/io/input_files.h"
 #include "glint/radiometry/sampling.h"
+#include "glint/test/gas_table.h"
 #include "tracer_fixture.h"
 
 namespace glint::radiometry {
@@ -89,11 +90,7 @@ TEST(GlobalTilt, WhitePlateTiltedTowardsTheSunMatchesAstmG173) {
     p.angstrom_exponent = 1.3;
     p.aerosol_optical_depth_550 = 0.084 * std::pow(0.55 / 0.5, -1.3);
     p.ground_albedo = 0.2;
-    const glint::atmosphere::ParametricAtmosphereModel atmosphere(
-        p, std::make_shared<const glint::atmosphere::GasBandModel>(
-               glint::atmosphere::GasBandModel::from_csv(
-                   io::read_input_file(kData / glint::atmosphere::GasBandModel::kRelativePath),
-                   glint::atmosphere::GasBandModel::kRelativePath)));
+    const glint::atmosphere::ParametricAtmosphereModel atmosphere(p, glint::test::gas_table());
     const auto sun = glint::atmosphere::SolarSpectrum::from_astm_g173(
         io::read_input_file(kData / glint::atmosphere::SolarSpectrum::kAstmRelativePath),
         glint::atmosphere::SolarSpectrum::kAstmRelativePath);

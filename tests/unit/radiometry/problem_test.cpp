@@ -18,6 +18,7 @@
 #include "glint/core/error.h"
 #include "glint/core/spectral.h"
 #include "glint/io/input_files.h"
+#include "glint/test/gas_table.h"
 #include "tracer_fixture.h"
 
 namespace glint::radiometry {
@@ -31,14 +32,7 @@ using test::ground_plane;
 using test::Rig;
 using ::testing::HasSubstr;
 
-/// glint's gas band-model table (data/atmosphere/gas_band_model.csv).
-std::shared_ptr<const glint::atmosphere::GasBandModel> gas_table() {
-    return std::make_shared<const glint::atmosphere::GasBandModel>(
-        glint::atmosphere::GasBandModel::from_csv(
-            io::read_input_file(std::filesystem::path(GLINT_SOURCE_DIR) / "data" /
-                                glint::atmosphere::GasBandModel::kRelativePath),
-            glint::atmosphere::GasBandModel::kRelativePath));
-}
+using glint::test::gas_table;
 
 const SpectralGrid kGrid({0.45, 0.55, 0.65});
 const std::vector<double> kSun{0.20, 0.19, 0.16};

@@ -14,6 +14,7 @@
 #include "glint/atmosphere/gas_absorption.h"
 #include "glint/io/input_files.h"
 #include "glint/radiometry/environment.h"
+#include "glint/test/gas_table.h"
 #include "tracer_fixture.h"
 
 namespace glint::radiometry {
@@ -27,13 +28,8 @@ using test::Rig;
 const SpectralGrid kLwir({7.0, 8.5, 10.0, 11.5, 13.5});
 
 const glint::atmosphere::ParametricAtmosphereModel& parametric() {
-    static const auto gases = std::make_shared<const glint::atmosphere::GasBandModel>(
-        glint::atmosphere::GasBandModel::from_csv(
-            io::read_input_file(std::filesystem::path(GLINT_SOURCE_DIR) / "data" /
-                                glint::atmosphere::GasBandModel::kRelativePath),
-            glint::atmosphere::GasBandModel::kRelativePath));
     static const glint::atmosphere::ParametricAtmosphereModel model(model::ParametricAtmosphere{},
-                                                                    gases);
+                                                                    glint::test::gas_table());
     return model;
 }
 
