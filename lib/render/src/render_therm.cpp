@@ -172,6 +172,38 @@ std::shared_ptr<const scene::FacetTemperatures> solve_therm(const RenderPlan& pl
                                 (many ? "" : "s") + " no shadow in THERM's sun history"));
         }
     }
+    // A property map decides a hit's material by texel, THERM a facet's temperature by its
+    // own material: where the two meet, one warning per map says what is used.
+    const auto is_therm = [&](std::uint32_t m) {
+        return std::find(therm.begin(), therm.end(), m) != therm.end();
+    };
+    for (const model::PropertyMap& map : in.scene.maps) {
+        std::vector<std::uint32_t> gives = map.slot_materials;
+        for (const model::TextureClasses& classes : map.texture_classes) {
+            gives.insert(gives.end(), classes.materials.begin(), classes.materials.end());
+        }
+        std::vector<std::string> placed;  // THERM materials the map puts on other facets
+        for (std::uint32_t m : gives) {
+            if (is_therm(m) && std::find(map.applies_to.begin(), map.applies_to.end(), m) ==
+                                   map.applies_to.end()) {
+                placed.push_back("\"" + in.scene.materials[m].name + "\"");
+            }
+        }
+        std::sort(placed.begin(), placed.end());
+        placed.erase(std::unique(placed.begin(), placed.end()), placed.end());
+        const bool over_therm = std::any_of(map.applies_to.begin(), map.applies_to.end(), is_therm);
+        if (placed.empty() && !over_therm) continue;
+        std::string message = "THERM solves each facet with its own material:";
+        if (over_therm) {
+            message += " the materials it puts on a THERM facet take that facet's temperature";
+        }
+        if (!placed.empty()) {
+            message += std::string(over_therm ? ";" : "") + " where it puts " +
+                       join(placed, ", ", " or ") +
+                       " on a facet of another material, the constant TEMPERATURE is used";
+        }
+        context.log.warning(format_located(map.where, message));
+    }
     context.log.info("THERM: " + std::to_string(facets.size()) + " facets at " +
                      std::to_string(times_s.size()) + " time(s), weather " + in.weather.file +
                      " from hour " + format_shortest(std::round(hours.front() * 100.0) / 100.0));
