@@ -115,8 +115,17 @@ std::string describe(const model::Atmosphere& atmosphere) {
             return kind;
         case model::AtmosphereKind::parametric: {
             const model::ParametricAtmosphere& p = atmosphere.parametric;
-            return kind + ", aerosol optical depth " +
-                   format_shortest(p.aerosol_optical_depth_550) + " at 0.55 um, " +
+            const std::string aerosol =
+                p.aerosol_model.empty()
+                    ? "aerosol optical depth " + format_shortest(p.aerosol_optical_depth_550) +
+                          " at 0.55 um"
+                    : "aerosol " + p.aerosol_model + " (LOWTRAN 7 layers, " +
+                          (p.aerosol_column_depth_550
+                               ? "optical depth " + format_shortest(*p.aerosol_column_depth_550) +
+                                     " at 0.55 um"
+                               : "visibility " + format_shortest(p.visibility_km) + " km") +
+                          ")";
+            return kind + ", " + aerosol + ", " +
                    (p.gas_absorption ? "gases (water " + four_digits(p.water_vapor_cm) +
                                            " cm, ozone " + four_digits(p.ozone_atm_cm) + " atm-cm)"
                                      : std::string("no gas absorption")) +

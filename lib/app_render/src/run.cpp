@@ -159,7 +159,8 @@ int run(const Options& options, Context& ctx, std::ostream& out) {
     }
     model::SimulationInputs loaded = inputs::load_logged(options.input, load_options, ctx.log);
     settings.data =
-        inputs::read_data_tables(settings.data_dir, atmosphere::needs_gas_table(loaded.atmosphere));
+        inputs::read_data_tables(settings.data_dir, atmosphere::needs_gas_table(loaded.atmosphere),
+                                 atmosphere::needs_aerosol_table(loaded.atmosphere));
     process::ProcessingOptions processing = options.processing;
     if (processing.tools_dir.empty()) processing.tools_dir = executable_path().parent_path();
     if (processing.allow_list.empty() && !processing.allow_all) {

@@ -83,14 +83,25 @@ std::vector<std::vector<double>> ParametricAtmosphereModel::air_emission_at_air_
     }
     // The altitude factors of the scatterers' optical depths at every boundary.
     const auto& p = m_parameters;
+    const std::size_t regimes = m_aerosol.regimes();
     std::vector<double> rayleigh_factor(layers + 1);
-    std::vector<double> aerosol_factor(layers + 1);
+    std::vector<double> aerosol_depth((layers + 1) * regimes);  // [boundary][regime], 550 nm
     for (std::size_t k = 0; k <= layers; ++k) {
         rayleigh_factor[k] = std::exp(-bounds[k] / p.rayleigh_scale_height_m);
-        aerosol_factor[k] = std::exp(-bounds[k] / p.aerosol_scale_height_m);
+        for (std::size_t j = 0; j < regimes; ++j) {
+            aerosol_depth[k * regimes + j] = m_aerosol.depth_550_above(j, bounds[k]);
+        }
     }
     const std::size_t obs = observer_low ? 0 : layers;
-    const double omega = p.aerosol_single_scatter_albedo;
+    // Each regime's extinction relative to 550 nm and albedo, [band][regime].
+    std::vector<double> ratio(n * regimes), albedo(n * regimes);
+    for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t j = 0; j < regimes; ++j) {
+            const RegimeOptics o = m_aerosol.optics(j, grid.wavelength_um(i), 0);
+            ratio[i * regimes + j] = o.extinction_ratio;
+            albedo[i * regimes + j] = o.single_scatter_albedo;
+        }
+    }
     const std::shared_ptr<const GasTransmittance> gases = gases_on(grid);
     const GasAmounts at_observer = gas_amounts_above(z_observer);
     std::vector<double> log_gas;
@@ -116,13 +127,20 @@ std::vector<std::vector<double>> ParametricAtmosphereModel::air_emission_at_air_
         for (std::size_t i = 0; i < n; ++i) {
             const double wl = grid.wavelength_um(i);
             const double rayleigh = rayleigh_optical_depth(wl, 0.0);
-            const double aerosol = aerosol_optical_depth(wl, 0.0);
             for (std::size_t k = 0; k <= layers; ++k) {
                 const double d_r = std::abs(rayleigh_factor[obs] - rayleigh_factor[k]) * rayleigh;
-                const double d_a = std::abs(aerosol_factor[obs] - aerosol_factor[k]) * aerosol;
+                double absorbing = 0.0;
+                double scattering = 0.0;
+                for (std::size_t j = 0; j < regimes; ++j) {
+                    const double d_a = std::abs(aerosol_depth[obs * regimes + j] -
+                                                aerosol_depth[k * regimes + j]) *
+                                       ratio[i * regimes + j];
+                    absorbing += (1.0 - albedo[i * regimes + j]) * d_a;
+                    scattering += albedo[i * regimes + j] * d_a;
+                }
                 const double log_g = gases ? log_gas[k * n + i] : 0.0;
-                absorbed[k] = std::exp(-(1.0 - omega) * d_a * air_mass + log_g);
-                scattered[k] = (d_r + omega * d_a) * air_mass;
+                absorbed[k] = std::exp(-absorbing * air_mass + log_g);
+                scattered[k] = (d_r + scattering) * air_mass;
             }
             double sum = 0.0;
             for (std::size_t k = 0; k < layers; ++k) {

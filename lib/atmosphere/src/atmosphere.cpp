@@ -66,15 +66,16 @@ std::vector<std::vector<double>> AtmosphereModel::path_radiance_at_azimuths(
     return out;
 }
 
-std::unique_ptr<AtmosphereModel> make_atmosphere_model(const model::Atmosphere& atmosphere,
-                                                       std::shared_ptr<const GasBandModel> gases) {
+std::unique_ptr<AtmosphereModel> make_atmosphere_model(
+    const model::Atmosphere& atmosphere, std::shared_ptr<const GasBandModel> gases,
+    std::shared_ptr<const AerosolTable> aerosols) {
     try {
         switch (atmosphere.kind) {
             case model::AtmosphereKind::none:
                 return std::make_unique<NoAtmosphere>();
             case model::AtmosphereKind::parametric:
-                return std::make_unique<ParametricAtmosphereModel>(atmosphere.parametric,
-                                                                   std::move(gases));
+                return std::make_unique<ParametricAtmosphereModel>(
+                    atmosphere.parametric, std::move(gases), std::move(aerosols));
             case model::AtmosphereKind::tabulated:
                 return std::make_unique<TabulatedAtmosphereModel>(atmosphere.tabulated);
             case model::AtmosphereKind::simple:
@@ -89,6 +90,11 @@ std::unique_ptr<AtmosphereModel> make_atmosphere_model(const model::Atmosphere& 
 bool needs_gas_table(const model::Atmosphere& atmosphere) {
     return atmosphere.kind == model::AtmosphereKind::parametric &&
            atmosphere.parametric.gas_absorption;
+}
+
+bool needs_aerosol_table(const model::Atmosphere& atmosphere) {
+    return atmosphere.kind == model::AtmosphereKind::parametric &&
+           !atmosphere.parametric.aerosol_model.empty();
 }
 
 }  // namespace glint::atmosphere

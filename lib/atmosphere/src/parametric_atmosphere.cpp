@@ -40,12 +40,6 @@ double rayleigh_sea_level(const model::ParametricAtmosphere& p, double wavelengt
     return sea_level * (p.sea_level_pressure_hpa / kStandardPressureHpa);
 }
 
-/// The aerosol optical depth above sea level at λ (Ångström's law from τ(550 nm)); at
-/// altitude z it is this × e^(−z/H_A).
-double aerosol_sea_level(const model::ParametricAtmosphere& p, double wavelength_um) {
-    return p.aerosol_optical_depth_550 * std::pow(wavelength_um / 0.55, -p.angstrom_exponent);
-}
-
 /// Unit vector in ENU for (zenith, azimuth clockwise from north), degrees.
 std::array<double, 3> direction(double zenith_deg, double azimuth_deg) {
     const double t = zenith_deg * kDegToRad;
@@ -54,11 +48,6 @@ std::array<double, 3> direction(double zenith_deg, double azimuth_deg) {
 }
 
 double rayleigh_phase(double cos_theta) { return 0.75 * (1.0 + cos_theta * cos_theta); }
-
-double henyey_greenstein(double g, double cos_theta) {
-    const double denom = 1.0 + g * g - 2.0 * g * cos_theta;
-    return (1.0 - g * g) / (denom * std::sqrt(denom));
-}
 
 /// Fraction of Henyey–Greenstein scattering into the forward hemisphere.
 double hg_forward_fraction(double g) {
@@ -71,8 +60,9 @@ double hg_forward_fraction(double g) {
 // ---- parametric ----
 
 ParametricAtmosphereModel::ParametricAtmosphereModel(model::ParametricAtmosphere parameters,
-                                                     std::shared_ptr<const GasBandModel> gases)
-    : m_parameters(parameters), m_gases(std::move(gases)) {
+                                                     std::shared_ptr<const GasBandModel> gases,
+                                                     std::shared_ptr<const AerosolTable> aerosols)
+    : m_parameters(parameters), m_gases(std::move(gases)), m_aerosol(m_parameters, aerosols) {
     const auto& p = m_parameters;
     const auto bad = [](double v) { return !std::isfinite(v); };
     if (bad(p.aerosol_optical_depth_550) || p.aerosol_optical_depth_550 < 0.0) {
@@ -149,9 +139,8 @@ double ParametricAtmosphereModel::rayleigh_optical_depth(double wavelength_um,
 }
 
 double ParametricAtmosphereModel::aerosol_optical_depth(double wavelength_um,
-                                                        double altitude_m) const noexcept {
-    return aerosol_sea_level(m_parameters, wavelength_um) *
-           std::exp(-altitude_m / m_parameters.aerosol_scale_height_m);
+                                                        double altitude_m) const {
+    return m_aerosol.optical_depth(wavelength_um, altitude_m);
 }
 
 double ParametricAtmosphereModel::sky_emissivity(double altitude_m) const noexcept {
@@ -221,29 +210,29 @@ std::vector<std::vector<double>> ParametricAtmosphereModel::path_radiance_at_azi
     const double m_sun = relative_air_mass(geometry.sun_zenith_deg);
     const double m_view = relative_air_mass(geometry.view_zenith_deg);
     const auto s = direction(geometry.sun_zenith_deg, geometry.sun_azimuth_deg);
-    const double g = m_parameters.aerosol_asymmetry;
-    // The phase functions at each azimuth: light travels along −s from the sun and leaves
+    // The scattering angles at each azimuth: light travels along −s from the sun and leaves
     // along v towards the sensor.
+    std::vector<double> cos_scatter;
     std::vector<double> p_rayleigh;
-    std::vector<double> p_aerosol;
     for (double azimuth : view_azimuths_deg) {
         const auto v = direction(std::clamp(geometry.view_zenith_deg, 0.0, 90.0), azimuth);
-        const double cos_scatter = -(s[0] * v[0] + s[1] * v[1] + s[2] * v[2]);
-        p_rayleigh.push_back(rayleigh_phase(cos_scatter));
-        p_aerosol.push_back(henyey_greenstein(g, cos_scatter));
+        cos_scatter.push_back(-(s[0] * v[0] + s[1] * v[1] + s[2] * v[2]));
+        p_rayleigh.push_back(rayleigh_phase(cos_scatter.back()));
     }
-    const double omega = m_parameters.aerosol_single_scatter_albedo;
-    // τ(λ, z) = τ_R(λ)·e^(−z/H_R) + τ_A(λ)·e^(−z/H_A): the altitude factors of every layer
-    // boundary and midpoint are computed once, the spectral ones once per band, and each
-    // optical depth is their product, computed exactly as rayleigh_optical_depth and
-    // aerosol_optical_depth compute it.
+    const std::size_t regimes = m_aerosol.regimes();
+    // τ(λ, z) = τ_R(λ)·e^(−z/H_R) + Σ_j r_j(λ) D_j(z), D_j the 550 nm depth of aerosol regime j
+    // above z and r_j its extinction relative to 550 nm: the altitude parts of every layer
+    // boundary and midpoint are computed once, the spectral ones once per band.
     struct Level {
-        double rayleigh = 0.0;  ///< e^(−z/H_R)
-        double aerosol = 0.0;   ///< e^(−z/H_A)
+        double rayleigh = 0.0;        ///< e^(−z/H_R)
+        std::vector<double> aerosol;  ///< D_j(z)
     };
     const auto level = [&](double z) {
-        return Level{std::exp(-z / m_parameters.rayleigh_scale_height_m),
-                     std::exp(-z / m_parameters.aerosol_scale_height_m)};
+        Level at{std::exp(-z / m_parameters.rayleigh_scale_height_m), {}};
+        for (std::size_t j = 0; j < regimes; ++j) {
+            at.aerosol.push_back(m_aerosol.depth_550_above(j, z));
+        }
+        return at;
     };
     // Sunlight scattered once into the path (none with the sun down).
     if (sunlit) {
@@ -284,36 +273,55 @@ std::vector<std::vector<double>> ParametricAtmosphereModel::path_radiance_at_azi
                                          std::span<double>(&gas_sun[k * n], n));
             }
         }
-        // Per layer of one band: its Rayleigh and aerosol optical depths and its transmittances
-        // from the sun and to the sensor, the same at every azimuth.
-        std::vector<double> d_r(layers), d_a(layers), sun(layers), to_sensor(layers);
+        // Per layer of one band: its Rayleigh optical depth, its aerosol scattering weighted by
+        // each azimuth's phase functions, and its transmittances from the sun and to the
+        // sensor, the same at every azimuth.
+        const std::size_t azimuths = view_azimuths_deg.size();
+        std::vector<double> d_r(layers), sun(layers), to_sensor(layers);
+        std::vector<double> aerosol_source(layers * azimuths);
+        std::vector<double> ratio(regimes), albedo(regimes);
+        std::vector<std::vector<double>> p_aerosol(regimes);
         for (std::size_t i = 0; i < grid.size(); ++i) {
             const double wl = grid.wavelength_um(i);
             const double rayleigh = rayleigh_sea_level(m_parameters, wl);
-            const double aerosol = aerosol_sea_level(m_parameters, wl);
+            for (std::size_t j = 0; j < regimes; ++j) {
+                const RegimeOptics o = m_aerosol.optics(j, wl, 0);
+                ratio[j] = o.extinction_ratio;
+                albedo[j] = o.single_scatter_albedo;
+                p_aerosol[j] = m_aerosol.phases(j, wl, cos_scatter);
+            }
             const auto tau_r = [&](const Level& at) { return rayleigh * at.rayleigh; };
-            const auto tau_a = [&](const Level& at) { return aerosol * at.aerosol; };
+            const auto tau_a = [&](const Level& at) {
+                double sum = 0.0;
+                for (std::size_t j = 0; j < regimes; ++j) sum += ratio[j] * at.aerosol[j];
+                return sum;
+            };
             const double tau_sensor = tau_r(top) + tau_a(top);
             double tau_r_a = tau_r(bounds[0]);
-            double tau_a_a = tau_a(bounds[0]);
             for (std::size_t k = 0; k < layers; ++k) {
                 const double tau_r_b = tau_r(bounds[k + 1]);
-                const double tau_a_b = tau_a(bounds[k + 1]);
                 d_r[k] = tau_r_a - tau_r_b;
-                d_a[k] = tau_a_a - tau_a_b;
+                for (std::size_t a = 0; a < azimuths; ++a) aerosol_source[k * azimuths + a] = 0.0;
+                for (std::size_t j = 0; j < regimes; ++j) {
+                    const double d_a = ratio[j] * (bounds[k].aerosol[j] - bounds[k + 1].aerosol[j]);
+                    if (d_a == 0.0) continue;
+                    for (std::size_t a = 0; a < azimuths; ++a) {
+                        aerosol_source[k * azimuths + a] += albedo[j] * d_a * p_aerosol[j][a];
+                    }
+                }
                 const double tau_m = tau_r(middles[k]) + tau_a(middles[k]);
                 const double log_gas_view = gases ? gas_view[k * grid.size() + i] : 0.0;
                 const double log_gas_sun = gases ? gas_sun[k * grid.size() + i] : 0.0;
                 to_sensor[k] = std::exp(-(tau_m - tau_sensor) * m_view + log_gas_view);
                 sun[k] = std::exp(-tau_m * m_sun + log_gas_sun);
                 tau_r_a = tau_r_b;
-                tau_a_a = tau_a_b;
             }
-            for (std::size_t a = 0; a < view_azimuths_deg.size(); ++a) {
+            for (std::size_t a = 0; a < azimuths; ++a) {
                 double sum = 0.0;
                 for (std::size_t k = 0; k < layers; ++k) {
-                    const double source = toa[i] / (4.0 * kPi) * sun[k] *
-                                          (d_r[k] * p_rayleigh[a] + omega * d_a[k] * p_aerosol[a]);
+                    const double source =
+                        toa[i] / (4.0 * kPi) * sun[k] *
+                        (d_r[k] * p_rayleigh[a] + aerosol_source[k * azimuths + a]);
                     sum += source * m_view * to_sensor[k];
                 }
                 out[a][i] = sum;
@@ -343,23 +351,38 @@ std::vector<double> ParametricAtmosphereModel::diffuse_sky_irradiance_w_per_cm2_
     if (!sun_up(geometry) || z >= kTopOfAtmosphereM) return out;
     const double m = relative_air_mass(geometry.sun_zenith_deg);
     const double mu = std::cos(geometry.sun_zenith_deg * kDegToRad);
-    const double omega = m_parameters.aerosol_single_scatter_albedo;
-    const double forward = hg_forward_fraction(m_parameters.aerosol_asymmetry);
     // Gas absorption of the diffuse light: the direct beam's, at the sun's air mass (the
     // Bird–Riordan approximation).
     const std::vector<double> gas = gas_transmittance(grid, slant(gas_amounts_above(z), {}, m));
     if (const std::shared_ptr<const Scattering> ms = scattering(grid, geometry)) {
         // Multiple scattering: the diffuse flux reaching the ground per unit beam irradiance.
         const std::size_t ground = ms->solutions.front().levels() - 1;
-        const std::vector<double> diffuse =
-            ms->per_band([&](std::size_t k) { return ms->solutions[k].diffuse_down_flux(ground); });
+        const std::vector<double> diffuse = ms->per_band([&](std::size_t k) {
+            return ms->solutions[k].diffuse_down_flux(ground) + ms->forward_peak[k];
+        });
         for (std::size_t i = 0; i < grid.size(); ++i) out[i] = toa[i] * diffuse[i] * gas[i];
         return out;
     }
     for (std::size_t i = 0; i < grid.size(); ++i) {
         const double wl = grid.wavelength_um(i);
         const double tau_r = rayleigh_optical_depth(wl, z);
-        const double tau_a = aerosol_optical_depth(wl, z);
+        // The aerosol regimes above z as one: depth-weighted albedo and asymmetry (the
+        // Henyey–Greenstein forward fraction of that asymmetry).
+        double tau_a = 0.0;
+        double scattering = 0.0;
+        double g_scattering = 0.0;
+        for (std::size_t j = 0; j < m_aerosol.regimes(); ++j) {
+            const double depth = m_aerosol.depth_550_above(j, z);
+            if (depth <= 0.0) continue;
+            const RegimeOptics o = m_aerosol.optics(j, wl, 2);
+            const double d = depth * o.extinction_ratio;
+            tau_a += d;
+            scattering += o.single_scatter_albedo * d;
+            g_scattering += o.single_scatter_albedo * d * o.moments[1];
+        }
+        const double omega = tau_a > 0.0 ? scattering / tau_a : 1.0;
+        const double forward =
+            hg_forward_fraction(scattering > 0.0 ? g_scattering / scattering : 0.0);
         const double t_r = std::exp(-tau_r * m);
         const double t_as = std::exp(-omega * tau_a * m);
         const double t_aa = std::exp(-(1.0 - omega) * tau_a * m);

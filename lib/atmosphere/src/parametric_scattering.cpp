@@ -36,24 +36,50 @@ ScatteringLevels scattering_levels(double z0, double z1) {
     return out;
 }
 
-ScatteringLayer rayleigh_aerosol_layer(double rayleigh, double aerosol, double absorption,
-                                       double omega_a, double g, int streams) {
-    ScatteringLayer layer;
-    layer.optical_depth = std::max(0.0, rayleigh + aerosol + absorption);
-    const double scattering = rayleigh + omega_a * aerosol;
-    layer.single_scatter_albedo =
-        layer.optical_depth > 0.0 ? std::clamp(scattering / layer.optical_depth, 0.0, 1.0) : 0.0;
-    layer.moments.assign(static_cast<std::size_t>(2 * streams), 0.0);
-    for (std::size_t l = 0; l < layer.moments.size(); ++l) {
-        const double rayleigh_moment = l == 0 ? 1.0 : (l == 2 ? 0.1 : 0.0);
-        const double aerosol_moment = std::pow(g, static_cast<double>(l));
-        layer.moments[l] =
-            scattering > 0.0
-                ? (rayleigh * rayleigh_moment + omega_a * aerosol * aerosol_moment) / scattering
-                : (l == 0 ? 1.0 : 0.0);
+ScatteringLayer scattering_layer(double rayleigh, std::span<const AerosolShare> aerosols,
+                                 double absorption, int streams, double* truncated_depth) {
+    const std::size_t kept = static_cast<std::size_t>(2 * streams);
+    double tau = std::max(0.0, rayleigh) + std::max(0.0, absorption);
+    double scattering = std::max(0.0, rayleigh);
+    std::vector<double> mixed(kept + 1, 0.0);  // Σ scattering depth × χ_l
+    for (std::size_t l = 0; l <= kept; ++l) {
+        mixed[l] = scattering * (l == 0 ? 1.0 : (l == 2 ? 0.1 : 0.0));
     }
+    for (const AerosolShare& a : aerosols) {
+        if (!(a.optical_depth > 0.0)) continue;
+        tau += a.optical_depth;
+        const double s = a.single_scatter_albedo * a.optical_depth;
+        scattering += s;
+        for (std::size_t l = 0; l <= kept && l < a.moments.size(); ++l)
+            mixed[l] += s * a.moments[l];
+    }
+    ScatteringLayer layer;
+    layer.moments.assign(kept, 0.0);
     layer.moments[0] = 1.0;
+    if (truncated_depth) *truncated_depth = 0.0;
+    if (!(tau > 0.0) || !(scattering > 0.0)) {
+        layer.optical_depth = tau;
+        layer.single_scatter_albedo = 0.0;
+        return layer;
+    }
+    const double omega = std::clamp(scattering / tau, 0.0, 1.0);
+    const double f = std::clamp(mixed[kept] / scattering, 0.0, 1.0 - 1e-9);
+    layer.optical_depth = (1.0 - omega * f) * tau;
+    layer.single_scatter_albedo = std::clamp(omega * (1.0 - f) / (1.0 - omega * f), 0.0, 1.0);
+    for (std::size_t l = 1; l < kept; ++l) {
+        layer.moments[l] = (mixed[l] / scattering - f) / (1.0 - f);
+    }
+    if (truncated_depth) *truncated_depth = omega * f * tau;
     return layer;
+}
+
+std::vector<RegimeOptics> solver_aerosol_optics(const AerosolColumn& column, double wavelength_um,
+                                                int streams) {
+    std::vector<RegimeOptics> out;
+    for (std::size_t j = 0; j < column.regimes(); ++j) {
+        out.push_back(column.optics(j, wavelength_um, static_cast<std::size_t>(2 * streams + 1)));
+    }
+    return out;
 }
 
 std::shared_ptr<const ParametricAtmosphereModel::Scattering> ParametricAtmosphereModel::scattering(
@@ -117,8 +143,6 @@ std::shared_ptr<const ParametricAtmosphereModel::Scattering> ParametricAtmospher
     const std::vector<double>& bounds = levels.bounds;
     const std::size_t layers = bounds.size() - 1;
     out->sensor_level = levels.sensor_level;
-    const double g = m_parameters.aerosol_asymmetry;
-    const double omega_a = m_parameters.aerosol_single_scatter_albedo;
     for (const double wl : nodes) {
         ScatteringProblem problem;
         problem.sun_cos_zenith = std::min(1.0, 1.0 / relative_air_mass(sun_zenith_deg));
@@ -127,15 +151,31 @@ std::shared_ptr<const ParametricAtmosphereModel::Scattering> ParametricAtmospher
         problem.azimuth_modes = 6;
         problem.max_sublayer_depth = 0.02;
         problem.tolerance = 1e-5;
+        const std::vector<RegimeOptics> aerosol =
+            solver_aerosol_optics(m_aerosol, wl, problem.streams);
+        double truncated = 0.0;  // the column's forward peak, moved to the direct beam
         for (std::size_t k = layers; k-- > 0;) {  // top first
             const double rayleigh =
                 rayleigh_optical_depth(wl, bounds[k]) - rayleigh_optical_depth(wl, bounds[k + 1]);
-            const double aerosol =
-                aerosol_optical_depth(wl, bounds[k]) - aerosol_optical_depth(wl, bounds[k + 1]);
-            ScatteringLayer layer =
-                rayleigh_aerosol_layer(rayleigh, aerosol, 0.0, omega_a, g, problem.streams);
-            problem.layers.push_back(std::move(layer));
+            std::vector<AerosolShare> shares;
+            for (std::size_t j = 0; j < aerosol.size(); ++j) {
+                const double depth = (m_aerosol.depth_550_above(j, bounds[k]) -
+                                      m_aerosol.depth_550_above(j, bounds[k + 1])) *
+                                     aerosol[j].extinction_ratio;
+                shares.push_back({depth, aerosol[j].single_scatter_albedo, aerosol[j].moments});
+            }
+            double cut = 0.0;
+            problem.layers.push_back(
+                scattering_layer(rayleigh, shares, 0.0, problem.streams, &cut));
+            truncated += cut;
         }
+        // The peak's light reaches the ground with the scaled beam, e^(−τ'/μ₀) where the
+        // direct sun is e^(−τ/μ₀): what the scaled beam carries beyond the direct sun is
+        // diffuse light from around the sun.
+        const double tau = rayleigh_optical_depth(wl, z0) + aerosol_optical_depth(wl, z0);
+        const double mu0 = problem.sun_cos_zenith;
+        out->forward_peak.push_back(mu0 *
+                                    (std::exp(-(tau - truncated) / mu0) - std::exp(-tau / mu0)));
         out->solutions.push_back(solve_scattering_orders(problem));
     }
     // Enough for every level of a scene's environment (sky and sensor path of each), so a

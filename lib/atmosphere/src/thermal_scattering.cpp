@@ -67,17 +67,20 @@ ParametricAtmosphereModel::thermal_scattering(const SpectralGrid& grid, double s
                 std::span<double>(&log_gas[k * n], n));
         }
     }
-    const double g = m_parameters.aerosol_asymmetry;
-    const double omega_a = m_parameters.aerosol_single_scatter_albedo;
     for (std::size_t i = 0; i < n; ++i) {
         const double wl = grid.wavelength_um(i);
         if (wl < kThermalScatteringFromUm) continue;
-        const double column_scattering =
-            rayleigh_optical_depth(wl, z0) + omega_a * aerosol_optical_depth(wl, z0);
+        constexpr int kStreams = 8;
+        const std::vector<RegimeOptics> aerosol = solver_aerosol_optics(m_aerosol, wl, kStreams);
+        double column_scattering = rayleigh_optical_depth(wl, z0);
+        for (std::size_t j = 0; j < aerosol.size(); ++j) {
+            column_scattering += aerosol[j].single_scatter_albedo * aerosol[j].extinction_ratio *
+                                 m_aerosol.depth_550_above(j, z0);
+        }
         if (column_scattering < kThermalScatteringMinDepth) continue;
         ScatteringProblem problem;
         problem.beam_irradiance = 0.0;
-        problem.streams = 8;
+        problem.streams = kStreams;
         problem.azimuth_modes = 1;  // isotropic sources: the field has no azimuth
         problem.max_sublayer_depth = 0.05;
         problem.tolerance = 1e-5;
@@ -92,12 +95,15 @@ ParametricAtmosphereModel::thermal_scattering(const SpectralGrid& grid, double s
         for (std::size_t k = layers; k-- > 0;) {  // layers, top first
             const double rayleigh =
                 rayleigh_optical_depth(wl, bounds[k]) - rayleigh_optical_depth(wl, bounds[k + 1]);
-            const double aerosol =
-                aerosol_optical_depth(wl, bounds[k]) - aerosol_optical_depth(wl, bounds[k + 1]);
+            std::vector<AerosolShare> shares;
+            for (std::size_t j = 0; j < aerosol.size(); ++j) {
+                const double depth = (m_aerosol.depth_550_above(j, bounds[k]) -
+                                      m_aerosol.depth_550_above(j, bounds[k + 1])) *
+                                     aerosol[j].extinction_ratio;
+                shares.push_back({depth, aerosol[j].single_scatter_albedo, aerosol[j].moments});
+            }
             const double gas = std::min(-log_gas[k * n + i], kMaxGasDepth);
-            ScatteringLayer layer =
-                rayleigh_aerosol_layer(rayleigh, aerosol, gas, omega_a, g, problem.streams);
-            problem.layers.push_back(std::move(layer));
+            problem.layers.push_back(scattering_layer(rayleigh, shares, gas, problem.streams));
         }
         out->bands[i] = solve_scattering_orders(problem);
     }

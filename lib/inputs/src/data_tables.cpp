@@ -10,8 +10,8 @@
 
 namespace glint::inputs {
 
-atmosphere::DataTables read_data_tables(const std::filesystem::path& data_dir,
-                                        bool with_gas_table) {
+atmosphere::DataTables read_data_tables(const std::filesystem::path& data_dir, bool with_gas_table,
+                                        bool with_aerosol_table) {
     atmosphere::DataTables tables;
     const std::filesystem::path solar = data_dir / atmosphere::SolarSpectrum::kAstmRelativePath;
     tables.sun =
@@ -22,6 +22,12 @@ atmosphere::DataTables read_data_tables(const std::filesystem::path& data_dir,
         tables.gases =
             std::make_shared<const atmosphere::GasBandModel>(atmosphere::GasBandModel::from_csv(
                 io::read_input_file(gases, gases.string()), gases.string()));
+    }
+    if (with_aerosol_table) {
+        const std::filesystem::path aerosols = data_dir / atmosphere::AerosolTable::kRelativePath;
+        tables.aerosols =
+            std::make_shared<const atmosphere::AerosolTable>(atmosphere::AerosolTable::from_csv(
+                io::read_input_file(aerosols, aerosols.string()), aerosols.string()));
     }
     return tables;
 }

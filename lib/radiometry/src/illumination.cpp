@@ -21,13 +21,19 @@ Illumination Illumination::make(const model::Atmosphere& atmosphere,
                                 const glint::atmosphere::DataTables& data,
                                 const model::Scene& scene, const motion::SceneFrame& frame,
                                 const DateTime& reference_utc, Log log) {
-    if (!data.sun || (glint::atmosphere::needs_gas_table(atmosphere) && !data.gases)) {
+    if (!data.sun || (glint::atmosphere::needs_gas_table(atmosphere) && !data.gases) ||
+        (glint::atmosphere::needs_aerosol_table(atmosphere) && !data.aerosols)) {
         throw internal_error("glint's data tables were not read (inputs::read_data_tables)");
     }
     Illumination light;
     light.m_atmosphere_kind = atmosphere.kind;
     light.m_atmosphere_where = atmosphere.where;
-    light.m_model = glint::atmosphere::make_atmosphere_model(atmosphere, data.gases);
+    light.m_model = glint::atmosphere::make_atmosphere_model(atmosphere, data.gases, data.aerosols);
+    // The aerosol as the model resolved it (the layered one's humidity and season defaults).
+    if (const auto* parametric = dynamic_cast<const glint::atmosphere::ParametricAtmosphereModel*>(
+            light.m_model.get())) {
+        log.info("Aerosol: " + parametric->aerosol().description());
+    }
     light.m_sun = data.sun;
     light.m_frame = frame;
     light.m_source_trajectories =

@@ -80,23 +80,92 @@ const Bounds kAsymmetry{-1.0, 1.0, true, true, "a number in (-1, 1)"};
 constexpr double kMaxAerosolDepth550 = 100.0;
 const Bounds kAerosolDepth{0.0, kMaxAerosolDepth550, false, false, "a number in [0, 100]"};
 
-/// aerosol_model: the type's Ångström exponent, single-scatter albedo and asymmetry (keys
-/// given explicitly are read after, and win).
+/// The keys of the exponential aerosol, which an aerosol_model replaces.
+constexpr const char* kExponentialAerosolKeys[] = {"angstrom_exponent", "aerosol_scale_height_m",
+                                                   "aerosol_asymmetry",
+                                                   "aerosol_single_scatter_albedo"};
+/// The keys of the layered aerosol, which only an aerosol_model uses.
+constexpr const char* kLayeredAerosolKeys[] = {"relative_humidity_percent", "aerosol_season",
+                                               "tropospheric_aerosol", "stratospheric_aerosol"};
+
+/// aerosol_model: LOWTRAN 7's layered profiles with OPAC's optics, the boundary layer of this
+/// type (glint/model/aerosol_models.h); with it, visibility_km sets the profiles,
+/// aerosol_optical_depth_550 scales them, and the exponential aerosol's keys are errors.
 void read_aerosol_model(const YAML::Node& root, const std::string& file,
                         model::ParametricAtmosphere& p, Diagnostics& diagnostics) {
     const YAML::Node node = root["aerosol_model"];
-    if (!node) return;
+    if (!node) {
+        for (const char* key : kLayeredAerosolKeys) {
+            if (const YAML::Node unused = root[key]) {
+                diagnostics.warning(at(file, unused, key),
+                                    "has no effect: it belongs to the layered aerosol of an "
+                                    "aerosol_model, and none is given");
+            }
+        }
+        return;
+    }
     const std::string name = node.IsScalar() ? node.Scalar() : std::string{};
-    for (const model::AerosolType& type : model::kAerosolTypes) {
-        if (name == type.name) {
-            p.angstrom_exponent = type.angstrom_exponent;
-            p.aerosol_single_scatter_albedo = type.single_scatter_albedo;
-            p.aerosol_asymmetry = type.asymmetry;
-            return;
+    if (!model::aerosol_mixture_named(name) || name == "stratospheric") {
+        diagnostics.error(at(file, node, "aerosol_model"),
+                          std::string("expected a boundary-layer type, one of ") +
+                              model::aerosol_mixture_names() + " but stratospheric, got '" + name +
+                              "'");
+        return;
+    }
+    p.aerosol_model = name;
+    for (const char* key : kExponentialAerosolKeys) {
+        if (const YAML::Node clash = root[key]) {
+            diagnostics.error(at(file, clash, key),
+                              "aerosol_model sets the aerosol's optics and profile (OPAC's Mie "
+                              "optics, LOWTRAN 7's layers); give " +
+                                  std::string(key) + " only without it");
         }
     }
-    diagnostics.error(at(file, node, "aerosol_model"),
-                      "expected rural, urban, maritime or desert, got '" + name + "'");
+    const Bounds positive{0.0, std::nullopt, true, false, "a number > 0"};
+    read_number(root, "visibility_km", file, positive, p.visibility_km, diagnostics);
+    if (const YAML::Node depth = root["aerosol_optical_depth_550"]) {
+        if (root["visibility_km"]) {
+            diagnostics.error(at(file, root["visibility_km"], "visibility_km"),
+                              "give aerosol_optical_depth_550 or visibility_km, not both");
+        }
+        double value = 0.0;
+        const std::size_t errors = diagnostics.error_count();
+        read_number(root, "aerosol_optical_depth_550", file, kAerosolDepth, value, diagnostics);
+        if (diagnostics.error_count() == errors) p.aerosol_column_depth_550 = value;
+    }
+    if (root["relative_humidity_percent"]) {
+        double rh = 0.0;
+        const std::size_t errors = diagnostics.error_count();
+        const Bounds percent{0.0, 100.0, false, false, "a number in [0, 100]"};
+        read_number(root, "relative_humidity_percent", file, percent, rh, diagnostics);
+        if (diagnostics.error_count() == errors) p.relative_humidity_percent = rh;
+    }
+    if (const YAML::Node season = root["aerosol_season"]) {
+        const std::string value = season.IsScalar() ? season.Scalar() : std::string{};
+        if (value == "spring_summer") {
+            p.aerosol_season = model::AerosolSeason::spring_summer;
+        } else if (value == "fall_winter") {
+            p.aerosol_season = model::AerosolSeason::fall_winter;
+        } else {
+            diagnostics.error(at(file, season, "aerosol_season"),
+                              "expected spring_summer or fall_winter, got '" + value + "'");
+        }
+    }
+    for (const auto& [key, target] :
+         {std::pair<const char*, std::string*>{"tropospheric_aerosol", &p.tropospheric_aerosol},
+          std::pair<const char*, std::string*>{"stratospheric_aerosol",
+                                               &p.stratospheric_aerosol}}) {
+        const YAML::Node type = root[key];
+        if (!type) continue;
+        const std::string value = type.IsScalar() ? type.Scalar() : std::string{};
+        if (value != "none" && !model::aerosol_mixture_named(value)) {
+            diagnostics.error(at(file, type, key), std::string("expected one of ") +
+                                                       model::aerosol_mixture_names() +
+                                                       ", none, got '" + value + "'");
+            continue;
+        }
+        *target = value;
+    }
 }
 
 /// visibility_km: the aerosol optical depth at 550 nm from Koschmieder's law,
@@ -104,7 +173,7 @@ void read_aerosol_model(const YAML::Node& root, const std::string& file,
 void read_visibility(const YAML::Node& root, const std::string& file,
                      model::ParametricAtmosphere& p, Diagnostics& diagnostics) {
     const YAML::Node node = root["visibility_km"];
-    if (!node) return;
+    if (!node || root["aerosol_model"]) return;  // the layered aerosol reads it itself
     const ErrorContext where = at(file, node, "visibility_km");
     if (root["aerosol_optical_depth_550"]) {
         diagnostics.error(where, "give aerosol_optical_depth_550 or visibility_km, not both");
@@ -178,26 +247,22 @@ void warn_unused(const YAML::Node& root, const std::string& file,
              "sets only the grey Brutsaert sky of an atmosphere without gas absorption)");
     }
     if (!p.multiple_scattering) warn("ground_albedo", "multiple_scattering is false");
-    if (root["angstrom_exponent"] && root["aerosol_single_scatter_albedo"] &&
-        root["aerosol_asymmetry"]) {
-        warn("aerosol_model",
-             "angstrom_exponent, aerosol_single_scatter_albedo and aerosol_asymmetry are all "
-             "given");
-    }
 }
 
 void read_parametric(const YAML::Node& root, const std::string& file,
                      model::ParametricAtmosphere& p, Diagnostics& diagnostics) {
     read_aerosol_model(root, file, p, diagnostics);
     read_profile(root, file, p, diagnostics);
-    read_number(root, "aerosol_optical_depth_550", file, kAerosolDepth, p.aerosol_optical_depth_550,
-                diagnostics);
-    read_number(root, "angstrom_exponent", file, kAny, p.angstrom_exponent, diagnostics);
-    read_number(root, "aerosol_scale_height_m", file, kPositive, p.aerosol_scale_height_m,
-                diagnostics);
-    read_number(root, "aerosol_asymmetry", file, kAsymmetry, p.aerosol_asymmetry, diagnostics);
-    read_number(root, "aerosol_single_scatter_albedo", file, kFraction,
-                p.aerosol_single_scatter_albedo, diagnostics);
+    if (p.aerosol_model.empty()) {
+        read_number(root, "aerosol_optical_depth_550", file, kAerosolDepth,
+                    p.aerosol_optical_depth_550, diagnostics);
+        read_number(root, "angstrom_exponent", file, kAny, p.angstrom_exponent, diagnostics);
+        read_number(root, "aerosol_scale_height_m", file, kPositive, p.aerosol_scale_height_m,
+                    diagnostics);
+        read_number(root, "aerosol_asymmetry", file, kAsymmetry, p.aerosol_asymmetry, diagnostics);
+        read_number(root, "aerosol_single_scatter_albedo", file, kFraction,
+                    p.aerosol_single_scatter_albedo, diagnostics);
+    }
     read_number(root, "rayleigh_scale_height_m", file, kPositive, p.rayleigh_scale_height_m,
                 diagnostics);
     read_number(root, "sea_level_pressure_hpa", file, kNonNegative, p.sea_level_pressure_hpa,
@@ -253,13 +318,27 @@ model::Atmosphere read_yaml(const std::string& text, const std::filesystem::path
             atmosphere.kind = model::AtmosphereKind::none;
         } else if (name == "parametric") {
             atmosphere.kind = model::AtmosphereKind::parametric;
-            known.insert(
-                known.end(),
-                {"aerosol_optical_depth_550", "angstrom_exponent", "aerosol_scale_height_m",
-                 "aerosol_asymmetry", "aerosol_single_scatter_albedo", "rayleigh_scale_height_m",
-                 "sea_level_pressure_hpa", "air_temperature_k", "water_vapor_pressure_hpa",
-                 "gas_absorption", "water_vapor_cm", "ozone_atm_cm", "multiple_scattering",
-                 "ground_albedo", "aerosol_model", "visibility_km", "profile"});
+            known.insert(known.end(), {"aerosol_optical_depth_550",
+                                       "angstrom_exponent",
+                                       "aerosol_scale_height_m",
+                                       "aerosol_asymmetry",
+                                       "aerosol_single_scatter_albedo",
+                                       "rayleigh_scale_height_m",
+                                       "sea_level_pressure_hpa",
+                                       "air_temperature_k",
+                                       "water_vapor_pressure_hpa",
+                                       "gas_absorption",
+                                       "water_vapor_cm",
+                                       "ozone_atm_cm",
+                                       "multiple_scattering",
+                                       "ground_albedo",
+                                       "aerosol_model",
+                                       "visibility_km",
+                                       "profile",
+                                       "relative_humidity_percent",
+                                       "aerosol_season",
+                                       "tropospheric_aerosol",
+                                       "stratospheric_aerosol"});
             read_parametric(root, file, atmosphere.parametric, diagnostics);
         } else if (name == "tabulated") {
             atmosphere.kind = model::AtmosphereKind::tabulated;

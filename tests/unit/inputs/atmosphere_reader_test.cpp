@@ -7,10 +7,12 @@
 
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "glint/inputs/scene_atmosphere.h"
+#include "glint/model/aerosol_models.h"
 #include "glint/test/temp_dir.h"
 
 namespace glint::inputs {
@@ -250,40 +252,88 @@ TEST(AtmosphereReader, KeysLeftWithoutEffectAreWarnedAtTheirLine) {
               (V{"e.yaml:3: water_vapor_cm: has no effect: gas_absorption is false",
                  "e.yaml:4: ozone_atm_cm: has no effect: gas_absorption is false",
                  "e.yaml:6: ground_albedo: has no effect: multiple_scattering is false"}));
+    // The layered aerosol's own keys mean nothing without an aerosol_model.
     EXPECT_EQ(messages_of(dir,
-                          "model: parametric\naerosol_model: urban\nangstrom_exponent: 1\n"
-                          "aerosol_single_scatter_albedo: 0.9\naerosol_asymmetry: 0.6\n"),
-              V{"e.yaml:2: aerosol_model: has no effect: angstrom_exponent, "
-                "aerosol_single_scatter_albedo and aerosol_asymmetry are all given"});
-    // Two of the three given: the model still sets the third, so no warning.
-    EXPECT_EQ(messages_of(dir,
-                          "model: parametric\naerosol_model: urban\nangstrom_exponent: 1\n"
-                          "aerosol_asymmetry: 0.6\n"),
-              V{});
+                          "model: parametric\nrelative_humidity_percent: 80\n"
+                          "aerosol_season: fall_winter\n"),
+              (V{"e.yaml:2: relative_humidity_percent: has no effect: it belongs to the layered "
+                 "aerosol of an aerosol_model, and none is given",
+                 "e.yaml:3: aerosol_season: has no effect: it belongs to the layered aerosol of "
+                 "an aerosol_model, and none is given"}));
 }
 
 TEST(AtmosphereReader, AerosolModelAndVisibility) {
     test::TempDir dir;
     Diagnostics diagnostics;
-    const auto a =
-        read_atmosphere(write(dir, "m.yaml",
-                              "model: parametric\naerosol_model: maritime\naerosol_asymmetry: 0.8\n"
-                              "visibility_km: 23\naerosol_scale_height_m: 1000\n"),
-                        {}, diagnostics, "m.yaml");
+    // The layered aerosol: its type and keys.
+    const auto a = read_atmosphere(
+        write(dir, "m.yaml",
+              "model: parametric\naerosol_model: maritime\nvisibility_km: 10\n"
+              "relative_humidity_percent: 85\naerosol_season: fall_winter\n"
+              "tropospheric_aerosol: continental_clean\nstratospheric_aerosol: none\n"),
+        {}, diagnostics, "m.yaml");
     EXPECT_EQ(diagnostics.items().size(), 0u) << first_error(diagnostics);
-    EXPECT_DOUBLE_EQ(a.parametric.angstrom_exponent, 0.35);              // maritime
-    EXPECT_DOUBLE_EQ(a.parametric.aerosol_single_scatter_albedo, 0.99);  // maritime
-    EXPECT_DOUBLE_EQ(a.parametric.aerosol_asymmetry, 0.8);               // the explicit key wins
-    // Koschmieder: β = 3.912/23 − 0.01159 = 0.15850 km⁻¹ over a 1 km scale height.
-    EXPECT_NEAR(a.parametric.aerosol_optical_depth_550, 3.912 / 23.0 - 0.01159, 1e-12);
+    EXPECT_EQ(a.parametric.aerosol_model, "maritime");
+    EXPECT_DOUBLE_EQ(a.parametric.visibility_km, 10.0);
+    EXPECT_EQ(a.parametric.relative_humidity_percent, std::optional<double>(85.0));
+    EXPECT_EQ(a.parametric.aerosol_season, model::AerosolSeason::fall_winter);
+    EXPECT_EQ(a.parametric.tropospheric_aerosol, "continental_clean");
+    EXPECT_EQ(a.parametric.stratospheric_aerosol, "none");
+    EXPECT_FALSE(a.parametric.aerosol_column_depth_550.has_value());
+    // With it, aerosol_optical_depth_550 scales the column.
+    Diagnostics scaled_diagnostics;
+    const auto scaled = read_atmosphere(
+        write(dir, "s.yaml",
+              "model: parametric\naerosol_model: urban\naerosol_optical_depth_550: 0.4\n"),
+        {}, scaled_diagnostics, "s.yaml");
+    EXPECT_EQ(scaled_diagnostics.items().size(), 0u) << first_error(scaled_diagnostics);
+    EXPECT_EQ(scaled.parametric.aerosol_column_depth_550, std::optional<double>(0.4));
+    // Without it, the exponential aerosol: Koschmieder's β = 3.912/23 − 0.01159 km⁻¹ over a
+    // 1 km scale height.
+    Diagnostics exponential_diagnostics;
+    const auto e =
+        read_atmosphere(write(dir, "x.yaml",
+                              "model: parametric\nvisibility_km: 23\naerosol_scale_height_m: 1000\n"
+                              "aerosol_asymmetry: 0.8\n"),
+                        {}, exponential_diagnostics, "x.yaml");
+    EXPECT_EQ(exponential_diagnostics.items().size(), 0u) << first_error(exponential_diagnostics);
+    EXPECT_TRUE(e.parametric.aerosol_model.empty());
+    EXPECT_DOUBLE_EQ(e.parametric.aerosol_asymmetry, 0.8);
+    EXPECT_NEAR(e.parametric.aerosol_optical_depth_550, 3.912 / 23.0 - 0.01159, 1e-12);
 
     using V = std::vector<std::string>;
-    EXPECT_EQ(
-        messages_of(dir, "model: parametric\naerosol_model: volcanic\n"),
-        V{"e.yaml:2: aerosol_model: expected rural, urban, maritime or desert, got 'volcanic'"});
+    EXPECT_EQ(messages_of(dir, "model: parametric\naerosol_model: volcanic\n"),
+              V{std::string("e.yaml:2: aerosol_model: expected a boundary-layer type, one of ") +
+                model::aerosol_mixture_names() + " but stratospheric, got 'volcanic'"});
+    EXPECT_EQ(messages_of(dir, "model: parametric\naerosol_model: stratospheric\n"),
+              V{std::string("e.yaml:2: aerosol_model: expected a boundary-layer type, one of ") +
+                model::aerosol_mixture_names() + " but stratospheric, got 'stratospheric'"});
+    // The exponential aerosol's keys are errors beside an aerosol_model, each at its line.
+    EXPECT_EQ(messages_of(dir,
+                          "model: parametric\naerosol_model: urban\nangstrom_exponent: 1\n"
+                          "aerosol_asymmetry: 0.6\n"),
+              (V{"e.yaml:3: angstrom_exponent: aerosol_model sets the aerosol's optics and "
+                 "profile (OPAC's Mie optics, LOWTRAN 7's layers); give angstrom_exponent only "
+                 "without it",
+                 "e.yaml:4: aerosol_asymmetry: aerosol_model sets the aerosol's optics and "
+                 "profile (OPAC's Mie optics, LOWTRAN 7's layers); give aerosol_asymmetry only "
+                 "without it"}));
+    EXPECT_EQ(messages_of(dir,
+                          "model: parametric\naerosol_model: rural\naerosol_season: monsoon\n"
+                          "relative_humidity_percent: 120\ntropospheric_aerosol: smoke\n"),
+              (V{"e.yaml:4: relative_humidity_percent: value 120 out of range, expected a number "
+                 "in [0, 100]",
+                 "e.yaml:3: aerosol_season: expected spring_summer or fall_winter, got 'monsoon'",
+                 std::string("e.yaml:5: tropospheric_aerosol: expected one of ") +
+                     model::aerosol_mixture_names() + ", none, got 'smoke'"}));
     EXPECT_EQ(
         messages_of(dir, "model: parametric\naerosol_optical_depth_550: 0.1\nvisibility_km: 20\n"),
         V{"e.yaml:3: visibility_km: give aerosol_optical_depth_550 or visibility_km, not both"});
+    EXPECT_EQ(
+        messages_of(dir,
+                    "model: parametric\naerosol_model: rural\n"
+                    "aerosol_optical_depth_550: 0.1\nvisibility_km: 20\n"),
+        V{"e.yaml:4: visibility_km: give aerosol_optical_depth_550 or visibility_km, not both"});
     EXPECT_EQ(messages_of(dir, "model: parametric\nvisibility_km: 400\n"),
               V{"e.yaml:2: visibility_km: visibility 400 km is beyond that of aerosol-free air "
                 "(337 km)"});

@@ -33,7 +33,7 @@ std::shared_ptr<const glint::atmosphere::SolarSpectrum> flat_sun() {
         SpectralCurve({0.3, 2.5}, {1e-3, 1e-3}, {}));
 }
 
-glint::atmosphere::DataTables tables() { return {flat_sun(), nullptr}; }
+glint::atmosphere::DataTables tables() { return {flat_sun(), nullptr, nullptr}; }
 
 /// Rochester, NY at sea level.
 const motion::SceneFrame kRochester(43.16, -77.61, 0.0);

@@ -17,6 +17,8 @@
 #include <span>
 #include <vector>
 
+#include "glint/atmosphere/aerosol_column.h"
+#include "glint/atmosphere/aerosol_table.h"
 #include "glint/atmosphere/gas_absorption.h"
 #include "glint/atmosphere/solar.h"
 #include "glint/core/spectral.h"
@@ -164,11 +166,13 @@ public:
     static constexpr double kOzoneBottomM = 10'000.0;
     static constexpr double kOzoneTopM = 40'000.0;
 
-    /// `gases` is the band-model table; required when parameters.gas_absorption is set.
-    /// Throws glint::Error (input) for parameters out of the ranges of model/atmosphere.h or
-    /// gas absorption without a table.
+    /// `gases` is the band-model table, required when parameters.gas_absorption is set;
+    /// `aerosols` the aerosol optics table, required with parameters.aerosol_model. Throws
+    /// glint::Error (input) for parameters out of the ranges of model/atmosphere.h or a table
+    /// missing.
     explicit ParametricAtmosphereModel(model::ParametricAtmosphere parameters,
-                                       std::shared_ptr<const GasBandModel> gases = nullptr);
+                                       std::shared_ptr<const GasBandModel> gases = nullptr,
+                                       std::shared_ptr<const AerosolTable> aerosols = nullptr);
 
     /// The vertical absorber amounts above `altitude_m` (zero without gas absorption): the
     /// water and ozone columns shared out by the profile's densities (docs/thermal.md), the
@@ -182,7 +186,9 @@ public:
     /// Vertical Rayleigh optical depth above `altitude_m` at `wavelength_um`.
     double rayleigh_optical_depth(double wavelength_um, double altitude_m) const noexcept;
     /// Vertical aerosol optical depth above `altitude_m` at `wavelength_um`.
-    double aerosol_optical_depth(double wavelength_um, double altitude_m) const noexcept;
+    double aerosol_optical_depth(double wavelength_um, double altitude_m) const;
+    /// The aerosol: its regimes, their profiles and optics.
+    const AerosolColumn& aerosol() const noexcept { return m_aerosol; }
     /// Effective clear-sky emissivity (Brutsaert 1975), grey, seen from `altitude_m` (above
     /// sea level): the vapour pressure scaled by the water column above, e · e^(−z/H_w);
     /// 0 above the model's top (100 km).
@@ -289,6 +295,7 @@ private:
 
     model::ParametricAtmosphere m_parameters;
     std::shared_ptr<const GasBandModel> m_gases;
+    AerosolColumn m_aerosol;
     mutable std::mutex m_grids_mutex;
     mutable std::map<std::vector<double>, std::shared_ptr<const GasTransmittance>> m_grids;
     mutable std::mutex m_scattering_mutex;
@@ -337,20 +344,26 @@ double relative_air_mass(double zenith_deg) noexcept;
 double zenith_for_relative_air_mass(double air_mass);
 
 /// The model an atmosphere description selects; `gases` is the band-model table the
-/// parametric model needs when its gas absorption is on (glint/atmosphere/gas_absorption.h).
+/// parametric model needs when its gas absorption is on (glint/atmosphere/gas_absorption.h),
+/// `aerosols` the aerosol optics table it needs with an aerosol_model.
 std::unique_ptr<AtmosphereModel> make_atmosphere_model(
-    const model::Atmosphere& atmosphere, std::shared_ptr<const GasBandModel> gases = nullptr);
+    const model::Atmosphere& atmosphere, std::shared_ptr<const GasBandModel> gases = nullptr,
+    std::shared_ptr<const AerosolTable> aerosols = nullptr);
 
 /// Whether the model `atmosphere` selects needs the gas band-model table (the parametric
 /// model with its gas absorption on).
 bool needs_gas_table(const model::Atmosphere& atmosphere);
+/// Whether it needs the aerosol optics table (the parametric model with an aerosol_model).
+bool needs_aerosol_table(const model::Atmosphere& atmosphere);
 
 /// glint's own data a render needs, read from its data folder by the readers
-/// (glint/inputs/data_tables.h): the solar spectrum, and the gas band-model table when the
-/// atmosphere needs it (needs_gas_table; null otherwise).
+/// (glint/inputs/data_tables.h): the solar spectrum, and the gas band-model and aerosol optics
+/// tables when the atmosphere needs them (needs_gas_table, needs_aerosol_table; null
+/// otherwise).
 struct DataTables {
     std::shared_ptr<const SolarSpectrum> sun;
     std::shared_ptr<const GasBandModel> gases;
+    std::shared_ptr<const AerosolTable> aerosols;
 };
 
 }  // namespace glint::atmosphere

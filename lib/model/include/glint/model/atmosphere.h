@@ -4,42 +4,20 @@
 // of a DIRSIG .atm file. Plain data; the physics lives in glint/atmosphere/atmosphere.h and the
 // formulas in docs/physics.md ("Atmosphere and sun").
 //
-// YAML keys (glint/yaml/atmosphere_reader.h reads them; unknown keys are warnings):
-//
-// | key | type | unit | default | model |
-// |---|---|---|---|---|
-// | `model` | none, parametric, tabulated | – | (required) | all |
-// | `aerosol_optical_depth_550` | number ≥ 0 | – | 0.1 | parametric |
-// | `angstrom_exponent` | number | – | 1.3 | parametric |
-// | `aerosol_scale_height_m` | number > 0 | m | 1200 | parametric |
-// | `aerosol_asymmetry` | number in (−1, 1) | – | 0.7 | parametric (Henyey–Greenstein g) |
-// | `aerosol_single_scatter_albedo` | number in [0, 1] | – | 0.95 | parametric |
-// | `rayleigh_scale_height_m` | number > 0 | m | 8000 | parametric |
-// | `sea_level_pressure_hpa` | number ≥ 0 | hPa | 1013.25 | parametric (0: no Rayleigh) |
-// | `profile` | tropical, midlatitude_summer, midlatitude_winter, subarctic_summer,
-// subarctic_winter, us_standard_1976, isothermal | – | us_standard_1976 | parametric (air
-// temperatures; when given, also the defaults of `air_temperature_k`, `water_vapor_cm`,
-// `ozone_atm_cm`) | | `air_temperature_k` | number ≥ 0 | K | 288.15 (the profile's sea level) |
-// parametric (emission) | | `water_vapor_pressure_hpa` | number ≥ 0 | hPa | 10 | parametric
-// (Brutsaert sky without gas absorption) | | `gas_absorption` | true, false | – | true | parametric
-// (H₂O, O₃, O₂, CO₂, CH₄, … bands) | | `water_vapor_cm` | number ≥ 0 | cm | 2.924 (the profile's,
-// when given) | parametric (precipitable water, vertical) | | `ozone_atm_cm` | number ≥ 0 | atm-cm
-// | 0.332 (the profile's, when given) | parametric (ozone column, vertical) | | `aerosol_model` |
-// rural, urban, maritime, desert | – | (none) | parametric: sets the next three | | `visibility_km`
-// | number > 0 | km | – | parametric: τ₅₅₀ by Koschmieder (not with τ₅₅₀) | | `multiple_scattering`
-// | true, false | – | true | parametric (sky and path radiance) | | `ground_albedo` | number in [0,
-// 1] | – | 0.2 | parametric (Lambertian ground of the sky) | | `table` | path | – | (required) |
-// tabulated (relative to the YAML file) | | `sky_temperature_k` | number ≥ 0 | K | 0 (black) |
-// tabulated without a thermal column |
+// YAML keys: glint/yaml/atmosphere_reader.h reads them (unknown keys are warnings); their
+// types, units and defaults are the table of docs/scene.md ("Atmosphere"), the defaults also
+// the members' initialisers below.
 //
 // DIRSIG .atm subset: `<atmosphericconditions>` > `<simpleradiativetransfer>` >
 // `<apparentskytemperature>` (K, default 0) gives kind simple.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "glint/core/error.h"
+#include "glint/model/aerosol_models.h"
 #include "glint/model/standard_atmospheres.h"
 
 namespace glint::model {
@@ -82,26 +60,28 @@ struct ParametricAtmosphere {
     /// Lambertian albedo of the ground under the plane-parallel atmosphere: the light it
     /// sends back up that the sky scatters down again, and into the path radiance.
     double ground_albedo = 0.2;
+
+    /// The boundary layer's aerosol type (glint/model/aerosol_models.h): LOWTRAN 7's layered
+    /// profiles with OPAC's optics. Empty: the exponential aerosol of the five aerosol_ keys
+    /// above (Ångström spectrum, Henyey–Greenstein phase function).
+    std::string aerosol_model;
+    /// With aerosol_model: the surface visibility that sets the profiles, km.
+    double visibility_km = 23.0;
+    /// With aerosol_model: the whole column's vertical 550 nm optical depth above sea level,
+    /// the profiles scaled to it (unset: the visibility's).
+    std::optional<double> aerosol_column_depth_550;
+    /// With aerosol_model: the relative humidity of the boundary layer's and the
+    /// troposphere's aerosol, % (unset: the profile's at sea level, 70 % for isothermal).
+    std::optional<double> relative_humidity_percent;
+    /// With aerosol_model: the season of the profiles above 2 km (unset: fall_winter for the
+    /// winter profiles, else spring_summer).
+    std::optional<AerosolSeason> aerosol_season;
+    /// With aerosol_model: the types of the free troposphere (2–10 km) and the stratosphere
+    /// (above 10 km); "none" leaves the layer clear.
+    std::string tropospheric_aerosol = "tropospheric";
+    std::string stratospheric_aerosol = "stratospheric";
 };
 
-/// Representative optical properties of an aerosol type at 70-80 % relative humidity:
-/// rural, urban and maritime after E. P. Shettle and R. W. Fenn, "Models for the aerosols of
-/// the lower atmosphere and the effects of humidity variations on their optical properties",
-/// AFGL-TR-79-0214, 1979; desert after J. D. Longtin, E. P. Shettle, J. R. Hummel,
-/// J. D. Pryce, "A wind dependent desert aerosol model", AFGL-TR-88-0112, 1988. Values
-/// for 0.4-1 µm (docs/physics.md, "Aerosol types").
-struct AerosolType {
-    const char* name;
-    double angstrom_exponent;
-    double single_scatter_albedo;
-    double asymmetry;
-};
-inline constexpr AerosolType kAerosolTypes[] = {
-    {"rural", 1.25, 0.95, 0.68},
-    {"urban", 1.15, 0.80, 0.67},
-    {"maritime", 0.35, 0.99, 0.76},
-    {"desert", 0.30, 0.90, 0.72},
-};
 /// Koschmieder's constant: visibility V = 3.912 / β_ext(550 nm) at the ground (2 % contrast).
 inline constexpr double kKoschmieder = 3.912;
 /// Rayleigh extinction of sea-level air at 550 nm, km⁻¹ (removed from 3.912/V).
