@@ -231,6 +231,17 @@ public:
     std::vector<double> diffuse_sky_irradiance_w_per_cm2_um(
         const SpectralGrid& grid, const AtmosphereGeometry& geometry,
         std::span<const double> toa_irradiance_w_per_cm2_um) const override;
+    /// The scattered sunlight arriving at the surface point from the sky direction of zenith
+    /// `zenith_deg` (< 90) and azimuth `azimuth_deg` (clockwise from north), W/(cm² sr µm)
+    /// per band: the direct sun's single scattering along that line of sight (256 layers, the
+    /// exact Rayleigh and aerosol phase functions, the gases on both legs) plus the solver's
+    /// higher orders and ground-coupled light (none without multiple scattering); 0 with the
+    /// sun down. The sky's directional structure: its aureole around the sun, its horizon
+    /// (docs/physics.md, "The scattered sky's radiance").
+    std::vector<double> scattered_sky_radiance_w_per_cm2_sr_um(
+        const SpectralGrid& grid, const AtmosphereGeometry& geometry,
+        std::span<const double> toa_irradiance_w_per_cm2_um, double zenith_deg,
+        double azimuth_deg) const;
     /// With gas absorption, the air's emission seen from the surface; without, the grey
     /// Brutsaert sky.
     std::vector<double> thermal_sky_radiance_w_per_cm2_sr_um(
