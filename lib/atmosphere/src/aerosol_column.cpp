@@ -96,20 +96,7 @@ struct AerosolColumn::Regime {
 
     ComponentOptics at(double wavelength_um) const {
         const auto [k, t] = bracket(wavelengths_um, wavelength_um);
-        ComponentOptics out = sampled[k];
-        if (t == 0.0) return out;
-        const ComponentOptics& b = sampled[k + 1];
-        out.extinction_um2 =
-            std::exp((1.0 - t) * std::log(out.extinction_um2) + t * std::log(b.extinction_um2));
-        out.scattering_um2 =
-            std::min(out.extinction_um2,
-                     std::exp((1.0 - t) * std::log(std::max(out.scattering_um2, 1e-300)) +
-                              t * std::log(std::max(b.scattering_um2, 1e-300))));
-        for (std::size_t l = 0; l < out.moments.size(); ++l)
-            out.moments[l] += t * (b.moments[l] - out.moments[l]);
-        for (std::size_t i = 0; i < out.phase.size(); ++i)
-            out.phase[i] += t * (b.phase[i] - out.phase[i]);
-        return out;
+        return t == 0.0 ? sampled[k] : interpolate(sampled[k], sampled[k + 1], t, true);
     }
 };
 

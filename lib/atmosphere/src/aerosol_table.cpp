@@ -20,11 +20,16 @@ void blend(std::vector<double>& a, const std::vector<double>& b, double t) {
     for (std::size_t i = 0; i < a.size(); ++i) a[i] += t * (b[i] - a[i]);
 }
 
-ComponentOptics lerp(const ComponentOptics& a, const ComponentOptics& b, double t, bool log) {
+}  // namespace
+
+ComponentOptics interpolate(const ComponentOptics& a, const ComponentOptics& b, double t,
+                            bool log_cross_sections) {
     ComponentOptics out = a;
     if (t == 0.0) return out;
     auto mix = [&](double x, double y) {
-        if (log && x > 0.0 && y > 0.0) return std::exp((1.0 - t) * std::log(x) + t * std::log(y));
+        if (log_cross_sections && x > 0.0 && y > 0.0) {
+            return std::exp((1.0 - t) * std::log(x) + t * std::log(y));
+        }
         return x + t * (y - x);
     };
     out.extinction_um2 = mix(a.extinction_um2, b.extinction_um2);
@@ -33,8 +38,6 @@ ComponentOptics lerp(const ComponentOptics& a, const ComponentOptics& b, double 
     blend(out.phase, b.phase, t);
     return out;
 }
-
-}  // namespace
 
 AerosolTable AerosolTable::from_csv(const std::string& text, const std::string& file) {
     AerosolTable out;
@@ -172,7 +175,7 @@ ComponentOptics AerosolTable::optics(std::string_view name, double wavelength_um
         const Row& lo = *(above - 1);
         const double t = std::log(wavelength_um / lo.wavelength_um) /
                          std::log(hi.wavelength_um / lo.wavelength_um);
-        return lerp(lo.optics, hi.optics, t, true);
+        return interpolate(lo.optics, hi.optics, t, true);
     };
     const auto above = humidities.upper_bound(static_cast<int>(std::floor(rh_percent)));
     if (above == humidities.begin()) return at_wavelength(humidities.begin()->second);
@@ -181,7 +184,7 @@ ComponentOptics AerosolTable::optics(std::string_view name, double wavelength_um
         return at_wavelength(below->second);
     }
     const double t = (rh_percent - below->first) / (above->first - below->first);
-    return lerp(at_wavelength(below->second), at_wavelength(above->second), t, false);
+    return interpolate(at_wavelength(below->second), at_wavelength(above->second), t, false);
 }
 
 ComponentOptics AerosolTable::mixture(std::span<const MixtureShare> shares, double wavelength_um,

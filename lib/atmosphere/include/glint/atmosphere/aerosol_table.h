@@ -27,6 +27,12 @@ struct ComponentOptics {
     }
 };
 
+/// `a` + t (`b` − `a`) member by member: the cross sections in ln σ when
+/// `log_cross_sections` (linearly where either is 0), the scattering never above the
+/// extinction; the moments and the phase function linearly (they must have a's sizes).
+ComponentOptics interpolate(const ComponentOptics& a, const ComponentOptics& b, double t,
+                            bool log_cross_sections);
+
 /// One component of a mixture and its number density.
 struct MixtureShare {
     std::string component;
