@@ -70,8 +70,9 @@ struct ParametricAtmosphere {
     /// With aerosol_model: the whole column's vertical 550 nm optical depth above sea level,
     /// the profiles scaled to it (unset: the visibility's).
     std::optional<double> aerosol_column_depth_550;
-    /// With aerosol_model: the relative humidity of the boundary layer's and the
-    /// troposphere's aerosol, % (unset: the profile's at sea level, 70 % for isothermal).
+    /// With aerosol_model: the relative humidity every layer's water-soluble particles have
+    /// grown at, % (unset: the profile's at sea level, 70 % for isothermal; the
+    /// stratospheric type is always dry).
     std::optional<double> relative_humidity_percent;
     /// With aerosol_model: the season of the profiles above 2 km (unset: fall_winter for the
     /// winter profiles, else spring_summer).
