@@ -210,13 +210,8 @@ void ParametricAtmosphereModel::add_multiple_scattering(
     for (std::size_t a = 0; a < view_azimuths_deg.size(); ++a) {
         // Azimuth from the beam's direction of travel (the sun's azimuth + 180°).
         const double phi = (view_azimuths_deg[a] - geometry.sun_azimuth_deg - 180.0) * kDegToRad;
-        const std::vector<double> reflectance = ms->per_band([&](std::size_t k) {
-            double sum = 0.0;
-            for (std::size_t m = 0; m < modes[k].size(); ++m) {
-                sum += modes[k][m] * std::cos(static_cast<double>(m) * phi);
-            }
-            return sum;
-        });
+        const std::vector<double> reflectance =
+            ms->per_band([&](std::size_t k) { return sum_modes(modes[k], phi); });
         for (std::size_t i = 0; i < grid.size(); ++i) {
             out[a][i] += toa[i] * std::max(reflectance[i], 0.0) * gas_sun[i] * gas_view[i];
         }

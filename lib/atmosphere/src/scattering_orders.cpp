@@ -29,7 +29,9 @@ constexpr std::size_t kMaxSublayers = 2048;
 using detail::kPi;
 
 /// Σ_m terms[m] cos(mφ).
-double sum_modes(const std::vector<double>& terms, double phi) {
+}  // namespace
+
+double sum_modes(std::span<const double> terms, double phi) {
     if (!std::isfinite(phi)) throw input_error("non-finite azimuth");
     double sum = 0.0;
     for (std::size_t m = 0; m < terms.size(); ++m) {
@@ -37,8 +39,6 @@ double sum_modes(const std::vector<double>& terms, double phi) {
     }
     return sum;
 }
-
-}  // namespace
 
 void gauss_legendre_unit(int n, std::vector<double>& nodes, std::vector<double>& weights) {
     nodes.assign(static_cast<std::size_t>(n), 0.0);
@@ -418,6 +418,11 @@ std::vector<double> ScatteringSolution::multiple_scatter_up_modes(std::size_t le
 double ScatteringSolution::multiple_scatter_down_radiance(std::size_t level, double mu,
                                                           double relative_azimuth_rad) const {
     return sum_modes(down_modes(level, mu), relative_azimuth_rad);
+}
+
+std::vector<double> ScatteringSolution::multiple_scatter_down_modes(std::size_t level,
+                                                                    double mu) const {
+    return down_modes(level, mu);
 }
 
 double ScatteringSolution::single_scatter_up_radiance(std::size_t level, double mu,

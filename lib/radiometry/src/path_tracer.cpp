@@ -122,34 +122,6 @@ const double* at_height(const Bands& bands, const AltitudeLevel& at,
     return scratch.data();
 }
 
-/// L_sky at `at` for a ray leaving upwards with z component `cos_zenith`: the row of the
-/// level and zenith node, or the blend of the (up to) four around them, written into
-/// `scratch` at the bands followed (indexed by grid band, as the rows are).
-template <typename Bands>
-const double* sky_at(const Bands& bands, const AltitudeLevel& at, double cos_zenith,
-                     const Environment& env, std::vector<double>& scratch) {
-    const AltitudeLevel node = env.sky_node(cos_zenith);
-    const double* l00 = env.sky_radiance_w_per_cm2_sr_um(at.index, node.index).data();
-    if (at.fraction == 0.0 && node.fraction == 0.0) return l00;
-    const double f = at.fraction;
-    const double g = node.fraction;
-    const double* l01 =
-        g == 0.0 ? l00 : env.sky_radiance_w_per_cm2_sr_um(at.index, node.index + 1).data();
-    const double* l10 =
-        f == 0.0 ? l00 : env.sky_radiance_w_per_cm2_sr_um(at.index + 1, node.index).data();
-    const double* l11 =
-        f == 0.0
-            ? l01
-            : (g == 0.0 ? l10
-                        : env.sky_radiance_w_per_cm2_sr_um(at.index + 1, node.index + 1).data());
-    for (std::size_t j = 0; j < bands.size(); ++j) {
-        const std::size_t b = bands[j];
-        scratch[b] =
-            (1.0 - f) * ((1.0 - g) * l00[b] + g * l01[b]) + f * ((1.0 - g) * l10[b] + g * l11[b]);
-    }
-    return scratch.data();
-}
-
 /// L += β ⊙ E_sun / Ω_sun · weight for a path leaving the scene from a vertex at `level` in
 /// direction `wi`, when wi lies in the sun's disc (radiance E/Ω of a uniform disc; `sun_pdf`
 /// = 1/Ω).
@@ -347,9 +319,8 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
     if (hit == nullptr) {
         if (ray.direction.z > 0.0 && !env.sky_black()) {
             // The sky of the lowest level: a camera ray that meets nothing.
-            const double* sky =
-                sky_at(bands, AltitudeLevel{}, ray.direction.z, env, scratch.sky_at_height);
-            for (std::size_t j = 0; j < count; ++j) radiance[j] = sky[bands[j]];
+            const Environment::SkyLookup sky = env.sky_lookup(ray.direction, time, AltitudeLevel{});
+            for (std::size_t j = 0; j < count; ++j) radiance[j] = sky.at(bands[j]);
         } else {
             std::fill(radiance.begin(), radiance.end(), 0.0);
         }
@@ -518,8 +489,8 @@ void PathTracer::trace_path(const Bands& bands, const SampleRay& ray, RandomStre
         ++scratch.rays;
         if (hit == nullptr) {
             if (wi.z > 0.0 && !env.sky_black()) {
-                const double* sky = sky_at(bands, level, wi.z, env, scratch.sky_at_height);
-                for (std::size_t j = 0; j < count; ++j) radiance[j] += beta[j] * sky[bands[j]];
+                const Environment::SkyLookup sky = env.sky_lookup(wi, time, level);
+                for (std::size_t j = 0; j < count; ++j) radiance[j] += beta[j] * sky.at(bands[j]);
             }
             if (disc_weight > 0.0 && env.sun_visible()) {
                 add_sun_disc(bands, env, level, wi, time, disc_weight, sun_pdf, beta, radiance,

@@ -276,6 +276,7 @@ void read_parametric(const YAML::Node& root, const std::string& file,
     read_visibility(root, file, p, diagnostics);  // after the aerosol scale height
     read_flag(root, "gas_absorption", file, p.gas_absorption, diagnostics);
     read_flag(root, "multiple_scattering", file, p.multiple_scattering, diagnostics);
+    read_flag(root, "directional_sky", file, p.directional_sky, diagnostics);
     warn_unused(root, file, p, diagnostics);
 }
 
@@ -332,6 +333,7 @@ model::Atmosphere read_yaml(const std::string& text, const std::filesystem::path
                                        "ozone_atm_cm",
                                        "multiple_scattering",
                                        "ground_albedo",
+                                       "directional_sky",
                                        "aerosol_model",
                                        "visibility_km",
                                        "profile",

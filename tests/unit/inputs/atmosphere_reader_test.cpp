@@ -220,11 +220,15 @@ TEST(AtmosphereReader, GasAndScatteringKeys) {
     EXPECT_DOUBLE_EQ(a.parametric.ozone_atm_cm, 0.34);
     EXPECT_TRUE(a.parametric.multiple_scattering);
     EXPECT_DOUBLE_EQ(a.parametric.ground_albedo, 0.35);
-    const auto off = read_atmosphere(
-        write(dir, "o.yaml", "model: parametric\ngas_absorption: false\nmultiple_scattering: no\n"),
-        {}, diagnostics, "o.yaml");
+    const auto off =
+        read_atmosphere(write(dir, "o.yaml",
+                              "model: parametric\ngas_absorption: false\nmultiple_scattering: no\n"
+                              "directional_sky: false\n"),
+                        {}, diagnostics, "o.yaml");
     EXPECT_FALSE(off.parametric.gas_absorption);
     EXPECT_FALSE(off.parametric.multiple_scattering);
+    EXPECT_FALSE(off.parametric.directional_sky);
+    EXPECT_TRUE(a.parametric.directional_sky);
     // Defaults: gases and multiple scattering on, a mid-latitude summer column, albedo 0.2.
     const model::ParametricAtmosphere defaults;
     EXPECT_TRUE(defaults.gas_absorption);
@@ -236,6 +240,8 @@ TEST(AtmosphereReader, GasAndScatteringKeys) {
     using V = std::vector<std::string>;
     EXPECT_EQ(messages_of(dir, "model: parametric\ngas_absorption: maybe\n"),
               V{"e.yaml:2: gas_absorption: expected true or false"});
+    EXPECT_EQ(messages_of(dir, "model: parametric\ndirectional_sky: 3\n"),
+              V{"e.yaml:2: directional_sky: expected true or false"});
     EXPECT_EQ(messages_of(dir, "model: parametric\nwater_vapor_cm: -1\n"),
               V{"e.yaml:2: water_vapor_cm: value -1 out of range, expected a number >= 0"});
     EXPECT_EQ(messages_of(dir, "model: parametric\nground_albedo: 1.5\n"),

@@ -32,10 +32,13 @@ constexpr double kSensorHeight_m = 700'000.0;        // above the scene origin
 const SpectralGrid kGrid({0.45, 0.55, 0.76, 0.94});  // 0.76: O₂ A band; 0.94: water
 
 /// The parametric model with its default aerosol and multiple scattering (gases off: the
-/// band-model table has its own tests, and the terms compared here are the model's either way).
+/// band-model table has its own tests, and the terms compared here are the model's either way),
+/// the isotropic sky (a Lambertian plate then reflects it exactly with every draw;
+/// directional_sky_test.cpp tests the directional one).
 glint::atmosphere::ParametricAtmosphereModel parametric() {
     model::ParametricAtmosphere parameters;
     parameters.gas_absorption = false;
+    parameters.directional_sky = false;
     return glint::atmosphere::ParametricAtmosphereModel(parameters);
 }
 

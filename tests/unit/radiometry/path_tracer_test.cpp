@@ -351,10 +351,12 @@ TEST(PathTracer, MovingBoxMotionBlurMatchesTheCoveredFraction) {
 }
 
 /// The default parametric atmosphere on `grid`: sun at zenith 40°, azimuth 160°, a sensor at
-/// 3000 m, a made-up solar spectrum.
+/// 3000 m, a made-up solar spectrum; the isotropic sky (a Lambertian plate reflects it
+/// exactly with every draw; directional_sky_test.cpp tests the directional one).
 Environment parametric_environment(const SpectralGrid& grid) {
     model::ParametricAtmosphere parameters;
     parameters.gas_absorption = false;  // scattering only: the gases have their own tests
+    parameters.directional_sky = false;
     const glint::atmosphere::ParametricAtmosphereModel atmosphere(parameters);
     const glint::atmosphere::SolarSpectrum sun(SpectralCurve({0.3, 1.0, 4.0}, {0.2, 0.1, 0.001}));
     EnvironmentInputs inputs;

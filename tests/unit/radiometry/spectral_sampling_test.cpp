@@ -38,9 +38,12 @@ SpectralGrid even_grid(double first_um, double last_um, std::size_t bands) {
     return SpectralGrid(std::move(w));
 }
 
+/// The isotropic sky: a Lambertian plate reflects it exactly with every draw
+/// (directional_sky_test.cpp tests the directional one).
 Environment parametric_environment(const SpectralGrid& grid) {
     model::ParametricAtmosphere parameters;
     parameters.gas_absorption = false;  // scattering only: the gases have their own tests
+    parameters.directional_sky = false;
     const glint::atmosphere::ParametricAtmosphereModel atmosphere(parameters);
     const glint::atmosphere::SolarSpectrum sun(
         SpectralCurve({0.3, 0.5, 1.0, 2.5}, {0.15, 0.2, 0.1, 0.01}));

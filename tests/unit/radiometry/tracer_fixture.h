@@ -147,6 +147,30 @@ inline ProblemBatch batch_of(const RaySource& source, std::uint64_t samples,
     return b;
 }
 
+/// A 2 m square plate at 1.5 m, its normal `n`, as a mesh of material `material`.
+inline void add_plate(model::Scene& scene, const Vec3& n, std::uint32_t material) {
+    // Two in-plane axes: east, and n × east.
+    const Vec3 east{1.0, 0.0, 0.0};
+    const Vec3 up{n.y * east.z - n.z * east.y, n.z * east.x - n.x * east.z,
+                  n.x * east.y - n.y * east.x};
+    const Vec3 c{0.0, 0.0, 1.5};
+    model::GeometryObject object;
+    object.name = "plate";
+    for (const auto& [a, b] : {std::pair{-1.0, -1.0}, {1.0, -1.0}, {1.0, 1.0}, {-1.0, 1.0}}) {
+        const Vec3 p = c + east * a + up * b;
+        object.mesh.vertices_m.push_back(
+            {static_cast<float>(p.x), static_cast<float>(p.y), static_cast<float>(p.z)});
+    }
+    // Counter-clockwise seen from the front (along −n).
+    object.mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
+    object.mesh.triangle_materials = {material, material};
+    scene.objects.push_back(std::move(object));
+    model::Instance instance;
+    instance.object_index = scene.objects.size() - 1;
+    instance.name = "plate";
+    scene.instances.push_back(std::move(instance));
+}
+
 /// The unit direction at zenith angle `zenith_deg` and azimuth `azimuth_deg` (clockwise from
 /// north, scene ENU).
 inline Vec3 direction_from(double zenith_deg, double azimuth_deg) {

@@ -80,7 +80,7 @@ public:
         const SpectralGrid& grid, const AtmosphereGeometry& geometry) const = 0;
 
     /// Whether the thermal sky depends on the direction (thermal_sky_radiance_at_zenith).
-    virtual bool directional_sky() const noexcept { return false; }
+    virtual bool directional_thermal_sky() const noexcept { return false; }
 
     /// The thermal sky radiance arriving at the surface point from zenith angle
     /// `zenith_deg` (0 overhead, 90 at the horizon), W/(cm² sr µm). Default: the isotropic
@@ -102,6 +102,20 @@ public:
             out.push_back(thermal_sky_radiance_at_zenith(grid, geometry, zenith));
         }
         return out;
+    }
+
+    /// The scattered sunlight arriving at the surface point from the sky directions of zenith
+    /// zeniths_deg[z] (< 90) and azimuth azimuths_deg[a] (clockwise from north), W/(cm² sr
+    /// µm): one spectrum per direction, [z · azimuths + a]. Empty when the model's scattered
+    /// sky has no directional structure: its radiance is then diffuse_sky_irradiance / π from
+    /// every direction. This default: empty.
+    virtual std::vector<std::vector<double>> scattered_sky_at_directions(
+        const SpectralGrid& grid, const AtmosphereGeometry& geometry,
+        std::span<const double> toa_irradiance_w_per_cm2_um, std::span<const double> zeniths_deg,
+        std::span<const double> azimuths_deg) const {
+        (void)grid, (void)geometry, (void)toa_irradiance_w_per_cm2_um, (void)zeniths_deg,
+            (void)azimuths_deg;
+        return {};
     }
 
     /// The isotropic sky radiance: diffuse_sky_irradiance / π + thermal_sky_radiance.
@@ -242,11 +256,17 @@ public:
         const SpectralGrid& grid, const AtmosphereGeometry& geometry,
         std::span<const double> toa_irradiance_w_per_cm2_um, double zenith_deg,
         double azimuth_deg) const;
+    /// scattered_sky_radiance_w_per_cm2_sr_um at every (zenith, azimuth) pair, the layers and
+    /// the line of sight's gases shared; empty with directional_sky false.
+    std::vector<std::vector<double>> scattered_sky_at_directions(
+        const SpectralGrid& grid, const AtmosphereGeometry& geometry,
+        std::span<const double> toa_irradiance_w_per_cm2_um, std::span<const double> zeniths_deg,
+        std::span<const double> azimuths_deg) const override;
     /// With gas absorption, the air's emission seen from the surface; without, the grey
     /// Brutsaert sky.
     std::vector<double> thermal_sky_radiance_w_per_cm2_sr_um(
         const SpectralGrid& grid, const AtmosphereGeometry& geometry) const override;
-    bool directional_sky() const noexcept override { return m_parameters.gas_absorption; }
+    bool directional_thermal_sky() const noexcept override { return m_parameters.gas_absorption; }
     /// The air's emission from the surface to the top along zenith `zenith_deg` (Kasten–Young
     /// air mass); the isotropic Brutsaert sky without gas absorption.
     std::vector<double> thermal_sky_radiance_at_zenith(const SpectralGrid& grid,
@@ -298,6 +318,11 @@ private:
     /// multiple scattering or with the sun down); the last few are kept.
     std::shared_ptr<const Scattering> scattering(const SpectralGrid& grid,
                                                  const AtmosphereGeometry& geometry) const;
+    /// scattered_sky_at_directions whatever directional_sky says.
+    std::vector<std::vector<double>> scattered_sky_radiances(
+        const SpectralGrid& grid, const AtmosphereGeometry& geometry,
+        std::span<const double> toa_irradiance_w_per_cm2_um, std::span<const double> zeniths_deg,
+        std::span<const double> azimuths_deg) const;
     /// Adds the multiple-scatter path radiance to `out` (one spectrum per azimuth).
     void add_multiple_scattering(const SpectralGrid& grid, const AtmosphereGeometry& geometry,
                                  std::span<const double> toa,

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 #include <vector>
 
 namespace glint::atmosphere {
@@ -80,6 +81,9 @@ public:
     /// The Fourier terms of multiple_scatter_up_radiance at `level` and `mu`: the radiance at
     /// azimuth φ is Σ_m terms[m] cos(mφ).
     std::vector<double> multiple_scatter_up_modes(std::size_t level, double mu) const;
+    /// The Fourier terms of multiple_scatter_down_radiance at `level` and `mu`, as
+    /// multiple_scatter_up_modes'.
+    std::vector<double> multiple_scatter_down_modes(std::size_t level, double mu) const;
     /// Orders of scattering summed, per azimuth mode.
     const std::vector<int>& orders() const noexcept { return m_orders; }
 
@@ -99,6 +103,10 @@ private:
     std::vector<std::vector<double>> m_field;
     std::vector<int> m_orders;
 };
+
+/// Σ_m terms[m] cos(m φ): a radiance from its Fourier terms (the *_modes functions) at
+/// relative azimuth `phi` (rad). Throws glint::Error (input) for a non-finite φ.
+double sum_modes(std::span<const double> terms, double phi);
 
 /// The n-point Gauss–Legendre rule on (0, 1), weights summing to 1 (exact for polynomials of degree
 /// ≤ 2n − 1).

@@ -60,6 +60,9 @@ struct ParametricAtmosphere {
     /// Lambertian albedo of the ground under the plane-parallel atmosphere: the light it
     /// sends back up that the sky scatters down again, and into the path radiance.
     double ground_albedo = 0.2;
+    /// The scattered sky's radiance by direction (its aureole around the sun, its horizon),
+    /// normalised to the diffuse irradiance; false: that irradiance / π from every direction.
+    bool directional_sky = true;
 
     /// The boundary layer's aerosol type (glint/model/aerosol_models.h): LOWTRAN 7's layered
     /// profiles with OPAC's optics. Empty: the exponential aerosol of the five aerosol_ keys

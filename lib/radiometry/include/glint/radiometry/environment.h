@@ -5,9 +5,11 @@
 //   - the sun: its direction in scene ENU at the window's begin and end (interpolated per
 //     sample time), its angular radius, and its spectral irradiance at the surface normal to
 //     the beam, E_sun(λ) = E_toa(λ, d) T_sun(λ, θs) [W/(cm² µm)];
-//   - the sky radiance L_sky(λ) = E_diffuse/π + L_thermal [W/(cm² sr µm)], isotropic, or by
-//     zenith angle (every kSkyZenithStepDeg, linear in air mass between) where the model's
-//     thermal sky is directional;
+//   - the sky radiance L_sky(λ) [W/(cm² sr µm)]: the scattered sunlight E_diffuse/π, times
+//     the model's directional shape where it has one (tabulated over zenith and azimuth from
+//     the sun, normalised so that it integrates to E_diffuse on a horizontal surface), plus the
+//     thermal sky L_thermal, isotropic or by zenith angle (every kSkyZenithStepDeg, linear in
+//     air mass between) where the model's thermal sky is directional;
 //   - the sensor path: transmittance T_v(λ) and path radiance L_p(λ) [W/(cm² sr µm)] for the
 //     direction surface → sensor, tabulated over view zenith (0–88° every 4°) and azimuth
 //     relative to the sun (0–180° every 15°; the single-scatter terms are symmetric about
@@ -25,6 +27,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -67,9 +70,14 @@ public:
     std::shared_ptr<const SensorPathTables> find(const Key& key) const;
     void insert(const Key& key, std::shared_ptr<const SensorPathTables> tables);
     std::size_t size() const noexcept { return m_tables.size(); }
+    /// The sky's directional shapes, by the same key (sensor altitude 0): nullopt when none
+    /// is stored, a null pointer stored for an isotropic sky.
+    std::optional<std::shared_ptr<const std::vector<double>>> find_sky(const Key& key) const;
+    void insert_sky(const Key& key, std::shared_ptr<const std::vector<double>> shape);
 
 private:
     std::map<Key, std::shared_ptr<const SensorPathTables>> m_tables;
+    std::map<Key, std::shared_ptr<const std::vector<double>>> m_skies;
 };
 
 /// Everything make_environment needs.
@@ -128,6 +136,11 @@ public:
     /// Zenith nodes of a directional sky, 0° … 90°, degrees.
     static constexpr double kSkyZenithStepDeg = 3.0;
     static constexpr std::size_t kSkyZenithNodes = 31;
+    /// Azimuth nodes of the scattered sky's shape, degrees from the sun's azimuth (the sky is
+    /// symmetric about the sun's vertical plane): dense towards the sun for its aureole.
+    static constexpr std::array<double, 18> kSkyAzimuthNodesDeg = {
+        0.0,  2.0,  4.0,  7.0,   10.0,  15.0,  20.0,  30.0,  45.0,
+        60.0, 75.0, 90.0, 105.0, 120.0, 135.0, 150.0, 165.0, 180.0};
 
     /// An environment given directly (tests, user-defined skies): no path effects
     /// (T_v = 1, L_p = 0). Throws glint::Error (input) for vectors of the wrong size,
@@ -170,8 +183,9 @@ public:
     bool sun_visible() const noexcept { return m_sun_visible; }
     /// Zenith nodes of the sky: 1 (isotropic) or kSkyZenithNodes (0°, 3°, … 90°).
     std::size_t sky_nodes() const noexcept { return m_sky_nodes; }
-    /// L_sky(λ) at level `level` and zenith node `node`, W/(cm² sr µm), seen by rays that
-    /// leave the scene upwards from there.
+    /// The sky's part that depends on the zenith alone, at level `level` and zenith node
+    /// `node`, W/(cm² sr µm): L_thermal, plus E_diffuse/π where the sky has no directional
+    /// shape (sky_radiance() adds the shaped part).
     std::span<const double> sky_radiance_w_per_cm2_sr_um(std::size_t level = 0,
                                                          std::size_t node = 0) const noexcept {
         return std::span<const double>(m_sky).subspan((level * m_sky_nodes + node) * m_bands,
@@ -182,6 +196,35 @@ public:
     /// (index 0, fraction 0 for an isotropic sky; the horizon node for a direction at or
     /// below it).
     AltitudeLevel sky_node(double cos_zenith) const noexcept;
+    /// Whether the scattered sky has a directional shape (kSkyZenithNodes ×
+    /// kSkyAzimuthNodesDeg, computed at the lowest level).
+    bool sky_shaped() const noexcept { return m_sky_shape != nullptr; }
+    /// The rows around one sky direction and their weights: the zenith-dependent part (level ×
+    /// zenith), the scattered sky's E_diffuse/π (level) and its shape (zenith × azimuth).
+    struct SkyLookup {
+        std::array<const double*, 4> rows{};
+        std::array<double, 4> row_weights{};
+        std::array<const double*, 2> diffuse{};  ///< null without a shape
+        std::array<double, 2> diffuse_weights{};
+        std::array<const double*, 4> shape{};
+        std::array<double, 4> shape_weights{};
+        /// L_sky at band `b`, W/(cm² sr µm).
+        double at(std::size_t b) const noexcept {
+            double v = row_weights[0] * rows[0][b] + row_weights[1] * rows[1][b] +
+                       row_weights[2] * rows[2][b] + row_weights[3] * rows[3][b];
+            if (diffuse[0] == nullptr) return v;
+            const double d =
+                diffuse_weights[0] * diffuse[0][b] + diffuse_weights[1] * diffuse[1][b];
+            return v + d * (shape_weights[0] * shape[0][b] + shape_weights[1] * shape[1][b] +
+                            shape_weights[2] * shape[2][b] + shape_weights[3] * shape[3][b]);
+        }
+    };
+    /// Where the sky radiance for a ray leaving upwards in unit direction `wi` (scene ENU) from
+    /// height level `at` at `time_s` comes from (the sun's azimuth at that time sets the
+    /// relative azimuth). A direction at or below the horizon reads the horizon.
+    SkyLookup sky_lookup(const Vec3& wi, double time_s, const AltitudeLevel& at) const noexcept;
+    /// L_sky(λ) for `wi` from height `z_m` (scene z) at `time_s`, every band.
+    std::vector<double> sky_radiance(const Vec3& wi, double time_s, double z_m) const;
     /// Whether the sky is black on the whole grid at every level.
     bool sky_black() const noexcept { return m_sky_black; }
     /// Whether the sensor path changes anything (T_v ≠ 1 or L_p ≠ 0 somewhere).
@@ -242,6 +285,10 @@ private:
     std::vector<double> m_sky;  ///< [level][zenith node][band]
     std::size_t m_sky_nodes = 1;
     std::vector<double> m_sky_air_mass;  ///< the Kasten–Young air mass of each zenith node
+    /// [level][band] E_diffuse/π, with a shape.
+    std::vector<double> m_sky_diffuse;
+    /// [zenith node][azimuth node][band], ∫ shape cos dΩ = π per band; empty: isotropic.
+    std::shared_ptr<const std::vector<double>> m_sky_shape;
     bool m_sun_visible = false;
     bool m_sky_black = true;
     bool m_sensor_path = false;

@@ -100,15 +100,13 @@ public:
           sensor_transmittance(bands),
           path_radiance(bands),
           sun_at_height(bands),
-          sky_at_height(bands),
           emission_towards(bands),
           sheets(bands) {}
     std::vector<double> throughput;            ///< of the path so far, per band
     std::vector<double> sensor_transmittance;  ///< T_v(λ): surface → sensor
     std::vector<double> path_radiance;         ///< L_p(λ): the atmosphere's own, at the sensor
-    /// E_sun(λ) and L_sky(λ) at a vertex between two of the environment's levels (grid bands)
+    /// E_sun(λ) at a vertex between two of the environment's levels (grid bands)
     std::vector<double> sun_at_height;
-    std::vector<double> sky_at_height;
     /// ε(λ, θo) B(λ, T) of a material whose emission depends on the direction (grid bands)
     std::vector<double> emission_towards;
     /// The clear sheets' τ(λ) along a shadow ray (grid bands)
