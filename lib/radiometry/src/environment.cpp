@@ -14,6 +14,7 @@
 
 #include "glint/core/error.h"
 #include "glint/radiometry/sampling.h"
+#include "glint/radiometry/view_refraction.h"
 
 namespace glint::radiometry {
 namespace {
@@ -207,6 +208,15 @@ std::shared_ptr<const SensorPathTables> SensorPathCache::find(const Key& key) co
 
 void SensorPathCache::insert(const Key& key, std::shared_ptr<const SensorPathTables> tables) {
     m_tables[key] = std::move(tables);
+}
+
+std::shared_ptr<const ViewRefraction> SensorPathCache::find_view(const ViewKey& key) const {
+    const auto it = m_views.find(key);
+    return it == m_views.end() ? nullptr : it->second;
+}
+
+void SensorPathCache::insert_view(const ViewKey& key, std::shared_ptr<const ViewRefraction> view) {
+    m_views[key] = std::move(view);
 }
 
 std::optional<std::shared_ptr<const std::vector<double>>> SensorPathCache::find_sky(

@@ -3,15 +3,43 @@
 // atmosphere model, and the scene's point sources.
 #include "glint/radiometry/illumination.h"
 
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <optional>
 #include <string>
 #include <utility>
 
 #include "glint/atmosphere/gas_absorption.h"
 #include "glint/atmosphere/lunar.h"
+#include "glint/atmosphere/refraction.h"
 #include "glint/core/text.h"
 #include "glint/motion/scene_instances.h"
 
 namespace glint::radiometry {
+namespace {
+
+/// The apparent direction of a source outside the atmosphere at `true_direction` (scene ENU),
+/// seen from `observer_m` above sea level: raised by the refraction, its azimuth kept; the true
+/// direction for a source below the apparent horizon or overhead.
+Vec3 apparent_direction(const glint::atmosphere::RefractionTracer& tracer, double observer_m,
+                        const Vec3& true_direction) {
+    const double horizontal = std::hypot(true_direction.x, true_direction.y);
+    if (!(horizontal > 0.0)) return true_direction;
+    const double true_zenith_deg =
+        std::atan2(horizontal, true_direction.z) * 180.0 / std::numbers::pi;
+    const std::optional<double> apparent =
+        tracer.apparent_zenith_for_true_deg(observer_m, true_zenith_deg);
+    if (!apparent) return true_direction;
+    const double z = *apparent * std::numbers::pi / 180.0;
+    const double length = norm(true_direction);
+    return Vec3{std::sin(z) * true_direction.x / horizontal,
+                std::sin(z) * true_direction.y / horizontal, std::cos(z)} *
+           length;
+}
+
+}  // namespace
 
 Illumination::Illumination(Illumination&&) noexcept = default;
 Illumination& Illumination::operator=(Illumination&&) noexcept = default;
@@ -35,6 +63,13 @@ Illumination Illumination::make(const model::Atmosphere& atmosphere,
         log.info("Aerosol: " + parametric->aerosol().description());
     }
     light.m_sun = data.sun;
+    if (atmosphere.kind == model::AtmosphereKind::parametric && atmosphere.parametric.refraction &&
+        atmosphere.parametric.profile != model::StandardAtmosphere::isothermal) {
+        light.m_refraction_profile = atmosphere.parametric.profile;
+        log.info(std::string("Refraction: view rays, the sun and the moon bent through the ") +
+                 model::standard_atmosphere(atmosphere.parametric.profile).name +
+                 " profile (Ciddor's index at each spectral state's wavelength)");
+    }
     light.m_frame = frame;
     light.m_source_trajectories =
         motion::make_point_source_trajectories(scene, frame, reference_utc, log);
@@ -64,11 +99,39 @@ Environment Illumination::environment(const SpectralGrid& grid, const CaptureWin
             glint::atmosphere::lunar_irradiance_ratio(moon0.phase_angle_deg, moon0.distance_km);
         env.source_half_angle_rad = glint::atmosphere::lunar_angular_radius_rad(moon0.distance_km);
     }
+    if (m_refraction_profile && grid.size() > 0) {
+        // The sun's or moon's apparent direction, at the grid's middle wavelength (refraction's
+        // dispersion moves a source at 10° elevation by about 1″ across the visible).
+        const glint::atmosphere::RefractionTracer tracer(glint::atmosphere::RefractiveProfile(
+            model::standard_atmosphere(*m_refraction_profile),
+            std::max(grid.wavelength_um(grid.size() / 2), 0.2)));
+        const double observer_m = std::max(m_frame.origin().altitude_m, 0.0);
+        env.sun_direction_begin = apparent_direction(tracer, observer_m, env.sun_direction_begin);
+        env.sun_direction_end = apparent_direction(tracer, observer_m, env.sun_direction_end);
+    }
     env.surface_altitude_m = m_frame.origin().altitude_m;
     env.sensor_altitude_m = m_frame.origin().altitude_m + sensor_z_m;
     env.levels_z_m = std::move(levels_z_m);
     env.threads = threads;
     return Environment::make(grid, *m_model, *m_sun, env, cache);
+}
+
+std::shared_ptr<const ViewRefraction> Illumination::view_refraction(double wavelength_um,
+                                                                    double sensor_z_m,
+                                                                    SensorPathCache* cache) const {
+    if (!m_refraction_profile || !(sensor_z_m >= kMinRefractionHeight_m)) return nullptr;
+    const double ground_m = std::max(m_frame.origin().altitude_m, 0.0);
+    const SensorPathCache::ViewKey key{std::llround(ground_m), std::llround(ground_m + sensor_z_m),
+                                       std::llround(wavelength_um * 1e6)};
+    if (cache != nullptr) {
+        if (auto found = cache->find_view(key)) return found;
+    }
+    const glint::atmosphere::RefractionTracer tracer(glint::atmosphere::RefractiveProfile(
+        model::standard_atmosphere(*m_refraction_profile), static_cast<double>(key[2]) * 1e-6));
+    auto view = std::make_shared<const ViewRefraction>(tracer, static_cast<double>(key[0]),
+                                                       static_cast<double>(key[1]));
+    if (cache != nullptr) cache->insert_view(key, view);
+    return view;
 }
 
 PointLights Illumination::point_lights_at(const model::Scene& scene, const SpectralGrid& grid,

@@ -5,7 +5,9 @@
 #include <chrono>
 #include <cstdio>
 #include <future>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "glint/core/datetime.h"
 #include "glint/core/text.h"
@@ -89,17 +91,22 @@ void store_channels(const FocalPlaneState& state, const SpectralState& spectral,
 
 }  // namespace
 
+double capture_sensor_height_m(const RenderInputs& in, const schedule::Capture& capture,
+                               const schedule::ClockedFocalPlane& source) {
+    const schedule::PluginSchedule& plugin = in.schedule->plugins()[source.plugin];
+    const double mid = 0.5 * (capture.t0_s + capture.t1_s);
+    return plugin.poses->instrument_to_scene(source.instrument_index, mid).translation_m.z;
+}
+
 radiometry::Environment capture_environment(const RenderInputs& in, const SpectralGrid& grid,
                                             const schedule::Capture& capture,
                                             const schedule::ClockedFocalPlane& source,
                                             const scene::GeometryScene& geometry,
                                             radiometry::SensorPathCache& cache, unsigned threads) {
     const schedule::PluginSchedule& plugin = in.schedule->plugins()[source.plugin];
-    const double mid = 0.5 * (capture.t0_s + capture.t1_s);
-    const motion::Rigid pose = plugin.poses->instrument_to_scene(source.instrument_index, mid);
     return in.light->environment(grid, {plugin.tasks.reference, capture.t0_s, capture.t1_s},
-                                 pose.translation_m.z, radiometry::altitude_levels(geometry),
-                                 threads, &cache);
+                                 capture_sensor_height_m(in, capture, source),
+                                 radiometry::altitude_levels(geometry), threads, &cache);
 }
 
 CaptureReport render_capture(const RenderPlan& plan, ImageOutputs& outputs, const PlannedCapture& p,
@@ -128,6 +135,19 @@ CaptureReport render_capture(const RenderPlan& plan, ImageOutputs& outputs, cons
     const sensor::PixelRaySource rays(state.camera, *plugin.poses, source.instrument_index, timing,
                                       state.psf ? &*state.psf : nullptr,
                                       state.mask ? &*state.mask : nullptr);
+    // Refraction: each spectral state's view rays bent at its reference band's wavelength
+    // (a split render's channels each their own; docs/physics.md, "Refraction in the
+    // renderer").
+    const double sensor_z_m = capture_sensor_height_m(in, capture, source);
+    std::vector<std::shared_ptr<const radiometry::ViewRefraction>> views;
+    std::vector<std::unique_ptr<const radiometry::RefractedRaySource>> bent_rays;
+    for (const SpectralState& spectral : state.spectral_states) {
+        views.push_back(in.light->view_refraction(state.grid.wavelength_um(spectral.reference_band),
+                                                  sensor_z_m, &path_cache));
+        bent_rays.push_back(views.back() ? std::make_unique<const radiometry::RefractedRaySource>(
+                                               rays, *views.back())
+                                         : nullptr);
+    }
     radiometry::ProblemBatch batch;
     // The capture's global schedule index: unique per focal plane and capture, so focal
     // planes imaging at the same moment draw independent numbers.
@@ -232,6 +252,9 @@ CaptureReport render_capture(const RenderPlan& plan, ImageOutputs& outputs, cons
         for (std::size_t k = 0; k < state.spectral_states.size(); ++k) {
             const SpectralState& spectral = state.spectral_states[k];
             batch.key.spectral_state = spectral.channel;
+            batch.source = bent_rays[k]
+                               ? static_cast<const radiometry::RaySource*>(bent_rays[k].get())
+                               : &rays;
             batch.reference_band = spectral.reference_band - spectral.bands.first;
             std::optional<sensor::TruthObserver> observer;
             if (!state.truth.empty()) {

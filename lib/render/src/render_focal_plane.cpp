@@ -109,6 +109,7 @@ io::EnviHeader header_of(const schedule::ClockedFocalPlane& source,
     h.set_extra("glint split channels",
                 splits_channels(inputs, plugin.plugin_index, options) ? "true" : "false");
     h.set_extra("glint atmosphere", model::to_string(inputs.atmosphere.kind));
+    h.set_extra("glint refraction", inputs.light && inputs.light->refracts() ? "on" : "off");
     // Which atmosphere: the file that defined it, the option, or glint's default.
     h.set_extra("glint atmosphere source", inputs.atmosphere.source);
     const auto& per_channel = units.description().per_channel_units;

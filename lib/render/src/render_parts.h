@@ -295,6 +295,10 @@ inline std::uint64_t band_bytes(const schedule::ClockedFocalPlane& source,
     return bands_held(source) * per_line * lines * band_values(state) * 8;
 }
 
+/// The height above the scene's origin of a capture's instrument at mid-window, m.
+double capture_sensor_height_m(const RenderInputs& in, const schedule::Capture& capture,
+                               const schedule::ClockedFocalPlane& source);
+
 /// The environment of a capture on `grid` (the sun at both ends of its window seen from the
 /// scene origin, the sensor altitude from the instrument's position at mid-window, the levels
 /// of `geometry`'s surfaces); its sensor-path tables, when not in `cache`, are computed on

@@ -247,6 +247,9 @@ void warn_unused(const YAML::Node& root, const std::string& file,
              "sets only the grey Brutsaert sky of an atmosphere without gas absorption)");
     }
     if (!p.multiple_scattering) warn("ground_albedo", "multiple_scattering is false");
+    if (p.profile == model::StandardAtmosphere::isothermal) {
+        warn("refraction", "profile isothermal has no levels to refract through");
+    }
 }
 
 void read_parametric(const YAML::Node& root, const std::string& file,
@@ -277,6 +280,7 @@ void read_parametric(const YAML::Node& root, const std::string& file,
     read_flag(root, "gas_absorption", file, p.gas_absorption, diagnostics);
     read_flag(root, "multiple_scattering", file, p.multiple_scattering, diagnostics);
     read_flag(root, "directional_sky", file, p.directional_sky, diagnostics);
+    read_flag(root, "refraction", file, p.refraction, diagnostics);
     warn_unused(root, file, p, diagnostics);
 }
 
@@ -334,6 +338,7 @@ model::Atmosphere read_yaml(const std::string& text, const std::filesystem::path
                                        "multiple_scattering",
                                        "ground_albedo",
                                        "directional_sky",
+                                       "refraction",
                                        "aerosol_model",
                                        "visibility_km",
                                        "profile",

@@ -258,6 +258,11 @@ TEST(AtmosphereReader, KeysLeftWithoutEffectAreWarnedAtTheirLine) {
               (V{"e.yaml:3: water_vapor_cm: has no effect: gas_absorption is false",
                  "e.yaml:4: ozone_atm_cm: has no effect: gas_absorption is false",
                  "e.yaml:6: ground_albedo: has no effect: multiple_scattering is false"}));
+    // The isothermal profile has no levels to refract through.
+    EXPECT_EQ(messages_of(dir, "model: parametric\nprofile: isothermal\nrefraction: true\n"),
+              (V{"e.yaml:3: refraction: has no effect: profile isothermal has no levels to "
+                 "refract through"}));
+    EXPECT_EQ(messages_of(dir, "model: parametric\nrefraction: true\n"), V{});
     // The layered aerosol's own keys mean nothing without an aerosol_model.
     EXPECT_EQ(messages_of(dir,
                           "model: parametric\nrelative_humidity_percent: 80\n"

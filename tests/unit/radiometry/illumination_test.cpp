@@ -9,11 +9,13 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "glint/atmosphere/lunar.h"
+#include "glint/atmosphere/refraction.h"
 #include "glint/core/error.h"
 #include "glint/test/captured_log.h"
 #include "glint/test/errors.h"
@@ -76,6 +78,59 @@ TEST(Illumination, ByDayTheSunAtBothEndsOfTheWindow) {
         EXPECT_NEAR(env.sun_irradiance_w_per_cm2_um()[b],
                     1e-3 / (begin.distance_au * begin.distance_au), 1e-12);
     }
+}
+
+// With the parametric atmosphere's refraction the sun's direction is its apparent one (the
+// tracer's inverse refraction from the scene origin, at the grid's middle wavelength: 1e-9
+// in the direction's cosine), raised towards the zenith with its azimuth kept; a sensor above
+// the origin gets view rays bent at the wavelength asked, cached by rounded altitude and
+// wavelength; without refraction (the option off, or the isothermal profile) nothing.
+TEST(Illumination, RefractionRaisesTheSunAndBendsViewRays) {
+    const model::Scene scene;
+    model::Atmosphere air;
+    air.kind = model::AtmosphereKind::parametric;
+    air.parametric.gas_absorption = false;
+    air.parametric.multiple_scattering = false;
+    const Illumination light = Illumination::make(air, tables(), scene, kRochester, DateTime{});
+    ASSERT_TRUE(light.refracts());
+    // Late afternoon: the sun low in the west.
+    const DateTime reference = parse_iso8601("2026-06-21T23:50:00Z");
+    const motion::SunPosition sun = light.sun_at(reference);
+    ASSERT_GT(sun.zenith_deg, 80.0);
+    ASSERT_LT(sun.zenith_deg, 89.0);
+    const Environment env = light.environment(kGrid, {reference, 0.0, 0.0}, 1000.0, {}, 1, nullptr);
+    const Vec3 apparent = env.sun_direction(0.0);
+    const glint::atmosphere::RefractionTracer tracer(glint::atmosphere::RefractiveProfile(
+        model::standard_atmosphere(model::StandardAtmosphere::us_standard_1976), 0.55));
+    const double expected_zenith = *tracer.apparent_zenith_for_true_deg(0.0, sun.zenith_deg);
+    EXPECT_NEAR(std::acos(apparent.z) * 180.0 / kPi, expected_zenith, 1e-6);
+    EXPECT_GT(sun.zenith_deg - expected_zenith, 0.05);  // several arcminutes near the horizon
+    EXPECT_NEAR(std::atan2(apparent.x, apparent.y),
+                std::atan2(sun.direction_enu.x, sun.direction_enu.y), 1e-12);
+
+    radiometry::SensorPathCache cache;
+    const auto blue = light.view_refraction(0.45, 20'000.0, &cache);
+    ASSERT_NE(blue, nullptr);
+    EXPECT_DOUBLE_EQ(blue->wavelength_um(), 0.45);
+    EXPECT_GT(blue->displacement_m(70.0), 10.0);
+    EXPECT_EQ(light.view_refraction(0.45, 20'000.2, &cache), blue);  // the same rounded key
+    const auto nir = light.view_refraction(0.90, 20'000.0, &cache);
+    EXPECT_LT(nir->displacement_m(70.0), blue->displacement_m(70.0));
+    EXPECT_EQ(light.view_refraction(0.45, 0.5, &cache), nullptr);  // on the ground: straight
+
+    model::Atmosphere straight = air;
+    straight.parametric.refraction = false;
+    const Illumination off = Illumination::make(straight, tables(), scene, kRochester, DateTime{});
+    EXPECT_FALSE(off.refracts());
+    EXPECT_EQ(off.view_refraction(0.45, 20'000.0, nullptr), nullptr);
+    EXPECT_NEAR(motion::dot(off.environment(kGrid, {reference, 0.0, 0.0}, 1000.0, {}, 1, nullptr)
+                                .sun_direction(0.0),
+                            sun.direction_enu),
+                1.0, 1e-12);
+    model::Atmosphere isothermal = air;
+    isothermal.parametric.profile = model::StandardAtmosphere::isothermal;
+    EXPECT_FALSE(
+        Illumination::make(isothermal, tables(), scene, kRochester, DateTime{}).refracts());
 }
 
 TEST(Illumination, ByNightTheMoon) {

@@ -63,6 +63,10 @@ struct ParametricAtmosphere {
     /// The scattered sky's radiance by direction (its aureole around the sun, its horizon),
     /// normalised to the diffuse irradiance; false: that irradiance / π from every direction.
     bool directional_sky = true;
+    /// Refraction through the profile's refractive index (Ciddor's, at each spectral state's
+    /// wavelength): view rays from above the scene and the sun's and moon's apparent
+    /// directions. Without effect for the isothermal profile (it has no levels).
+    bool refraction = true;
 
     /// The boundary layer's aerosol type (glint/model/aerosol_models.h): LOWTRAN 7's layered
     /// profiles with OPAC's optics. Empty: the exponential aerosol of the five aerosol_ keys

@@ -42,6 +42,8 @@ namespace glint::radiometry {
 
 using motion::Vec3;
 
+class ViewRefraction;  // glint/radiometry/view_refraction.h
+
 /// The sensor-path tables of one geometry (shared between captures with the same rounded
 /// geometry).
 struct SensorPathTables {
@@ -75,8 +77,15 @@ public:
     std::optional<std::shared_ptr<const std::vector<double>>> find_sky(const Key& key) const;
     void insert_sky(const Key& key, std::shared_ptr<const std::vector<double>> shape);
 
+    /// Refracted view-ray tables (glint/radiometry/view_refraction.h), by ground and sensor
+    /// altitude (m) and wavelength (pm), all rounded.
+    using ViewKey = std::array<long long, 3>;
+    std::shared_ptr<const ViewRefraction> find_view(const ViewKey& key) const;
+    void insert_view(const ViewKey& key, std::shared_ptr<const ViewRefraction> view);
+
 private:
     std::map<Key, std::shared_ptr<const SensorPathTables>> m_tables;
+    std::map<ViewKey, std::shared_ptr<const ViewRefraction>> m_views;
     std::map<Key, std::shared_ptr<const std::vector<double>>> m_skies;
 };
 

@@ -26,6 +26,7 @@
 #include "glint/motion/trajectory.h"
 #include "glint/radiometry/environment.h"
 #include "glint/radiometry/point_lights.h"
+#include "glint/radiometry/view_refraction.h"
 #include "glint/scene/geometry_scene.h"
 
 namespace glint::radiometry {
@@ -59,6 +60,18 @@ public:
     Environment environment(const SpectralGrid& grid, const CaptureWindow& window,
                             double sensor_z_m, std::vector<double> levels_z_m, unsigned threads,
                             SensorPathCache* cache) const;
+
+    /// The refracted view rays of a sensor `sensor_z_m` above the scene's origin at
+    /// `wavelength_um` (docs/physics.md, "Refraction in the renderer"), from the sensor's
+    /// altitude rounded to 1 m (taken from / stored in `cache` when given); null without
+    /// refraction (the parametric model's `refraction`, with a profile that has levels) or
+    /// with the sensor less than kMinRefractionHeight_m above the origin.
+    std::shared_ptr<const ViewRefraction> view_refraction(double wavelength_um, double sensor_z_m,
+                                                          SensorPathCache* cache) const;
+    /// Whether the atmosphere refracts (view rays, the sun and the moon).
+    bool refracts() const noexcept { return m_refraction_profile.has_value(); }
+    /// The lowest sensor height above the scene's origin whose view rays are bent, m.
+    static constexpr double kMinRefractionHeight_m = 1.0;
 
     /// The point sources of `scene` (the scene it was made for) on `grid` at `t_s` (a capture's
     /// mid-window time): each one's material intensity resampled on the grid (0 outside the
@@ -95,6 +108,8 @@ private:
     ErrorContext m_atmosphere_where;
     std::unique_ptr<glint::atmosphere::AtmosphereModel> m_model;
     std::shared_ptr<const glint::atmosphere::SolarSpectrum> m_sun;
+    /// The profile refraction follows, when the atmosphere refracts.
+    std::optional<model::StandardAtmosphere> m_refraction_profile;
     motion::SceneFrame m_frame;
     /// Indexed like the scene's point sources; nullptr for static ones.
     std::vector<std::unique_ptr<motion::Trajectory>> m_source_trajectories;
