@@ -106,8 +106,13 @@ Environment Illumination::environment(const SpectralGrid& grid, const CaptureWin
             model::standard_atmosphere(*m_refraction_profile),
             std::max(grid.wavelength_um(grid.size() / 2), 0.2)));
         const double observer_m = std::max(m_frame.origin().altitude_m, 0.0);
+        const bool still = env.sun_direction_begin.x == env.sun_direction_end.x &&
+                           env.sun_direction_begin.y == env.sun_direction_end.y &&
+                           env.sun_direction_begin.z == env.sun_direction_end.z;
         env.sun_direction_begin = apparent_direction(tracer, observer_m, env.sun_direction_begin);
-        env.sun_direction_end = apparent_direction(tracer, observer_m, env.sun_direction_end);
+        env.sun_direction_end = still
+                                    ? env.sun_direction_begin
+                                    : apparent_direction(tracer, observer_m, env.sun_direction_end);
     }
     env.surface_altitude_m = m_frame.origin().altitude_m;
     env.sensor_altitude_m = m_frame.origin().altitude_m + sensor_z_m;

@@ -229,6 +229,7 @@ TEST(AtmosphereReader, GasAndScatteringKeys) {
     EXPECT_FALSE(off.parametric.multiple_scattering);
     EXPECT_FALSE(off.parametric.directional_sky);
     EXPECT_TRUE(a.parametric.directional_sky);
+    EXPECT_TRUE(a.parametric.refraction);
     // Defaults: gases and multiple scattering on, a mid-latitude summer column, albedo 0.2.
     const model::ParametricAtmosphere defaults;
     EXPECT_TRUE(defaults.gas_absorption);
@@ -242,6 +243,8 @@ TEST(AtmosphereReader, GasAndScatteringKeys) {
               V{"e.yaml:2: gas_absorption: expected true or false"});
     EXPECT_EQ(messages_of(dir, "model: parametric\ndirectional_sky: 3\n"),
               V{"e.yaml:2: directional_sky: expected true or false"});
+    EXPECT_EQ(messages_of(dir, "model: parametric\nrefraction: sometimes\n"),
+              V{"e.yaml:2: refraction: expected true or false"});
     EXPECT_EQ(messages_of(dir, "model: parametric\nwater_vapor_cm: -1\n"),
               V{"e.yaml:2: water_vapor_cm: value -1 out of range, expected a number >= 0"});
     EXPECT_EQ(messages_of(dir, "model: parametric\nground_albedo: 1.5\n"),
