@@ -4,7 +4,7 @@
 # (data/atmosphere/aerosol_size_distributions.csv, aerosol_refractive_indices.csv) through
 # glint's Mie code, averaged over each size distribution (tests/tools/aerosol_tables.cpp;
 # docs/physics.md, "Aerosol optics"). Builds the generator in the release preset's tree
-# first. Takes a few minutes on 2 cores (the coarse sea salt at short wavelengths dominates).
+# first. Takes 12-17 minutes on 2 cores (the coarse sea salt at short wavelengths dominates).
 # Usage: scripts/make-aerosol-tables.sh
 set -eu
 root=$(cd "$(dirname "$0")/.." && pwd)

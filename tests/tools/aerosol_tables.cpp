@@ -2,9 +2,10 @@
 // Writes data/atmosphere/aerosol_optics.csv: for every OPAC aerosol component and humidity of
 // data/atmosphere/aerosol_size_distributions.csv, at every wavelength of
 // data/atmosphere/aerosol_refractive_indices.csv up to 20 µm, the size-averaged Mie optics of
-// glint/atmosphere/aerosol_optics.h (cross sections, asymmetry, 32 Legendre moments, the phase
-// function at 50 angles). scripts/make-aerosol-tables.sh runs it over everything (a few
-// minutes on 2 cores); the test data/aerosol-tables reruns a few rows and compares.
+// glint/atmosphere/aerosol_optics.h (cross sections, asymmetry, mean particle mass, 32
+// Legendre moments, the phase function at 50 angles). scripts/make-aerosol-tables.sh runs it
+// over everything (12-17 minutes on 2 cores); the test data/aerosol-tables reruns a few rows
+// and compares.
 // Usage: aerosol_tables DATA_DIR OUT.csv [COMPONENT:RH ...] [--wavelengths W1,W2,...]
 #include <cstdio>
 #include <exception>
@@ -69,6 +70,7 @@ struct Task {
     int rh = 0;
     double wavelength_um = 0.0;
     LogNormalSizes sizes;
+    double density_g_per_cm3 = 0.0;
     double n = 0.0, k = 0.0;
 };
 
@@ -84,6 +86,8 @@ std::string format_row(const Task& t, const glint::atmosphere::ParticleOptics& o
     add("%.6g", o.extinction_um2);
     add("%.6g", o.scattering_um2);
     add("%.6g", o.asymmetry);
+    // The mean mass of one particle: its mean volume (µm³ = 1e-12 cm³) × its density.
+    add("%.6g", glint::atmosphere::mean_particle_volume_um3(t.sizes) * 1e-12 * t.density_g_per_cm3);
     for (int l = 1; l < kMoments; ++l) add("%.6g", o.legendre[static_cast<std::size_t>(l)]);
     for (double p : o.phase) add("%.6g", p);
     return line;
@@ -118,12 +122,13 @@ int main(int argc, char** argv) {
         }
         const std::string size_path = data + "/atmosphere/aerosol_size_distributions.csv";
         const std::string index_path = data + "/atmosphere/aerosol_refractive_indices.csv";
-        std::map<std::pair<std::string, int>, LogNormalSizes> sizes;
+        std::map<std::pair<std::string, int>, std::pair<LogNormalSizes, double>> sizes;
         for (const auto& r : rows(size_path)) {
             if (r.size() != 7) throw glint::input_error("expected 7 columns", {size_path, 0, {}});
-            sizes[{r[0], static_cast<int>(number(r[1], size_path))}] =
+            sizes[{r[0], static_cast<int>(number(r[1], size_path))}] = {
                 LogNormalSizes{number(r[4], size_path), number(r[5], size_path),
-                               number(r[2], size_path), number(r[3], size_path)};
+                               number(r[2], size_path), number(r[3], size_path)},
+                number(r[6], size_path)};
         }
         std::vector<Task> tasks;
         for (const auto& r : rows(index_path)) {
@@ -139,7 +144,8 @@ int main(int argc, char** argv) {
                 throw glint::input_error("no size distribution for " + t.component + " " + r[1],
                                          {index_path, 0, {}});
             }
-            t.sizes = found->second;
+            t.sizes = found->second.first;
+            t.density_g_per_cm3 = found->second.second;
             if (t.wavelength_um > kLongestUm + 1e-9) continue;
             if (!only.empty() && !only.contains({t.component, t.rh})) continue;
             if (!wavelengths.empty()) {
@@ -197,8 +203,12 @@ int main(int argc, char** argv) {
                "particle per\n"
                "# cm^3 gives 1e-3 of them per km); chi_l: Legendre moments of the phase function\n"
                "# (chi_0 = 1); p_A: the phase function at scattering angle A degrees, int P "
-               "dOmega/4pi = 1.\n";
-        out << "component,rh_percent,wavelength_um,extinction_um2,scattering_um2,asymmetry";
+               "dOmega/4pi = 1.\n"
+               "# particle_mass_g: the mean mass of one particle as grown at that humidity (its "
+               "mean volume\n"
+               "# over the size distribution's bounds times the wet density), g.\n";
+        out << "component,rh_percent,wavelength_um,extinction_um2,scattering_um2,asymmetry,"
+               "particle_mass_g";
         for (int l = 1; l < kMoments; ++l) out << ",chi_" << l;
         for (double a : kAngles) {
             char buf[16];

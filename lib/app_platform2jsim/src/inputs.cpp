@@ -116,7 +116,15 @@ std::string describe(const model::Atmosphere& atmosphere) {
         case model::AtmosphereKind::parametric: {
             const model::ParametricAtmosphere& p = atmosphere.parametric;
             const std::string aerosol =
-                p.aerosol_model.empty()
+                p.aerosol_profile
+                    ? "aerosol profile (" + std::to_string(p.aerosol_profile->densities.size()) +
+                          " layers" +
+                          (p.aerosol_column_depth_550
+                               ? ", optical depth " + format_shortest(*p.aerosol_column_depth_550) +
+                                     " at 0.55 um"
+                               : std::string()) +
+                          ")"
+                : p.aerosol_model.empty()
                     ? "aerosol optical depth " + format_shortest(p.aerosol_optical_depth_550) +
                           " at 0.55 um"
                     : "aerosol " + p.aerosol_model + " (LOWTRAN 7 layers, " +

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
+#include <span>
 #include <string>
 
 #include "atmosphere_detail.h"
@@ -28,14 +30,31 @@ double saturation_hpa(double temperature_k) {
     return 6.1121 * std::exp((18.678 - t / 234.5) * (t / (257.14 + t)));
 }
 
-/// The relative humidity at the first level of a standard profile, %: its water density as a
-/// vapour pressure (ρ R_v T) over the saturation pressure at its temperature.
-double sea_level_humidity_percent(const model::StandardAtmosphereProfile& profile) {
-    if (profile.levels.empty()) return 70.0;
-    const model::AtmosphereLevel& l = profile.levels.front();
+/// The humidity glint takes for an atmosphere without levels (the isothermal profile), %.
+constexpr double kLevellessHumidityPercent = 70.0;
+
+/// The relative humidity of a standard profile at `altitude_km`, %: its water density as a
+/// vapour pressure (ρ R_v T) over the saturation pressure at its temperature, the temperature
+/// linear and the water density exponential between the profile's levels (held beyond them).
+double profile_humidity_percent(const model::StandardAtmosphereProfile& profile,
+                                double altitude_km) {
+    const auto& levels = profile.levels;
+    if (levels.empty()) return kLevellessHumidityPercent;
+    const double z = std::clamp(altitude_km, levels.front().altitude_km, levels.back().altitude_km);
+    std::size_t i = 0;
+    while (i + 2 < levels.size() && levels[i + 1].altitude_km < z) ++i;
+    const model::AtmosphereLevel& a = levels[i];
+    const model::AtmosphereLevel& b = levels[std::min(i + 1, levels.size() - 1)];
+    const double t =
+        b.altitude_km > a.altitude_km ? (z - a.altitude_km) / (b.altitude_km - a.altitude_km) : 0.0;
+    const double temperature_k = a.temperature_k + t * (b.temperature_k - a.temperature_k);
+    const double water_g_per_m3 =
+        a.water_g_per_m3 > 0.0 && b.water_g_per_m3 > 0.0
+            ? a.water_g_per_m3 * std::pow(b.water_g_per_m3 / a.water_g_per_m3, t)
+            : a.water_g_per_m3 + t * (b.water_g_per_m3 - a.water_g_per_m3);
     constexpr double kWaterGasConstant = 461.5;  // J/(kg K)
-    const double vapour_hpa = l.water_g_per_m3 * 1e-3 * kWaterGasConstant * l.temperature_k / 100.0;
-    return std::clamp(100.0 * vapour_hpa / saturation_hpa(l.temperature_k), 0.0, 100.0);
+    const double vapour_hpa = water_g_per_m3 * 1e-3 * kWaterGasConstant * temperature_k / 100.0;
+    return std::clamp(100.0 * vapour_hpa / saturation_hpa(temperature_k), 0.0, 100.0);
 }
 
 /// ln-λ interpolation weights of `wavelength_um` on the increasing `grid`.
@@ -98,35 +117,71 @@ struct AerosolColumn::Regime {
         const auto [k, t] = bracket(wavelengths_um, wavelength_um);
         return t == 0.0 ? sampled[k] : interpolate(sampled[k], sampled[k + 1], t, true);
     }
+
+    /// The depths above each level, once the levels and extinctions are set.
+    void integrate() {
+        depth_above.assign(levels_m.size(), 0.0);
+        for (std::size_t k = levels_m.size() - 1; k-- > 0;) {
+            depth_above[k] = depth_above[k + 1] + segment_depth(k, levels_m[k]);
+        }
+    }
+
+    /// The optics of the mixture `shares` at `rh_percent`, at the table's wavelengths.
+    void sample(const AerosolTable& table, std::span<const MixtureShare> shares,
+                double rh_percent) {
+        wavelengths_um = table.wavelengths_um(shares.front().component);
+        for (double w : wavelengths_um) sampled.push_back(table.mixture(shares, w, rh_percent));
+        reference_extinction_um2 = table.mixture(shares, kReferenceUm, rh_percent).extinction_um2;
+        for (double a : table.angles_deg()) angles_rad.push_back(a * kPi / 180.0);
+    }
 };
+
+namespace {
+
+void require_table(const std::shared_ptr<const AerosolTable>& table, const std::string& key) {
+    if (!table) {
+        throw input_error(key + " needs the aerosol optics table (" + AerosolTable::kRelativePath +
+                          " in glint's data folder)");
+    }
+}
+
+}  // namespace
 
 AerosolColumn::AerosolColumn(const model::ParametricAtmosphere& p,
                              std::shared_ptr<const AerosolTable> table) {
-    if (p.aerosol_model.empty()) {
-        auto r = std::make_shared<Regime>();
-        r->scale_height_m = p.aerosol_scale_height_m;
-        r->sea_level_depth = p.aerosol_optical_depth_550;
-        r->henyey_greenstein = true;
-        r->angstrom = p.angstrom_exponent;
-        r->asymmetry = p.aerosol_asymmetry;
-        r->albedo = p.aerosol_single_scatter_albedo;
-        m_regimes.push_back(std::move(r));
-        m_description = "exponential: tau550 " + format_shortest(p.aerosol_optical_depth_550) +
-                        ", scale height " + format_shortest(p.aerosol_scale_height_m) +
-                        " m, Angstrom " + format_shortest(p.angstrom_exponent) +
-                        ", Henyey-Greenstein g " + format_shortest(p.aerosol_asymmetry) +
-                        ", albedo " + format_shortest(p.aerosol_single_scatter_albedo);
-        return;
+    if (p.aerosol_profile) {
+        add_profile_layers(p, table);
+    } else if (p.aerosol_model.empty()) {
+        add_exponential(p);
+    } else {
+        add_lowtran_layers(p, table);
     }
-    if (!table) {
-        throw input_error(std::string("aerosol_model needs the aerosol optics table (") +
-                          AerosolTable::kRelativePath + " in glint's data folder)");
-    }
+}
+
+void AerosolColumn::add_exponential(const model::ParametricAtmosphere& p) {
+    auto r = std::make_shared<Regime>();
+    r->scale_height_m = p.aerosol_scale_height_m;
+    r->sea_level_depth = p.aerosol_optical_depth_550;
+    r->henyey_greenstein = true;
+    r->angstrom = p.angstrom_exponent;
+    r->asymmetry = p.aerosol_asymmetry;
+    r->albedo = p.aerosol_single_scatter_albedo;
+    m_regimes.push_back(std::move(r));
+    m_description = "exponential: tau550 " + format_shortest(p.aerosol_optical_depth_550) +
+                    ", scale height " + format_shortest(p.aerosol_scale_height_m) +
+                    " m, Angstrom " + format_shortest(p.angstrom_exponent) +
+                    ", Henyey-Greenstein g " + format_shortest(p.aerosol_asymmetry) + ", albedo " +
+                    format_shortest(p.aerosol_single_scatter_albedo);
+}
+
+void AerosolColumn::add_lowtran_layers(const model::ParametricAtmosphere& p,
+                                       const std::shared_ptr<const AerosolTable>& table) {
+    require_table(table, "aerosol_model");
     if (!(p.visibility_km > 0.0) || !std::isfinite(p.visibility_km)) {
         throw input_error("visibility_km must be > 0, got " + format_shortest(p.visibility_km));
     }
     const model::StandardAtmosphereProfile& profile = model::standard_atmosphere(p.profile);
-    const double rh = p.relative_humidity_percent.value_or(sea_level_humidity_percent(profile));
+    const double rh = p.relative_humidity_percent.value_or(profile_humidity_percent(profile, 0.0));
     if (!(rh >= 0.0 && rh <= 100.0)) {
         throw input_error("relative_humidity_percent must lie in [0, 100], got " +
                           format_shortest(rh));
@@ -174,40 +229,18 @@ AerosolColumn::AerosolColumn(const model::ParametricAtmosphere& p,
                 r->extinction_per_m.push_back(total[k]);
             }
         }
-        r->depth_above.assign(r->levels_m.size(), 0.0);
-        for (std::size_t k = r->levels_m.size() - 1; k-- > 0;) {
-            r->depth_above[k] = r->depth_above[k + 1] + r->segment_depth(k, r->levels_m[k]);
-        }
+        r->integrate();
         // Optics at the table's wavelengths.
         std::vector<MixtureShare> shares;
         for (const model::AerosolComponentNumber& c : mixture->components) {
             shares.push_back({c.component, c.number_per_cm3});
         }
-        const double humidity = mixture->humidity_growth ? rh : 0.0;
-        r->wavelengths_um = table->wavelengths_um(mixture->components.front().component);
-        for (double w : r->wavelengths_um) {
-            r->sampled.push_back(table->mixture(shares, w, humidity));
-        }
-        r->reference_extinction_um2 = table->mixture(shares, kReferenceUm, humidity).extinction_um2;
-        for (double a : table->angles_deg()) r->angles_rad.push_back(a * kPi / 180.0);
+        r->sample(*table, shares, mixture->humidity_growth ? rh : 0.0);
         column += r->depth_above.front();
         described.push_back(std::string(layer.key) + " " + layer.type);
         m_regimes.push_back(std::move(r));
     }
-    if (p.aerosol_column_depth_550) {
-        const double wanted = *p.aerosol_column_depth_550;
-        if (!(wanted >= 0.0) || !std::isfinite(wanted)) {
-            throw input_error("aerosol_optical_depth_550 must be >= 0");
-        }
-        const double scale = column > 0.0 ? wanted / column : 0.0;
-        for (auto& regime : m_regimes) {
-            auto r = std::make_shared<Regime>(*regime);
-            for (double& b : r->extinction_per_m) b *= scale;
-            for (double& d : r->depth_above) d *= scale;
-            regime = std::move(r);
-        }
-        column = wanted;
-    }
+    column = scale_to(p.aerosol_column_depth_550, column);
     m_description = "layered (LOWTRAN 7 profiles, OPAC optics): ";
     for (std::size_t i = 0; i < described.size(); ++i) {
         m_description += (i ? ", " : "") + described[i];
@@ -217,6 +250,90 @@ AerosolColumn::AerosolColumn(const model::ParametricAtmosphere& p,
         format_shortest(std::round(rh * 10.0) / 10.0) + " %, " +
         (season == model::AerosolSeason::fall_winter ? "fall-winter" : "spring-summer") +
         ", tau550 " + format_shortest(std::round(column * 1e4) / 1e4);
+}
+
+void AerosolColumn::add_profile_layers(const model::ParametricAtmosphere& p,
+                                       const std::shared_ptr<const AerosolTable>& table) {
+    require_table(table, "aerosol_profile");
+    const model::AerosolProfile& profile = *p.aerosol_profile;
+    const model::StandardAtmosphereProfile& air = model::standard_atmosphere(p.profile);
+    const ErrorContext& where = profile.where;
+    for (const std::string& c : profile.components) {
+        if (!table->has(c)) {
+            throw input_error("the aerosol optics table has no component '" + c + "'", where);
+        }
+    }
+    if (profile.altitudes_km.size() != profile.densities.size() + 1) {
+        throw input_error("an aerosol profile needs one row of densities per layer", where);
+    }
+    double column = 0.0;
+    double rh_low = 100.0, rh_high = 0.0;
+    for (std::size_t i = 0; i < profile.densities.size(); ++i) {
+        const std::vector<double>& densities = profile.densities[i];
+        if (densities.size() != profile.components.size()) {
+            throw input_error("an aerosol profile's rows need one density per component", where);
+        }
+        const double bottom_km = profile.altitudes_km[i];
+        const double top_km = profile.altitudes_km[i + 1];
+        // The layer's humidity: the user's for every layer, or the air's at its middle.
+        const double rh = p.relative_humidity_percent.value_or(
+            profile_humidity_percent(air, 0.5 * (bottom_km + top_km)));
+        // Particle numbers: as given, or the masses over one particle's mass as weighed.
+        std::vector<MixtureShare> shares;
+        for (std::size_t c = 0; c < densities.size(); ++c) {
+            if (!(densities[c] > 0.0)) continue;
+            double number_per_cm3 = densities[c];
+            if (profile.mass_densities) {
+                const double weighed_rh = profile.mass_humidity_percent.value_or(rh);
+                const double mass_g =
+                    table->optics(profile.components[c], kReferenceUm, weighed_rh).particle_mass_g;
+                number_per_cm3 = densities[c] / mass_g * 1e-6;  // g/m³ ÷ g → 1/m³ → 1/cm³
+            }
+            shares.push_back({profile.components[c], number_per_cm3});
+        }
+        if (shares.empty()) continue;
+        auto r = std::make_shared<Regime>();
+        r->sample(*table, shares, rh);
+        double number = 0.0;
+        for (const MixtureShare& s : shares) number += s.number_per_cm3;
+        // n [1/cm³] × σ [µm²] = 1e-8 cm⁻¹ = 1e-6 m⁻¹, the same throughout the layer.
+        const double extinction_per_m = number * r->reference_extinction_um2 * 1e-6;
+        r->levels_m = {bottom_km * 1000.0, top_km * 1000.0};
+        r->extinction_per_m = {extinction_per_m, extinction_per_m};
+        r->integrate();
+        column += r->depth_above.front();
+        rh_low = std::min(rh_low, rh);
+        rh_high = std::max(rh_high, rh);
+        m_regimes.push_back(std::move(r));
+    }
+    column = scale_to(p.aerosol_column_depth_550, column);
+    std::string components;
+    for (const std::string& c : profile.components) {
+        components += (components.empty() ? "" : ", ") + c;
+    }
+    const auto percent = [](double v) { return format_shortest(std::round(v * 10.0) / 10.0); };
+    m_description =
+        "profile: " + std::to_string(profile.densities.size()) + " layers of " + components + " (" +
+        (profile.mass_densities ? std::string("g/m^3") : std::string("1/cm^3")) + "), humidity " +
+        (m_regimes.empty()   ? std::string("-")
+         : rh_low == rh_high ? percent(rh_low) + " %"
+                             : percent(rh_low) + "-" + percent(rh_high) + " %") +
+        ", tau550 " + format_shortest(std::round(column * 1e4) / 1e4);
+}
+
+double AerosolColumn::scale_to(const std::optional<double>& wanted, double column) {
+    if (!wanted) return column;
+    if (!(*wanted >= 0.0) || !std::isfinite(*wanted)) {
+        throw input_error("aerosol_optical_depth_550 must be >= 0");
+    }
+    const double scale = column > 0.0 ? *wanted / column : 0.0;
+    for (auto& regime : m_regimes) {
+        auto r = std::make_shared<Regime>(*regime);
+        for (double& b : r->extinction_per_m) b *= scale;
+        for (double& d : r->depth_above) d *= scale;
+        regime = std::move(r);
+    }
+    return *wanted;
 }
 
 double AerosolColumn::depth_550_above(std::size_t j, double altitude_m) const noexcept {

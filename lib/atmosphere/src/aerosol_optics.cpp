@@ -45,8 +45,7 @@ std::vector<double> fine_angles_deg() {
 /// unconverged (±3 % between steps).
 double log_radius_step(double x) { return std::clamp(0.1 / x, 0.001, 0.01); }
 
-void check_input(const LogNormalSizes& sizes, double wavelength_um,
-                 std::span<const double> angles_deg, int legendre_count) {
+void check_sizes(const LogNormalSizes& sizes) {
     auto bad = [](const std::string& what) { throw input_error("aerosol optics: " + what); };
     if (!(sizes.sigma > 1.0) || !std::isfinite(sizes.sigma)) {
         bad("the size distribution's sigma must be a number > 1, got " +
@@ -60,6 +59,12 @@ void check_input(const LogNormalSizes& sizes, double wavelength_um,
         bad("the radii must satisfy 0 < min < max, got " + std::to_string(sizes.min_radius_um) +
             " and " + std::to_string(sizes.max_radius_um) + " um");
     }
+}
+
+void check_input(const LogNormalSizes& sizes, double wavelength_um,
+                 std::span<const double> angles_deg, int legendre_count) {
+    auto bad = [](const std::string& what) { throw input_error("aerosol optics: " + what); };
+    check_sizes(sizes);
     if (!(wavelength_um > 0.0) || !std::isfinite(wavelength_um)) {
         bad("the wavelength must be > 0 um, got " + std::to_string(wavelength_um));
     }
@@ -197,6 +202,21 @@ ParticleOptics size_averaged_optics(const LogNormalSizes& sizes, std::complex<do
         }
     }
     return out;
+}
+
+double mean_particle_volume_um3(const LogNormalSizes& sizes) {
+    check_sizes(sizes);
+    // ∫ (4π/3) r³ dN/d ln r d ln r over the bounds for N = 1: the lognormal's third moment
+    // r_mod³ exp(9/2 ln²σ) times the share of a normal distribution of ln r centred on
+    // ln r_mod + 3 ln²σ that lies between the bounds.
+    const double s = std::log(sizes.sigma);
+    const double centre = std::log(sizes.mode_radius_um) + 3.0 * s * s;
+    auto cdf = [&](double r) {
+        return 0.5 * std::erfc(-(std::log(r) - centre) / (s * std::numbers::sqrt2));
+    };
+    const double moment = std::pow(sizes.mode_radius_um, 3.0) * std::exp(4.5 * s * s);
+    return 4.0 / 3.0 * std::numbers::pi * moment *
+           (cdf(sizes.max_radius_um) - cdf(sizes.min_radius_um));
 }
 
 }  // namespace glint::atmosphere

@@ -13,7 +13,7 @@ namespace glint::atmosphere {
 
 namespace {
 
-constexpr std::size_t kLeadingColumns = 6;  // component … asymmetry
+constexpr std::size_t kLeadingColumns = 7;  // component … particle_mass_g
 
 /// a + t (b − a) for every element.
 void blend(std::vector<double>& a, const std::vector<double>& b, double t) {
@@ -33,6 +33,7 @@ ComponentOptics interpolate(const ComponentOptics& a, const ComponentOptics& b, 
         return x + t * (y - x);
     };
     out.extinction_um2 = mix(a.extinction_um2, b.extinction_um2);
+    out.particle_mass_g = a.particle_mass_g + t * (b.particle_mass_g - a.particle_mass_g);
     out.scattering_um2 = std::min(mix(a.scattering_um2, b.scattering_um2), out.extinction_um2);
     blend(out.moments, b.moments, t);
     blend(out.phase, b.phase, t);
@@ -50,8 +51,12 @@ AerosolTable AerosolTable::from_csv(const std::string& text, const std::string& 
         const ErrorContext where{file, line_number, {}};
         const std::vector<std::string> fields = split_list(line, ',');
         if (!header) {
-            if (fields.size() < kLeadingColumns || fields[0] != "component") {
-                throw input_error("expected the header line component,rh_percent,...", where);
+            if (fields.size() < kLeadingColumns || fields[0] != "component" ||
+                fields[kLeadingColumns - 1] != "particle_mass_g") {
+                throw input_error(
+                    "expected the header line component,rh_percent,wavelength_um,"
+                    "extinction_um2,scattering_um2,asymmetry,particle_mass_g,...",
+                    where);
             }
             for (std::size_t i = kLeadingColumns; i < fields.size(); ++i) {
                 if (fields[i].starts_with("chi_")) {
@@ -105,11 +110,15 @@ AerosolTable AerosolTable::from_csv(const std::string& text, const std::string& 
             row.optics.scattering_um2 > row.optics.extinction_um2 * (1.0 + 1e-9)) {
             throw input_error("expected a wavelength > 0 and 0 <= scattering <= extinction", where);
         }
+        row.optics.particle_mass_g = values[5];
+        if (!(row.optics.particle_mass_g > 0.0)) {
+            throw input_error("expected a particle mass > 0 g", where);
+        }
+        const auto first_moment = values.begin() + static_cast<std::ptrdiff_t>(kLeadingColumns - 1);
         row.optics.moments.push_back(1.0);
-        row.optics.moments.insert(row.optics.moments.end(), values.begin() + 5,
-                                  values.begin() + 5 + static_cast<std::ptrdiff_t>(moments));
-        row.optics.phase.assign(values.begin() + 5 + static_cast<std::ptrdiff_t>(moments),
-                                values.end());
+        row.optics.moments.insert(row.optics.moments.end(), first_moment,
+                                  first_moment + static_cast<std::ptrdiff_t>(moments));
+        row.optics.phase.assign(first_moment + static_cast<std::ptrdiff_t>(moments), values.end());
         for (double p : row.optics.phase) {
             if (p <= 0.0) throw input_error("phase-function values must be > 0", where);
         }
@@ -202,6 +211,7 @@ ComponentOptics AerosolTable::mixture(std::span<const MixtureShare> shares, doub
         const double f = s.number_per_cm3 / total;
         out.extinction_um2 += f * c.extinction_um2;
         out.scattering_um2 += f * c.scattering_um2;
+        out.particle_mass_g += f * c.particle_mass_g;
         for (std::size_t l = 0; l < m_moment_count; ++l) {
             out.moments[l] += f * c.scattering_um2 * c.moments[l];
         }

@@ -94,7 +94,8 @@ bool needs_gas_table(const model::Atmosphere& atmosphere) {
 
 bool needs_aerosol_table(const model::Atmosphere& atmosphere) {
     return atmosphere.kind == model::AtmosphereKind::parametric &&
-           !atmosphere.parametric.aerosol_model.empty();
+           (!atmosphere.parametric.aerosol_model.empty() ||
+            atmosphere.parametric.aerosol_profile.has_value());
 }
 
 }  // namespace glint::atmosphere

@@ -9,11 +9,16 @@
 
 #include <algorithm>
 #include <array>
+#include <iterator>
 #include <string>
+#include <string_view>
 
 namespace glint::model {
 
 namespace {
+
+constexpr std::string_view kComponentNames[] = {"inso", "waso", "soot", "ssam", "sscm",
+                                                "minm", "miam", "micm", "mitr", "suso"};
 
 constexpr AerosolComponentNumber kContinentalClean[] = {{"waso", 2600.0}, {"inso", 0.15}};
 constexpr AerosolComponentNumber kContinentalAverage[] = {
@@ -105,6 +110,21 @@ const char* aerosol_mixture_names() noexcept {
             if (!out.empty()) out += ", ";
             out += m.name;
         }
+        return out;
+    }();
+    return names.c_str();
+}
+
+bool is_aerosol_component(std::string_view name) noexcept {
+    return std::find(std::begin(kComponentNames), std::end(kComponentNames), name) !=
+           std::end(kComponentNames);
+}
+
+const char* aerosol_component_names() noexcept {
+    static const std::string names = [] {
+        std::string out;
+        for (std::string_view n : kComponentNames)
+            out += (out.empty() ? "" : ", ") + std::string(n);
         return out;
     }();
     return names.c_str();

@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "aerosol_profile_reader.h"
 #include "glint/core/text.h"
 #include "glint/io/xml.h"
 #include "yaml_text.h"
@@ -94,6 +95,7 @@ constexpr const char* kLayeredAerosolKeys[] = {"relative_humidity_percent", "aer
 void read_aerosol_model(const YAML::Node& root, const std::string& file,
                         model::ParametricAtmosphere& p, Diagnostics& diagnostics) {
     const YAML::Node node = root["aerosol_model"];
+    if (root["aerosol_profile"]) return;  // the profile's reader handles the keys beside it
     if (!node) {
         for (const char* key : kLayeredAerosolKeys) {
             if (const YAML::Node unused = root[key]) {
@@ -173,7 +175,8 @@ void read_aerosol_model(const YAML::Node& root, const std::string& file,
 void read_visibility(const YAML::Node& root, const std::string& file,
                      model::ParametricAtmosphere& p, Diagnostics& diagnostics) {
     const YAML::Node node = root["visibility_km"];
-    if (!node || root["aerosol_model"]) return;  // the layered aerosol reads it itself
+    // The layered aerosol reads it itself; beside a profile it is an error there.
+    if (!node || root["aerosol_model"] || root["aerosol_profile"]) return;
     const ErrorContext where = at(file, node, "visibility_km");
     if (root["aerosol_optical_depth_550"]) {
         diagnostics.error(where, "give aerosol_optical_depth_550 or visibility_km, not both");
@@ -255,8 +258,9 @@ void warn_unused(const YAML::Node& root, const std::string& file,
 void read_parametric(const YAML::Node& root, const std::string& file,
                      model::ParametricAtmosphere& p, Diagnostics& diagnostics) {
     read_aerosol_model(root, file, p, diagnostics);
+    detail::read_aerosol_profile(root, file, p, diagnostics);
     read_profile(root, file, p, diagnostics);
-    if (p.aerosol_model.empty()) {
+    if (p.aerosol_model.empty() && !root["aerosol_profile"]) {
         read_number(root, "aerosol_optical_depth_550", file, kAerosolDepth,
                     p.aerosol_optical_depth_550, diagnostics);
         read_number(root, "angstrom_exponent", file, kAny, p.angstrom_exponent, diagnostics);
@@ -340,6 +344,7 @@ model::Atmosphere read_yaml(const std::string& text, const std::filesystem::path
                                        "directional_sky",
                                        "refraction",
                                        "aerosol_model",
+                                       "aerosol_profile",
                                        "visibility_km",
                                        "profile",
                                        "relative_humidity_percent",

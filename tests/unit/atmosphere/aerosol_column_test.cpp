@@ -10,12 +10,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <string>
 #include <vector>
 
 #include "glint/atmosphere/atmosphere.h"
 #include "glint/core/error.h"
+#include "glint/core/text.h"
 #include "glint/model/aerosol_models.h"
 #include "glint/test/aerosol_table.h"
 
@@ -183,6 +185,118 @@ TEST(AerosolColumn, BadTypesAndAMissingTableAreInputErrors) {
 // is E₀ ω τ P(Θ) / (4π μ_v) (1 − τ (m_s + m_v)/2) to second order in τ, P the mixtures'
 // tabulated phase functions (0.5 %: the third order of τ = 0.02 along both slant paths is
 // 3e-4, the regimes' different albedos weigh the attenuation slightly differently).
+/// A user's profile of `densities` (one component each) in layers between `altitudes_km`.
+model::ParametricAtmosphere profiled(std::vector<std::string> components, bool mass,
+                                     std::vector<double> altitudes_km,
+                                     std::vector<std::vector<double>> densities) {
+    model::ParametricAtmosphere p;
+    p.gas_absorption = false;
+    model::AerosolProfile profile;
+    profile.components = std::move(components);
+    profile.mass_densities = mass;
+    profile.altitudes_km = std::move(altitudes_km);
+    profile.densities = std::move(densities);
+    profile.where = ErrorContext{"p.yaml", 4, "aerosol_profile"};
+    p.aerosol_profile = profile;
+    return p;
+}
+
+// A user's profile: one regime per layer with particles, its depth the number density times
+// the mixture's cross section over its thickness; masses are numbers times one particle's mass
+// (grown at the layer's humidity, or at the one the masses were weighed at); the humidity is
+// the profile's at the layer's middle unless given; a column depth rescales it; the layers
+// keep their altitudes.
+TEST(AerosolColumn, AProfilesLayersAreItsDensitiesTimesTheTablesCrossSections) {
+    const auto table = test::aerosol_table();
+    // 7000 water-soluble particles per cm³ from 0 to 2 km, nothing from 2 to 5 km, 1000 from 5
+    // to 6 km, every layer at 70 %.
+    model::ParametricAtmosphere numbers =
+        profiled({"waso"}, false, {0.0, 2.0, 5.0, 6.0}, {{7000.0}, {0.0}, {1000.0}});
+    numbers.relative_humidity_percent = 70.0;
+    const AerosolColumn column(numbers, table);
+    EXPECT_EQ(column.regimes(), 2u);
+    const double sigma = table->optics("waso", 0.55, 70.0).extinction_um2;  // µm²
+    // n [1/cm³] σ [µm²] = 1e-6 per m.
+    EXPECT_NEAR(column.depth_550_above(0.0), (7000.0 * 2000.0 + 1000.0 * 1000.0) * sigma * 1e-6,
+                1e-12);
+    EXPECT_NEAR(column.depth_550_above(3000.0), 1000.0 * 1000.0 * sigma * 1e-6, 1e-12);
+    EXPECT_NEAR(column.depth_550_above(1000.0), 8000.0 * 1000.0 * sigma * 1e-6, 1e-12);
+    EXPECT_DOUBLE_EQ(column.depth_550_above(6000.0), 0.0);
+    EXPECT_NEAR(column.extinction_ratio(0, 0.35),
+                table->optics("waso", 0.35, 70.0).extinction_um2 / sigma, 1e-9);
+    EXPECT_EQ(column.description(),
+              "profile: 3 layers of waso (1/cm^3), humidity 70 %, tau550 " +
+                  format_shortest(std::round(column.depth_550_above(0.0) * 1e4) / 1e4));
+
+    // The same particles as masses weighed at 70 %: the same column.
+    const double grams = table->optics("waso", 0.55, 70.0).particle_mass_g * 1e6;  // per m³
+    model::ParametricAtmosphere masses =
+        profiled({"waso"}, true, {0.0, 2.0, 5.0, 6.0}, {{7000.0 * grams}, {0.0}, {1000.0 * grams}});
+    masses.relative_humidity_percent = 70.0;
+    EXPECT_NEAR(AerosolColumn(masses, table).depth_550_above(0.0) / column.depth_550_above(0.0),
+                1.0, 1e-9);
+    // Weighed dry instead, then grown to 70 %: each gram holds more particles.
+    masses.aerosol_profile->mass_humidity_percent = 0.0;
+    const double dry = table->optics("waso", 0.55, 0.0).particle_mass_g * 1e6;
+    EXPECT_NEAR(AerosolColumn(masses, table).depth_550_above(0.0) / column.depth_550_above(0.0),
+                grams / dry, 1e-9);
+
+    // Without a humidity: the U.S. Standard profile's at each layer's middle (46 % at the
+    // ground, drier aloft), so the 0-2 km layer's cross section lies between the dry and the
+    // 50 % one.
+    const AerosolColumn own(profiled({"waso"}, false, {0.0, 2.0, 10.0}, {{7000.0}, {0.0}}), table);
+    const double own_sigma = own.depth_550_above(0.0) / (7000.0 * 2000.0 * 1e-6);
+    EXPECT_GT(own_sigma, table->optics("waso", 0.55, 0.0).extinction_um2);
+    EXPECT_LT(own_sigma, table->optics("waso", 0.55, 50.0).extinction_um2);
+
+    // A column depth rescales every layer.
+    numbers.aerosol_column_depth_550 = 0.25;
+    const AerosolColumn scaled(numbers, table);
+    EXPECT_NEAR(scaled.depth_550_above(0.0), 0.25, 1e-12);
+    EXPECT_NEAR(scaled.depth_550_above(3000.0) / scaled.depth_550_above(0.0),
+                column.depth_550_above(3000.0) / column.depth_550_above(0.0), 1e-12);
+}
+
+// A mixed layer: its optics are the table's mixture of its components at its humidity.
+TEST(AerosolColumn, AProfilesMixedLayerHasTheMixturesOptics) {
+    const auto table = test::aerosol_table();
+    model::ParametricAtmosphere p =
+        profiled({"inso", "waso", "soot"}, false, {0.0, 1.0}, {{0.4, 7000.0, 8300.0}});
+    p.relative_humidity_percent = 80.0;
+    const AerosolColumn column(p, table);
+    ASSERT_EQ(column.regimes(), 1u);
+    const std::vector<MixtureShare> shares{{"inso", 0.4}, {"waso", 7000.0}, {"soot", 8300.0}};
+    const ComponentOptics mixed = table->mixture(shares, 0.45, 80.0);
+    const RegimeOptics o = column.optics(0, 0.45, 8);
+    EXPECT_NEAR(o.single_scatter_albedo, mixed.single_scatter_albedo(), 1e-9);
+    for (std::size_t l = 0; l < 8; ++l) EXPECT_NEAR(o.moments[l], mixed.moments[l], 1e-9) << l;
+}
+
+TEST(AerosolColumn, AProfileNeedsTheTableAndItsComponents) {
+    const model::ParametricAtmosphere p = profiled({"waso"}, false, {0.0, 1.0}, {{100.0}});
+    try {
+        (void)AerosolColumn(p, nullptr);
+        ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "aerosol_profile needs the aerosol optics table (atmosphere/aerosol_optics.csv "
+                  "in glint's data folder)");
+    }
+    const auto tiny = std::make_shared<const AerosolTable>(AerosolTable::from_csv(
+        "component,rh_percent,wavelength_um,extinction_um2,scattering_um2,asymmetry,"
+        "particle_mass_g,chi_1,p_0,p_180\n"
+        "inso,0,0.5,2,1,0.5,1e-11,0.5,4,1\n",
+        "tiny.csv"));
+    try {
+        (void)AerosolColumn(p, tiny);
+        ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.category(), ErrorCategory::input);
+        EXPECT_EQ(std::string(e.what()),
+                  "p.yaml:4: aerosol_profile: the aerosol optics table has no component 'waso'");
+    }
+}
+
 TEST(AerosolColumn, ThinAerosolPathRadianceIsTheTablesPhaseFunction) {
     model::ParametricAtmosphere p = layered("continental_average");
     p.sea_level_pressure_hpa = 0.0;

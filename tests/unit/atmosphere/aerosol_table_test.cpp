@@ -21,14 +21,14 @@ namespace aerosol_table_test {
 // Two components: "aa" at 0 and 50 % humidity, "bb" without growth; 2 moments, 3 angles.
 const std::string kTable =
     "# a comment\n"
-    "component,rh_percent,wavelength_um,extinction_um2,scattering_um2,asymmetry,chi_1,chi_2,"
-    "p_0,p_90,p_180\n"
-    "aa,0,0.5,2,1,0.5,0.5,0.3,4,1,0.5\n"
-    "aa,0,1.0,1,0.5,0.4,0.4,0.2,2,1,1\n"
-    "aa,50,0.5,4,4,0.6,0.6,0.4,8,1,0.5\n"
-    "aa,50,1.0,2,2,0.5,0.5,0.3,4,1,1\n"
-    "bb,0,0.5,1,0.25,0,0,0,1,1,1\n"
-    "bb,0,1.0,1,0.25,0,0,0,1,1,1\n";
+    "component,rh_percent,wavelength_um,extinction_um2,scattering_um2,asymmetry,particle_mass_g,"
+    "chi_1,chi_2,p_0,p_90,p_180\n"
+    "aa,0,0.5,2,1,0.5,1e-15,0.5,0.3,4,1,0.5\n"
+    "aa,0,1.0,1,0.5,0.4,1e-15,0.4,0.2,2,1,1\n"
+    "aa,50,0.5,4,4,0.6,3e-15,0.6,0.4,8,1,0.5\n"
+    "aa,50,1.0,2,2,0.5,3e-15,0.5,0.3,4,1,1\n"
+    "bb,0,0.5,1,0.25,0,5e-15,0,0,1,1,1\n"
+    "bb,0,1.0,1,0.25,0,5e-15,0,0,1,1,1\n";
 
 TEST(AerosolTable, InterpolatesInLnWavelengthAndInHumidity) {
     const AerosolTable t = AerosolTable::from_csv(kTable, "t.csv");
@@ -47,6 +47,8 @@ TEST(AerosolTable, InterpolatesInLnWavelengthAndInHumidity) {
     EXPECT_DOUBLE_EQ(t.optics("aa", 5.0, 0.0).extinction_um2, 1.0);
     // Humidity: linear between 0 and 50 %, held beyond 50 %; bb has no growth.
     EXPECT_NEAR(t.optics("aa", 0.5, 25.0).extinction_um2, 3.0, 1e-12);
+    EXPECT_NEAR(t.optics("aa", 0.7, 25.0).particle_mass_g, 2e-15, 1e-27);
+    EXPECT_DOUBLE_EQ(t.optics("aa", 0.7, 0.0).particle_mass_g, 1e-15);
     EXPECT_NEAR(t.optics("aa", 0.5, 25.0).moments[2], 0.35, 1e-12);
     EXPECT_DOUBLE_EQ(t.optics("aa", 0.5, 90.0).extinction_um2, 4.0);
     EXPECT_DOUBLE_EQ(t.optics("bb", 0.5, 90.0).scattering_um2, 0.25);
@@ -60,6 +62,7 @@ TEST(AerosolTable, AMixtureWeighsByNumberAndByScattering) {
     const ComponentOptics m = t.mixture(shares, 0.5, 0.0);
     EXPECT_NEAR(m.extinction_um2, 0.25 * 2.0 + 0.75 * 1.0, 1e-12);
     EXPECT_NEAR(m.scattering_um2, 0.25 * 1.0 + 0.75 * 0.25, 1e-12);
+    EXPECT_NEAR(m.particle_mass_g, 0.25 * 1e-15 + 0.75 * 5e-15, 1e-27);
     const double wa = 0.25 * 1.0, wb = 0.75 * 0.25;
     EXPECT_NEAR(m.moments[1], (wa * 0.5 + wb * 0.0) / (wa + wb), 1e-12);
     EXPECT_NEAR(m.phase[0], (wa * 4.0 + wb * 1.0) / (wa + wb), 1e-12);
@@ -79,24 +82,35 @@ std::string error_of(const std::string& text) {
 
 TEST(AerosolTable, AMalformedTableIsAnInputErrorAtItsLine) {
     const std::string header =
-        "component,rh_percent,wavelength_um,extinction_um2,scattering_um2,asymmetry,chi_1,"
-        "p_0,p_180\n";
-    EXPECT_EQ(error_of("x,y\n"), "t.csv:1: expected the header line component,rh_percent,...");
-    EXPECT_EQ(error_of(header + "aa,0,0.5,2,1,0.5,0.5,4\n"),
-              "t.csv:2: expected 9 columns, found 8");
-    EXPECT_EQ(error_of(header + "aa,0,0.5,2,3,0.5,0.5,4,1\n"),
+        "component,rh_percent,wavelength_um,extinction_um2,scattering_um2,asymmetry,"
+        "particle_mass_g,chi_1,p_0,p_180\n";
+    const std::string expected_header =
+        "t.csv:1: expected the header line component,rh_percent,wavelength_um,extinction_um2,"
+        "scattering_um2,asymmetry,particle_mass_g,...";
+    EXPECT_EQ(error_of("x,y\n"), expected_header);
+    // The table before its particle-mass column.
+    EXPECT_EQ(error_of("component,rh_percent,wavelength_um,extinction_um2,scattering_um2,"
+                       "asymmetry,chi_1,p_0,p_180\n"),
+              expected_header);
+    EXPECT_EQ(error_of(header + "aa,0,0.5,2,1,0.5,1e-15,0.5,4\n"),
+              "t.csv:2: expected 10 columns, found 9");
+    EXPECT_EQ(error_of(header + "aa,0,0.5,2,3,0.5,1e-15,0.5,4,1\n"),
               "t.csv:2: expected a wavelength > 0 and 0 <= scattering <= extinction");
-    EXPECT_EQ(error_of(header + "aa,0,0.5,2,1,0.5,0.5,4,1\naa,0,0.4,2,1,0.5,0.5,4,1\n"),
+    EXPECT_EQ(error_of(header + "aa,0,0.5,2,1,0.5,0,0.5,4,1\n"),
+              "t.csv:2: expected a particle mass > 0 g");
+    EXPECT_EQ(error_of(header + "aa,0,0.5,2,1,0.5,1e-15,0.5,4,1\naa,0,0.4,2,1,0.5,1e-15,0.5,4,1\n"),
               "t.csv:3: a component's wavelengths must increase");
-    EXPECT_EQ(error_of(header + "aa,0,0.5,2,1,0.5,0.5,4,-1\n"),
+    EXPECT_EQ(error_of(header + "aa,0,0.5,2,1,0.5,1e-15,0.5,4,-1\n"),
               "t.csv:2: phase-function values must be > 0");
-    EXPECT_EQ(error_of(header + "aa,0,0.5,2,1,0.5,0.5,four,1\n"), "t.csv:2: not a number: 'four'");
+    EXPECT_EQ(error_of(header + "aa,0,0.5,2,1,0.5,1e-15,0.5,four,1\n"),
+              "t.csv:2: not a number: 'four'");
     EXPECT_EQ(error_of(header), "t.csv: the aerosol optics table has no rows");
     EXPECT_EQ(error_of("component,rh_percent,wavelength_um,extinction_um2,scattering_um2,"
-                       "asymmetry,chi_2,p_0,p_180\n"),
+                       "asymmetry,particle_mass_g,chi_2,p_0,p_180\n"),
               "t.csv:1: expected column chi_1, found 'chi_2'");
-    EXPECT_EQ(error_of(header + "aa,0,0.5,2,1,0.5,0.5,4,1\naa,50,0.6,2,1,0.5,0.5,4,1\n"),
-              "t.csv: component aa has different wavelengths at 50 % humidity");
+    EXPECT_EQ(
+        error_of(header + "aa,0,0.5,2,1,0.5,1e-15,0.5,4,1\naa,50,0.6,2,1,0.5,1e-15,0.5,4,1\n"),
+        "t.csv: component aa has different wavelengths at 50 % humidity");
 }
 
 // The shipped table: OPAC's ten components; every phase function integrates to 1 over the

@@ -362,6 +362,115 @@ TEST(AtmosphereReader, AerosolModelAndVisibility) {
                 "469.4 at 550 nm, beyond the 100 glint takes"});
 }
 
+// A user's aerosol profile: rows in either order stored ascending, the top row closing it,
+// masses with the humidity they were weighed at, and the keys beside it.
+TEST(AtmosphereReader, AerosolProfile) {
+    test::TempDir dir;
+    Diagnostics diagnostics;
+    const auto a = read_atmosphere(write(dir, "p.yaml",
+                                         "model: parametric\n"
+                                         "aerosol_optical_depth_550: 0.3\n"
+                                         "aerosol_profile:\n"
+                                         "  components: [inso, waso, soot]\n"
+                                         "  unit: g_per_m3\n"
+                                         "  mass_humidity_percent: 50\n"
+                                         "  levels:\n"
+                                         "    - [12, 0, 0, 0]\n"
+                                         "    - [2, 2.3e-6, 4.6e-7, 1.4e-8]\n"
+                                         "    - [0, 1.0e-5, 1.5e-5, 5.3e-7]\n"),
+                                   {}, diagnostics, "p.yaml");
+    EXPECT_EQ(diagnostics.items().size(), 0u) << first_error(diagnostics);
+    ASSERT_TRUE(a.parametric.aerosol_profile.has_value());
+    const model::AerosolProfile& profile = *a.parametric.aerosol_profile;
+    EXPECT_EQ(profile.components, (std::vector<std::string>{"inso", "waso", "soot"}));
+    EXPECT_TRUE(profile.mass_densities);
+    EXPECT_EQ(profile.mass_humidity_percent, std::optional<double>(50.0));
+    EXPECT_EQ(profile.altitudes_km, (std::vector<double>{0.0, 2.0, 12.0}));
+    ASSERT_EQ(profile.densities.size(), 2u);
+    EXPECT_EQ(profile.densities[0], (std::vector<double>{1.0e-5, 1.5e-5, 5.3e-7}));
+    EXPECT_EQ(profile.densities[1], (std::vector<double>{2.3e-6, 4.6e-7, 1.4e-8}));
+    EXPECT_EQ(profile.where.line, 4);
+    EXPECT_EQ(a.parametric.aerosol_column_depth_550, std::optional<double>(0.3));
+    EXPECT_TRUE(a.parametric.aerosol_model.empty());
+
+    using V = std::vector<std::string>;
+    const std::string head = "model: parametric\naerosol_profile:\n  components: [waso]\n";
+    // Numbers per cm³; the humidity beside it is every layer's, no warning.
+    Diagnostics numbers_diagnostics;
+    const auto n = read_atmosphere(write(dir, "n.yaml",
+                                         head + "  unit: per_cm3\n  levels: [[0, 7000], [2, 0]]\n"
+                                                "relative_humidity_percent: 80\n"),
+                                   {}, numbers_diagnostics, "n.yaml");
+    EXPECT_EQ(numbers_diagnostics.items().size(), 0u) << first_error(numbers_diagnostics);
+    ASSERT_TRUE(n.parametric.aerosol_profile.has_value());
+    EXPECT_FALSE(n.parametric.aerosol_profile->mass_densities);
+    EXPECT_EQ(n.parametric.relative_humidity_percent, std::optional<double>(80.0));
+    // Keys without effect or unknown: warnings at their lines.
+    EXPECT_EQ(messages_of(dir, head + "  unit: per_cm3\n  mass_humidity_percent: 50\n"
+                                      "  level: 3\n  levels: [[0, 7000], [2, 0]]\n"
+                                      "aerosol_season: fall_winter\n"),
+              (V{"e.yaml:8: aerosol_season: has no effect: it belongs to the layered aerosol of "
+                 "an aerosol_model, and aerosol_profile replaces it",
+                 "e.yaml:6: aerosol_profile.level: unknown key, ignored (aerosol_profile takes "
+                 "components, unit, mass_humidity_percent, levels)",
+                 "e.yaml:5: aerosol_profile.mass_humidity_percent: has no effect: the densities "
+                 "are particle numbers (unit per_cm3), not masses"}));
+    // Errors, each at its line.
+    EXPECT_EQ(messages_of(dir, head + "  unit: ug\n  levels: [[0, 7000], [2, 0]]\n"),
+              V{"e.yaml:4: aerosol_profile.unit: expected per_cm3 (particles per cm^3) or "
+                "g_per_m3 (grams per m^3), got 'ug'"});
+    EXPECT_EQ(messages_of(dir,
+                          "model: parametric\naerosol_profile:\n  components: [waso, dust, "
+                          "waso]\n  unit: per_cm3\n  levels: [[0, 1, 1, 1], [2, 0, 0, 0]]\n"),
+              (V{std::string("e.yaml:3: aerosol_profile.components: expected one of ") +
+                     model::aerosol_component_names() + ", got 'dust'",
+                 "e.yaml:3: aerosol_profile.components: component 'waso' is listed twice"}));
+    EXPECT_EQ(messages_of(dir, "model: parametric\naerosol_profile:\n  unit: per_cm3\n"),
+              (V{"e.yaml:3: aerosol_profile.components: expected a list of OPAC components (" +
+                 std::string(model::aerosol_component_names()) + ")"}));
+    EXPECT_EQ(messages_of(dir, head + "  unit: per_cm3\n"),
+              V{"e.yaml:3: aerosol_profile.levels: expected at least two rows [altitude_km, then "
+                "one density per component: 1]"});
+    EXPECT_EQ(messages_of(dir, head + "  unit: per_cm3\n  levels:\n    - [0, 7000]\n"
+                                      "    - [2, 1, 5]\n    - [3, many]\n    - [4, 0]\n"),
+              (V{"e.yaml:7: aerosol_profile.levels: expected a row [altitude_km, then one "
+                 "density per component: 1]",
+                 "e.yaml:8: aerosol_profile.levels: expected numbers in the row [altitude_km, "
+                 "then one density per component: 1]"}));
+    EXPECT_EQ(messages_of(dir, head + "  unit: per_cm3\n  levels: [[0, -1], [200, 0]]\n"),
+              (V{"e.yaml:5: aerosol_profile.levels: densities must be >= 0",
+                 "e.yaml:5: aerosol_profile.levels: altitude 200 km out of range, expected [0, "
+                 "100] km above sea level"}));
+    EXPECT_EQ(messages_of(dir, head + "  unit: per_cm3\n  levels:\n    - [0, 1]\n"
+                                      "    - [2, 1]\n    - [1, 0]\n"),
+              V{"e.yaml:8: aerosol_profile.levels: altitudes must increase (or decrease) "
+                "strictly from row to row"});
+    EXPECT_EQ(messages_of(dir, head + "  unit: per_cm3\n  levels:\n    - [0, 7000]\n"
+                                      "    - [2, 100]\n"),
+              V{"e.yaml:7: aerosol_profile.levels: the highest row closes the profile (each "
+                "row's densities fill the layer up to the next row): its densities must be 0; "
+                "add a row above it to extend the aerosol"});
+    EXPECT_EQ(messages_of(dir, head + "  unit: g_per_m3\n  mass_humidity_percent: 101\n"
+                                      "  levels: [[0, 1e-5], [2, 0]]\n"),
+              V{"e.yaml:5: aerosol_profile.mass_humidity_percent: value 101 out of range, "
+                "expected a number in [0, 100]"});
+    EXPECT_EQ(messages_of(dir, "model: parametric\naerosol_profile: [1, 2]\n"),
+              V{"e.yaml:2: aerosol_profile: expected a mapping with components, unit and levels"});
+    // The other aerosols' keys beside it.
+    EXPECT_EQ(messages_of(dir,
+                          "model: parametric\naerosol_model: rural\nvisibility_km: 5\n"
+                          "angstrom_exponent: 1\n" +
+                              head.substr(std::string("model: parametric\n").size()) +
+                              "  unit: per_cm3\n  levels: [[0, 7000], [2, 0]]\n"),
+              (V{"e.yaml:2: aerosol_model: give aerosol_model or aerosol_profile, not both",
+                 "e.yaml:4: angstrom_exponent: aerosol_profile sets the aerosol's optics and "
+                 "amount (OPAC's Mie optics, its own densities; aerosol_optical_depth_550 scales "
+                 "it); give angstrom_exponent only without it",
+                 "e.yaml:3: visibility_km: aerosol_profile sets the aerosol's optics and amount "
+                 "(OPAC's Mie optics, its own densities; aerosol_optical_depth_550 scales it); "
+                 "give visibility_km only without it"}));
+}
+
 TEST(AtmosphereReader, NonNumberAndUnknownKey) {
     test::TempDir dir;
     const auto path =

@@ -4,12 +4,14 @@
 // Ångström spectrum and a Henyey–Greenstein phase function (the keys
 // aerosol_optical_depth_550, angstrom_exponent, aerosol_scale_height_m, aerosol_asymmetry,
 // aerosol_single_scatter_albedo), or LOWTRAN 7's layers (a boundary layer of the chosen type,
-// the free troposphere, the stratosphere) with the optics of OPAC's components
+// the free troposphere, the stratosphere), or a user's profile (aerosol_profile: one regime per
+// layer, its own mixture at its own humidity), each with the optics of OPAC's components
 // (glint/atmosphere/aerosol_table.h, glint/model/aerosol_models.h). docs/physics.md
-// ("Aerosol optics", "Vertical structure").
+// ("Aerosol optics", "Vertical structure", "A user's aerosol profile").
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -32,12 +34,13 @@ struct RegimeOptics {
 class AerosolColumn {
 public:
     /// The regimes `parameters` describe. Throws glint::Error (input) for an unknown aerosol
-    /// type, a layered aerosol without `table`, a component the table lacks, or parameters out
-    /// of range.
+    /// type, a layered aerosol or a profile without `table`, a component the table lacks (at
+    /// the profile's file:line), or parameters out of range.
     AerosolColumn(const model::ParametricAtmosphere& parameters,
                   std::shared_ptr<const AerosolTable> table);
 
-    /// Number of regimes (1 for the exponential aerosol; 3 for LOWTRAN's layers).
+    /// Number of regimes (1 for the exponential aerosol; 3 for LOWTRAN's layers; one per
+    /// layer with particles for a profile).
     std::size_t regimes() const noexcept { return m_regimes.size(); }
     /// The 550 nm optical depth of regime `j` above `altitude_m` (vertical).
     double depth_550_above(std::size_t j, double altitude_m) const noexcept;
@@ -60,6 +63,15 @@ public:
 
 private:
     struct Regime;
+    void add_exponential(const model::ParametricAtmosphere& parameters);
+    void add_lowtran_layers(const model::ParametricAtmosphere& parameters,
+                            const std::shared_ptr<const AerosolTable>& table);
+    void add_profile_layers(const model::ParametricAtmosphere& parameters,
+                            const std::shared_ptr<const AerosolTable>& table);
+    /// Scales every regime so that the column's 550 nm depth is `wanted` (when set); returns
+    /// the column's depth.
+    double scale_to(const std::optional<double>& wanted, double column);
+
     std::vector<std::shared_ptr<const Regime>> m_regimes;
     std::string m_description;
 };

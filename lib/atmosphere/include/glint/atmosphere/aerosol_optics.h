@@ -51,4 +51,10 @@ ParticleOptics size_averaged_optics(const LogNormalSizes& sizes, std::complex<do
                                     double wavelength_um, std::span<const double> angles_deg,
                                     int legendre_count);
 
+/// The mean volume of one particle of `sizes`, µm³: (4π/3) ∫ r³ over the bounds per particle
+/// of the whole lognormal (OPAC's convention, as for the optics; closed form). A particle's
+/// mean mass is this × its material's density. Throws glint::Error (input) as
+/// size_averaged_optics() does for a distribution that is not one.
+double mean_particle_volume_um3(const LogNormalSizes& sizes);
+
 }  // namespace glint::atmosphere

@@ -17,6 +17,9 @@ namespace glint::atmosphere {
 struct ComponentOptics {
     double extinction_um2 = 0.0;  ///< cross section per particle, µm²
     double scattering_um2 = 0.0;  ///< cross section per particle, µm²
+    /// The mean mass of one particle as grown at the humidity, g (a mixture's: the
+    /// number-weighted mean).
+    double particle_mass_g = 0.0;
     /// Legendre moments χ₀ … χ_L of the phase function (χ₀ = 1).
     std::vector<double> moments;
     /// The phase function at AerosolTable::angles_deg(), ∫P dΩ / 4π = 1.
@@ -29,7 +32,8 @@ struct ComponentOptics {
 
 /// `a` + t (`b` − `a`) member by member: the cross sections in ln σ when
 /// `log_cross_sections` (linearly where either is 0), the scattering never above the
-/// extinction; the moments and the phase function linearly (they must have a's sizes).
+/// extinction; the particle mass, the moments and the phase function linearly (they must have
+/// a's sizes).
 ComponentOptics interpolate(const ComponentOptics& a, const ComponentOptics& b, double t,
                             bool log_cross_sections);
 

@@ -181,7 +181,8 @@ public:
     static constexpr double kOzoneTopM = 40'000.0;
 
     /// `gases` is the band-model table, required when parameters.gas_absorption is set;
-    /// `aerosols` the aerosol optics table, required with parameters.aerosol_model. Throws
+    /// `aerosols` the aerosol optics table, required with parameters.aerosol_model or
+    /// aerosol_profile. Throws
     /// glint::Error (input) for parameters out of the ranges of model/atmosphere.h or a table
     /// missing.
     explicit ParametricAtmosphereModel(model::ParametricAtmosphere parameters,
@@ -389,7 +390,8 @@ std::unique_ptr<AtmosphereModel> make_atmosphere_model(
 /// Whether the model `atmosphere` selects needs the gas band-model table (the parametric
 /// model with its gas absorption on).
 bool needs_gas_table(const model::Atmosphere& atmosphere);
-/// Whether it needs the aerosol optics table (the parametric model with an aerosol_model).
+/// Whether it needs the aerosol optics table (the parametric model with an aerosol_model or an
+/// aerosol_profile).
 bool needs_aerosol_table(const model::Atmosphere& atmosphere);
 
 /// glint's own data a render needs, read from its data folder by the readers

@@ -45,6 +45,12 @@ std::optional<AerosolMixture> aerosol_mixture_named(std::string_view name) noexc
 /// Every YAML spelling, comma-separated (for error messages).
 const char* aerosol_mixture_names() noexcept;
 
+/// Whether `name` is one of OPAC's ten components (inso, waso, soot, ssam, sscm, minm, miam,
+/// micm, mitr, suso): the names a user's aerosol profile may use.
+bool is_aerosol_component(std::string_view name) noexcept;
+/// OPAC's ten component names, comma-separated (for error messages).
+const char* aerosol_component_names() noexcept;
+
 /// LOWTRAN 7's season of the aerosol profiles above the boundary layer.
 enum class AerosolSeason { spring_summer, fall_winter };
 

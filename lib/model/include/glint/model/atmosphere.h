@@ -30,6 +30,28 @@ enum class AtmosphereKind {
     simple,      ///< DIRSIG .atm simpleradiativetransfer: no path effects, sky at a temperature
 };
 
+/// A user's aerosol profile (YAML `aerosol_profile`): the densities of OPAC's components in
+/// layers stacked from the ground up, each with its own mixture and the humidity of its air.
+struct AerosolProfile {
+    /// OPAC's component names (inso, waso, soot, ssam, sscm, minm, miam, micm, mitr, suso),
+    /// one density column each, no name twice.
+    std::vector<std::string> components;
+    /// Whether the densities are masses, g/m³ (else particle numbers, 1/cm³).
+    bool mass_densities = false;
+    /// With mass densities: the humidity at which the particles were weighed, % (the number
+    /// of particles is the mass over one particle's mass grown at this humidity). Unset: each
+    /// layer's own humidity (the particles weighed as they are in the layer; libRadtran's
+    /// convention for its aerosol_species_file).
+    std::optional<double> mass_humidity_percent;
+    /// The layers' boundaries, km above sea level, increasing; layer i runs from
+    /// altitudes_km[i] to altitudes_km[i + 1] with densities[i] throughout.
+    std::vector<double> altitudes_km;
+    /// Per layer (altitudes_km.size() − 1 rows), one density per component, ≥ 0.
+    std::vector<std::vector<double>> densities;
+    /// Where it was written, for errors the aerosol optics table finds.
+    ErrorContext where;
+};
+
 /// Parameters of the parametric model (units in the names; defaults in the file table).
 struct ParametricAtmosphere {
     double aerosol_optical_depth_550 = 0.1;       ///< vertical, at 0.55 µm, from sea level
@@ -74,12 +96,14 @@ struct ParametricAtmosphere {
     std::string aerosol_model;
     /// With aerosol_model: the surface visibility that sets the profiles, km.
     double visibility_km = 23.0;
-    /// With aerosol_model: the whole column's vertical 550 nm optical depth above sea level,
-    /// the profiles scaled to it (unset: the visibility's).
+    /// With aerosol_model or aerosol_profile: the whole column's vertical 550 nm optical depth
+    /// above sea level, the profiles scaled to it (unset: the visibility's, or the profile's
+    /// own).
     std::optional<double> aerosol_column_depth_550;
-    /// With aerosol_model: the relative humidity every layer's water-soluble particles have
-    /// grown at, % (unset: the profile's at sea level, 70 % for isothermal; the
-    /// stratospheric type is always dry).
+    /// With aerosol_model or aerosol_profile: the relative humidity every layer's
+    /// water-soluble particles have grown at, % (unset: with aerosol_model the profile's at
+    /// sea level, with aerosol_profile the profile's at each layer's middle; 70 % for
+    /// isothermal; the stratospheric type is always dry).
     std::optional<double> relative_humidity_percent;
     /// With aerosol_model: the season of the profiles above 2 km (unset: fall_winter for the
     /// winter profiles, else spring_summer).
@@ -88,6 +112,11 @@ struct ParametricAtmosphere {
     /// (above 10 km); "none" leaves the layer clear.
     std::string tropospheric_aerosol = "tropospheric";
     std::string stratospheric_aerosol = "stratospheric";
+
+    /// A user's aerosol profile instead of the exponential or LOWTRAN aerosol (never with
+    /// aerosol_model). aerosol_column_depth_550 scales it; relative_humidity_percent, when
+    /// set, is every layer's humidity (unset: each layer's from `profile` at its middle).
+    std::optional<AerosolProfile> aerosol_profile;
 };
 
 /// Koschmieder's constant: visibility V = 3.912 / β_ext(550 nm) at the ground (2 % contrast).
