@@ -57,18 +57,29 @@ Illumination Illumination::make(const model::Atmosphere& atmosphere,
     light.m_atmosphere_kind = atmosphere.kind;
     light.m_atmosphere_where = atmosphere.where;
     light.m_model = glint::atmosphere::make_atmosphere_model(atmosphere, data.gases, data.aerosols);
-    // The aerosol as the model resolved it (the layered one's humidity and season defaults).
-    if (const auto* parametric = dynamic_cast<const glint::atmosphere::ParametricAtmosphereModel*>(
-            light.m_model.get())) {
-        log.info("Aerosol: " + parametric->aerosol().description());
-    }
     light.m_sun = data.sun;
-    if (atmosphere.kind == model::AtmosphereKind::parametric && atmosphere.parametric.refraction &&
+    const auto* parametric =
+        dynamic_cast<const glint::atmosphere::ParametricAtmosphereModel*>(light.m_model.get());
+    // The aerosol as the model resolved it (the layered one's humidity and season defaults).
+    if (parametric != nullptr) log.info("Aerosol: " + parametric->aerosol().description());
+    if (parametric != nullptr && atmosphere.parametric.refraction &&
         atmosphere.parametric.profile != model::StandardAtmosphere::isothermal) {
-        light.m_refraction_profile = atmosphere.parametric.profile;
+        // The profile's levels at the air's temperatures: shifted with air_temperature_k as
+        // the model shifts them for the air's emission (the pressures and water kept).
+        const model::StandardAtmosphereProfile& profile =
+            model::standard_atmosphere(atmosphere.parametric.profile);
+        light.m_refraction_levels.assign(profile.levels.begin(), profile.levels.end());
+        for (model::AtmosphereLevel& level : light.m_refraction_levels) {
+            level.temperature_k = parametric->air_temperature_k(level.altitude_km * 1000.0);
+        }
+        const double shift_k =
+            light.m_refraction_levels.front().temperature_k - profile.levels.front().temperature_k;
         log.info(std::string("Refraction: view rays, the sun and the moon bent through the ") +
-                 model::standard_atmosphere(atmosphere.parametric.profile).name +
-                 " profile (Ciddor's index at each spectral state's wavelength)");
+                 profile.name + " profile" +
+                 (shift_k != 0.0 ? " (its temperatures shifted " + format_shortest(shift_k) +
+                                       " K at sea level, to 0 at 11 km)"
+                                 : std::string()) +
+                 ", Ciddor's index at each spectral state's wavelength");
     }
     light.m_frame = frame;
     light.m_source_trajectories =
@@ -99,12 +110,11 @@ Environment Illumination::environment(const SpectralGrid& grid, const CaptureWin
             glint::atmosphere::lunar_irradiance_ratio(moon0.phase_angle_deg, moon0.distance_km);
         env.source_half_angle_rad = glint::atmosphere::lunar_angular_radius_rad(moon0.distance_km);
     }
-    if (m_refraction_profile && grid.size() > 0) {
+    if (!m_refraction_levels.empty() && grid.size() > 0) {
         // The sun's or moon's apparent direction, at the grid's middle wavelength (refraction's
         // dispersion moves a source at 10° elevation by about 1″ across the visible).
         const glint::atmosphere::RefractionTracer tracer(glint::atmosphere::RefractiveProfile(
-            model::standard_atmosphere(*m_refraction_profile),
-            std::max(grid.wavelength_um(grid.size() / 2), 0.2)));
+            m_refraction_levels, std::max(grid.wavelength_um(grid.size() / 2), 0.2)));
         const double observer_m = std::max(m_frame.origin().altitude_m, 0.0);
         const bool still = env.sun_direction_begin.x == env.sun_direction_end.x &&
                            env.sun_direction_begin.y == env.sun_direction_end.y &&
@@ -124,7 +134,7 @@ Environment Illumination::environment(const SpectralGrid& grid, const CaptureWin
 std::shared_ptr<const ViewRefraction> Illumination::view_refraction(double wavelength_um,
                                                                     double sensor_z_m,
                                                                     SensorPathCache* cache) const {
-    if (!m_refraction_profile || !(sensor_z_m >= kMinRefractionHeight_m)) return nullptr;
+    if (m_refraction_levels.empty() || !(sensor_z_m >= kMinRefractionHeight_m)) return nullptr;
     const double ground_m = std::max(m_frame.origin().altitude_m, 0.0);
     const SensorPathCache::ViewKey key{std::llround(ground_m), std::llround(ground_m + sensor_z_m),
                                        std::llround(wavelength_um * 1e6)};
@@ -132,7 +142,7 @@ std::shared_ptr<const ViewRefraction> Illumination::view_refraction(double wavel
         if (auto found = cache->find_view(key)) return found;
     }
     const glint::atmosphere::RefractionTracer tracer(glint::atmosphere::RefractiveProfile(
-        model::standard_atmosphere(*m_refraction_profile), static_cast<double>(key[2]) * 1e-6));
+        m_refraction_levels, static_cast<double>(key[2]) * 1e-6));
     auto view = std::make_shared<const ViewRefraction>(tracer, static_cast<double>(key[0]),
                                                        static_cast<double>(key[1]));
     if (cache != nullptr) cache->insert_view(key, view);

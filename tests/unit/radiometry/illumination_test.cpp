@@ -91,6 +91,7 @@ TEST(Illumination, RefractionRaisesTheSunAndBendsViewRays) {
     air.kind = model::AtmosphereKind::parametric;
     air.parametric.gas_absorption = false;
     air.parametric.multiple_scattering = false;
+    air.parametric.air_temperature_k = 288.2;  // the profile's own: no shift
     const Illumination light = Illumination::make(air, tables(), scene, kRochester, DateTime{});
     ASSERT_TRUE(light.refracts());
     // Late afternoon: the sun low in the west.
@@ -117,6 +118,26 @@ TEST(Illumination, RefractionRaisesTheSunAndBendsViewRays) {
     const auto nir = light.view_refraction(0.90, 20'000.0, &cache);
     EXPECT_LT(nir->displacement_m(70.0), blue->displacement_m(70.0));
     EXPECT_EQ(light.view_refraction(0.45, 0.5, &cache), nullptr);  // on the ground: straight
+
+    // A hotter day: the profile's temperatures shifted +20 K at sea level, the shift fading to
+    // 0 at 11 km (as the air's emission shifts them); thinner air near the ground bends less.
+    model::Atmosphere hot = air;
+    hot.parametric.air_temperature_k = 308.2;
+    const Illumination hot_light = Illumination::make(hot, tables(), scene, kRochester, DateTime{});
+    std::vector<model::AtmosphereLevel> shifted(
+        model::standard_atmosphere(model::StandardAtmosphere::us_standard_1976).levels.begin(),
+        model::standard_atmosphere(model::StandardAtmosphere::us_standard_1976).levels.end());
+    for (model::AtmosphereLevel& level : shifted) {
+        level.temperature_k += 20.0 * std::max(0.0, 1.0 - level.altitude_km / 11.0);
+    }
+    const radiometry::ViewRefraction expected_hot(
+        glint::atmosphere::RefractionTracer(glint::atmosphere::RefractiveProfile(shifted, 0.45)),
+        0.0, 20'000.0);
+    const auto hot_blue = hot_light.view_refraction(0.45, 20'000.0, nullptr);
+    ASSERT_NE(hot_blue, nullptr);
+    EXPECT_NEAR(hot_blue->displacement_m(70.0) / expected_hot.displacement_m(70.0), 1.0, 1e-12);
+    EXPECT_LT(hot_blue->displacement_m(70.0), 0.99 * blue->displacement_m(70.0));
+    EXPECT_GT(hot_blue->displacement_m(70.0), 0.9 * blue->displacement_m(70.0));
 
     model::Atmosphere straight = air;
     straight.parametric.refraction = false;

@@ -69,7 +69,7 @@ public:
     std::shared_ptr<const ViewRefraction> view_refraction(double wavelength_um, double sensor_z_m,
                                                           SensorPathCache* cache) const;
     /// Whether the atmosphere refracts (view rays, the sun and the moon).
-    bool refracts() const noexcept { return m_refraction_profile.has_value(); }
+    bool refracts() const noexcept { return !m_refraction_levels.empty(); }
     /// The lowest sensor height above the scene's origin whose view rays are bent, m.
     static constexpr double kMinRefractionHeight_m = 1.0;
 
@@ -108,8 +108,9 @@ private:
     ErrorContext m_atmosphere_where;
     std::unique_ptr<glint::atmosphere::AtmosphereModel> m_model;
     std::shared_ptr<const glint::atmosphere::SolarSpectrum> m_sun;
-    /// The profile refraction follows, when the atmosphere refracts.
-    std::optional<model::StandardAtmosphere> m_refraction_profile;
+    /// The levels refraction follows (the profile's, its temperatures shifted with
+    /// air_temperature_k); empty when the atmosphere does not refract.
+    std::vector<model::AtmosphereLevel> m_refraction_levels;
     motion::SceneFrame m_frame;
     /// Indexed like the scene's point sources; nullptr for static ones.
     std::vector<std::unique_ptr<motion::Trajectory>> m_source_trajectories;
