@@ -118,7 +118,8 @@ std::string describe(const model::Atmosphere& atmosphere) {
             const std::string aerosol =
                 p.aerosol_profile
                     ? "aerosol profile (" + std::to_string(p.aerosol_profile->densities.size()) +
-                          " layers" +
+                          " layers of " + join(p.aerosol_profile->components, ", ") +
+                          (p.aerosol_profile->mass_densities ? " in g/m^3" : " per cm^3") +
                           (p.aerosol_column_depth_550
                                ? ", optical depth " + format_shortest(*p.aerosol_column_depth_550) +
                                      " at 0.55 um"

@@ -307,18 +307,15 @@ void AerosolColumn::add_profile_layers(const model::ParametricAtmosphere& p,
         m_regimes.push_back(std::move(r));
     }
     column = scale_to(p.aerosol_column_depth_550, column);
-    std::string components;
-    for (const std::string& c : profile.components) {
-        components += (components.empty() ? "" : ", ") + c;
-    }
     const auto percent = [](double v) { return format_shortest(std::round(v * 10.0) / 10.0); };
-    m_description =
-        "profile: " + std::to_string(profile.densities.size()) + " layers of " + components + " (" +
-        (profile.mass_densities ? std::string("g/m^3") : std::string("1/cm^3")) + "), humidity " +
-        (m_regimes.empty()   ? std::string("-")
-         : rh_low == rh_high ? percent(rh_low) + " %"
-                             : percent(rh_low) + "-" + percent(rh_high) + " %") +
-        ", tau550 " + format_shortest(std::round(column * 1e4) / 1e4);
+    m_description = "profile: " + std::to_string(profile.densities.size()) + " layers of " +
+                    join(profile.components, ", ") + " (" +
+                    (profile.mass_densities ? std::string("g/m^3") : std::string("1/cm^3")) +
+                    "), humidity " +
+                    (m_regimes.empty()   ? std::string("-")
+                     : rh_low == rh_high ? percent(rh_low) + " %"
+                                         : percent(rh_low) + "-" + percent(rh_high) + " %") +
+                    ", tau550 " + format_shortest(std::round(column * 1e4) / 1e4);
 }
 
 double AerosolColumn::scale_to(const std::optional<double>& wanted, double column) {
