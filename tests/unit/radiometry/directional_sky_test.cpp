@@ -24,6 +24,9 @@ namespace directional_sky_test {
 using test::batch_of;
 using test::direction_from;
 using test::FixedRay;
+using test::kSigmas;
+using test::repeated_runs;
+using test::RepeatedRuns;
 using test::Rig;
 
 constexpr double kPi = std::numbers::pi;
@@ -307,27 +310,16 @@ TEST(DirectionalSky, TheTracerGivesATiltedPlateTheTablesSkyIrradiance) {
                 return table_row(rig.environment, zenith, az);
             });
         const FixedRay source({Vec3{0.0, 0.0, 1.5} + n * 10.0, n * -1.0, 0.0, 1.0});
-        constexpr int kRuns = 20;
-        std::vector<double> sum(kGrid.size(), 0.0), sum_sq(kGrid.size(), 0.0);
-        for (int run = 0; run < kRuns; ++run) {
-            const Solutions solved =
-                solve(rig.tracer, batch_of(source, 10000, 1, 500 + static_cast<std::uint64_t>(run)),
-                      Context{});
-            for (std::size_t b = 0; b < kGrid.size(); ++b) {
-                sum[b] += solved.radiance(0)[b];
-                sum_sq[b] += solved.radiance(0)[b] * solved.radiance(0)[b];
-            }
-        }
+        const RepeatedRuns runs = repeated_runs(rig.tracer, source, 10000, 20, 500, kGrid.size());
         const double cos_sun = std::max(dot(n, sun), 0.0);
         for (std::size_t b = 0; b < kGrid.size(); ++b) {
             const double expected =
                 kRho / kPi * (rig.environment.sun_irradiance_w_per_cm2_um()[b] * cos_sun + sky[b]);
-            const double mean = sum[b] / kRuns;
-            const double se =
-                std::sqrt(std::max(sum_sq[b] / kRuns - mean * mean, 0.0) / (kRuns - 1));
+            const double mean = runs.mean[b];
+            const double se = runs.standard_error[b];
             std::printf("  plate at azimuth %3.0f°, %.2f µm: traced/expected %.5f (se %.5f)\n",
                         azimuth, kGrid.wavelength_um(b), mean / expected, se / expected);
-            EXPECT_NEAR(mean, expected, 4.0 * se + 0.002 * expected)
+            EXPECT_NEAR(mean, expected, kSigmas * se + 0.002 * expected)
                 << azimuth << "° " << kGrid.wavelength_um(b) << " µm";
         }
     }

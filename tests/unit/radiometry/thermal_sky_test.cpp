@@ -23,6 +23,9 @@ namespace thermal_sky_test {
 using test::batch_of;
 using test::direction_from;
 using test::FixedRay;
+using test::kSigmas;
+using test::repeated_runs;
+using test::RepeatedRuns;
 using test::Rig;
 
 const SpectralGrid kLwir({7.0, 8.5, 10.0, 11.5, 13.5});
@@ -120,26 +123,15 @@ TEST(ThermalSky, ALambertianPlateReflectsTheSkysCosineMean) {
     const FixedRay source({{0.0, 0.0, 50.0}, {0.0, 0.0, -1.0}, 0.0, 1.0});
     // 20 independent runs of 1,000 draws: the mean and its standard error per band from
     // their spread.
-    constexpr int kRuns = 20;
-    std::vector<double> sum(kLwir.size(), 0.0), sum_sq(kLwir.size(), 0.0);
-    for (int run = 0; run < kRuns; ++run) {
-        const Solutions solved =
-            solve(rig.tracer, batch_of(source, 1000, 1, 100 + static_cast<std::uint64_t>(run)),
-                  Context{});
-        for (std::size_t b = 0; b < kLwir.size(); ++b) {
-            sum[b] += solved.radiance(0)[b];
-            sum_sq[b] += solved.radiance(0)[b] * solved.radiance(0)[b];
-        }
-    }
+    const RepeatedRuns runs = repeated_runs(rig.tracer, source, 1000, 20, 100, kLwir.size());
     const auto mean_sky = parametric().thermal_sky_radiance_w_per_cm2_sr_um(kLwir, at_ground());
     // Seen from the sensor 3 km up: through the air, plus its emission.
     std::vector<double> t_v(kLwir.size()), l_p(kLwir.size());
     rig.environment.sensor_path({0.0, 0.0, 1.0}, 0.0, t_v, l_p);
     for (std::size_t b = 0; b < kLwir.size(); ++b) {
         const double expected = t_v[b] * kRho * mean_sky[b] + l_p[b];
-        const double mean = sum[b] / kRuns;
-        const double se = std::sqrt(std::max(sum_sq[b] / kRuns - mean * mean, 0.0) / (kRuns - 1));
-        EXPECT_NEAR(mean, expected, 4.0 * se + 0.003 * expected) << kLwir.wavelength_um(b) << " µm";
+        EXPECT_NEAR(runs.mean[b], expected, kSigmas * runs.standard_error[b] + 0.003 * expected)
+            << kLwir.wavelength_um(b) << " µm";
     }
 }
 

@@ -6,6 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -145,6 +148,38 @@ inline ProblemBatch batch_of(const RaySource& source, std::uint64_t samples,
     b.convergence = {samples, samples, 0.0};
     b.count = count;
     return b;
+}
+
+/// The per-band mean radiance of `runs` independent solutions of one problem (`samples` draws
+/// from `source` each, seeds `first_seed`, `first_seed` + 1, …) and the standard error of that
+/// mean from their spread: Monte Carlo checks compare against mean ± kSigmas × error.
+struct RepeatedRuns {
+    std::vector<double> mean;
+    std::vector<double> standard_error;
+};
+
+inline RepeatedRuns repeated_runs(const PathTracer& tracer, const RaySource& source,
+                                  std::uint64_t samples, int runs, std::uint64_t first_seed,
+                                  std::size_t bands) {
+    std::vector<double> sum(bands, 0.0), sum_sq(bands, 0.0);
+    for (int run = 0; run < runs; ++run) {
+        const Solutions solved = solve(
+            tracer, batch_of(source, samples, 1, first_seed + static_cast<std::uint64_t>(run)),
+            Context{});
+        for (std::size_t b = 0; b < bands; ++b) {
+            const double v = solved.radiance(0)[b];
+            sum[b] += v;
+            sum_sq[b] += v * v;
+        }
+    }
+    RepeatedRuns out;
+    for (std::size_t b = 0; b < bands; ++b) {
+        const double mean = sum[b] / runs;
+        out.mean.push_back(mean);
+        out.standard_error.push_back(
+            std::sqrt(std::max(sum_sq[b] / runs - mean * mean, 0.0) / (runs - 1)));
+    }
+    return out;
 }
 
 /// A 2 m square plate at 1.5 m, its normal `n`, as a mesh of material `material`.
