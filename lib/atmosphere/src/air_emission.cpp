@@ -82,12 +82,11 @@ std::vector<std::vector<double>> ParametricAtmosphereModel::air_emission_at_air_
         }
     }
     // The altitude factors of the scatterers' optical depths at every boundary.
-    const auto& p = m_parameters;
     const std::size_t regimes = m_aerosol.regimes();
     std::vector<double> rayleigh_factor(layers + 1);
     std::vector<double> aerosol_depth((layers + 1) * regimes);  // [boundary][regime], 550 nm
     for (std::size_t k = 0; k <= layers; ++k) {
-        rayleigh_factor[k] = std::exp(-bounds[k] / p.rayleigh_scale_height_m);
+        rayleigh_factor[k] = air_share_above(bounds[k]);
         for (std::size_t j = 0; j < regimes; ++j) {
             aerosol_depth[k * regimes + j] = m_aerosol.depth_550_above(j, bounds[k]);
         }

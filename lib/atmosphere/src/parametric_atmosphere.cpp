@@ -70,7 +70,8 @@ ParametricAtmosphereModel::ParametricAtmosphereModel(model::ParametricAtmosphere
     }
     if (bad(p.angstrom_exponent)) throw input_error("angstrom_exponent must be finite");
     if (bad(p.aerosol_scale_height_m) || p.aerosol_scale_height_m <= 0.0 ||
-        bad(p.rayleigh_scale_height_m) || p.rayleigh_scale_height_m <= 0.0) {
+        (p.rayleigh_scale_height_m &&
+         (bad(*p.rayleigh_scale_height_m) || *p.rayleigh_scale_height_m <= 0.0))) {
         throw input_error("scale heights must be > 0 m");
     }
     if (bad(p.aerosol_asymmetry) || std::abs(p.aerosol_asymmetry) >= 1.0) {
@@ -109,10 +110,9 @@ GasAmounts ParametricAtmosphereModel::gas_amounts_above(double altitude_m) const
     if (ozone_share < 0.0) {
         ozone_share = std::clamp((kOzoneTopM - z) / (kOzoneTopM - kOzoneBottomM), 0.0, 1.0);
     }
-    return GasAmounts{m_parameters.water_vapor_cm * water_share,
-                      m_parameters.ozone_atm_cm * ozone_share,
-                      m_parameters.sea_level_pressure_hpa / kStandardPressureHpa *
-                          std::exp(-z / m_parameters.rayleigh_scale_height_m)};
+    return GasAmounts{
+        m_parameters.water_vapor_cm * water_share, m_parameters.ozone_atm_cm * ozone_share,
+        m_parameters.sea_level_pressure_hpa / kStandardPressureHpa * air_share_above(z)};
 }
 
 std::shared_ptr<const GasTransmittance> ParametricAtmosphereModel::gases_on(
@@ -134,8 +134,17 @@ std::vector<double> ParametricAtmosphereModel::gas_transmittance(const SpectralG
 
 double ParametricAtmosphereModel::rayleigh_optical_depth(double wavelength_um,
                                                          double altitude_m) const noexcept {
-    return rayleigh_sea_level(m_parameters, wavelength_um) *
-           std::exp(-altitude_m / m_parameters.rayleigh_scale_height_m);
+    return rayleigh_sea_level(m_parameters, wavelength_um) * air_share_above(altitude_m);
+}
+
+double ParametricAtmosphereModel::air_share_above(double altitude_m) const noexcept {
+    if (!m_parameters.rayleigh_scale_height_m) {
+        const double share = model::pressure_share_above(
+            model::standard_atmosphere(m_parameters.profile), altitude_m);
+        if (share >= 0.0) return share;
+    }
+    return std::exp(-altitude_m /
+                    m_parameters.rayleigh_scale_height_m.value_or(kIsothermalRayleighScaleHeightM));
 }
 
 double ParametricAtmosphereModel::aerosol_optical_depth(double wavelength_um,
@@ -220,15 +229,15 @@ std::vector<std::vector<double>> ParametricAtmosphereModel::path_radiance_at_azi
         p_rayleigh.push_back(rayleigh_phase(cos_scatter.back()));
     }
     const std::size_t regimes = m_aerosol.regimes();
-    // τ(λ, z) = τ_R(λ)·e^(−z/H_R) + Σ_j r_j(λ) D_j(z), D_j the 550 nm depth of aerosol regime j
-    // above z and r_j its extinction relative to 550 nm: the altitude parts of every layer
-    // boundary and midpoint are computed once, the spectral ones once per band.
+    // τ(λ, z) = τ_R(λ)·a(z) + Σ_j r_j(λ) D_j(z), a the air's share above z, D_j the 550 nm depth of
+    // aerosol regime j above z and r_j its extinction relative to 550 nm: the altitude parts of
+    // every layer boundary and midpoint are computed once, the spectral ones once per band.
     struct Level {
-        double rayleigh = 0.0;        ///< e^(−z/H_R)
+        double rayleigh = 0.0;        ///< the air's share above z
         std::vector<double> aerosol;  ///< D_j(z)
     };
     const auto level = [&](double z) {
-        Level at{std::exp(-z / m_parameters.rayleigh_scale_height_m), {}};
+        Level at{air_share_above(z), {}};
         for (std::size_t j = 0; j < regimes; ++j) {
             at.aerosol.push_back(m_aerosol.depth_550_above(j, z));
         }

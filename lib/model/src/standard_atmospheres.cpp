@@ -156,6 +156,22 @@ double ozone_share_above(const StandardAtmosphereProfile& profile, double altitu
     return share_above(profile.levels, profile.ozone_above_g_per_m2, altitude_m, ozone_of);
 }
 
+double pressure_share_above(const StandardAtmosphereProfile& profile, double altitude_m) noexcept {
+    const auto& levels = profile.levels;
+    if (levels.size() < 2) return -1.0;
+    const double z_km = altitude_m / 1000.0;
+    // The segment whose exponential holds z: the first below the profile, the last above it.
+    const auto above = std::upper_bound(
+        levels.begin() + 1, levels.end() - 1, z_km,
+        [](double z, const AtmosphereLevel& level) { return z < level.altitude_km; });
+    const AtmosphereLevel& hi = *above;
+    const AtmosphereLevel& lo = *(above - 1);
+    const double f = (z_km - lo.altitude_km) / (hi.altitude_km - lo.altitude_km);
+    const double ln_ratio = std::log(lo.pressure_hpa / levels.front().pressure_hpa) +
+                            f * std::log(hi.pressure_hpa / lo.pressure_hpa);
+    return std::exp(ln_ratio);
+}
+
 double profile_temperature_k(std::span<const AtmosphereLevel> levels, double altitude_m) noexcept {
     if (levels.empty()) return 0.0;
     const double z_km = altitude_m / 1000.0;

@@ -270,8 +270,12 @@ void read_parametric(const YAML::Node& root, const std::string& file,
         read_number(root, "aerosol_single_scatter_albedo", file, kFraction,
                     p.aerosol_single_scatter_albedo, diagnostics);
     }
-    read_number(root, "rayleigh_scale_height_m", file, kPositive, p.rayleigh_scale_height_m,
-                diagnostics);
+    if (root["rayleigh_scale_height_m"]) {
+        double height_m = 0.0;
+        const std::size_t errors = diagnostics.error_count();
+        read_number(root, "rayleigh_scale_height_m", file, kPositive, height_m, diagnostics);
+        if (diagnostics.error_count() == errors) p.rayleigh_scale_height_m = height_m;
+    }
     read_number(root, "sea_level_pressure_hpa", file, kNonNegative, p.sea_level_pressure_hpa,
                 diagnostics);
     read_number(root, "air_temperature_k", file, kNonNegative, p.air_temperature_k, diagnostics);

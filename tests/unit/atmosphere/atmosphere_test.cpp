@@ -54,7 +54,20 @@ TEST(ParametricAtmosphere, RayleighOpticalDepthAt550nm) {
     const ParametricAtmosphereModel m(with_aod(0.0));
     // Hansen & Travis (1974): ≈ 0.0973 at 0.55 µm, sea level, 1013.25 hPa.
     EXPECT_NEAR(m.rayleigh_optical_depth(0.55, 0.0), 0.097, 0.001);
-    EXPECT_NEAR(m.rayleigh_optical_depth(0.55, 8000.0), 0.097 / M_E, 0.001);
+    // Above 8 km: the U.S. Standard profile's pressure ratio there, 356.5 / 1013 hPa (the 8 km
+    // exponential's 1/e with rayleigh_scale_height_m).
+    EXPECT_NEAR(m.rayleigh_optical_depth(0.55, 8000.0) / m.rayleigh_optical_depth(0.55, 0.0),
+                356.5 / 1013.0, 1e-9);
+    model::ParametricAtmosphere exponential = with_aod(0.0);
+    exponential.rayleigh_scale_height_m = 8000.0;
+    const ParametricAtmosphereModel e(exponential);
+    EXPECT_NEAR(e.rayleigh_optical_depth(0.55, 8000.0) / e.rayleigh_optical_depth(0.55, 0.0),
+                1.0 / M_E, 1e-12);
+    EXPECT_DOUBLE_EQ(e.rayleigh_optical_depth(0.55, 0.0), m.rayleigh_optical_depth(0.55, 0.0));
+    // The isothermal profile has no pressures: 8 km.
+    model::ParametricAtmosphere isothermal = with_aod(0.0);
+    isothermal.profile = model::StandardAtmosphere::isothermal;
+    EXPECT_NEAR(ParametricAtmosphereModel(isothermal).air_share_above(8000.0), 1.0 / M_E, 1e-12);
     EXPECT_NEAR(m.rayleigh_optical_depth(1.0, 0.0), 0.0087, 0.0003);
     const ParametricAtmosphereModel a(with_aod(0.3));
     EXPECT_DOUBLE_EQ(a.aerosol_optical_depth(0.55, 0.0), 0.3);

@@ -62,6 +62,8 @@ ParametricAtmosphereModel hazy(double albedo) {
     p.visibility_km = 5.0;
     p.gas_absorption = false;
     p.ground_albedo = albedo;
+    // DISORT's layers carry the Rayleigh depths glint gave them then: e^(−z/8 km).
+    p.rayleigh_scale_height_m = 8000.0;
     return ParametricAtmosphereModel(p, nullptr, test::aerosol_table());
 }
 

@@ -160,7 +160,7 @@ TEST(ParametricAtmosphereGases, SunTransmittanceIsScatteringTimesGases) {
     }
     // A sensor path through the lowest 3 km holds the profile's (the 1976 standard's) share
     // of the water and of the ozone below 3 km (model::water_share_above: 0.76 and 0.02) and
-    // the share of the mixed gases below 3 km.
+    // of the mixed gases (its pressure).
     AtmosphereGeometry up = sun_at(30.0);
     up.sensor_altitude_m = 3000.0;
     const auto v = with.sensor_transmittance(grid, up);
@@ -171,8 +171,11 @@ TEST(ParametricAtmosphereGases, SunTransmittanceIsScatteringTimesGases) {
     const double ozone_below = 1.0 - model::ozone_share_above(us76, 3000.0);
     EXPECT_NEAR(water_below, 0.76, 0.01);
     EXPECT_NEAR(ozone_below, 0.022, 0.001);
-    const auto expected = gases.transmittance({1.418 * water_below * m0, 0.343 * ozone_below * m0,
-                                               (1.0 - std::exp(-3000.0 / 8000.0)) * m0});
+    // The mixed gases below 3 km: the profile's pressure there, 701.2 / 1013 hPa.
+    const double air_below = 1.0 - model::pressure_share_above(us76, 3000.0);
+    EXPECT_NEAR(air_below, 1.0 - 701.2 / 1013.0, 1e-9);
+    const auto expected =
+        gases.transmittance({1.418 * water_below * m0, 0.343 * ozone_below * m0, air_below * m0});
     for (std::size_t i = 0; i < grid.size(); ++i) {
         EXPECT_NEAR(v[i], v0[i] * expected[i], 1e-9);
     }

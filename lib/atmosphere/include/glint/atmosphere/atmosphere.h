@@ -200,6 +200,12 @@ public:
 
     /// Vertical Rayleigh optical depth above `altitude_m` at `wavelength_um`.
     double rayleigh_optical_depth(double wavelength_um, double altitude_m) const noexcept;
+    /// The share of the air's column above `altitude_m` (1 at sea level): the profile's
+    /// pressure over its sea-level one, or e^(−z/H_R) with rayleigh_scale_height_m (8000 m
+    /// for the isothermal profile). Rayleigh scattering and the mixed gases follow it.
+    double air_share_above(double altitude_m) const noexcept;
+    /// The isothermal profile's Rayleigh scale height, m.
+    static constexpr double kIsothermalRayleighScaleHeightM = 8000.0;
     /// Vertical aerosol optical depth above `altitude_m` at `wavelength_um`.
     double aerosol_optical_depth(double wavelength_um, double altitude_m) const;
     /// The aerosol: its regimes, their profiles and optics.

@@ -59,8 +59,10 @@ struct ParametricAtmosphere {
     double aerosol_scale_height_m = 1200.0;       ///< aerosol extinction ∝ exp(−z/H_a)
     double aerosol_asymmetry = 0.7;               ///< Henyey–Greenstein asymmetry g
     double aerosol_single_scatter_albedo = 0.95;  ///< ω_a
-    double rayleigh_scale_height_m = 8000.0;      ///< Rayleigh extinction ∝ exp(−z/H_R)
-    double sea_level_pressure_hpa = 1013.25;      ///< Rayleigh optical depth ∝ pressure
+    /// Rayleigh extinction (and the mixed gases' amount) ∝ exp(−z/H_R) when set; unset: the
+    /// `profile`'s pressure (the isothermal profile, which has none: H_R = 8000 m).
+    std::optional<double> rayleigh_scale_height_m;
+    double sea_level_pressure_hpa = 1013.25;  ///< Rayleigh optical depth ∝ pressure
     /// The air's temperature profile (and, through the YAML reader, the defaults of the
     /// columns and of air_temperature_k): glint/model/standard_atmospheres.h.
     StandardAtmosphere profile = StandardAtmosphere::us_standard_1976;

@@ -56,6 +56,12 @@ double water_share_above(const StandardAtmosphereProfile& profile, double altitu
 /// The same for its ozone.
 double ozone_share_above(const StandardAtmosphereProfile& profile, double altitude_m) noexcept;
 
+/// The share of the air's column that lies above `altitude_m`: the pressure there over the
+/// pressure at the first level, exponential between levels (ln p linear in altitude) and
+/// beyond the table along its first or last segment's. −1 for a profile without levels
+/// (isothermal).
+double pressure_share_above(const StandardAtmosphereProfile& profile, double altitude_m) noexcept;
+
 /// The table of `which` (the columns computed once from it).
 const StandardAtmosphereProfile& standard_atmosphere(StandardAtmosphere which) noexcept;
 
