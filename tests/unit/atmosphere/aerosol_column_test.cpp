@@ -272,6 +272,29 @@ TEST(AerosolColumn, AProfilesMixedLayerHasTheMixturesOptics) {
     for (std::size_t l = 0; l < 8; ++l) EXPECT_NEAR(o.moments[l], mixed.moments[l], 1e-9) << l;
 }
 
+// A profile without particles is clean air: no regime, and the model runs without aerosol.
+TEST(AerosolColumn, AProfileWithoutParticlesIsCleanAir) {
+    const auto table = test::aerosol_table();
+    const model::ParametricAtmosphere p =
+        profiled({"waso"}, false, {0.0, 1.0, 3.0}, {{0.0}, {0.0}});
+    const AerosolColumn column(p, table);
+    EXPECT_EQ(column.regimes(), 0u);
+    EXPECT_DOUBLE_EQ(column.optical_depth(0.55, 0.0), 0.0);
+    EXPECT_EQ(column.description(), "profile: 2 layers of waso (1/cm^3), humidity -, tau550 0");
+    model::ParametricAtmosphere clear = p;
+    clear.aerosol_profile.reset();
+    clear.aerosol_optical_depth_550 = 0.0;
+    const ParametricAtmosphereModel with_profile(p, nullptr, table);
+    const ParametricAtmosphereModel without(clear, nullptr, table);
+    AtmosphereGeometry g;
+    g.sun_zenith_deg = 30.0;
+    g.sensor_altitude_m = 5000.0;
+    const SpectralGrid grid({0.55});
+    const std::vector<double> toa{1.0};
+    EXPECT_NEAR(with_profile.path_radiance_w_per_cm2_sr_um(grid, g, toa)[0],
+                without.path_radiance_w_per_cm2_sr_um(grid, g, toa)[0], 1e-12);
+}
+
 TEST(AerosolColumn, AProfileNeedsTheTableAndItsComponents) {
     const model::ParametricAtmosphere p = profiled({"waso"}, false, {0.0, 1.0}, {{100.0}});
     try {
