@@ -11,6 +11,7 @@
 
 #include "glint/core/text.h"
 #include "glint/model/aerosol_models.h"
+#include "yaml_keys.h"
 
 namespace glint::yaml::detail {
 namespace {
@@ -21,10 +22,6 @@ constexpr std::size_t kMaxProfileLayers = 200;
 /// The top of glint's atmosphere, km.
 constexpr double kProfileTopKm = 100.0;
 
-ErrorContext profile_at(const std::string& file, const YAML::Node& node, std::string key) {
-    return ErrorContext{file, node.Mark().line >= 0 ? node.Mark().line + 1 : 0, std::move(key)};
-}
-
 std::optional<double> profile_number(const YAML::Node& node) {
     if (!node.IsScalar()) return std::nullopt;
     const std::optional<double> v = parse_double(node.Scalar());
@@ -32,36 +29,20 @@ std::optional<double> profile_number(const YAML::Node& node) {
     return v;
 }
 
-/// A number in [0, 100] at `node` (`key` for the message), or nullopt after an error phrased as
-/// the atmosphere reader's others are.
-std::optional<double> profile_percent(const YAML::Node& node, const std::string& file,
-                                      const std::string& key, Diagnostics& diagnostics) {
-    const std::optional<double> v = profile_number(node);
-    if (!v) {
-        diagnostics.error(profile_at(file, node, key), "expected a number in [0, 100]");
-        return std::nullopt;
-    }
-    if (*v < 0.0 || *v > 100.0) {
-        diagnostics.error(profile_at(file, node, key), "value " + format_shortest(*v) +
-                                                           " out of range, expected a number in "
-                                                           "[0, 100]");
-        return std::nullopt;
-    }
-    return v;
-}
+const Bounds kZeroToHundred{0.0, 100.0, false, false, "a number in [0, 100]"};
 
 /// The keys beside aerosol_profile: errors for the other aerosols' keys, warnings for the
 /// layered aerosol's that have no effect, the scaling depth and the humidity read.
 void read_profile_companions(const YAML::Node& root, const std::string& file,
                              model::ParametricAtmosphere& p, Diagnostics& diagnostics) {
     if (const YAML::Node clash = root["aerosol_model"]) {
-        diagnostics.error(profile_at(file, clash, "aerosol_model"),
+        diagnostics.error(at(file, clash, "aerosol_model"),
                           "give aerosol_model or aerosol_profile, not both");
     }
     for (const char* key : {"angstrom_exponent", "aerosol_scale_height_m", "aerosol_asymmetry",
                             "aerosol_single_scatter_albedo", "visibility_km"}) {
         if (const YAML::Node clash = root[key]) {
-            diagnostics.error(profile_at(file, clash, key),
+            diagnostics.error(at(file, clash, key),
                               "aerosol_profile sets the aerosol's optics and amount (OPAC's Mie "
                               "optics, its own densities; aerosol_optical_depth_550 scales it); "
                               "give " +
@@ -70,18 +51,19 @@ void read_profile_companions(const YAML::Node& root, const std::string& file,
     }
     for (const char* key : {"aerosol_season", "tropospheric_aerosol", "stratospheric_aerosol"}) {
         if (const YAML::Node unused = root[key]) {
-            diagnostics.warning(profile_at(file, unused, key),
+            diagnostics.warning(at(file, unused, key),
                                 "has no effect: it belongs to the layered aerosol of an "
                                 "aerosol_model, and aerosol_profile replaces it");
         }
     }
-    if (const YAML::Node depth = root["aerosol_optical_depth_550"]) {
-        const auto v = profile_percent(depth, file, "aerosol_optical_depth_550", diagnostics);
-        if (v) p.aerosol_column_depth_550 = *v;
+    // Both [0, 100]: a percentage, and the depth range of every aerosol.
+    if (const auto depth = read_optional_number(root, "aerosol_optical_depth_550", file,
+                                                kZeroToHundred, diagnostics)) {
+        p.aerosol_column_depth_550 = depth;
     }
-    if (const YAML::Node rh = root["relative_humidity_percent"]) {
-        const auto v = profile_percent(rh, file, "relative_humidity_percent", diagnostics);
-        if (v) p.relative_humidity_percent = *v;
+    if (const auto rh = read_optional_number(root, "relative_humidity_percent", file,
+                                             kZeroToHundred, diagnostics)) {
+        p.relative_humidity_percent = rh;
     }
 }
 
@@ -89,8 +71,7 @@ void read_profile_companions(const YAML::Node& root, const std::string& file,
 bool read_profile_components(const YAML::Node& profile, const std::string& file,
                              model::AerosolProfile& out, Diagnostics& diagnostics) {
     const YAML::Node node = profile["components"];
-    const ErrorContext where =
-        profile_at(file, node ? node : profile, "aerosol_profile.components");
+    const ErrorContext where = at(file, node ? node : profile, "aerosol_profile.components");
     if (!node || !node.IsSequence() || node.size() == 0) {
         diagnostics.error(where, std::string("expected a list of OPAC components (") +
                                      model::aerosol_component_names() + ")");
@@ -100,7 +81,7 @@ bool read_profile_components(const YAML::Node& profile, const std::string& file,
     bool ok = true;
     for (const YAML::Node& item : node) {
         const std::string name = item.IsScalar() ? item.Scalar() : std::string{};
-        const ErrorContext here = profile_at(file, item, "aerosol_profile.components");
+        const ErrorContext here = at(file, item, "aerosol_profile.components");
         if (!model::is_aerosol_component(name)) {
             diagnostics.error(here, std::string("expected one of ") +
                                         model::aerosol_component_names() + ", got '" + name + "'");
@@ -119,7 +100,7 @@ bool read_profile_components(const YAML::Node& profile, const std::string& file,
 bool read_profile_levels(const YAML::Node& profile, const std::string& file,
                          model::AerosolProfile& out, Diagnostics& diagnostics) {
     const YAML::Node node = profile["levels"];
-    const ErrorContext where = profile_at(file, node ? node : profile, "aerosol_profile.levels");
+    const ErrorContext where = at(file, node ? node : profile, "aerosol_profile.levels");
     const std::size_t columns = 1 + out.components.size();
     const std::string shape =
         "[altitude_km, then one density per component: " + std::to_string(out.components.size()) +
@@ -143,7 +124,7 @@ bool read_profile_levels(const YAML::Node& profile, const std::string& file,
     bool ok = true;
     for (const YAML::Node& item : node) {
         Row row;
-        row.where = profile_at(file, item, "aerosol_profile.levels");
+        row.where = at(file, item, "aerosol_profile.levels");
         if (!item.IsSequence() || item.size() != columns) {
             diagnostics.error(row.where, "expected a row " + shape);
             ok = false;
@@ -211,7 +192,7 @@ void read_aerosol_profile(const YAML::Node& root, const std::string& file,
     if (!node) return;
     const std::size_t errors = diagnostics.error_count();
     read_profile_companions(root, file, p, diagnostics);
-    const ErrorContext where = profile_at(file, node, "aerosol_profile");
+    const ErrorContext where = at(file, node, "aerosol_profile");
     if (!node.IsMap()) {
         diagnostics.error(where, "expected a mapping with components, unit and levels");
         return;
@@ -222,7 +203,7 @@ void read_aerosol_profile(const YAML::Node& root, const std::string& file,
         const std::string key = entry.first.Scalar();
         if (key != "components" && key != "unit" && key != "mass_humidity_percent" &&
             key != "levels") {
-            diagnostics.warning(profile_at(file, entry.first, "aerosol_profile." + key),
+            diagnostics.warning(at(file, entry.first, "aerosol_profile." + key),
                                 "unknown key, ignored (aerosol_profile takes components, unit, "
                                 "mass_humidity_percent, levels)");
         }
@@ -232,16 +213,16 @@ void read_aerosol_profile(const YAML::Node& root, const std::string& file,
     if (unit_name == "g_per_m3") {
         out.mass_densities = true;
     } else if (unit_name != "per_cm3") {
-        diagnostics.error(profile_at(file, unit ? unit : node, "aerosol_profile.unit"),
+        diagnostics.error(at(file, unit ? unit : node, "aerosol_profile.unit"),
                           "expected per_cm3 (particles per cm^3) or g_per_m3 (grams per m^3), "
                           "got '" +
                               unit_name + "'");
     }
     if (const YAML::Node rh = node["mass_humidity_percent"]) {
-        const auto v =
-            profile_percent(rh, file, "aerosol_profile.mass_humidity_percent", diagnostics);
+        const auto v = number_at(rh, file, "aerosol_profile.mass_humidity_percent", kZeroToHundred,
+                                 diagnostics);
         if (v && unit_name == "per_cm3") {
-            diagnostics.warning(profile_at(file, rh, "aerosol_profile.mass_humidity_percent"),
+            diagnostics.warning(at(file, rh, "aerosol_profile.mass_humidity_percent"),
                                 "has no effect: the densities are particle numbers "
                                 "(unit per_cm3), not masses");
         } else if (v) {

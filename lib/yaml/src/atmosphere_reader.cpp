@@ -17,46 +17,18 @@
 #include "aerosol_profile_reader.h"
 #include "glint/core/text.h"
 #include "glint/io/xml.h"
+#include "yaml_keys.h"
 #include "yaml_text.h"
 
 namespace glint::yaml {
 namespace {
 
+using detail::at;
+using detail::Bounds;
+using detail::read_number;
+using detail::read_optional_number;
+
 std::string num(double value) { return format_shortest(value); }
-
-ErrorContext at(const std::string& file, const YAML::Node& node, std::string key) {
-    return ErrorContext{file, node.Mark().line >= 0 ? node.Mark().line + 1 : 0, std::move(key)};
-}
-
-/// A number rule for YAML values: lo/hi bounds, each inclusive or exclusive.
-struct Bounds {
-    std::optional<double> lo;
-    std::optional<double> hi;
-    bool lo_open = false;
-    bool hi_open = false;
-    std::string text;  ///< e.g. "a number >= 0"
-};
-
-void read_number(const YAML::Node& map, const char* key, const std::string& file,
-                 const Bounds& bounds, double& value, Diagnostics& diagnostics) {
-    const YAML::Node node = map[key];
-    if (!node) return;
-    const ErrorContext where = at(file, node, key);
-    std::optional<double> parsed;
-    if (node.IsScalar()) parsed = parse_double(node.Scalar());
-    if (!parsed) {
-        diagnostics.error(where, "expected " + bounds.text);
-        return;
-    }
-    const double v = *parsed;
-    const bool low_bad = bounds.lo && (bounds.lo_open ? v <= *bounds.lo : v < *bounds.lo);
-    const bool high_bad = bounds.hi && (bounds.hi_open ? v >= *bounds.hi : v > *bounds.hi);
-    if (low_bad || high_bad) {
-        diagnostics.error(where, "value " + num(v) + " out of range, expected " + bounds.text);
-        return;
-    }
-    value = v;
-}
 
 void read_flag(const YAML::Node& map, const char* key, const std::string& file, bool& value,
                Diagnostics& diagnostics) {
@@ -130,17 +102,15 @@ void read_aerosol_model(const YAML::Node& root, const std::string& file,
             diagnostics.error(at(file, root["visibility_km"], "visibility_km"),
                               "give aerosol_optical_depth_550 or visibility_km, not both");
         }
-        double value = 0.0;
-        const std::size_t errors = diagnostics.error_count();
-        read_number(root, "aerosol_optical_depth_550", file, kAerosolDepth, value, diagnostics);
-        if (diagnostics.error_count() == errors) p.aerosol_column_depth_550 = value;
+        if (const auto value = read_optional_number(root, "aerosol_optical_depth_550", file,
+                                                    kAerosolDepth, diagnostics)) {
+            p.aerosol_column_depth_550 = value;
+        }
     }
-    if (root["relative_humidity_percent"]) {
-        double rh = 0.0;
-        const std::size_t errors = diagnostics.error_count();
-        const Bounds percent{0.0, 100.0, false, false, "a number in [0, 100]"};
-        read_number(root, "relative_humidity_percent", file, percent, rh, diagnostics);
-        if (diagnostics.error_count() == errors) p.relative_humidity_percent = rh;
+    const Bounds percent{0.0, 100.0, false, false, "a number in [0, 100]"};
+    if (const auto rh =
+            read_optional_number(root, "relative_humidity_percent", file, percent, diagnostics)) {
+        p.relative_humidity_percent = rh;
     }
     if (const YAML::Node season = root["aerosol_season"]) {
         const std::string value = season.IsScalar() ? season.Scalar() : std::string{};
@@ -270,11 +240,9 @@ void read_parametric(const YAML::Node& root, const std::string& file,
         read_number(root, "aerosol_single_scatter_albedo", file, kFraction,
                     p.aerosol_single_scatter_albedo, diagnostics);
     }
-    if (root["rayleigh_scale_height_m"]) {
-        double height_m = 0.0;
-        const std::size_t errors = diagnostics.error_count();
-        read_number(root, "rayleigh_scale_height_m", file, kPositive, height_m, diagnostics);
-        if (diagnostics.error_count() == errors) p.rayleigh_scale_height_m = height_m;
+    if (const auto height_m =
+            read_optional_number(root, "rayleigh_scale_height_m", file, kPositive, diagnostics)) {
+        p.rayleigh_scale_height_m = height_m;
     }
     read_number(root, "sea_level_pressure_hpa", file, kNonNegative, p.sea_level_pressure_hpa,
                 diagnostics);
